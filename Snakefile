@@ -1,0 +1,27 @@
+# A reproducible report on classical rigid-body dynamics and vibrations.
+# This file is the report's table of contents: one include per study, in report order.
+#
+#   snakemake -c all                 everything: every scene of every study, then the report
+#   snakemake -c all chains          one study (its scenes only)
+#   snakemake -c all report          the HTML and PDF report
+#   snakemake -c1 dist               a citable archive with SHA256SUMS
+#   snakemake -c all --config quick=1    a reduced build (what the tests run)
+
+configfile: "workflow/config.yaml"
+
+
+include: "workflow/rules/common.smk"
+# 1. Vibrations of chains: the hanging chain, discrete chains, strings, springs, rotating chains
+include: "workflow/rules/chains.smk"
+# 2. Precession of the equinoxes        (to come: issue 5)
+# 3. The Chandler wobble                (to come: issue 4)
+# 4. The self-excited rigid body        (to come: issue 6)
+include: "workflow/rules/report.smk"
+include: "workflow/rules/dist.smk"
+
+
+rule all:
+    default_target: True
+    input:
+        rules.report_html.output,
+        rules.report_pdf.output,

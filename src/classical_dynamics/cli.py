@@ -1,0 +1,108 @@
+"""Command-line entry points the Snakemake rules call.
+
+  python -m classical_dynamics validate STUDY SCHEMA SCENE...
+  python -m classical_dynamics run STUDY SCHEMA SCENE OUT_DIR TIMINGS_DIR [--quick]
+  python -m classical_dynamics report RESULTS_DIR HTML PDF [--quick]
+  python -m classical_dynamics dist RESULTS_DIR ARCHIVE
+"""
+
+from __future__ import annotations
+
+import os
+
+# One BLAS thread per job: Snakemake runs jobs side by side, and results stay bit-reproducible.
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
+
+import argparse  # noqa: E402
+import sys  # noqa: E402
+import time  # noqa: E402
+from datetime import datetime, timezone  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+from .scenes import SceneError  # noqa: E402
+
+
+def _now() -> str:
+    return datetime.now(timezone.utc).isoformat(timespec="seconds")
+
+
+def cmd_validate(args) -> int:
+    from .studies import validate
+    for scene in args.scenes:
+        validate(args.study, scene, args.schema)
+    return 0
+
+
+def cmd_run(args) -> int:
+    from . import provenance
+    from .studies import study_module, validate
+
+    scene = validate(args.study, args.scene, args.schema)     # nothing is computed before this passes
+    module = study_module(args.study)
+    started, wall0, cpu0 = _now(), time.perf_counter(), time.process_time()
+    results = module.run(scene, quick=args.quick)
+    wall, cpu = time.perf_counter() - wall0, time.process_time() - cpu0
+    record = {
+        "study": args.study, "scene": scene.name, "scene_file": str(args.scene),
+        "scene_sha256": scene.sha256, "effects_simulated": sorted(scene.effects),
+        "quick": bool(args.quick), **provenance.git_state(), "packages": provenance.package_versions(),
+        "machine": provenance.machine(), "started": started, "finished": _now(),
+        "wall_seconds": round(wall, 3), "cpu_seconds": round(cpu, 3),
+    }
+    timing = {"study": args.study, "scene": scene.name, "wall_seconds": wall, "cpu_seconds": cpu,
+              "started": started, "cpu_model": record["machine"]["cpu_model"], "cores": record["machine"]["cores"]}
+    results.write(Path(args.out_dir), Path(args.timings_dir), record, timing)
+    return 0
+
+
+def cmd_report(args) -> int:
+    from .report.build import build_report
+    build_report(Path(args.results), Path(args.html), Path(args.pdf) if args.pdf else None,
+                 quick=args.quick, root=Path(args.root))
+    return 0
+
+
+def cmd_dist(args) -> int:
+    from .report.dist import make_archive
+    make_archive(Path(args.results), Path(args.archive))
+    return 0
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="classical_dynamics")
+    sub = parser.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("validate", help="validate scene files; one line per problem")
+    p.add_argument("study")
+    p.add_argument("schema")
+    p.add_argument("scenes", nargs="+")
+    p.set_defaults(func=cmd_validate)
+    p = sub.add_parser("run", help="run one scene")
+    p.add_argument("study")
+    p.add_argument("schema")
+    p.add_argument("scene")
+    p.add_argument("out_dir")
+    p.add_argument("timings_dir")
+    p.add_argument("--quick", action="store_true")
+    p.set_defaults(func=cmd_run)
+    p = sub.add_parser("report", help="render the HTML and PDF report from results/")
+    p.add_argument("results")
+    p.add_argument("html")
+    p.add_argument("pdf", nargs="?")
+    p.add_argument("--root", default=".")
+    p.add_argument("--quick", action="store_true")
+    p.set_defaults(func=cmd_report)
+    p = sub.add_parser("dist", help="a citable archive with SHA256SUMS")
+    p.add_argument("results")
+    p.add_argument("archive")
+    p.set_defaults(func=cmd_dist)
+    args = parser.parse_args(argv)
+    try:
+        return args.func(args)
+    except SceneError as error:
+        print(error, file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())

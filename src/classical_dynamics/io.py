@@ -1,0 +1,112 @@
+"""Atomic, deterministic writing of results files.
+
+Every write goes to a temporary name in the same folder and is renamed into place,
+so an interrupted build never leaves a half-written file that looks finished.
+"""
+
+from __future__ import annotations
+
+import io as _io
+import json
+import math
+import os
+import shutil
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+SIGNIFICANT_DIGITS = 15  # stored values keep 15 significant figures: stable across runs, ample for reporting
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+def make_shareable(path: Path | str, directory: bool = False) -> None:
+    """mkstemp/mkdtemp create private (0600/0700) paths; results are ordinary files."""
+    os.chmod(path, (0o777 if directory else 0o666) & ~_umask())
+
+
+def atomic_write_bytes(path: Path | str, data: bytes) -> None:
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as handle:
+            handle.write(data)
+        make_shareable(tmp)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+def atomic_write_text(path: Path | str, text: str) -> None:
+    atomic_write_bytes(path, text.encode("utf-8"))
+
+
+def _plain(value):
+    """Convert numpy scalars/arrays to JSON-ready Python values, rounding floats to 15 digits."""
+    if isinstance(value, dict):
+        return {str(k): _plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple, np.ndarray)):
+        return [_plain(v) for v in value]
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    if isinstance(value, (int, np.integer)):
+        return int(value)
+    if isinstance(value, (float, np.floating)):
+        value = float(value)
+        if not math.isfinite(value):
+            return None if math.isnan(value) else ("inf" if value > 0 else "-inf")
+        return float(f"{value:.{SIGNIFICANT_DIGITS}g}")
+    return value
+
+
+def dumps_json(data) -> str:
+    return json.dumps(_plain(data), indent=2, sort_keys=True, ensure_ascii=False) + "\n"
+
+
+def write_json(path: Path | str, data) -> None:
+    atomic_write_text(path, dumps_json(data))
+
+
+def read_json(path: Path | str):
+    return json.loads(Path(path).read_text(encoding="utf-8"))
+
+
+def csv_text(frame) -> str:
+    """A tidy table as CSV text with 15 significant figures (deterministic)."""
+    buffer = _io.StringIO()
+    frame.to_csv(buffer, index=False, float_format=f"%.{SIGNIFICANT_DIGITS}g", lineterminator="\n")
+    return buffer.getvalue()
+
+
+def write_csv(path: Path | str, frame) -> None:
+    atomic_write_text(path, csv_text(frame))
+
+
+def svg_bytes(figure) -> bytes:
+    """A matplotlib figure as deterministic SVG (fixed hash salt, no date)."""
+    import matplotlib
+
+    buffer = _io.BytesIO()
+    with matplotlib.rc_context({"svg.hashsalt": "classical-dynamics", "svg.fonttype": "path"}):
+        figure.savefig(buffer, format="svg", metadata={"Date": None}, bbox_inches="tight")
+    return buffer.getvalue()
+
+
+def write_svg(path: Path | str, figure) -> None:
+    atomic_write_bytes(path, svg_bytes(figure))
+
+
+def replace_directory(staging: Path, target: Path) -> None:
+    """Move a finished staging folder into place; an older target is removed first."""
+    target = Path(target)
+    make_shareable(staging, directory=True)
+    if target.exists():
+        shutil.rmtree(target)
+    os.replace(staging, target)

@@ -1,0 +1,1 @@
+"""Physical models assembled from a scene's effects."""

@@ -1,0 +1,78 @@
+"""Where a result came from: code version, software, machine, inputs, time."""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import platform
+import subprocess
+import sys
+from functools import lru_cache
+from importlib import metadata
+from pathlib import Path
+
+from . import __version__
+
+KEY_PACKAGES = (
+    "numpy", "scipy", "numba", "llvmlite", "sympy", "mpmath", "matplotlib", "pandas",
+    "jinja2", "pyyaml", "jsonschema", "snakemake", "weasyprint", "ziamath", "pyerfa",
+    "astropy-iers-data",
+)
+
+
+def sha256_file(path: Path | str) -> str:
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+
+
+@lru_cache(maxsize=1)
+def package_versions() -> dict[str, str]:
+    versions = {}
+    for name in KEY_PACKAGES:
+        try:
+            versions[name] = metadata.version(name)
+        except metadata.PackageNotFoundError:
+            versions[name] = "not installed"
+    versions["classical-dynamics"] = __version__
+    return versions
+
+
+@lru_cache(maxsize=1)
+def git_state() -> dict[str, object]:
+    """Commit and dirty flag of the checkout the code runs from ('unknown' outside git)."""
+    root = Path(__file__).resolve().parents[2]
+    try:
+        commit = subprocess.run(["git", "rev-parse", "HEAD"], cwd=root, capture_output=True,
+                                text=True, check=True).stdout.strip()
+        dirty = bool(subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"],
+                                    cwd=root, capture_output=True, text=True, check=True).stdout.strip())
+    except (OSError, subprocess.CalledProcessError):
+        return {"commit": "unknown", "dirty": None}
+    return {"commit": commit, "dirty": dirty}
+
+
+@lru_cache(maxsize=1)
+def cpu_model() -> str:
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown"
+
+
+def machine() -> dict[str, object]:
+    return {
+        "python": sys.version.split()[0],
+        "platform": platform.platform(),
+        "cpu_model": cpu_model(),
+        "cores": os.cpu_count(),
+    }
+
+
+def software_stamp() -> str:
+    """One line for timing tables: CPU, cores and the versions that matter for speed."""
+    v = package_versions()
+    m = machine()
+    return (f"{m['cpu_model']}, {m['cores']} cores; Python {m['python']}, numpy {v['numpy']}, "
+            f"scipy {v['scipy']}, numba {v['numba']}")

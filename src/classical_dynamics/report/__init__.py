@@ -1,0 +1,1 @@
+"""The report: results files -> Jinja templates -> one self-contained HTML -> PDF."""

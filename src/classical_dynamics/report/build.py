@@ -1,0 +1,251 @@
+"""Render results/ into one self-contained HTML file through the Jinja templates in report/.
+
+The report reads results files only (summary.json, provenance.json, CSV, SVG), never study code.
+Every number shown goes through `num` (one formatting rule) and carries its provenance.
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+from collections import defaultdict
+from datetime import datetime, timezone
+from pathlib import Path
+
+import jinja2
+import pandas as pd
+from markupsafe import Markup
+
+from .. import io
+from ..provenance import git_state, machine, package_versions
+from ..studies import STUDIES
+from . import claims as claims_mod
+from .bib import Citations, format_entry, read_bib
+from .math import latex_data_uri
+from .numbering import NAMES, Numbering
+from .numbers import format_number, format_unit
+
+STUDY_ORDER = ["precession", "chandler", "chains", "self_excited"]
+
+
+class ResultsIndex:
+    """Everything under results/: summaries, provenance, timing tables."""
+
+    def __init__(self, results_dir: Path):
+        self.dir = Path(results_dir)
+        self.summaries, self.provenance = {}, {}
+        for study in STUDIES:
+            for path in sorted((self.dir / study).glob("*/summary.json")):
+                scene = path.parent.name
+                self.summaries[(study, scene)] = io.read_json(path)
+                self.provenance[(study, scene)] = io.read_json(path.parent / "provenance.json")
+
+    def studies(self):
+        present = {study for study, _ in self.summaries}
+        return [s for s in STUDY_ORDER if s in present]
+
+    def scenes(self, study):
+        return sorted(scene for s, scene in self.summaries if s == study)
+
+    def summary(self, study, scene):
+        try:
+            return self.summaries[(study, scene)]
+        except KeyError:
+            raise KeyError(f"no results for {study}/{scene} (is workflow/scenes/{study}/{scene}.yaml there?)")
+
+    def entry(self, study, scene, number):
+        numbers = self.summary(study, scene)["numbers"]
+        if number not in numbers:
+            raise KeyError(f"{study}/{scene} has no number {number!r}")
+        return numbers[number]
+
+    def csv(self, study, scene, name, timing=False):
+        folder = self.dir / study / ("timings/" + scene if timing else scene)
+        return pd.read_csv(folder / f"{name}.csv")
+
+    def svg_uri(self, study, scene, name, timing=False):
+        folder = self.dir / study / ("timings/" + scene if timing else scene)
+        data = (folder / f"{name}.svg").read_bytes()
+        return "data:image/svg+xml;base64," + base64.b64encode(data).decode("ascii")
+
+
+class Report:
+    def __init__(self, index: ResultsIndex, root: Path, quick: bool):
+        self.index, self.root, self.quick = index, Path(root), quick
+        self.numbering = Numbering()
+        self.citations = Citations(read_bib(self.root / "report" / "references.bib"))
+        self.claim_results = {}
+        self.env = jinja2.Environment(
+            loader=jinja2.FileSystemLoader(str(self.root / "report")),
+            autoescape=jinja2.select_autoescape(["html", "j2"]),
+            undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True)
+        self.env.filters["fmt"] = lambda v, sig=4: format_number(v, sig)
+        self.env.globals.update(
+            num=self.num, value=self.value, label_number=self.numbering.label, fig=self.fig, table=self.table, eq=self.eq, ref=self.ref, cite=self.cite,
+            claims=self.claims, stability=self.stability, scenes=self.scenes_table,
+            summary=self.index.summary, rebuild=self.rebuild, study_scenes=self.index.scenes)
+
+    # --- numbers ---------------------------------------------------------------------------
+    def _provenance_title(self, study, scene, name):
+        prov = self.index.provenance[(study, scene)]
+        dirty = " (uncommitted changes)" if prov.get("dirty") else ""
+        return (f"{study}/{scene}: {name} · commit {prov.get('commit', 'unknown')[:12]}{dirty} · "
+                f"scene sha256 {prov.get('scene_sha256', '')[:12]} · results/{study}/{scene}/summary.json")
+
+    def num(self, where: str, name: str, i=None, sig: int = 4, unit: bool = True, scale: float = 1.0):
+        """A computed number with its unit, linked to its provenance. where = 'study/scene'."""
+        study, scene = where.split("/")
+        entry = self.index.entry(study, scene, name)
+        value = entry["value"]
+        if i is not None:
+            value = value[i]
+        if scale != 1.0 and value is not None:
+            value = value * scale
+        text = format_number(value, sig)
+        unit_text = format_unit(entry.get("unit")) if unit else ""
+        title = html.escape(self._provenance_title(study, scene, name), quote=True)
+        out = f'<a class="num" href="#prov-{study}-{scene}" title="{title}">{text}</a>'
+        if unit_text:
+            out += f"&#8239;{html.escape(unit_text)}"
+        return Markup(out)
+
+    def value(self, where: str, name: str, value, sig: int = 4):
+        """A value derived from a results number (an element, a maximum), linked to its provenance."""
+        study, scene = where.split("/")
+        title = html.escape(self._provenance_title(study, scene, name), quote=True)
+        return Markup(f'<a class="num" href="#prov-{study}-{scene}" title="{title}">'
+                      f'{format_number(value, sig)}</a>')
+
+    # --- numbered things -------------------------------------------------------------------
+    def ref(self, label: str) -> Markup:
+        kind = label.split(":", 1)[0]
+        return Markup(f'<a class="xref" href="#{html.escape(label)}">{NAMES[kind]}&nbsp;'
+                      f'{self.numbering.ref(label)}</a>')
+
+    def rebuild(self, study, scene=None):
+        return f"snakemake -c all results/{study}/{scene}" if scene else f"snakemake -c all {study}"
+
+    def fig(self, where: str, name: str, label: str, timing: bool = False, extra: str = ""):
+        study, scene = where.split("/")
+        summary = self.index.summary(study, scene)
+        meta = (summary["timings"]["figures"] if timing else summary["figures"])[name]
+        number = self.numbering.label(label)
+        uri = self.index.svg_uri(study, scene, name, timing)
+        caption = html.escape(meta["caption"])
+        if extra:
+            caption += " " + str(extra)
+        note = " Measured times: they vary from run to run." if timing else ""
+        return Markup(
+            f'<figure id="{label}" class="figure"><img src="{uri}" alt="{html.escape(meta["caption"])}">'
+            f'<figcaption><span class="label">Figure {number}.</span> {caption}{note} '
+            f'<span class="source">Scene <code>{study}/{scene}</code>; rebuild: '
+            f'<code>{self.rebuild(study, scene)}</code>.</span></figcaption></figure>')
+
+    def table(self, where: str, name: str, label: str, columns=None, timing: bool = False, sig: int = 4,
+              rename=None, rows=None):
+        study, scene = where.split("/")
+        summary = self.index.summary(study, scene)
+        meta = (summary["timings"]["tables"] if timing else summary["tables"])[name]
+        frame = self.index.csv(study, scene, name, timing)
+        if rows is not None:
+            frame = frame.iloc[rows]
+        if columns:
+            frame = frame[columns]
+        number = self.numbering.label(label)
+        head = "".join(f"<th>{html.escape((rename or {}).get(c, c))}</th>" for c in frame.columns)
+        body = []
+        for _, row in frame.iterrows():
+            cells = []
+            for c in frame.columns:
+                v = row[c]
+                if pd.isna(v):
+                    v = None
+                elif hasattr(v, "item"):
+                    v = v.item()
+                if isinstance(v, float) and v.is_integer() and c in ("n", "k", "mode", "runs", "cycles"):
+                    v = int(v)
+                cells.append(f"<td>{html.escape(format_number(v, sig))}</td>")
+            body.append("<tr>" + "".join(cells) + "</tr>")
+        note = " Measured times: they vary from run to run." if timing else ""
+        return Markup(
+            f'<figure id="{label}" class="table"><figcaption><span class="label">Table {number}.</span> '
+            f'{html.escape(meta["caption"])}{note} <span class="source">Scene <code>{study}/{scene}</code>, '
+            f'<code>results/{study}/{"timings/" if timing else ""}{scene}/{name}.csv</code>.</span></figcaption>'
+            f'<table><thead><tr>{head}</tr></thead><tbody>{"".join(body)}</tbody></table></figure>')
+
+    def eq(self, label: str | None = None, caller=None):
+        """{% call eq("eq:name") %}LaTeX{% endcall %}: a displayed, numbered equation."""
+        latex = " ".join(str(caller()).split())
+        number = self.numbering.label(label) if label else None
+        img = f'<img class="math" src="{latex_data_uri(latex)}" alt="{html.escape(latex)}">'
+        tag = f'<span class="eqno">({number})</span>' if number else ""
+        anchor = f' id="{label}"' if label else ""
+        return Markup(f'<div class="equation"{anchor}>{img}{tag}</div>')
+
+    def cite(self, *keys):
+        links = [f'<a class="cite" href="#bib-{k}">{self.citations.cite(k)}</a>' for k in keys]
+        return Markup("[" + ", ".join(links) + "]")
+
+    # --- per-study blocks ------------------------------------------------------------------
+    def claims(self, study):
+        if study not in self.claim_results:
+            path = self.root / "report" / "claims" / f"{study}.yaml"
+            self.claim_results[study] = claims_mod.evaluate(study, path, self.index.entry) if path.exists() else []
+        return self.claim_results[study]
+
+    def stability(self, study):
+        rows = []
+        for scene in self.index.scenes(study):
+            for case in self.index.summary(study, scene).get("stability", []):
+                rows.append({"scene": scene, **case})
+        return rows
+
+    def scenes_table(self, study):
+        rows = []
+        for scene in self.index.scenes(study):
+            prov = self.index.provenance[(study, scene)]
+            rows.append({"scene": scene, "title": self.index.summary(study, scene)["title"],
+                         "effects": ", ".join(prov.get("effects_simulated", [])),
+                         "seconds": prov.get("wall_seconds")})
+        return rows
+
+    # --- the whole --------------------------------------------------------------------------
+    def context(self):
+        studies = self.index.studies()
+        build_times = defaultdict(float)
+        for (study, _), prov in self.index.provenance.items():
+            build_times[study] += prov.get("wall_seconds", 0.0)
+        first = next(iter(self.index.provenance.values()), {})
+        css = {name: (self.root / "report" / f"{name}.css").read_text(encoding="utf-8")
+               for name in ("report", "screen", "print")}
+        return {
+            "studies": studies, "quick": self.quick, "css": css,
+            "git": git_state(), "packages": package_versions(), "machine": machine(),
+            "results_packages": first.get("packages", {}), "results_commit": first.get("commit", "unknown"),
+            "build_times": dict(build_times), "provenance": self.index.provenance,
+            "generated": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+            "bibliography": lambda: [(i + 1, k, Markup(format_entry(self.citations.entries[k])))
+                                     for i, k in enumerate(self.citations.order)],
+        }
+
+    def render(self) -> str:
+        template = self.env.get_template("report.html.j2")
+        context = self.context()
+        for _ in range(2):
+            self.numbering.start_pass()
+            self.citations.order = []
+            text = template.render(**context)
+        if self.numbering.missing:
+            raise ValueError("unresolved cross-references: " + ", ".join(sorted(self.numbering.missing)))
+        claims_mod.require([r for rs in self.claim_results.values() for r in rs])
+        return text
+
+
+def build_report(results_dir: Path, html_path: Path, pdf_path: Path | None = None, *, quick=False,
+                 root: Path = Path(".")) -> None:
+    report = Report(ResultsIndex(results_dir), root, quick)
+    text = report.render()
+    io.atomic_write_text(html_path, text)
+    if pdf_path is not None:
+        from .pdf import html_to_pdf
+        html_to_pdf(html_path, pdf_path)

@@ -1,0 +1,92 @@
+"""Claims: statements of the source texts checked against computed numbers, declared as data.
+
+report/claims/<study>.yaml lists claims. Each names the source's value and where it stands,
+the computed number (scene and name in that scene's summary.json), an optional modern value,
+and a check: {absolute: tol} or {relative: tol} against the source value, or {at_most: x} /
+{at_least: x} on the computed value. A failing claim with must_hold: true fails the build.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import yaml
+
+
+class ClaimFailure(RuntimeError):
+    pass
+
+
+@dataclass
+class ClaimResult:
+    id: str
+    statement: str
+    study: str
+    scene: str
+    number: str
+    computed: object
+    unit: str
+    source: dict
+    modern: dict | None
+    check: dict
+    deviation: float | None
+    relative_deviation: float | None
+    passed: bool
+    must_hold: bool
+    problem: str = ""
+
+
+def _pick(value, spec):
+    if "index" in spec:
+        return value[spec["index"]]
+    if spec.get("reduce") == "max_abs":
+        return max(abs(v) for v in value if v is not None)
+    return value
+
+
+def evaluate(study: str, claims_file: Path, lookup) -> list[ClaimResult]:
+    """lookup(study, scene, number) -> (entry dict) or raises KeyError."""
+    results = []
+    for claim in yaml.safe_load(Path(claims_file).read_text(encoding="utf-8")) or []:
+        spec, check, source = claim["computed"], claim["check"], claim.get("source", {})
+        problem, computed, unit = "", None, ""
+        try:
+            entry = lookup(study, spec["scene"], spec["number"])
+            computed, unit = _pick(entry["value"], spec), entry.get("unit", "")
+        except (KeyError, IndexError, TypeError) as exc:
+            problem = f"no computed value ({exc})"
+        deviation = relative = None
+        passed = False
+        if computed is not None:
+            reference = source.get("value")
+            if reference is not None and not isinstance(computed, bool):
+                deviation = computed - reference
+                relative = deviation / reference if reference else None
+            if "absolute" in check:
+                passed = abs(deviation) <= check["absolute"]
+            elif "relative" in check:
+                passed = relative is not None and abs(relative) <= check["relative"]
+            elif "at_most" in check:
+                passed = computed <= check["at_most"]
+            elif "at_least" in check:
+                passed = computed >= check["at_least"]
+            elif "equals" in check:
+                passed = computed == check["equals"]
+            else:
+                raise ValueError(f"claim {claim['id']}: unknown check {check}")
+        results.append(ClaimResult(
+            id=claim["id"], statement=claim["statement"], study=study, scene=spec["scene"],
+            number=spec["number"], computed=computed, unit=claim.get("unit", unit), source=source,
+            modern=claim.get("modern"), check=check, deviation=deviation, relative_deviation=relative,
+            passed=passed, must_hold=bool(claim.get("must_hold", False)), problem=problem))
+    return results
+
+
+def require(results: list[ClaimResult]) -> None:
+    failed = [r for r in results if r.must_hold and not r.passed]
+    if failed:
+        lines = [f"claim '{r.id}' ({r.study}/{r.scene}: {r.number}) failed: computed {r.computed}, "
+                 f"source {r.source.get('value')}, check {r.check}{'; ' + r.problem if r.problem else ''}"
+                 for r in failed]
+        raise ClaimFailure("must-hold claims failed:\n  " + "\n  ".join(lines))

@@ -1,0 +1,1 @@
+"""Shared numerical layer: eigen-solvers, integrators, exact references, work-precision harness."""

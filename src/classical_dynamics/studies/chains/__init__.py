@@ -1,0 +1,91 @@
+"""Study: vibrations of chains (Lamb ch. XI-XII; handbook 2.6.1; lecture notes on normal modes).
+
+run(scene, quick) -> Results. The scene's `chain` gives the discretization (continuum, n particles on
+light links or springs, n rigid links), its `effects` the restoring physics (gravity, rotation,
+tension, springs), and its `analysis` what to compute beyond the frequencies.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ...models.chains import EFFECTS, segments_for
+from ...scenes import Scene, SceneError
+
+TITLE = "Vibrations of chains"
+
+# effect -> the ends it needs and the models it is written for
+_EFFECT_ENDS = {"gravity": {"fixed-free"}, "rotation": {"fixed-free"}}
+_LINKS_EFFECTS = {"gravity"}
+_PARTICLE_ONLY_ANALYSES = {"accuracy_cost", "time_domain", "dispersion", "large_n"}
+
+
+def check(path: Path, data: dict) -> None:
+    """Physical consistency the schema cannot express. Raises SceneError (one line)."""
+    chain, effects = data["chain"], data["effects"]
+    model, ends = chain["model"], chain.get("ends", "fixed-free")
+    analysis = data.get("analysis", {})
+    if model == "continuum":
+        if "n" in chain:
+            raise SceneError(path, "chain.n", "no n for a continuum (n is for particles or links)", chain["n"])
+    elif "n" not in chain:
+        raise SceneError(path, "chain.n", f"a number of {model} (integer >= 1)", None, has_got=False)
+    n = chain.get("n")
+    for effect in effects:
+        allowed = _EFFECT_ENDS.get(effect)
+        if allowed and ends not in allowed:
+            raise SceneError(path, "chain.ends", f"{' or '.join(sorted(allowed))} with effect {effect}", ends)
+    if "gravity" in effects and "rotation" in effects:
+        raise SceneError(path, "effects", "gravity or rotation, not both (they describe different set-ups)",
+                         sorted(effects))
+    if model == "links" and set(effects) - _LINKS_EFFECTS:
+        raise SceneError(path, "effects", "only gravity for a chain of rigid links", sorted(effects))
+    if model == "continuum" and "springs" in effects:
+        raise SceneError(path, "effects.springs", "a discrete chain (springs join particles)", "continuum",)
+    if ends == "free-free" and n is not None and n < 2:
+        raise SceneError(path, "chain.n", "at least 2 particles for a free-free chain", n)
+    masses = chain.get("masses_kg")
+    if masses is not None:
+        if model != "particles":
+            raise SceneError(path, "chain.masses_kg", "particles (a list of masses is for a particle chain)", model)
+        if len(masses) != n:
+            raise SceneError(path, "chain.masses_kg", f"a list of n = {n} masses", f"{len(masses)} masses")
+    elif "mass_kg" not in chain:
+        raise SceneError(path, "chain.mass_kg", "the total mass (or masses_kg, one per particle)", None,
+                         has_got=False)
+    springs = effects.get("springs")
+    if springs is not None and isinstance(springs["k_n_per_m"], list) and n is not None:
+        want = segments_for(n, ends)
+        if len(springs["k_n_per_m"]) != want:
+            raise SceneError(path, "effects.springs.k_n_per_m",
+                             f"{want} spring constants for {n} particles, {ends}", len(springs["k_n_per_m"]))
+    for name in analysis:
+        if name in _PARTICLE_ONLY_ANALYSES and model != "particles":
+            raise SceneError(path, f"analysis.{name}", "a particle chain (chain.model: particles)", model)
+    for name in ("rayleigh", "spectral_check"):
+        if name in analysis and (model != "continuum" or set(effects) != {"gravity"}):
+            raise SceneError(path, f"analysis.{name}", "a continuous hanging chain (model continuum, gravity)",
+                             model)
+    if ("accuracy_cost" in analysis or "large_n" in analysis or "time_domain" in analysis) and (
+            set(effects) != {"gravity"} or masses is not None):
+        raise SceneError(path, "analysis", "a uniform hanging chain (gravity only, equal masses) for "
+                         "accuracy_cost, large_n and time_domain", sorted(effects))
+    beta = analysis.get("rayleigh")
+    if beta is not None and beta["beta_min"] >= beta["beta_max"]:
+        raise SceneError(path, "analysis.rayleigh.beta_max", f"a number > beta_min = {beta['beta_min']}",
+                         beta["beta_max"])
+
+
+def run(scene: Scene, quick: bool = False):
+    from ..results import Results          # imported here so that validation stays light
+    from . import continuum, discrete, time_domain
+
+    results = Results("chains", scene.name, scene.title)
+    model = scene.data["chain"]["model"]
+    if model == "continuum":
+        continuum.run(scene, results, quick)
+    else:
+        discrete.run(scene, results, quick)
+        if "time_domain" in scene.data.get("analysis", {}):
+            time_domain.run(scene, results, quick)
+    return results

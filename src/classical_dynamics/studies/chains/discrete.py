@@ -1,0 +1,340 @@
+"""Discrete chains: n particles on light links or springs, and n uniform rigid links."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import scipy.linalg as sla
+
+from ...models.chains import (continuum_frequencies, exact_discrete_frequencies, frequency_unit,
+                              particle_chain, rigid_links_matrices)
+from ...provenance import software_stamp
+from ...solvers import chain_eigen
+from ...solvers.special import bessel_j0_zeros, laguerre_lowest_zero_asymptotic, laguerre_zero_mp
+from ...solvers.timing import min_time
+from ..results import new_figure
+
+SOLVER_LIMITS = {"dense": 2048, "tridiagonal": 8192, "tridiagonal_select": 131072, "pliability": 131072}
+
+
+def _masses(chain, n):
+    return np.asarray(chain["masses_kg"], float) if "masses_kg" in chain else np.full(n, chain["mass_kg"] / n)
+
+
+def _relative(values, reference):
+    reference = np.asarray(reference, float)
+    out = np.full(len(values), np.nan)
+    nonzero = reference > 0
+    out[nonzero] = (np.asarray(values)[nonzero] - reference[nonzero]) / reference[nonzero]
+    return [None if np.isnan(v) else float(v) for v in out]
+
+
+def links_frequencies(n: int, k: int):
+    """omega / sqrt(g/l) for n rigid links (l = n a), lowest k."""
+    K, M = rigid_links_matrices(n)
+    lam = sla.eigh(K, M, eigvals_only=True, subset_by_index=[0, min(k, n) - 1])
+    return np.sqrt(lam * n)
+
+
+def hanging_particles_scaled(n: int, k: int, method: str = "pliability"):
+    """lambda = omega^2 a / g of the uniform hanging chain of n particles (g = a = m = 1)."""
+    s = np.arange(n, 0, -1.0)
+    return chain_eigen.lowest_eigenvalues(s, None, np.ones(n), "fixed-free", k, method)
+
+
+def run(scene, results, quick):
+    data = scene.data
+    chain, effects, analysis = data["chain"], data["effects"], data.get("analysis", {})
+    model, n, k = chain["model"], chain["n"], analysis.get("modes", 5)
+    ends = chain.get("ends", "fixed-free")
+    length = chain["length_m"]
+    masses = _masses(chain, n)
+    total = float(masses.sum())
+    results.number("n", n, model)
+    if model == "links":
+        omega_unit = np.sqrt(effects["gravity"]["g_m_per_s2"] / length)
+        values = links_frequencies(n, k) * omega_unit
+        unit, unit_name, unit_label = omega_unit, "sqrt_g_over_l", "√(g/l)"
+        exact = None
+        shapes = None
+    else:
+        built = particle_chain(n, ends, length, masses, effects)
+        lam, shapes = chain_eigen.modes(built.segment_stiffness, built.diagonal, built.masses, ends, k)
+        zero_floor = 1e-12 * np.max(np.abs(lam)) if lam.size else 0.0
+        clipped = np.where(np.abs(lam) <= zero_floor, 0.0, lam)
+        if np.any(clipped < 0):
+            raise RuntimeError(f"negative eigenvalue {clipped.min():.3g}: the chain is unstable")
+        values = np.sqrt(clipped)
+        unit, unit_name, unit_label = frequency_unit(effects, length, total, built.geometry.spacing_m, masses[0])
+        exact = exact_discrete_frequencies(built, effects, k)
+        if np.any(np.abs(lam) <= zero_floor):
+            # the neutral motion: a translation of a free chain, a rigid turn (y ~ r) of a whirling one
+            rigid = built.geometry.positions_m if "rotation" in effects else np.ones(n)
+            _zero_modes(results, lam, shapes, rigid, "rigid rotation (y ∝ r)" if "rotation" in effects
+                        else "rigid translation")
+    cont = continuum_frequencies(effects, ends, length, total, len(values), n=n)
+    results.number(f"frequencies_{unit_name}", values / unit, unit_label)
+    results.number("frequencies_rad_per_s", values, "rad/s")
+    if cont is not None:
+        results.number("relative_error_vs_continuum", _relative(values, cont), "1")
+    if exact is not None:
+        results.number("relative_error_vs_exact_discrete", _relative(values, exact), "1",
+                       note="against the closed form of the discrete chain")
+    table = {"mode": np.arange(1, len(values) + 1), f"omega_{unit_name}": values / unit}
+    if cont is not None:
+        table[f"continuum_{unit_name}"] = cont / unit
+    if exact is not None:
+        table[f"exact_discrete_{unit_name}"] = exact / unit
+    results.table("frequencies", pd.DataFrame(table),
+                  f"Frequencies of the {n}-{'link' if model == 'links' else 'particle'} chain in units of "
+                  f"{unit_label}, beside the continuum" + (" and the discrete closed form." if exact is not None
+                                                          else "."))
+    if shapes is not None and analysis.get("mode_shapes") and "gravity" in effects:
+        _mode_shapes(results, shapes, n, k)
+    if "convergence" in analysis:
+        _convergence(results, model, analysis["convergence"]["n_values"], quick)
+    if "accuracy_cost" in analysis:
+        _accuracy_cost(results, analysis["accuracy_cost"], quick)
+    if "large_n" in analysis:
+        _large_n(results, analysis["large_n"]["n"], quick)
+    if analysis.get("dispersion"):
+        _dispersion(results, built, values, unit, unit_label)
+
+
+def _zero_modes(results, lam, shapes, rigid, rigid_name):
+    zero = np.argmin(np.abs(lam))
+    v = shapes[:, zero] / np.linalg.norm(shapes[:, zero])
+    rigid = rigid / np.linalg.norm(rigid)
+    results.number("zero_mode_eigenvalue_relative", abs(lam[zero]) / np.max(np.abs(lam)), "1",
+                   note="|lambda_0| / lambda_max before clipping")
+    results.hard_case("zero_mode", f"The zero mode is a {rigid_name}: 1 − |cos| of the angle between "
+                      "them; its eigenvalue is round-off, clipped to 0, not reported as an instability",
+                      float(1 - abs(v @ rigid)), 1e-12)
+    results.hard_case("zero_mode_eigenvalue", "|λ₀| / λmax of the free chain's zero mode",
+                      float(abs(lam[zero]) / np.max(np.abs(lam))), 1e-12)
+
+
+def _mode_shapes(results, shapes, n, k):
+    from scipy import special
+    j = bessel_j0_zeros(3)
+    height = 1 - np.arange(1, n + 1) / n                    # particle heights above the free end, x/l
+    fig, ax = new_figure(4.8, 4.6)
+    x = np.linspace(0, 1, 400)
+    for idx in range(min(3, k, n)):
+        y = shapes[:, idx] / shapes[-1, idx]
+        cont = special.j0(j[idx] * np.sqrt(x))
+        line = ax.plot(cont, x, lw=1, alpha=0.7)[0]
+        ax.plot(y, height, "o", ms=3.5, color=line.get_color(), label=f"mode {idx + 1}")
+    ax.set_xlabel("displacement (free end = 1)")
+    ax.set_ylabel("height above the free end, x / l")
+    ax.legend(fontsize=8)
+    results.figure("mode_shapes", fig, f"Mode shapes of the {n}-particle chain (points) over the continuum's "
+                   "J0 modes (lines).")
+    if n >= 3 and k >= 2:
+        y2 = shapes[:, 1]
+        sign = np.nonzero(np.sign(y2[:-1]) != np.sign(y2[1:]))[0]
+        if sign.size:
+            i = sign[-1]
+            h0, h1 = height[i], height[i + 1]
+            node = h0 + (h1 - h0) * y2[i] / (y2[i] - y2[i + 1])
+            results.number("second_mode_node_x_over_l", node, "x/l from the free end",
+                           note="linear interpolation between particles")
+
+
+def _fit_order(n_values, errors):
+    n_values, errors = np.asarray(n_values, float), np.abs(np.asarray(errors, float))
+    good = errors > 1e-15
+    slope = np.polyfit(np.log(n_values[good]), np.log(errors[good]), 1)[0]
+    return -slope
+
+
+def _convergence(results, model, n_values, quick):
+    n_values = [n for n in n_values if not quick or n <= 1024]
+    exact = bessel_j0_zeros(1)[0] / 2                       # omega_1 / sqrt(g/l)
+    rows = []
+    if model == "links":
+        for n in n_values:
+            w = links_frequencies(n, 1)[0]
+            rows.append({"n": n, "scheme": "rigid links, l = n a", "omega1_sqrt_g_over_l": w,
+                         "relative_error": w / exact - 1})
+        order = _fit_order(n_values, [r["relative_error"] for r in rows])
+        results.number("links_convergence_order", order, "1", note="fitted over n = "
+                       f"{n_values[0]}..{n_values[-1]}")
+        results.number("links_all_above_continuum", all(r["relative_error"] > 0 for r in rows), "bool")
+    else:
+        previous = None
+        for n in n_values:
+            lam = hanging_particles_scaled(n, 1)[0]
+            plain = np.sqrt(n * lam)
+            corrected = np.sqrt((n + 0.5) * lam)
+            rows.append({"n": n, "scheme": "particles, l = n a", "omega1_sqrt_g_over_l": plain,
+                         "relative_error": plain / exact - 1})
+            rows.append({"n": n, "scheme": "particles, l = (n + 1/2) a", "omega1_sqrt_g_over_l": corrected,
+                         "relative_error": corrected / exact - 1})
+            if previous is not None:
+                rich = _richardson(previous, (n, lam))
+                rows.append({"n": n, "scheme": "Richardson, from n/2 and n", "omega1_sqrt_g_over_l": rich,
+                             "relative_error": rich / exact - 1})
+            previous = (n, lam)
+        frame = pd.DataFrame(rows)
+        for scheme, name in (("particles, l = n a", "plain"), ("particles, l = (n + 1/2) a", "end_corrected"),
+                             ("Richardson, from n/2 and n", "richardson")):
+            part = frame[frame.scheme == scheme]
+            tail = part[part.n >= 16] if name != "richardson" else part[(part.n >= 16) & (part.n <= 256)]
+            results.number(f"{name}_convergence_order", _fit_order(tail.n, tail.relative_error), "1",
+                           note=f"least-squares slope of log|error| against log n, n = {int(tail.n.min())}.."
+                                f"{int(tail.n.max())}")
+        rich = frame[frame.scheme == "Richardson, from n/2 and n"]
+        reach = rich[np.abs(rich.relative_error) <= 1e-10]
+        results.number("richardson_n_for_1e-10", int(reach.n.min()) if len(reach) else None, "particles",
+                       note="smallest n (with n/2) whose Richardson value of omega_1 is within 1e-10")
+        results.number("plain_all_below_continuum",
+                       bool((frame[frame.scheme == "particles, l = n a"].relative_error < 0).all()), "bool")
+    frame = pd.DataFrame(rows)
+    results.table("convergence", frame, "Gravest frequency of the discrete chain against n, with its "
+                  "relative error against the continuum (j₀₁/2)√(g/l).")
+    fig, ax = new_figure(5.8, 4.0)
+    for scheme, part in frame.groupby("scheme", sort=False):
+        ax.loglog(part.n, np.abs(part.relative_error), "o-", ms=3.5, label=scheme)
+    ax.set_xlabel("n")
+    ax.set_ylabel("|relative error of ω₁|")
+    ax.legend(fontsize=8)
+    results.figure("convergence", fig, "Convergence of the gravest frequency to the continuum's: "
+                   "first order with l = na, second with the end correction l = (n + ½)a, fourth after "
+                   "Richardson extrapolation (rigid links: second order, from above).")
+
+
+def _richardson(coarse, fine):
+    """Eliminate the 1/N^2 term of (n + 1/2) lambda_1(n), N = n + 1/2; return omega_1/sqrt(g/l)."""
+    (n1, lam1), (n2, lam2) = coarse, fine
+    N1, N2 = n1 + 0.5, n2 + 0.5
+    e1, e2 = N1 * lam1, N2 * lam2
+    return np.sqrt((N2**2 * e2 - N1**2 * e1) / (N2**2 - N1**2))
+
+
+def exact_lambda1(n: int) -> float:
+    """The lowest zero of L_n to 30 digits (mpmath Newton) for n <= 1024, else Tricomi's expansion."""
+    guess = laguerre_lowest_zero_asymptotic(n)
+    return float(laguerre_zero_mp(n, guess)) if n <= 1024 else float(guess)
+
+
+def _accuracy_cost(results, spec, quick):
+    n_values = [n for n in spec["n_values"] if not quick or n <= 4096]
+    repeats = 3 if quick else spec.get("repeats", 10)
+    j1 = bessel_j0_zeros(1)[0] / 2
+    rows = []
+    for n in n_values:
+        lam_exact = exact_lambda1(n)
+        for method in chain_eigen.METHODS:
+            if n > SOLVER_LIMITS[method]:
+                continue
+            seconds, lam, runs = min_time(lambda: hanging_particles_scaled(n, 5, method)[0],
+                                          repeats=repeats, budget_s=1.0 if quick else 3.0)
+            rows.append({"n": n, "solver": method, "seconds": seconds, "runs": runs,
+                         "algebraic_relative_error": abs(lam / lam_exact - 1),
+                         "discretization_relative_error": abs(np.sqrt((n + 0.5) * lam) / j1 - 1)})
+    frame = pd.DataFrame(rows)
+    results.timing_table("solver_cost", frame, "Lowest five eigenvalues of the n-particle hanging chain: "
+                         "wall time (min over repeats) and the relative error of λ₁ against the exact "
+                         f"Laguerre zero, by solver. {software_stamp()}.")
+    fig, ax = new_figure(5.8, 4.0)
+    for method, part in frame.groupby("solver", sort=False):
+        ax.loglog(part.n, part.seconds, "o-", ms=3.5, label=method)
+    ax.set_xlabel("n")
+    ax.set_ylabel("wall time (s)")
+    ax.legend(fontsize=8)
+    results.timing_figure("solver_cost", fig, "Time for the lowest five modes against n, by solver.")
+    fig, ax = new_figure(5.8, 4.0)
+    for method, part in frame.groupby("solver", sort=False):
+        ax.loglog(part.n, np.maximum(part.algebraic_relative_error, 1e-17), "o-", ms=3.5, label=method)
+    ax.loglog(frame.n.unique(), 2.8 * frame.n.unique() ** 2 * np.finfo(float).eps, "k:", lw=1,
+              label="κ·eps ≈ 2.8 n²·eps")
+    ax.set_xlabel("n")
+    ax.set_ylabel("relative error of λ₁ (floored at 1e-17)")
+    ax.legend(fontsize=8)
+    results.figure("solver_accuracy", fig, "Relative error of the lowest eigenvalue against the exact "
+                   "Laguerre zero: the standard solvers lose accuracy like the condition number n²·eps; the "
+                   "pliability solver keeps it.")
+    for method in chain_eigen.METHODS:
+        part = frame[frame.solver == method]
+        results.number(f"{method}_worst_relative_error_lambda1", float(part.algebraic_relative_error.max()), "1",
+                       note=f"n up to {int(part.n.max())}")
+    _cost_to_target(results, spec["targets"], quick)
+
+
+def _cost_to_target(results, targets, quick):
+    """Smallest n and the time to reach each target error by plain n, end-corrected n, Richardson."""
+    j1 = bessel_j0_zeros(1)[0] / 2
+    top = 12 if quick else 17
+    ns = [2**p for p in range(1, top + 1)]
+    lam, seconds = {}, {}
+    for n in ns:
+        seconds[n], lam[n], _ = min_time(lambda: hanging_particles_scaled(n, 1)[0], repeats=3, budget_s=0.5)
+    errors = {
+        "plain n (l = na)": {n: abs(np.sqrt(n * lam[n]) / j1 - 1) for n in ns},
+        "end-corrected (l = (n + ½)a)": {n: abs(np.sqrt((n + 0.5) * lam[n]) / j1 - 1) for n in ns},
+        "Richardson (n/2 and n)": {n: abs(_richardson((n // 2, lam[n // 2]), (n, lam[n])) / j1 - 1)
+                                   for n in ns[1:]},
+    }
+    cost = {"plain n (l = na)": lambda n: seconds[n], "end-corrected (l = (n + ½)a)": lambda n: seconds[n],
+            "Richardson (n/2 and n)": lambda n: seconds[n] + seconds[n // 2]}
+    orders = {"plain n (l = na)": 1.0, "end-corrected (l = (n + ½)a)": 2.0, "Richardson (n/2 and n)": 4.0}
+    rows = []
+    for scheme, err in errors.items():
+        for target in targets:
+            hit = [n for n in sorted(err) if err[n] <= target]
+            if hit:
+                n = hit[0]
+                rows.append({"scheme": scheme, "target": target, "n": n, "error": err[n],
+                             "seconds": cost[scheme](n), "measured": True})
+            else:
+                # beyond the sweep: extrapolate n from the largest run along the scheme's known order
+                n_last = max(err)
+                n_need = n_last * (err[n_last] / target) ** (1 / orders[scheme])
+                rows.append({"scheme": scheme, "target": target, "n": float(n_need), "error": None,
+                             "seconds": None, "measured": False})
+    frame = pd.DataFrame(rows)
+    results.timing_table("cost_to_target", frame, "What it costs to reach a given relative error of ω₁ "
+                         "against the continuum, with the pliability solver: smallest n = 2^p that reaches it "
+                         "and its time; where no n up to 2^" + str(top) + " reaches it, the n the error law "
+                         f"predicts (not run). {software_stamp()}.")
+
+
+def _large_n(results, n, quick):
+    """The lowest mode of a very long chain: relative accuracy survives only in the factored form."""
+    n = min(n, 20000) if quick else n
+    reference = laguerre_lowest_zero_asymptotic(n)   # error O(n^-5): below 1e-20 relative here
+    measured = {}
+    for method in ("tridiagonal_select", "pliability"):
+        lam = hanging_particles_scaled(n, 1, method)[0]
+        measured[method] = abs(lam / reference - 1)
+        results.number(f"large_n_{method}_relative_error", measured[method], "1", note=f"n = {n}")
+    results.hard_case("large_n_lowest_mode", f"Lowest mode of an n = {n} chain to 1e-12 relative "
+                      "(pliability solver against Tricomi's expansion of the Laguerre zero)",
+                      measured["pliability"], 1e-12)
+    results.notes.append(f"At n = {n} LAPACK's tridiagonal solver gives λ₁ to "
+                         f"{measured['tridiagonal_select']:.1e} relative: the n²·eps loss the pliability "
+                         "form avoids.")
+
+
+def _dispersion(results, built, values, unit, unit_label):
+    g = built.geometry
+    if g.ends != "fixed-fixed":
+        return
+    n, a = g.n, g.spacing_m
+    stiffness, m = built.segment_stiffness[0], g.masses_kg[0]
+    q = np.arange(1, n + 1) * np.pi / ((n + 1) * a)
+    law = 2 * np.sqrt(stiffness / m) * np.abs(np.sin(q * a / 2))
+    qq = np.linspace(0, np.pi / a, 300)
+    fig, ax = new_figure(5.6, 3.6)
+    ax.plot(qq * a / np.pi, 2 * np.sqrt(stiffness / m) * np.sin(qq * a / 2) / unit, label="ω = 2√(k/m)|sin(qa/2)|")
+    ax.plot(qq * a / np.pi, qq * a * np.sqrt(stiffness / m) / unit, "--", lw=0.9, label="continuum, ω = qa√(k/m)")
+    ax.plot(q[: len(values)] * a / np.pi, values / unit, "o", ms=4, label="computed modes (lowest)")
+    ax.set_xlabel("wavenumber qa / π")
+    ax.set_ylabel(f"ω / {unit_label}")
+    ax.legend(fontsize=8)
+    results.figure("dispersion", fig, "Dispersion of the discrete chain: the computed frequencies lie on "
+                   "ω = 2√(k/m)|sin(qa/2)|, below the continuum line, up to the cut-off 2√(k/m).")
+    results.number("dispersion_max_relative_deviation",
+                   float(np.max(np.abs(values - law[: len(values)]) / law[: len(values)])), "1")
+    results.number("cutoff_over_unit", 2 * np.sqrt(stiffness / m) / unit, unit_label)

@@ -1,0 +1,114 @@
+"""What a study run produces, and how it is written (results contract of design.md).
+
+results/<study>/<scene>/summary.json, provenance.json, *.csv, *.svg     deterministic
+results/<study>/timings/<scene>/*.csv, *.svg                            measured times
+"""
+
+from __future__ import annotations
+
+import shutil
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from .. import io  # noqa: E402
+
+
+@dataclass
+class Results:
+    study: str
+    scene: str
+    title: str
+    numbers: dict = field(default_factory=dict)
+    tables: dict = field(default_factory=dict)
+    figures: dict = field(default_factory=dict)
+    stability: list = field(default_factory=list)
+    timing_tables: dict = field(default_factory=dict)
+    timing_figures: dict = field(default_factory=dict)
+    notes: list = field(default_factory=list)
+
+    def number(self, name, value, unit, *, reference=None, tolerance=None, note=None):
+        entry = {"value": value, "unit": unit}
+        if reference is not None:
+            entry["reference"] = reference
+        if tolerance is not None:
+            entry["tolerance"] = tolerance
+        if note:
+            entry["note"] = note
+        self.numbers[name] = entry
+
+    def table(self, name, frame, caption):
+        self.tables[name] = (frame, caption)
+
+    def figure(self, name, fig, caption):
+        self.figures[name] = (fig, caption)
+
+    def timing_table(self, name, frame, caption):
+        self.timing_tables[name] = (frame, caption)
+
+    def timing_figure(self, name, fig, caption):
+        self.timing_figures[name] = (fig, caption)
+
+    def hard_case(self, name, description, measured, bound, unit=""):
+        """A numerically hard case: what was measured against the bound it must meet."""
+        self.stability.append({"name": name, "description": description, "measured": measured,
+                               "bound": bound, "unit": unit, "holds": bool(abs(measured) <= bound)})
+
+    def summary(self) -> dict:
+        return {
+            "study": self.study, "scene": self.scene, "title": self.title,
+            "numbers": self.numbers,
+            "tables": {k: {"file": f"{k}.csv", "caption": c, "columns": list(f.columns)}
+                       for k, (f, c) in self.tables.items()},
+            "figures": {k: {"file": f"{k}.svg", "caption": c} for k, (_, c) in self.figures.items()},
+            "timings": {
+                "tables": {k: {"file": f"{k}.csv", "caption": c} for k, (_, c) in self.timing_tables.items()},
+                "figures": {k: {"file": f"{k}.svg", "caption": c} for k, (_, c) in self.timing_figures.items()},
+            },
+            "stability": self.stability,
+            "notes": self.notes,
+        }
+
+    def write(self, out_dir: Path, timings_dir: Path, provenance: dict, timing_rows: dict) -> None:
+        """Write everything into staging folders, then move both into place."""
+        out_dir, timings_dir = Path(out_dir), Path(timings_dir)
+        staged = []
+        for target, files in ((out_dir, self._result_files(provenance)),
+                              (timings_dir, self._timing_files(timing_rows))):
+            target.parent.mkdir(parents=True, exist_ok=True)
+            staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.", dir=target.parent))
+            for name, data in files.items():
+                (staging / name).write_bytes(data)       # ordinary permissions: the folder is new
+            staged.append((staging, target))
+        try:
+            for staging, target in staged:
+                io.replace_directory(staging, target)
+        finally:
+            for staging, _ in staged:
+                shutil.rmtree(staging, ignore_errors=True)
+        plt.close("all")
+
+    def _result_files(self, provenance):
+        files = {"summary.json": io.dumps_json(self.summary()).encode(),
+                 "provenance.json": io.dumps_json(provenance).encode()}
+        files.update({f"{k}.csv": io.csv_text(f).encode() for k, (f, _) in self.tables.items()})
+        files.update({f"{k}.svg": io.svg_bytes(f) for k, (f, _) in self.figures.items()})
+        return files
+
+    def _timing_files(self, timing_rows):
+        import pandas as pd
+        files = {f"{k}.csv": io.csv_text(f).encode() for k, (f, _) in self.timing_tables.items()}
+        files.update({f"{k}.svg": io.svg_bytes(f) for k, (f, _) in self.timing_figures.items()})
+        files["run.csv"] = io.csv_text(pd.DataFrame([timing_rows])).encode()
+        return files
+
+
+def new_figure(width=6.0, height=3.8):
+    fig, ax = plt.subplots(figsize=(width, height), layout="constrained")
+    ax.grid(True, which="both", alpha=0.25, linewidth=0.6)
+    return fig, ax

@@ -1,0 +1,70 @@
+# Shared by every study: the list of studies, scene discovery, validation before anything runs,
+# and the one rule that runs a scene.
+
+import sys
+from pathlib import Path
+
+from classical_dynamics.scenes import SceneError
+from classical_dynamics.studies import STUDIES, validate
+
+PY = sys.executable
+QUICK = "--quick" if int(config.get("quick", 0)) else ""
+PACKAGE = Path("src/classical_dynamics")
+
+
+def scenes(study):
+    """Every scene file of a study: dropping a YAML file in workflow/scenes/<study>/ adds it."""
+    return sorted(p.stem for p in Path("workflow/scenes", study).glob("*.yaml"))
+
+
+def scene_outputs(study):
+    return expand("results/{study}/{scene}", study=study, scene=scenes(study))
+
+
+def code(*parts):
+    """Source files a result depends on, so that changing them reruns it."""
+    files = []
+    for part in parts:
+        path = PACKAGE / part
+        files += sorted(str(p) for p in path.rglob("*.py")) if path.is_dir() else [str(path)]
+    return files
+
+
+SHARED_CODE = code("solvers", "models", "scenes", "io.py", "provenance.py", "cli.py",
+                   "studies/__init__.py", "studies/results.py")
+
+
+# Validate every scene of every study before any job is scheduled: a bad scene stops the
+# build with one line (file, field, expectation) and nothing under results/ is touched.
+for _study in STUDIES:
+    for _scene in sorted(Path("workflow/scenes", _study).glob("*")):
+        try:
+            validate(_study, _scene, f"workflow/schemas/{_study}.schema.yaml")
+        except SceneError as _error:
+            sys.stderr.write(f"{_error}\n")
+            sys.exit(1)
+
+
+wildcard_constraints:
+    study="|".join(STUDIES),
+    scene="[a-z0-9_]+",
+
+
+rule scene:
+    """Run one scene of one study: results/<study>/<scene>/ and its timings."""
+    input:
+        scene="workflow/scenes/{study}/{scene}.yaml",
+        schema="workflow/schemas/{study}.schema.yaml",
+        code=lambda wc: SHARED_CODE + code(f"studies/{wc.study}"),
+    output:
+        results=directory("results/{study}/{scene}"),
+        timings=directory("results/{study}/timings/{scene}"),
+    params:
+        quick=QUICK,
+    log:
+        "results/logs/{study}/{scene}.log",
+    conda:
+        "../envs/pipeline.yaml"
+    shell:
+        "{PY} -m classical_dynamics run {wildcards.study} {input.schema} {input.scene}"
+        " {output.results} {output.timings} {params.quick} > {log} 2>&1"

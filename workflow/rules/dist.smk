@@ -1,0 +1,23 @@
+# A citable archive: the report, every summary, table and figure, with a SHA256SUMS manifest.
+
+import tomllib
+
+with open("pyproject.toml", "rb") as _handle:
+    _project = tomllib.load(_handle)["project"]
+ARCHIVE = f"results/dist/{_project['name']}-{_project['version']}.tar.gz"
+
+
+rule dist:
+    input:
+        rules.report_html.output,
+        rules.report_pdf.output,
+        [out for study in STUDIES for out in scene_outputs(study)],
+    output:
+        archive=ARCHIVE,
+        sums="results/dist/SHA256SUMS",
+    log:
+        "results/logs/dist.log",
+    conda:
+        "../envs/pipeline.yaml"
+    shell:
+        "{PY} -m classical_dynamics dist results {output.archive} > {log} 2>&1"

@@ -1,0 +1,38 @@
+# The report: every study's results through the Jinja templates into HTML, then the same HTML to PDF.
+
+
+rule report_html:
+    input:
+        results=[out for study in STUDIES for out in scene_outputs(study)],
+        templates=sorted(str(p) for p in Path("report").rglob("*") if p.is_file()),
+        code=code("report"),
+    output:
+        "results/report.html",
+    params:
+        quick=QUICK,
+    log:
+        "results/logs/report_html.log",
+    conda:
+        "../envs/pipeline.yaml"
+    shell:
+        "{PY} -m classical_dynamics report results {output} {params.quick} 2>&1 | tee {log}"
+
+
+rule report_pdf:
+    input:
+        "results/report.html",
+    output:
+        "results/report.pdf",
+    log:
+        "results/logs/report_pdf.log",
+    conda:
+        "../envs/pipeline.yaml"
+    shell:
+        "{PY} -m classical_dynamics.report.pdf {input} {output} > {log} 2>&1"
+
+
+rule report:
+    """The HTML and the PDF."""
+    input:
+        rules.report_html.output,
+        rules.report_pdf.output,
