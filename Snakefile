@@ -11,6 +11,7 @@ configfile: "workflow/config.yaml"
 
 
 include: "workflow/rules/common.smk"
+include: "workflow/rules/scenes.smk"
 # 1. Vibrations of chains: the hanging chain, discrete chains, strings, springs, rotating chains
 include: "workflow/rules/chains.smk"
 # 2. Precession of the equinoxes        (to come: issue 5)

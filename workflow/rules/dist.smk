@@ -15,9 +15,11 @@ rule dist:
     output:
         archive=ARCHIVE,
         sums="results/dist/SHA256SUMS",
+    params:
+        python=PY,
     log:
         "results/logs/dist.log",
     conda:
         "../envs/pipeline.yaml"
     shell:
-        "{PY} -m classical_dynamics dist results {output.archive} > {log} 2>&1"
+        "{params.python} -m classical_dynamics dist results {output.archive} > {log} 2>&1"

@@ -9,13 +9,14 @@ rule report_html:
     output:
         "results/report.html",
     params:
+        python=PY,
         quick=QUICK,
     log:
         "results/logs/report_html.log",
     conda:
         "../envs/pipeline.yaml"
     shell:
-        "{PY} -m classical_dynamics report results {output} {params.quick} 2>&1 | tee {log}"
+        "{params.python} -m classical_dynamics report results {output} {params.quick} 2>&1 | tee {log}"
 
 
 rule report_pdf:
@@ -23,12 +24,14 @@ rule report_pdf:
         "results/report.html",
     output:
         "results/report.pdf",
+    params:
+        python=PY,
     log:
         "results/logs/report_pdf.log",
     conda:
         "../envs/pipeline.yaml"
     shell:
-        "{PY} -m classical_dynamics.report.pdf {input} {output} > {log} 2>&1"
+        "{params.python} -m classical_dynamics.report.pdf {input} {output} > {log} 2>&1"
 
 
 rule report:

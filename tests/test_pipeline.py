@@ -1,0 +1,167 @@
+"""The pipeline end to end: real Snakemake runs on copies of this repository (quick=1)."""
+
+import hashlib
+import json
+import re
+import shutil
+import tarfile
+
+import pytest
+import yaml
+
+from .conftest import copy_repository, snakemake
+
+pytestmark = pytest.mark.slow
+
+HANGING = ["hanging_continuum", "hanging_particles", "hanging_links", "hanging_time_domain"]
+
+
+def tree_digest(folder):
+    return {str(p.relative_to(folder)): hashlib.sha256(p.read_bytes()).hexdigest()
+            for p in sorted(folder.rglob("*")) if p.is_file()}
+
+
+def result_files(repo):
+    """The deterministic results: everything under results/<study>/<scene>/ except provenance."""
+    return {k: v for k, v in tree_digest(repo / "results").items()
+            if re.match(r"^[a-z_]+/(?!timings/)[a-z0-9_]+/", k) and not k.endswith("provenance.json")}
+
+
+def job_counts(dry_run_output):
+    """{rule: count} from the 'Job stats' table of a dry run."""
+    counts, in_table = {}, False
+    for line in dry_run_output.splitlines():
+        if line.startswith("job") and "count" in line:
+            in_table = True
+            continue
+        if in_table:
+            parts = line.split()
+            if len(parts) == 2 and parts[1].isdigit():
+                if parts[0] != "total":
+                    counts[parts[0]] = int(parts[1])
+            elif parts and not set(line.strip()) <= {"-", " "}:
+                break
+    return counts
+
+
+@pytest.fixture()
+def scratch(built_repo, tmp_path):
+    """A private copy of the built repository (results and Snakemake's records included)."""
+    target = tmp_path / "repo"
+    shutil.copytree(built_repo, target, symlinks=True)
+    return target
+
+
+def test_build_writes_the_results_contract(built_repo):
+    results = built_repo / "results"
+    assert (results / "report.html").stat().st_size > 10_000
+    assert (results / "report.pdf").read_bytes()[:5] == b"%PDF-"
+    scenes = sorted(p.stem for p in (built_repo / "workflow/scenes/chains").glob("*.yaml"))
+    for scene in scenes:
+        folder = results / "chains" / scene
+        summary = json.loads((folder / "summary.json").read_text())
+        provenance = json.loads((folder / "provenance.json").read_text())
+        for entry in summary["numbers"].values():
+            assert set(entry) >= {"value", "unit"}
+        for name in summary["figures"]:
+            assert (folder / f"{name}.svg").exists()
+        for name in summary["tables"]:
+            assert (folder / f"{name}.csv").exists()
+        assert (results / "chains" / "timings" / scene / "run.csv").exists()
+        for key in ("commit", "dirty", "packages", "machine", "scene_sha256", "started", "finished",
+                    "wall_seconds", "cpu_seconds", "effects_simulated"):
+            assert key in provenance
+        assert provenance["effects_simulated"] == sorted(
+            yaml.safe_load((built_repo / f"workflow/scenes/chains/{scene}.yaml").read_text())["effects"])
+    for scene in HANGING:
+        numbers = json.loads((results / "chains" / scene / "summary.json").read_text())["numbers"]
+        assert len(numbers["frequencies_sqrt_g_over_l"]["value"]) == 5
+        assert len(numbers["relative_error_vs_continuum"]["value"]) == 5
+        assert numbers["n"]["value"] == (0 if scene == "hanging_continuum" else
+                                         yaml.safe_load((built_repo / f"workflow/scenes/chains/{scene}.yaml")
+                                                        .read_text())["chain"]["n"])
+
+
+def test_nothing_to_do_after_a_build(built_repo):
+    out = snakemake(built_repo, "-n", "--config", "quick=1")
+    assert "Nothing to be done" in out.stdout + out.stderr
+
+
+def test_lint_reports_nothing(built_repo):
+    out = snakemake(built_repo, "--lint", check=False)
+    assert out.returncode == 0, out.stdout + out.stderr
+    assert "Lints for" not in out.stdout + out.stderr
+
+
+def test_editing_one_scene_reruns_that_scene_and_the_report_only(scratch):
+    scene = scratch / "workflow/scenes/chains/loaded_string.yaml"
+    scene.write_text(scene.read_text().replace("newton: 1.0", "newton: 2.0"))
+    out = snakemake(scratch, "-n", "--config", "quick=1")
+    assert job_counts(out.stdout) == {"scene": 1, "report_html": 1, "report_pdf": 1, "all": 1}
+    assert "results/chains/loaded_string" in out.stdout
+    snakemake(scratch, "-c", "2", "--config", "quick=1")
+    summary = json.loads((scratch / "results/chains/loaded_string/summary.json").read_text())
+    assert summary["numbers"]["frequencies_rad_per_s"]["value"][0] == pytest.approx(
+        2 ** 0.5 * 2.985221, rel=1e-5)         # frequencies scale as sqrt(P)
+
+
+def test_a_new_scene_file_is_picked_up_with_no_rule_edit(scratch):
+    source = scratch / "workflow/scenes/chains/loaded_string.yaml"
+    (scratch / "workflow/scenes/chains/short_string.yaml").write_text(
+        source.read_text().replace("n: 10", "n: 4").replace("modes: 10", "modes: 4"))
+    out = snakemake(scratch, "-n", "--config", "quick=1")
+    assert "results/chains/short_string" in out.stdout
+    snakemake(scratch, "-c", "2", "--config", "quick=1")
+    assert "short_string" in (scratch / "results/report.html").read_text()
+
+
+@pytest.mark.parametrize("text,field", [
+    ("title: x\nchain: {model: particles, n: 3, length_m: -1, mass_kg: 1}\neffects: {gravity: {g_m_per_s2: 9.8}}\n",
+     "chain.length_m"),
+    ("title: x\nchain: {model: particles, n: 3, length_m: 1, mass_kg: 1}\neffects: {magic: {}}\n", "effects.magic"),
+    ("title: [unclosed\n", "YAML at line"),
+])
+def test_a_bad_scene_stops_the_build_and_touches_nothing(scratch, text, field):
+    before = tree_digest(scratch / "results")
+    (scratch / "workflow/scenes/chains/broken.yaml").write_text(text)
+    out = snakemake(scratch, "-c", "2", "--config", "quick=1", check=False)
+    assert out.returncode != 0
+    lines = [line for line in (out.stdout + out.stderr).splitlines() if "broken.yaml" in line]
+    assert len(lines) == 1 and field in lines[0]
+    assert tree_digest(scratch / "results") == before
+
+
+def test_a_failing_must_hold_claim_fails_the_build_naming_it(scratch):
+    claims = scratch / "report/claims/chains.yaml"
+    claims.write_text(claims.read_text().replace("check: {absolute: 5.0e-4}\n  must_hold: true",
+                                                 "check: {absolute: 1.0e-9}\n  must_hold: true", 1))
+    out = snakemake(scratch, "-c", "1", "--config", "quick=1", check=False)
+    assert out.returncode != 0
+    assert "claim 'lamb_gravest_period'" in out.stdout + out.stderr
+    assert not (scratch / "results/report.html").exists()
+
+
+def test_two_clean_builds_give_identical_results(built_repo, tmp_path):
+    other = copy_repository(tmp_path / "again")
+    snakemake(other, "-c", "2", "results/chains/hanging_particles", "results/chains/hanging_continuum",
+              "results/chains/hanging_time_domain", "results/chains/spring_chain", "--config", "quick=1")
+    mine = {k: v for k, v in result_files(built_repo).items() if k in result_files(other)}
+    assert len(mine) > 10
+    assert mine == result_files(other)
+
+
+def test_dist_archive_with_checksums(scratch):
+    snakemake(scratch, "-c", "1", "dist", "--config", "quick=1")
+    archives = list((scratch / "results/dist").glob("classical-dynamics-*.tar.gz"))
+    assert len(archives) == 1
+    with tarfile.open(archives[0]) as tar:
+        names = tar.getnames()
+        prefix = names[0].split("/")[0]
+        sums = tar.extractfile(f"{prefix}/SHA256SUMS").read().decode().splitlines()
+        assert f"{prefix}/report.pdf" in names and f"{prefix}/report.html" in names
+        assert any(n.endswith("chains/hanging_particles/summary.json") for n in names)
+        for line in sums:
+            digest, name = line.split("  ")
+            assert hashlib.sha256(tar.extractfile(name).read()).hexdigest() == digest
+    outer = (scratch / "results/dist/SHA256SUMS").read_text().splitlines()[-1]
+    assert outer.split("  ")[0] == hashlib.sha256(archives[0].read_bytes()).hexdigest()

@@ -1,0 +1,71 @@
+"""The report as a reader meets it: the HTML in headless Chromium, the PDF rendered to page images."""
+
+import re
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+from PIL import Image
+
+pytestmark = pytest.mark.slow
+
+CHROMIUM = "/usr/bin/chromium"
+FLAGS = ["--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
+         "--disable-component-update", "--disable-sync"]
+
+
+def test_html_in_a_real_browser(built_repo, tmp_path):
+    from playwright.sync_api import sync_playwright
+    html = built_repo / "results/report.html"
+    errors, failed, requests = [], [], []
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        page = browser.new_page(viewport={"width": 1200, "height": 1000})
+        page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
+        page.on("pageerror", lambda e: errors.append(str(e)))
+        page.on("requestfailed", lambda r: failed.append(r.url))
+        page.on("request", lambda r: requests.append(r.url))
+        page.goto(html.as_uri(), wait_until="load")
+        images = page.evaluate("Array.from(document.images).map(i => [i.complete, i.naturalWidth, i.alt])")
+        figures = page.evaluate("document.querySelectorAll('figure.figure img').length")
+        numbers = page.evaluate("Array.from(document.querySelectorAll('a.num')).map(a => a.title)")
+        page.screenshot(path=str(tmp_path / "top.png"))
+        page.locator("#chains-results").scroll_into_view_if_needed()
+        page.screenshot(path=str(tmp_path / "results.png"))
+        browser.close()
+    assert errors == [] and failed == []
+    assert [u for u in requests if not u.startswith(("file:", "data:"))] == []     # works offline
+    assert figures >= 10 and all(complete and width > 0 for complete, width, _ in images)
+    assert len(numbers) > 50 and all("commit" in t and "sha256" in t for t in numbers)
+    for shot in ("top.png", "results.png"):
+        pixels = np.asarray(Image.open(tmp_path / shot).convert("L"), dtype=float)
+        assert pixels.std() > 10                                                   # not blank
+
+
+def test_html_has_resolved_numbering(built_repo):
+    text = (built_repo / "results/report.html").read_text()
+    assert "&nbsp;?</a>" not in text
+    labels = re.findall(r'<span class="label">Figure (\d+)\.</span>', text)
+    assert labels == [str(i) for i in range(1, len(labels) + 1)] and len(labels) >= 10
+    eqs = re.findall(r'<span class="eqno">\((\d+)\)</span>', text)
+    assert eqs == [str(i) for i in range(1, len(eqs) + 1)]
+
+
+def test_pdf_pages(built_repo, tmp_path):
+    pdf = built_repo / "results/report.pdf"
+    subprocess.run(["pdftoppm", "-png", "-r", "40", str(pdf), str(tmp_path / "page")], check=True)
+    pages = sorted(tmp_path.glob("page-*.png"))
+    assert len(pages) >= 10
+    inked = [np.asarray(Image.open(p).convert("L")).min() < 100 for p in pages]
+    assert all(inked)
+    text = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True, text=True, check=True).stdout
+    html = (built_repo / "results/report.html").read_text()
+    for number in re.findall(r'<span class="label">Figure (\d+)\.</span>', html):
+        assert f"Figure {number}." in text                                         # every figure, same number
+    assert "Contents" in text and "References" in text and "Vibrations of chains" in text
+    # page numbers: the contents page names the page of the chains chapter
+    assert re.search(r"Vibrations of chains\s*\.*\s*\d+", text)
+    # figures are drawn: a figure page has much more ink than a text page
+    heavy = [np.mean(np.asarray(Image.open(p).convert("L")) < 200) for p in pages]
+    assert max(heavy) > 0.04

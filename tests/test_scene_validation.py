@@ -1,0 +1,131 @@
+"""Bad scenes stop before any computation: one line naming file, field and expectation; nothing written."""
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import yaml
+
+from classical_dynamics.models.chains import EFFECTS, particle_chain
+from classical_dynamics.scenes import SceneError
+from classical_dynamics.studies import load_schema, validate
+
+from .conftest import ROOT, SCHEMA
+
+GOOD = {
+    "title": "ten particles",
+    "chain": {"model": "particles", "n": 10, "ends": "fixed-free", "length_m": 1.0, "mass_kg": 1.0},
+    "effects": {"gravity": {"g_m_per_s2": 9.81}},
+}
+
+
+def write(tmp_path, data, name="scene.yaml"):
+    path = tmp_path / name
+    path.write_text(data if isinstance(data, str) else yaml.safe_dump(data))
+    return path
+
+
+def edited(**changes):
+    data = yaml.safe_load(yaml.safe_dump(GOOD))
+    for dotted, value in changes.items():
+        *parents, last = dotted.split("__")
+        target = data
+        for p in parents:
+            target = target[p]
+        if value is KeyError:
+            del target[last]
+        else:
+            target[last] = value
+    return data
+
+
+BAD = [
+    ("unknown key", edited(colour="red"), "colour", "no such key"),
+    ("unknown nested key", edited(chain__lenght_m=1.0), "chain.lenght_m", "no such key"),
+    ("wrong type", edited(chain__n="ten"), "chain.n", "expected an integer"),
+    ("negative length", edited(chain__length_m=-1.0), "chain.length_m", "expected a number > 0"),
+    ("negative mass", edited(chain__mass_kg=-2.0), "chain.mass_kg", "expected a number > 0"),
+    ("zero particles", edited(chain__n=0), "chain.n", "expected a number >= 1"),
+    ("unknown effect", edited(effects={"magnetism": {}}), "effects.magnetism",
+     "known effect: gravity, rotation, springs, tension"),
+    ("negative gravity", edited(effects={"gravity": {"g_m_per_s2": -9.81}}), "effects.gravity.g_m_per_s2", "> 0"),
+    ("missing title", edited(title=KeyError), "title", "required"),
+    ("no effects", edited(effects={}), "effects", "at least 1"),
+    ("gravity on a string", edited(chain__ends="fixed-fixed"), "chain.ends", "fixed-free"),
+    ("masses list of wrong length", edited(chain__masses_kg=[1.0, 2.0]), "chain.masses_kg", "n = 10"),
+    ("continuum with n", edited(chain__model="continuum"), "chain.n", "no n for a continuum"),
+    ("not finite", edited(chain__length_m=float("nan")), "chain.length_m", "a finite number"),
+]
+
+
+@pytest.mark.parametrize("case,data,field,expected", BAD, ids=[b[0] for b in BAD])
+def test_bad_scene_gives_one_line_naming_file_and_field(tmp_path, case, data, field, expected):
+    path = write(tmp_path, data)
+    with pytest.raises(SceneError) as error:
+        validate("chains", path, SCHEMA)
+    message = str(error.value)
+    assert "\n" not in message
+    assert message.startswith(f"{path}: field '{field}'")
+    assert expected in message
+
+
+def test_broken_yaml(tmp_path):
+    path = write(tmp_path, "title: x\nchain: {model: particles, n: 3\n")
+    with pytest.raises(SceneError) as error:
+        validate("chains", path, SCHEMA)
+    assert "\n" not in str(error.value) and "YAML at line" in str(error.value) and str(path) in str(error.value)
+
+
+def test_duplicate_key_is_refused(tmp_path):
+    path = write(tmp_path, "title: a\ntitle: b\nchain: {model: continuum, length_m: 1}\neffects: {gravity: {g_m_per_s2: 9.8}}\n")
+    with pytest.raises(SceneError, match="given twice"):
+        validate("chains", path, SCHEMA)
+
+
+def test_yaml_tags_are_not_code(tmp_path):
+    path = write(tmp_path, "title: !!python/object/apply:os.system ['echo hacked']\n")
+    with pytest.raises(SceneError, match="valid YAML"):
+        validate("chains", path, SCHEMA)
+
+
+@pytest.mark.parametrize("name", ["Bad-Name.yaml", "timings.yaml", "x.yml"])
+def test_scene_names_are_restricted(tmp_path, name):
+    path = write(tmp_path, GOOD, name)
+    with pytest.raises(SceneError, match="file name"):
+        validate("chains", path, SCHEMA)
+
+
+def test_shipped_scenes_are_valid():
+    scenes = sorted((ROOT / "workflow" / "scenes" / "chains").glob("*.yaml"))
+    assert len(scenes) >= 8
+    for path in scenes:
+        validate("chains", path, SCHEMA)
+
+
+def test_schema_and_registry_name_the_same_effects():
+    schema = load_schema(SCHEMA)
+    assert sorted(schema["properties"]["effects"]["properties"]) == EFFECTS.names()
+
+
+def test_cli_run_refuses_a_bad_scene_and_creates_nothing(tmp_path):
+    path = write(tmp_path, edited(chain__length_m=-1.0))
+    out, timings = tmp_path / "results" / "chains" / "scene", tmp_path / "results" / "chains" / "timings" / "scene"
+    result = subprocess.run([sys.executable, "-m", "classical_dynamics", "run", "chains", str(SCHEMA), str(path),
+                             str(out), str(timings)], capture_output=True, text=True)
+    assert result.returncode != 0
+    assert result.stderr.strip().count("\n") == 0
+    assert "field 'chain.length_m'" in result.stderr
+    assert not (tmp_path / "results").exists()
+
+
+def test_only_listed_effects_are_evaluated(monkeypatch):
+    called = []
+    for name in EFFECTS.names():
+        effect = EFFECTS[name]
+        monkeypatch.setitem(EFFECTS._effects, name, effect.__class__(
+            effect.name, effect.kind, effect.summary,
+            lambda params, geometry, _build=effect.build, _name=name: called.append(_name) or _build(params, geometry)))
+    chain = particle_chain(5, "fixed-fixed", 1.0, 0.2, {"tension": {"newton": 2.0}})
+    assert called == ["tension"]
+    assert set(chain.contributions) == {"tension"}

@@ -1,0 +1,27 @@
+# The one rule that runs a scene of any study.
+
+
+wildcard_constraints:
+    study="|".join(STUDIES),
+    scene="[a-z0-9_]+",
+
+
+rule scene:
+    """Run one scene of one study: results/<study>/<scene>/ and its timings."""
+    input:
+        scene="workflow/scenes/{study}/{scene}.yaml",
+        schema="workflow/schemas/{study}.schema.yaml",
+        code=lambda wc: SHARED_CODE + code(f"studies/{wc.study}"),
+    output:
+        results=directory("results/{study}/{scene}"),
+        timings=directory("results/{study}/timings/{scene}"),
+    params:
+        python=PY,
+        quick=QUICK,
+    log:
+        "results/logs/{study}/{scene}.log",
+    conda:
+        "../envs/pipeline.yaml"
+    shell:
+        "{params.python} -m classical_dynamics run {wildcards.study} {input.schema} {input.scene}"
+        " {output.results} {output.timings} {params.quick} > {log} 2>&1"
