@@ -265,7 +265,7 @@ def _accuracy_cost(results, spec, quick):
 def _cost_to_target(results, targets, quick):
     """Smallest n and the time to reach each target error by plain n, end-corrected n, Richardson."""
     j1 = bessel_j0_zeros(1)[0] / 2
-    top = 12 if quick else 17
+    top = 12 if quick else 18
     ns = [2**p for p in range(1, top + 1)]
     lam, seconds = {}, {}
     for n in ns:
