@@ -19,7 +19,8 @@ def read_bib(path: Path) -> dict[str, dict]:
 
 
 def format_entry(entry: dict) -> str:
-    parts = [entry.get("author", ""), f"({entry.get('year', 'n.d.')})", f"<em>{entry.get('title', '')}</em>"]
+    authors = entry.get("author", "").replace(" and others", " et al.").replace(" and ", ", ")
+    parts = [authors, f"({entry.get('year', 'n.d.')})", f"<em>{entry.get('title', '')}</em>"]
     where = entry.get("journal") or entry.get("booktitle") or entry.get("publisher") or entry.get("school")
     if where:
         extra = ", ".join(x for x in (entry.get("volume"), entry.get("pages")) if x)
@@ -28,7 +29,7 @@ def format_entry(entry: dict) -> str:
         parts.append(entry["note"])
     if entry.get("doi"):
         parts.append(f"doi:{entry['doi']}")
-    return ". ".join(p for p in parts if p) + "."
+    return ". ".join(p.rstrip(".") for p in parts if p) + "."
 
 
 class Citations:
