@@ -1,0 +1,194 @@
+"""One interface for every integrator: a Problem, a method, tolerances or a step, dense output, events.
+
+    problem = Problem(rhs, y0, (t0, t1), params)       # rhs: numba f(t, y, p, out)
+    sol = solve(problem, "dop853", rtol=1e-10, atol=1e-13, t_eval=..., events=Events(g, 1))
+    sol = solve(problem, "scipy:DOP853", rtol=..., atol=...)   # the peers, through the same door
+
+Methods: dopri5, dop853 (compiled, adaptive, dense output, events, blow-up detection) and
+scipy:RK45, scipy:DOP853, scipy:Radau, scipy:BDF, scipy:LSODA, scipy:RK23. Geometric fixed-step
+methods for rigid bodies and chains live in rigid_body.py and rattle.py (they need the structure).
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+from numba import njit
+
+from . import runge_kutta as rk
+
+EPS = np.finfo(float).eps
+RTOL_FLOOR = 100 * EPS            # below this a double cannot honour rtol (scipy clamps it silently)
+COMPILED = ("dopri5", "dop853")
+PEERS = ("scipy:RK45", "scipy:DOP853", "scipy:Radau", "scipy:BDF", "scipy:LSODA", "scipy:RK23")
+
+
+@dataclass(frozen=True)
+class Problem:
+    rhs: Callable                      # numba-compiled f(t, y, p, out)
+    y0: np.ndarray
+    t_span: tuple
+    params: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    name: str = ""
+
+    def __post_init__(self):
+        object.__setattr__(self, "y0", np.asarray(self.y0, dtype=float))
+        object.__setattr__(self, "params", np.asarray(self.params, dtype=float))
+
+
+@dataclass(frozen=True)
+class Events:
+    g: Callable                        # numba g(t, y, p, out) filling n values
+    n: int
+    directions: tuple = ()             # +1 upward only, -1 downward only, 0 both (default)
+    terminal: tuple = ()
+
+
+@dataclass
+class Solution:
+    status: str
+    t: float                           # where the run ended (t1, a terminal event, or the blow-up time)
+    y: np.ndarray
+    t_eval: np.ndarray
+    y_eval: np.ndarray
+    nfev: int
+    n_steps: int
+    n_rejected: int
+    t_steps: np.ndarray
+    y_steps: np.ndarray
+    event_t: np.ndarray
+    event_y: np.ndarray
+    event_index: np.ndarray
+    method: str
+
+    @property
+    def success(self) -> bool:
+        return self.status in ("success", "terminal event")
+
+
+def check_inputs(problem: Problem, rtol=None, atol=None, h=None):
+    """Refuse what cannot be honoured, with a clear message; nothing is clamped silently."""
+    t0, t1 = map(float, problem.t_span)
+    if not np.all(np.isfinite(problem.y0)):
+        raise ValueError(f"initial state is not finite: {problem.y0}")
+    if not (np.isfinite(t0) and np.isfinite(t1)):
+        raise ValueError(f"time span must be finite, got {problem.t_span}")
+    if t1 <= t0:
+        raise ValueError(f"t_end = {t1} is not after t0 = {t0}: integrate forward in time")
+    if rtol is not None:
+        if not (rtol > 0 and atol is not None and atol > 0):
+            raise ValueError(f"tolerances must be positive, got rtol={rtol}, atol={atol}")
+        if rtol < RTOL_FLOOR:
+            raise ValueError(f"rtol={rtol:g} is below 100*eps = {RTOL_FLOOR:.3g}, which double precision cannot "
+                             "honour (scipy would silently clamp it); use an exact reference or mpmath instead")
+    if h is not None and not h > 0:
+        raise ValueError(f"step size must be positive, got h={h}")
+
+
+def solve(problem: Problem, method: str = "dop853", *, rtol: float = 1e-8, atol: float = 1e-11, t_eval=None,
+          events: Events | None = None, max_steps: int = 10**8, bound: float = 1e12, subdivisions: int = 8,
+          record_steps: bool = False) -> Solution:
+    check_inputs(problem, rtol, atol)
+    t0, t1 = map(float, problem.t_span)
+    t_eval = np.zeros(0) if t_eval is None else np.asarray(t_eval, dtype=float)
+    if t_eval.size and (np.any(np.diff(t_eval) < 0) or t_eval[0] < t0 or t_eval[-1] > t1):
+        raise ValueError("t_eval must be increasing and inside the time span")
+    if method in PEERS:
+        return _solve_scipy(problem, method, rtol, atol, t_eval, events, record_steps)
+    if method not in rk.TABLEAUS:
+        raise ValueError(f"unknown method {method!r}; known: {', '.join(COMPILED + PEERS)}")
+    g, n_events = (events.g, events.n) if events else (rk._no_events, 0)
+    directions = np.array(events.directions or (0,) * n_events if events else (0,), dtype=np.int64)
+    terminal = np.array(events.terminal or (False,) * n_events if events else (False,), dtype=np.bool_)
+    out = rk.integrate(problem.rhs, problem.params, t0, t1, problem.y0, float(rtol), float(atol),
+                       *rk.TABLEAUS[method].arrays(), t_eval, int(max_steps), float(bound), g, n_events,
+                       directions, terminal, int(subdivisions), bool(record_steps))
+    status, t, y, y_eval, nfev, nacc, nrej, ts, ys, et, ey, ei = out
+    return Solution(rk.STATUS[status], t, y, t_eval, y_eval, nfev, nacc, nrej, ts, ys, et, ey, ei, method)
+
+
+def _solve_scipy(problem, method, rtol, atol, t_eval, events, record_steps):
+    from scipy.integrate import solve_ivp
+
+    p = problem.params
+    rhs = problem.rhs
+    counter = [0]
+
+    def fun(t, y):
+        out = np.empty_like(y)
+        rhs(t, y, p, out)
+        return out
+
+    scipy_events = None
+    if events is not None:
+        def make(e):
+            def event(t, y):
+                out = np.empty(events.n)
+                events.g(t, y, p, out)
+                return out[e]
+            event.terminal = bool(events.terminal[e]) if events.terminal else False
+            event.direction = float(events.directions[e]) if events.directions else 0.0
+            return event
+        scipy_events = [make(e) for e in range(events.n)]
+    result = solve_ivp(fun, problem.t_span, problem.y0, method=method.split(":")[1], rtol=rtol, atol=atol,
+                       t_eval=t_eval if t_eval.size else None, events=scipy_events,
+                       dense_output=False)
+    del counter
+    n = problem.y0.size
+    y_eval = result.y.T if t_eval.size else np.zeros((0, n))
+    ev_t, ev_y, ev_i = [], [], []
+    if events is not None:
+        for e, (te, ye) in enumerate(zip(result.t_events, result.y_events)):
+            ev_t += list(te)
+            ev_y += list(ye)
+            ev_i += [e] * len(te)
+    order = np.argsort(ev_t) if ev_t else np.zeros(0, dtype=int)
+    status = {0: "success", 1: "terminal event", -1: "failed"}[result.status]
+    t_steps = result.t if (record_steps and not t_eval.size) else np.zeros(0)
+    y_steps = result.y.T if (record_steps and not t_eval.size) else np.zeros((0, n))
+    return Solution(status, float(result.t[-1]), result.y[:, -1].copy(), t_eval, y_eval, int(result.nfev),
+                    len(result.t) - 1, 0, t_steps, y_steps, np.asarray(ev_t)[order],
+                    np.asarray(ev_y).reshape(-1, n)[order], np.asarray(ev_i, dtype=int)[order], method)
+
+
+def compile_time(problem: Problem, method: str = "dop853") -> float:
+    """Seconds the first call takes beyond a warm call (compilation or cache load), reported apart."""
+    short = Problem(problem.rhs, problem.y0, (problem.t_span[0], problem.t_span[0] + 1e-3), problem.params)
+    start = time.perf_counter()
+    solve(short, method, rtol=1e-6, atol=1e-9)
+    first = time.perf_counter() - start
+    start = time.perf_counter()
+    solve(short, method, rtol=1e-6, atol=1e-9)
+    return first - (time.perf_counter() - start)
+
+
+@njit(cache=True)
+def _batch(f, P, t0, t1, Y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extra, C_extra, t_eval, bound):
+    m, n = Y0.shape
+    out = np.full((m, t_eval.size, n), np.nan)
+    final = np.empty((m, n))
+    status = np.empty(m, dtype=np.int64)
+    t_end = np.empty(m)
+    directions = np.zeros(1, dtype=np.int64)
+    terminal = np.zeros(1, dtype=np.bool_)
+    for i in range(m):
+        r = rk.integrate(f, P[i], t0, t1, Y0[i], rtol, atol, kind, A, B, C, E5, E3, dense, A_extra, C_extra,
+                         t_eval, 10**8, bound, rk._no_events, 0, directions, terminal, 1, False)
+        status[i], t_end[i], final[i], out[i] = r[0], r[1], r[2], r[3]
+    return status, t_end, final, out
+
+
+def solve_batch(rhs, Y0, t_span, params, method="dop853", *, rtol=1e-8, atol=1e-11, t_eval=None, bound=1e12):
+    """Many initial conditions (rows of Y0; params one row each or shared) in one compiled call."""
+    Y0 = np.ascontiguousarray(Y0, dtype=float)
+    P = np.asarray(params, dtype=float)
+    P = np.ascontiguousarray(np.broadcast_to(P, (Y0.shape[0], P.shape[-1] if P.ndim else 0)))
+    for row in Y0:
+        check_inputs(Problem(rhs, row, t_span), rtol, atol)
+    t_eval = np.zeros(0) if t_eval is None else np.asarray(t_eval, dtype=float)
+    status, t_end, final, out = _batch(rhs, P, float(t_span[0]), float(t_span[1]), Y0, float(rtol), float(atol),
+                                       *rk.TABLEAUS[method].arrays(), t_eval, float(bound))
+    return [rk.STATUS[s] for s in status], t_end, final, out

@@ -1,0 +1,138 @@
+"""Geometric integrators for a rigid body: exact rotations, composed (compiled).
+
+Free body in body-frame angular momentum m, H = sum m_i^2 / (2 I_i) (McLachlan 1993): each piece
+m_i^2/(2 I_i) is integrated exactly, a rotation of m about body axis i by -omega_i h and of the
+attitude by +omega_i h. The symmetric composition 1 2 3 2 1 is second order, Poisson, conserves
+|m|^2 to round-off and keeps the energy error bounded; Yoshida's triple jump makes it fourth order.
+The attitude is a unit quaternion (body to space) updated by exact rotations (a Lie-group update),
+so |q| - 1 stays at round-off. A torque enters as a kick: Strang-split around the free flow.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+YOSHIDA = (1.0 / (2.0 - 2.0 ** (1.0 / 3.0)), -(2.0 ** (1.0 / 3.0)) / (2.0 - 2.0 ** (1.0 / 3.0)))
+
+
+@njit(cache=True)
+def _rotate_axis(m, q, axis, I, h):
+    """Exact flow of m_axis^2 / (2 I_axis) for time h, on m (body) and the attitude quaternion q."""
+    theta = m[axis] / I[axis] * h
+    c, s = np.cos(theta), np.sin(theta)
+    j, k = (axis + 1) % 3, (axis + 2) % 3
+    mj, mk = m[j], m[k]
+    m[j] = c * mj + s * mk              # m' = m x omega_axis e_axis: a rotation by -theta about e_axis
+    m[k] = -s * mj + c * mk
+    # q <- q * (cos(theta/2), sin(theta/2) e_axis)
+    ch, sh = np.cos(0.5 * theta), np.sin(0.5 * theta)
+    w, x, y, z = q[0], q[1], q[2], q[3]
+    if axis == 0:
+        q[0], q[1], q[2], q[3] = w * ch - x * sh, x * ch + w * sh, y * ch + z * sh, z * ch - y * sh
+    elif axis == 1:
+        q[0], q[1], q[2], q[3] = w * ch - y * sh, x * ch - z * sh, y * ch + w * sh, z * ch + x * sh
+    else:
+        q[0], q[1], q[2], q[3] = w * ch - z * sh, x * ch + y * sh, y * ch - x * sh, z * ch + w * sh
+
+
+@njit(cache=True)
+def free_step(m, q, I, h):
+    """McLachlan's symmetric splitting, second order."""
+    _rotate_axis(m, q, 0, I, 0.5 * h)
+    _rotate_axis(m, q, 1, I, 0.5 * h)
+    _rotate_axis(m, q, 2, I, h)
+    _rotate_axis(m, q, 1, I, 0.5 * h)
+    _rotate_axis(m, q, 0, I, 0.5 * h)
+
+
+@njit(cache=True)
+def _no_torque(t, m, q, p, out):
+    out[0] = 0.0
+    out[1] = 0.0
+    out[2] = 0.0
+
+
+@njit(cache=True)
+def _kick(torque, p, t, m, q, h):
+    # second-order explicit midpoint on m' = torque(t, m, q): exact when the torque does not depend on m
+    tau = np.empty(3)
+    torque(t, m, q, p, tau)
+    mid = m + 0.5 * h * tau
+    torque(t + 0.5 * h, mid, q, p, tau)
+    m += h * tau
+
+
+@njit(cache=True)
+def step(m, q, I, h, t, order, torque, p, has_torque):
+    """One step of order 2 or 4 (Yoshida), with the torque Strang-split around each free flow."""
+    if order == 2:
+        weights = np.array([1.0])
+    else:
+        weights = np.array([YOSHIDA[0], YOSHIDA[1], YOSHIDA[0]])
+    for w in weights:
+        if has_torque:
+            _kick(torque, p, t, m, q, 0.5 * w * h)
+        free_step(m, q, I, w * h)
+        if has_torque:
+            _kick(torque, p, t + 0.5 * w * h, m, q, 0.5 * w * h)
+        t += w * h
+
+
+@njit(cache=True)
+def integrate(I, m0, q0, h, n_steps, order, sample_every, torque, p, has_torque):
+    """Samples of m and q every `sample_every` steps (row 0 is the start)."""
+    m, q = m0.copy(), q0.copy()
+    n_samples = n_steps // sample_every + 1
+    ms = np.empty((n_samples, 3))
+    qs = np.empty((n_samples, 4))
+    ms[0], qs[0] = m, q
+    k = 1
+    for i in range(1, n_steps + 1):
+        step(m, q, I, h, (i - 1) * h, order, torque, p, has_torque)
+        if i % sample_every == 0:
+            ms[k], qs[k] = m, q
+            k += 1
+    return ms[:k], qs[:k]
+
+
+@njit(cache=True)
+def integrate_batch(I, M0, h, n_steps, order):
+    """Final angular momenta of many free bodies (rows of M0) in one compiled call."""
+    out = np.empty_like(M0)
+    q = np.empty(4)
+    for r in range(M0.shape[0]):
+        m = M0[r].copy()
+        q[:] = (1.0, 0.0, 0.0, 0.0)
+        for _ in range(n_steps):
+            step(m, q, I, h, 0.0, order, _no_torque, np.zeros(0), False)
+        out[r] = m
+    return out
+
+
+def free_body(I, m0, h, n_steps, order=2, sample_every=1, q0=(1.0, 0.0, 0.0, 0.0)):
+    if not h > 0:
+        raise ValueError(f"step size must be positive, got h={h}")
+    m0 = np.asarray(m0, float)
+    if not np.all(np.isfinite(m0)):
+        raise ValueError(f"initial angular momentum is not finite: {m0}")
+    return integrate(np.asarray(I, float), m0, np.asarray(q0, float), float(h), int(n_steps), int(order),
+                     int(sample_every), _no_torque, np.zeros(0), False)
+
+
+def energy(I, m):
+    m = np.atleast_2d(m)
+    return 0.5 * np.sum(m * m / np.asarray(I, float), axis=1)
+
+
+def casimir(m):
+    m = np.atleast_2d(m)
+    return np.sum(m * m, axis=1)
+
+
+def rotate_to_space(q, v):
+    """Rotate body vectors v by unit quaternions q (rows)."""
+    q, v = np.atleast_2d(q), np.atleast_2d(v)
+    w, u = q[:, :1], q[:, 1:]
+    t = 2 * np.cross(u, v)
+    return v + w * t + np.cross(u, t)

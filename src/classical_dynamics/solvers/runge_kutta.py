@@ -1,0 +1,389 @@
+"""Adaptive explicit Runge-Kutta pairs, compiled: Dormand-Prince 5(4) and DOP853, with dense output.
+
+One loop serves both pairs (the tableaus are scipy's published coefficients, used as data): step-size
+control as in Hairer-Norsett-Wanner II.4 (error norm RMS over components, scale atol + rtol |y|),
+dense output (quartic for 5(4), degree 7 for DOP853), events located on the dense output with
+`subdivisions` sign checks inside every step (so two sign changes in one step are not missed, unlike
+a check at step ends only: scipy #9228), and blow-up detection (a bound on |y|, or the step size
+collapsing) that ends the run with its time instead of NaN or a hang.
+
+The right-hand side is a numba function f(t, y, p, out); events are g(t, y, p, out) with n_events
+values. The loop is compiled once per right-hand side and cached on disk.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+from scipy.integrate._ivp import dop853_coefficients as _d853
+from scipy.integrate._ivp.rk import RK45 as _RK45
+
+SAFETY, MIN_FACTOR, MAX_FACTOR = 0.9, 0.2, 10.0
+
+# status codes of a run
+SUCCESS, TERMINAL_EVENT, BLOW_UP, STEP_TOO_SMALL, MAX_STEPS = 0, 1, 2, 3, 4
+STATUS = {SUCCESS: "success", TERMINAL_EVENT: "terminal event", BLOW_UP: "blow-up",
+          STEP_TOO_SMALL: "step size too small (a singularity?)", MAX_STEPS: "too many steps"}
+
+
+class Tableau:
+    """Coefficients of a pair; `kind` 0 = Dormand-Prince 5(4), 1 = DOP853."""
+
+    def __init__(self, name, kind, order, A, B, C, E5, E3, dense, A_extra, C_extra):
+        self.name, self.kind, self.order = name, kind, order
+        self.A, self.B, self.C = (np.ascontiguousarray(x, dtype=float) for x in (A, B, C))
+        self.E5, self.E3 = np.ascontiguousarray(E5, dtype=float), np.ascontiguousarray(E3, dtype=float)
+        self.dense = np.ascontiguousarray(dense, dtype=float)
+        self.A_extra, self.C_extra = np.ascontiguousarray(A_extra, float), np.ascontiguousarray(C_extra, float)
+
+    def arrays(self):
+        return (self.kind, self.A, self.B, self.C, self.E5, self.E3, self.dense, self.A_extra, self.C_extra)
+
+
+DOPRI5 = Tableau("dopri5", 0, 5, _RK45.A, _RK45.B, _RK45.C, _RK45.E, np.zeros(1), _RK45.P,
+                 np.zeros((1, 1)), np.zeros(1))
+DOP853 = Tableau("dop853", 1, 8, _d853.A[:12, :12], _d853.B, _d853.C[:12], _d853.E5, _d853.E3, _d853.D,
+                 _d853.A[13:, :16], _d853.C[13:])
+TABLEAUS = {"dopri5": DOPRI5, "dop853": DOP853}
+
+
+@njit(cache=True)
+def _rms(v):
+    return np.sqrt(np.mean(v * v))
+
+
+@njit(cache=True)
+def _stages(f, p, t, y, h, A, B, C, K, f_old, tmp, y_new):
+    """Fill K[0..s] (K[s] = f(t + h, y_new)) and y_new, with no allocation."""
+    s = B.size
+    n = y.size
+    for j in range(n):
+        K[0, j] = f_old[j]
+    for i in range(1, s):
+        for j in range(n):
+            acc = 0.0
+            for l in range(i):
+                acc += A[i, l] * K[l, j]
+            tmp[j] = y[j] + h * acc
+        f(t + C[i] * h, tmp, p, K[i])
+    for j in range(n):
+        acc = 0.0
+        for l in range(s):
+            acc += B[l] * K[l, j]
+        y_new[j] = y[j] + h * acc
+    f(t + h, y_new, p, K[s])
+
+
+@njit(cache=True)
+def _error_norm(kind, K, h, E5, E3, y, y_new, rtol, atol):
+    """RMS error norm, scale atol + rtol max(|y|, |y_new|); inf if y_new is not finite."""
+    n = y.size
+    rows = E5.size
+    if kind == 0:
+        total = 0.0
+        for j in range(n):
+            if not np.isfinite(y_new[j]):
+                return np.inf
+            acc = 0.0
+            for l in range(rows):
+                acc += E5[l] * K[l, j]
+            e = h * acc / (atol + max(abs(y[j]), abs(y_new[j])) * rtol)
+            total += e * e
+        return np.sqrt(total / n)
+    n5 = 0.0
+    n3 = 0.0
+    for j in range(n):
+        if not np.isfinite(y_new[j]):
+            return np.inf
+        scale = atol + max(abs(y[j]), abs(y_new[j])) * rtol
+        a5 = 0.0
+        a3 = 0.0
+        for l in range(rows):
+            a5 += E5[l] * K[l, j]
+            a3 += E3[l] * K[l, j]
+        n5 += (a5 / scale) ** 2
+        n3 += (a3 / scale) ** 2
+    if n5 == 0.0 and n3 == 0.0:
+        return 0.0
+    return abs(h) * n5 / np.sqrt((n5 + 0.01 * n3) * n)
+
+
+@njit(cache=True)
+def _max_abs(y):
+    m = 0.0
+    for v in y:
+        m = max(m, abs(v))
+    return m
+
+
+@njit(cache=True)
+def _dense_coefficients(f, p, kind, t, h, y_old, y_new, K, dense, A_extra, C_extra):
+    """Per-step interpolation data: Q (dopri5) or F (dop853), as rows."""
+    n = y_old.size
+    if kind == 0:
+        order = dense.shape[1]
+        Q = np.zeros((order, n))
+        for r in range(order):
+            for j in range(n):
+                acc = 0.0
+                for l in range(K.shape[0]):
+                    acc += K[l, j] * dense[l, r]
+                Q[r, j] = acc
+        return Q
+    # DOP853: three extra stages, then F[0..6]
+    Kx = np.zeros((16, n))
+    Kx[:13, :] = K
+    tmp = np.empty(n)
+    for s in range(13, 16):
+        a = A_extra[s - 13]
+        for j in range(n):
+            acc = 0.0
+            for l in range(s):
+                acc += a[l] * Kx[l, j]
+            tmp[j] = y_old[j] + h * acc
+        f(t + C_extra[s - 13] * h, tmp, p, Kx[s])
+    F = np.zeros((7, n))
+    for j in range(n):
+        dy = y_new[j] - y_old[j]
+        F[0, j] = dy
+        F[1, j] = h * Kx[0, j] - dy
+        F[2, j] = 2 * dy - h * (Kx[12, j] + Kx[0, j])
+    for r in range(4):
+        for j in range(n):
+            acc = 0.0
+            for l in range(16):
+                acc += dense[r, l] * Kx[l, j]
+            F[3 + r, j] = h * acc
+    return F
+
+
+@njit(cache=True)
+def _dense_eval(kind, coeffs, h, y_old, x):
+    n = y_old.size
+    out = np.empty(n)
+    if kind == 0:
+        for j in range(n):
+            acc = 0.0
+            power = x
+            for r in range(coeffs.shape[0]):
+                acc += coeffs[r, j] * power
+                power *= x
+            out[j] = y_old[j] + h * acc
+        return out
+    for j in range(n):
+        acc = 0.0
+        for i in range(7):
+            acc += coeffs[6 - i, j]
+            if i % 2 == 0:
+                acc *= x
+            else:
+                acc *= 1 - x
+        out[j] = y_old[j] + acc
+    return out
+
+
+@njit(cache=True)
+def _initial_step(f, p, t0, y0, f0, order, rtol, atol):
+    scale = atol + np.abs(y0) * rtol
+    d0 = _rms(y0 / scale)
+    d1 = _rms(f0 / scale)
+    h0 = 1e-6 if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
+    y1 = y0 + h0 * f0
+    f1 = np.empty_like(y0)
+    f(t0 + h0, y1, p, f1)
+    d2 = _rms((f1 - f0) / scale) / h0
+    if d1 <= 1e-15 and d2 <= 1e-15:
+        h1 = max(1e-6, h0 * 1e-3)
+    else:
+        h1 = (0.01 / max(d1, d2)) ** (1.0 / (order + 1))
+    return min(100 * h0, h1)
+
+
+@njit(cache=True)
+def _no_events(t, y, p, out):
+    pass
+
+
+@njit(cache=True)
+def integrate(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extra, C_extra,
+              t_eval, max_steps, bound, g, n_events, directions, terminal, subdivisions, record):
+    """The compiled loop. Returns a tuple; see ode.solve for its meaning."""
+    n = y0.size
+    s = B.size
+    order = 5 if kind == 0 else 8
+    exponent = -1.0 / (order if kind == 0 else 8.0)     # error estimator order 4 (dopri5), 7 (dop853)
+    K = np.zeros((s + 1, n))
+    f_old = np.empty(n)
+    tmp = np.empty(n)
+    y_new = np.empty(n)
+    f(t0, y0, p, f_old)
+    nfev = 1
+    h = _initial_step(f, p, t0, y0, f_old, order, rtol, atol)
+    nfev += 1
+    t = t0
+    y = y0.copy()
+    n_eval = t_eval.size
+    y_eval = np.full((n_eval, n), np.nan)
+    k_eval = 0
+    while k_eval < n_eval and t_eval[k_eval] <= t0:
+        y_eval[k_eval] = y0
+        k_eval += 1
+    cap = 1024 if record else 1
+    ts = np.empty(cap)
+    ys = np.empty((cap, n))
+    n_rec = 0
+    if record:
+        ts[0] = t0
+        ys[0] = y0
+        n_rec = 1
+    ev_t = np.empty(64)
+    ev_y = np.empty((64, n))
+    ev_i = np.empty(64, dtype=np.int64)
+    n_ev = 0
+    g_old = np.empty(max(n_events, 1))
+    g_new = np.empty(max(n_events, 1))
+    if n_events > 0:
+        g(t0, y0, p, g_old)
+    naccept = 0
+    nreject = 0
+    status = SUCCESS
+    t_stop = t1
+    while t < t1:
+        if naccept >= max_steps:
+            status = MAX_STEPS
+            break
+        min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
+        rejected = False
+        accepted = False
+        while not accepted:
+            if h < min_step:
+                status = STEP_TOO_SMALL
+                break
+            t_new = min(t + h, t1)
+            h = t_new - t
+            _stages(f, p, t, y, h, A, B, C, K, f_old, tmp, y_new)
+            nfev += s
+            err = _error_norm(kind, K, h, E5, E3, y, y_new, rtol, atol)
+            if err < 1.0:
+                factor = MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * err ** exponent)
+                if rejected:
+                    factor = min(1.0, factor)
+                h_next = h * factor
+                accepted = True
+            else:
+                h *= MIN_FACTOR if not np.isfinite(err) else max(MIN_FACTOR, SAFETY * err ** exponent)
+                rejected = True
+                nreject += 1
+        if status != SUCCESS:
+            break
+        naccept += 1
+        blown = _max_abs(y_new) > bound
+        need_dense = (k_eval < n_eval and t_eval[k_eval] <= t_new) or n_events > 0 or blown
+        coeffs = np.zeros((1, 1))
+        if need_dense:
+            coeffs = _dense_coefficients(f, p, kind, t, h, y, y_new, K, dense, A_extra, C_extra)
+            if kind == 1:
+                nfev += 3
+        # events: sign changes at sub-points of the step, each refined by bisection on the dense output
+        stop_here = False
+        if n_events > 0:
+            x_prev = 0.0
+            g_prev = g_old.copy()
+            for sub in range(1, subdivisions + 1):
+                x_sub = sub / subdivisions
+                y_sub = y_new if sub == subdivisions else _dense_eval(kind, coeffs, h, y, x_sub)
+                g(t + x_sub * h, y_sub, p, g_new)
+                for e in range(n_events):
+                    up = g_prev[e] < 0.0 <= g_new[e]
+                    down = g_prev[e] > 0.0 >= g_new[e]
+                    if (up and directions[e] >= 0) or (down and directions[e] <= 0):
+                        lo, hi = x_prev, x_sub
+                        g_lo = g_prev[e]
+                        tmp = np.empty(max(n_events, 1))
+                        for _ in range(80):
+                            mid = 0.5 * (lo + hi)
+                            g(t + mid * h, _dense_eval(kind, coeffs, h, y, mid), p, tmp)
+                            if (tmp[e] < 0.0) == (g_lo < 0.0) and tmp[e] != 0.0:
+                                lo, g_lo = mid, tmp[e]
+                            else:
+                                hi = mid
+                            if (hi - lo) * abs(h) <= 4e-16 * max(abs(t), 1.0):
+                                break
+                        if n_ev == ev_t.size:
+                            ev_t = np.concatenate((ev_t, np.empty(ev_t.size)))
+                            ev_y = np.concatenate((ev_y, np.empty((ev_y.shape[0], n))))
+                            ev_i = np.concatenate((ev_i, np.empty(ev_i.size, dtype=np.int64)))
+                        ev_t[n_ev] = t + hi * h
+                        ev_y[n_ev] = _dense_eval(kind, coeffs, h, y, hi)
+                        ev_i[n_ev] = e
+                        n_ev += 1
+                        if terminal[e]:
+                            stop_here = True
+                            t_stop = t + hi * h
+                if stop_here:
+                    break
+                g_prev[:] = g_new[:n_events]
+                x_prev = x_sub
+            g_old[:] = g_new[:n_events] if n_events > 0 else g_old
+        # blow-up: |y| leaves the bound inside this step; locate the crossing on the dense output
+        if blown:
+            lo, hi = 0.0, 1.0
+            for _ in range(80):
+                mid = 0.5 * (lo + hi)
+                if _max_abs(_dense_eval(kind, coeffs, h, y, mid)) > bound:
+                    hi = mid
+                else:
+                    lo = mid
+            t_stop = t + hi * h
+        t_end_step = t_stop if (stop_here or blown) else t_new
+        while k_eval < n_eval and t_eval[k_eval] <= t_end_step:
+            x = (t_eval[k_eval] - t) / h
+            y_eval[k_eval] = y_new if x >= 1.0 else _dense_eval(kind, coeffs, h, y, x)
+            k_eval += 1
+        if stop_here or blown:
+            y = _dense_eval(kind, coeffs, h, y, (t_stop - t) / h)
+            t = t_stop
+            status = TERMINAL_EVENT if stop_here else BLOW_UP
+            if record:
+                if n_rec == cap:
+                    ts = np.concatenate((ts, np.empty(cap)))
+                    ys = np.concatenate((ys, np.empty((cap, n))))
+                    cap *= 2
+                ts[n_rec] = t
+                ys[n_rec] = y
+                n_rec += 1
+            break
+        t = t_new
+        y, y_new = y_new, y          # swap buffers: no copy, no allocation
+        f_old[:] = K[s]
+        h = h_next
+        if record:
+            if n_rec == cap:
+                ts = np.concatenate((ts, np.empty(cap)))
+                ys = np.concatenate((ys, np.empty((cap, n))))
+                cap *= 2
+            ts[n_rec] = t
+            ys[n_rec] = y
+            n_rec += 1
+    return (status, t, y, y_eval, nfev, naccept, nreject, ts[:n_rec], ys[:n_rec],
+            ev_t[:n_ev], ev_y[:n_ev], ev_i[:n_ev])
+
+
+@njit(cache=True)
+def fixed_step(f, p, t0, y0, h, n_steps, A, B, C):
+    """A fixed-step explicit Runge-Kutta loop (no error control): the 'hand-written' limit."""
+    n = y0.size
+    s = B.size
+    K = np.zeros((s + 1, n))
+    y = y0.copy()
+    y_new = np.empty(n)
+    tmp = np.empty(n)
+    t = t0
+    f_old = np.empty(n)
+    f(t, y, p, f_old)
+    for _ in range(n_steps):
+        _stages(f, p, t, y, h, A, B, C, K, f_old, tmp, y_new)
+        y, y_new = y_new, y
+        f_old[:] = K[s]
+        t += h
+    return y
