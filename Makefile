@@ -40,6 +40,7 @@ system-report system-test: system-%:
 	  else echo "Missing Debian packages:$$missing  (sudo apt-get install$$missing)"; exit 1; fi; fi
 
 bench: venv
+	$(BIN)/python benchmarks/solver_speed.py
 	$(BIN)/python benchmarks/pipeline_build.py
 
 dist: venv

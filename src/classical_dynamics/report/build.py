@@ -25,7 +25,7 @@ from .math import latex_data_uri
 from .numbering import NAMES, Numbering
 from .numbers import format_number, format_unit
 
-STUDY_ORDER = ["precession", "chandler", "chains", "self_excited"]
+STUDY_ORDER = ["precession", "chandler", "chains", "self_excited", "solvers"]
 
 
 class ResultsIndex:

@@ -2,8 +2,8 @@
 
 report/claims/<study>.yaml lists claims. Each names the source's value and where it stands,
 the computed number (scene and name in that scene's summary.json), an optional modern value,
-and a check: {absolute: tol} or {relative: tol} against the source value, or {at_most: x} /
-{at_least: x} on the computed value. A failing claim with must_hold: true fails the build.
+and a check: {absolute: tol}, {relative: tol} or {factor: f} (within a factor f) against the source
+value, or {at_most: x} / {at_least: x} / {equals: x} on the computed value. A failing claim with must_hold: true fails the build.
 """
 
 from __future__ import annotations
@@ -71,6 +71,8 @@ def evaluate(study: str, claims_file: Path, lookup) -> list[ClaimResult]:
                 passed = computed <= check["at_most"]
             elif "at_least" in check:
                 passed = computed >= check["at_least"]
+            elif "factor" in check:
+                passed = reference is not None and 1 / check["factor"] <= computed / reference <= check["factor"]
             elif "equals" in check:
                 passed = computed == check["equals"]
             else:

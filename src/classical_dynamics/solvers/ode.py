@@ -35,8 +35,16 @@ class Problem:
     name: str = ""
 
     def __post_init__(self):
-        object.__setattr__(self, "y0", np.asarray(self.y0, dtype=float))
-        object.__setattr__(self, "params", np.asarray(self.params, dtype=float))
+        object.__setattr__(self, "y0", np.ascontiguousarray(self.y0, dtype=float))
+        object.__setattr__(self, "params", np.ascontiguousarray(self.params, dtype=float))
+        require_signature(self.rhs)
+
+
+def require_signature(func):
+    """The integrators take f(t, y, p, out) compiled with RHS_SIG (see runge_kutta.rhs_function)."""
+    if rk.RHS_SIG.args not in getattr(func, "signatures", []):
+        raise TypeError(f"{getattr(func, '__name__', func)} must be compiled with the integrators' signature: "
+                        "decorate it with classical_dynamics.solvers.runge_kutta.rhs_function")
 
 
 @dataclass(frozen=True)
@@ -93,7 +101,7 @@ def solve(problem: Problem, method: str = "dop853", *, rtol: float = 1e-8, atol:
           record_steps: bool = False) -> Solution:
     check_inputs(problem, rtol, atol)
     t0, t1 = map(float, problem.t_span)
-    t_eval = np.zeros(0) if t_eval is None else np.asarray(t_eval, dtype=float)
+    t_eval = np.zeros(0) if t_eval is None else np.ascontiguousarray(t_eval, dtype=float)
     if t_eval.size and (np.any(np.diff(t_eval) < 0) or t_eval[0] < t0 or t_eval[-1] > t1):
         raise ValueError("t_eval must be increasing and inside the time span")
     if method in PEERS:
@@ -101,10 +109,13 @@ def solve(problem: Problem, method: str = "dop853", *, rtol: float = 1e-8, atol:
     if method not in rk.TABLEAUS:
         raise ValueError(f"unknown method {method!r}; known: {', '.join(COMPILED + PEERS)}")
     g, n_events = (events.g, events.n) if events else (rk._no_events, 0)
+    require_signature(g)
     directions = np.array(events.directions or (0,) * n_events if events else (0,), dtype=np.int64)
     terminal = np.array(events.terminal or (False,) * n_events if events else (False,), dtype=np.bool_)
+    # the right-hand side goes in as itself (numba's direct calling convention, the fast path per call);
+    # the event function by address (usually the no-op: converting it at every call would cost ~20 us)
     out = rk.integrate(problem.rhs, problem.params, t0, t1, problem.y0, float(rtol), float(atol),
-                       *rk.TABLEAUS[method].arrays(), t_eval, int(max_steps), float(bound), g, n_events,
+                       *rk.TABLEAUS[method].arrays(), t_eval, int(max_steps), float(bound), rk.by_address(g), n_events,
                        directions, terminal, int(subdivisions), bool(record_steps))
     status, t, y, y_eval, nfev, nacc, nrej, ts, ys, et, ey, ei = out
     return Solution(rk.STATUS[status], t, y, t_eval, y_eval, nfev, nacc, nrej, ts, ys, et, ey, ei, method)
@@ -115,9 +126,9 @@ def _solve_scipy(problem, method, rtol, atol, t_eval, events, record_steps):
 
     p = problem.params
     rhs = problem.rhs
-    counter = [0]
 
     def fun(t, y):
+        y = np.ascontiguousarray(y, dtype=float)          # scipy may pass a strided view
         out = np.empty_like(y)
         rhs(t, y, p, out)
         return out
@@ -127,7 +138,7 @@ def _solve_scipy(problem, method, rtol, atol, t_eval, events, record_steps):
         def make(e):
             def event(t, y):
                 out = np.empty(events.n)
-                events.g(t, y, p, out)
+                events.g(t, np.ascontiguousarray(y, dtype=float), p, out)
                 return out[e]
             event.terminal = bool(events.terminal[e]) if events.terminal else False
             event.direction = float(events.directions[e]) if events.directions else 0.0
@@ -136,7 +147,6 @@ def _solve_scipy(problem, method, rtol, atol, t_eval, events, record_steps):
     result = solve_ivp(fun, problem.t_span, problem.y0, method=method.split(":")[1], rtol=rtol, atol=atol,
                        t_eval=t_eval if t_eval.size else None, events=scipy_events,
                        dense_output=False)
-    del counter
     n = problem.y0.size
     y_eval = result.y.T if t_eval.size else np.zeros((0, n))
     ev_t, ev_y, ev_i = [], [], []
@@ -165,7 +175,8 @@ def compile_time(problem: Problem, method: str = "dop853") -> float:
     return first - (time.perf_counter() - start)
 
 
-@njit(cache=True)
+@njit((rk.FUNC, rk.MAT, rk.F64, rk.F64, rk.MAT, rk.F64, rk.F64, rk.I64, rk.MAT, rk.VEC, rk.VEC, rk.VEC, rk.VEC,
+       rk.MAT, rk.MAT, rk.VEC, rk.VEC, rk.F64), cache=True)
 def _batch(f, P, t0, t1, Y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extra, C_extra, t_eval, bound):
     m, n = Y0.shape
     out = np.full((m, t_eval.size, n), np.nan)
@@ -183,12 +194,13 @@ def _batch(f, P, t0, t1, Y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extra, 
 
 def solve_batch(rhs, Y0, t_span, params, method="dop853", *, rtol=1e-8, atol=1e-11, t_eval=None, bound=1e12):
     """Many initial conditions (rows of Y0; params one row each or shared) in one compiled call."""
+    require_signature(rhs)
     Y0 = np.ascontiguousarray(Y0, dtype=float)
-    P = np.asarray(params, dtype=float)
-    P = np.ascontiguousarray(np.broadcast_to(P, (Y0.shape[0], P.shape[-1] if P.ndim else 0)))
+    P = np.atleast_1d(np.asarray(params, dtype=float))
+    P = np.ascontiguousarray(np.broadcast_to(P, (Y0.shape[0], P.shape[-1])))
     for row in Y0:
         check_inputs(Problem(rhs, row, t_span), rtol, atol)
-    t_eval = np.zeros(0) if t_eval is None else np.asarray(t_eval, dtype=float)
+    t_eval = np.zeros(0) if t_eval is None else np.ascontiguousarray(t_eval, dtype=float)
     status, t_end, final, out = _batch(rhs, P, float(t_span[0]), float(t_span[1]), Y0, float(rtol), float(atol),
                                        *rk.TABLEAUS[method].arrays(), t_eval, float(bound))
     return [rk.STATUS[s] for s in status], t_end, final, out

@@ -7,18 +7,59 @@ dense output (quartic for 5(4), degree 7 for DOP853), events located on the dens
 a check at step ends only: scipy #9228), and blow-up detection (a bound on |y|, or the step size
 collapsing) that ends the run with its time instead of NaN or a hang.
 
-The right-hand side is a numba function f(t, y, p, out); events are g(t, y, p, out) with n_events
-values. The loop is compiled once per right-hand side and cached on disk.
+The right-hand side is a numba function f(t, y, p, out) compiled with the signature RHS_SIG (use
+the `rhs_function` decorator); events are g(t, y, p, out) with n_events values, same signature.
+They reach the loop as first-class functions typed by that signature, so the loop is compiled once,
+cached on disk, and shared by every right-hand side (a dispatcher argument would be typed by its
+identity and recompiled in every process).
 """
 
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from numba import njit, types
 from scipy.integrate._ivp import dop853_coefficients as _d853
 from scipy.integrate._ivp.rk import RK45 as _RK45
 
 SAFETY, MIN_FACTOR, MAX_FACTOR = 0.9, 0.2, 10.0
+
+F64, I64, VEC, MAT = types.float64, types.int64, types.float64[::1], types.float64[:, ::1]
+RHS_SIG = types.void(F64, VEC, VEC, VEC)          # f(t, y, p, out)
+FUNC = types.FunctionType(RHS_SIG)
+
+
+def rhs_function(func):
+    """Compile f(t, y, p, out) for the integrators (cached on disk)."""
+    return njit(RHS_SIG, cache=True)(func)
+
+
+class _ByAddress(types.WrapperAddressProtocol):
+    """A compiled f(t, y, p, out) handed to the loops by its address, looked up once.
+
+    Passing the dispatcher itself makes numba look the address up at every call (about 20 us), but
+    then calls it directly; by address, calls go through the C wrapper (about twice the cost per call).
+    So: right-hand sides as themselves, the (usually empty) event function by address.
+    """
+
+    def __init__(self, dispatcher):
+        from numba.experimental.function_type import _get_wrapper_address
+        self.dispatcher = dispatcher
+        self._address = _get_wrapper_address(dispatcher, RHS_SIG)
+
+    def __wrapper_address__(self):
+        return self._address
+
+    def signature(self):
+        return RHS_SIG
+
+
+_BY_ADDRESS: dict = {}
+
+
+def by_address(dispatcher) -> _ByAddress:
+    if dispatcher not in _BY_ADDRESS:
+        _BY_ADDRESS[dispatcher] = _ByAddress(dispatcher)
+    return _BY_ADDRESS[dispatcher]
 
 # status codes of a run
 SUCCESS, TERMINAL_EVENT, BLOW_UP, STEP_TOO_SMALL, MAX_STEPS = 0, 1, 2, 3, 4
@@ -199,12 +240,13 @@ def _initial_step(f, p, t0, y0, f0, order, rtol, atol):
     return min(100 * h0, h1)
 
 
-@njit(cache=True)
+@njit(RHS_SIG, cache=True)
 def _no_events(t, y, p, out):
     pass
 
 
-@njit(cache=True)
+@njit((FUNC, VEC, F64, F64, VEC, F64, F64, I64, MAT, VEC, VEC, VEC, VEC, MAT, MAT, VEC, VEC, I64, F64, FUNC, I64,
+       types.int64[::1], types.boolean[::1], I64, types.boolean), cache=True)
 def integrate(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extra, C_extra,
               t_eval, max_steps, bound, g, n_events, directions, terminal, subdivisions, record):
     """The compiled loop. Returns a tuple; see ode.solve for its meaning."""
@@ -369,7 +411,7 @@ def integrate(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extr
             ev_t[:n_ev], ev_y[:n_ev], ev_i[:n_ev])
 
 
-@njit(cache=True)
+@njit((FUNC, VEC, F64, VEC, F64, I64, MAT, VEC, VEC), cache=True)
 def fixed_step(f, p, t0, y0, h, n_steps, A, B, C):
     """A fixed-step explicit Runge-Kutta loop (no error control): the 'hand-written' limit."""
     n = y0.size

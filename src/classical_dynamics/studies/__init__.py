@@ -11,6 +11,7 @@ from ..scenes import Scene, load_scene
 
 STUDIES = {
     "chains": "classical_dynamics.studies.chains",
+    "solvers": "classical_dynamics.studies.solvers",
 }
 
 

@@ -1,0 +1,130 @@
+"""Speed of the solver layer, side by side in one run (printed, not asserted).
+
+1. HNW rigid body, time to reach error 1e-10 at t = 20: this library's best adaptive method against
+   scipy's solve_ivp DOP853, and against a hand-written compiled fixed-step order-8 loop (the RHS
+   inlined, the step the largest that reaches 1e-10): the limit for this problem.
+2. A batch of 1000 trajectories in one compiled call against 1000 calls one at a time (ours, and
+   solve_ivp's).
+Times are minima over repeated runs after a warm-up.
+
+    python benchmarks/solver_speed.py
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+from numba import njit
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "src"))
+from classical_dynamics.models import rigid_body as rhs  # noqa: E402
+from classical_dynamics.provenance import software_stamp  # noqa: E402
+from classical_dynamics.solvers import references as ref  # noqa: E402
+from classical_dynamics.solvers import runge_kutta as rk  # noqa: E402
+from classical_dynamics.solvers.ode import Problem, solve, solve_batch  # noqa: E402
+from classical_dynamics.solvers.timing import min_time  # noqa: E402
+
+TARGET = 1e-10
+T = 20.0
+EXACT = ref.hnw_rigid_body(T)
+HNW = Problem(rhs.euler_free, ref.HNW_Y0, (0.0, T), ref.HNW_I)
+
+
+@njit(cache=True)
+def hand_written_dop853(y0, h, n, A, B, C):
+    """Fixed-step DOP853 with the HNW right-hand side written in: no calls, no error control."""
+    y = y0.copy()
+    K = np.zeros((12, 3))
+    tmp = np.empty(3)
+    for _ in range(n):
+        for i in range(12):
+            for j in range(3):
+                acc = 0.0
+                for l in range(i):
+                    acc += A[i, l] * K[l, j]
+                tmp[j] = y[j] + h * acc
+            K[i, 0] = -2.0 * tmp[1] * tmp[2]
+            K[i, 1] = 1.25 * tmp[0] * tmp[2]
+            K[i, 2] = -0.5 * tmp[0] * tmp[1]
+        for j in range(3):
+            acc = 0.0
+            for l in range(12):
+                acc += B[l] * K[l, j]
+            y[j] += h * acc
+    return y
+
+
+def error(y):
+    return float(np.max(np.abs(y - EXACT)))
+
+
+def fastest_adaptive():
+    """(method, rtol, seconds, error) of the quickest compiled or scipy setting reaching TARGET."""
+    results = {}
+    for method in ("dop853", "dopri5", "scipy:DOP853", "scipy:RK45"):
+        best = None
+        for rtol in 10.0 ** -np.arange(6, 13.5, 0.5):
+            err = error(solve(HNW, method, rtol=rtol, atol=rtol * 1e-3).y)
+            if err <= TARGET:
+                seconds, _, _ = min_time(lambda: solve(HNW, method, rtol=rtol, atol=rtol * 1e-3), repeats=30,
+                                         budget_s=1.0)
+                best = (method, rtol, seconds, err)
+                break
+        results[method] = best
+    return results
+
+
+def hand_written_limit():
+    d = rk.DOP853
+    for n in range(20, 2000):
+        y = hand_written_dop853(ref.HNW_Y0, T / n, n, d.A, d.B, d.C)
+        if error(y) <= TARGET:
+            seconds, _, _ = min_time(lambda: hand_written_dop853(ref.HNW_Y0, T / n, n, d.A, d.B, d.C), repeats=200,
+                                     budget_s=1.0)
+            return n, seconds, error(y)
+    raise RuntimeError("no fixed step reached the target")
+
+
+def batch(count=1000):
+    rng = np.random.default_rng(1)
+    Y0 = ref.HNW_Y0 + 0.05 * rng.standard_normal((count, 3))
+    rtol = 1e-10
+    one = lambda: [solve(Problem(rhs.euler_free, y, (0.0, T), ref.HNW_I), "dop853", rtol=rtol, atol=rtol * 1e-3)
+                   for y in Y0]
+    together = lambda: solve_batch(rhs.euler_free, Y0, (0.0, T), ref.HNW_I, rtol=rtol, atol=rtol * 1e-3)
+    t_one, _, _ = min_time(one, repeats=3, budget_s=2.0)
+    t_batch, _, _ = min_time(together, repeats=5, budget_s=2.0)
+    few = Y0[:20]
+    t_scipy, _, _ = min_time(lambda: [solve(Problem(rhs.euler_free, y, (0.0, T), ref.HNW_I), "scipy:DOP853",
+                                            rtol=rtol, atol=rtol * 1e-3) for y in few], repeats=2, budget_s=2.0)
+    return t_one / count, t_batch / count, t_scipy / len(few)
+
+
+def main():
+    start = time.perf_counter()
+    solve(HNW, "dop853", rtol=1e-8, atol=1e-11)
+    print(f"machine: {software_stamp()}")
+    print(f"first call in this process (compiled loop loaded from cache): {time.perf_counter() - start:.2f} s\n")
+    adaptive = fastest_adaptive()
+    print(f"HNW rigid body, t = {T:g}, time to reach error <= {TARGET:g}:")
+    for method, (m, rtol, seconds, err) in adaptive.items():
+        print(f"  {m:14s} rtol {rtol:8.1e}  error {err:8.2e}  {seconds * 1e6:10.1f} us")
+    ours = min((v for k, v in adaptive.items() if not k.startswith("scipy")), key=lambda v: v[2])
+    n, limit_s, limit_err = hand_written_limit()
+    print(f"  {'hand-written':14s} {n:4d} fixed steps error {limit_err:8.2e}  {limit_s * 1e6:10.1f} us")
+    print(f"\n  best of ours ({ours[0]}) vs solve_ivp DOP853: {adaptive['scipy:DOP853'][2] / ours[2]:7.1f}x faster"
+          "   (goal >= 100x)")
+    print(f"  best of ours vs hand-written limit:       {ours[2] / limit_s:7.2f}x slower   (goal <= 2x)")
+    per_one, per_batch, per_scipy = batch()
+    print("\nA batch of 1000 trajectories (HNW body, perturbed starts, rtol 1e-10), time per trajectory:")
+    print(f"  ours, one call each   {per_one * 1e6:9.1f} us")
+    print(f"  ours, one batch call  {per_batch * 1e6:9.1f} us   -> {per_one / per_batch:5.2f}x")
+    print(f"  solve_ivp, one each   {per_scipy * 1e6:9.1f} us   -> batch is {per_scipy / per_batch:6.1f}x faster"
+          "   (goal >= 10x)")
+
+
+if __name__ == "__main__":
+    main()

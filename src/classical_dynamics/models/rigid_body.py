@@ -1,0 +1,34 @@
+"""Right-hand sides of rigid-body and test problems, compiled: f(t, y, p, out)."""
+
+from __future__ import annotations
+
+from ..solvers.runge_kutta import rhs_function
+
+
+@rhs_function
+def euler_free(t, w, p, out):
+    """Euler's equations for the body angular velocity w, p = (I1, I2, I3)."""
+    out[0] = (p[1] - p[2]) / p[0] * w[1] * w[2]
+    out[1] = (p[2] - p[0]) / p[1] * w[2] * w[0]
+    out[2] = (p[0] - p[1]) / p[2] * w[0] * w[1]
+
+
+@rhs_function
+def detest_b5(t, y, p, out):
+    """DETEST B5 (Hull et al. 1972): y1' = y2 y3, y2' = -y1 y3, y3' = -0.51 y1 y2."""
+    out[0] = y[1] * y[2]
+    out[1] = -y[0] * y[2]
+    out[2] = -0.51 * y[0] * y[1]
+
+
+@rhs_function
+def oscillator(t, y, p, out):
+    """x'' = -omega^2 x as a first-order system, p = (omega,)."""
+    out[0] = y[1]
+    out[1] = -p[0] * p[0] * y[0]
+
+
+@rhs_function
+def riccati(t, y, p, out):
+    """p' = m + mu p^2 (Lee 1964, eq. 2.4), p = (m, mu)."""
+    out[0] = p[0] + p[1] * y[0] * y[0]

@@ -1,0 +1,44 @@
+"""The solver layer as a study: work-precision on classical test problems, long horizons, hard cases.
+
+Scenes choose a `problem`: hnw_rigid_body or detest_b5 (work-precision sweeps against their
+elliptic-function solutions), long_horizon (energy and Casimir error over up to 10^6 periods), or
+hard_cases (the separatrix, the intermediate axis, blow-up, numerical damping).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ...scenes import EffectRegistry, Scene, SceneError
+
+TITLE = "The solver layer"
+EFFECTS = EffectRegistry("solvers")           # test problems have no physical effects to switch
+
+
+def check(path: Path, data: dict) -> None:
+    numerics = data.get("numerics", {})
+    problem = data["problem"]
+    if problem == "detest_b5" and any(m.startswith("splitting") for m in numerics.get("methods", [])):
+        raise SceneError(path, "numerics.methods", "methods for a general ODE (splitting needs a rigid body)",
+                         numerics["methods"])
+    if problem in ("hnw_rigid_body", "detest_b5"):
+        for key in ("methods", "tolerances"):
+            if key not in numerics:
+                raise SceneError(path, f"numerics.{key}", "a list (the sweep)", None, has_got=False)
+        if any(m.startswith("splitting") for m in numerics["methods"]) and "steps" not in numerics:
+            raise SceneError(path, "numerics.steps", "step sizes for the splitting methods", None, has_got=False)
+
+
+def run(scene: Scene, quick: bool = False):
+    from ..results import Results
+    from . import hard_cases, long_horizon, sweeps
+
+    results = Results("solvers", scene.name, scene.title)
+    problem = scene.data["problem"]
+    if problem in ("hnw_rigid_body", "detest_b5"):
+        sweeps.run(scene, results, quick)
+    elif problem == "long_horizon":
+        long_horizon.run(scene, results, quick)
+    else:
+        hard_cases.run(scene, results, quick)
+    return results

@@ -1,0 +1,145 @@
+"""Hard cases of the solver layer, measured: separatrix, intermediate axis, blow-up, numerical damping."""
+
+from __future__ import annotations
+
+import mpmath
+import numpy as np
+import pandas as pd
+from scipy import special
+
+from ...models import rigid_body as rhs
+from ...solvers import references as ref
+from ...solvers import rigid_body, symplectic
+from ...solvers.ode import Problem, solve
+from ..results import new_figure
+
+
+def run(scene, results, quick):
+    numerics = scene.data.get("numerics", {})
+    _separatrix(results, numerics.get("separatrix_one_minus_m", 1e-10), quick)
+    _intermediate_axis(results)
+    _blow_up(results)
+    _numerical_damping(results, quick)
+
+
+def _separatrix(results, one_minus_m, quick):
+    """I = (1, 2, 3), omega0 = (x, 0, 1): m = x^2 / 3, so x = sqrt(3 m) puts m = 1 - one_minus_m."""
+    m = 1.0 - one_minus_m
+    I = np.array([1.0, 2.0, 3.0])
+    w0 = np.array([np.sqrt(3 * m), 0.0, 1.0])
+    K = special.ellipk(m)
+    u = np.linspace(0, 4 * K, 33)
+    ours = np.stack(ref.ellipj(u, m)[:3], axis=1)
+    raw = np.stack(special.ellipj(u, m)[:3], axis=1)
+    with mpmath.workdps(30):
+        exact = np.array([[float(mpmath.ellipfun(f, mpmath.mpf(x), m=mpmath.mpf(m))) for f in ("sn", "cn", "dn")]
+                          for x in u])
+    err_ours, err_raw = np.max(np.abs(ours - exact)), np.max(np.abs(raw - exact))
+    results.number("separatrix_one_minus_m", one_minus_m, "1")
+    results.number("separatrix_ellipj_error_ours", err_ours, "1", note="max over [0, 4K] against mpmath, 30 digits")
+    results.number("separatrix_ellipj_error_scipy", err_raw, "1", note="scipy.special.ellipj as it is (#8480)")
+    results.hard_case("separatrix_reference", f"Jacobi functions at m = 1 − {one_minus_m:g} against mpmath "
+                      f"(scipy's own ellipj is off by {err_raw:.1e} there)", err_ours, 1e-13)
+    # the body on the separatrix side: integrators stay on the energy surface over a few periods
+    rate = np.sqrt((I[2] - I[1]) * (np.sum((I * w0) ** 2) - np.sum(I * w0 * w0) * I[0]) / np.prod(I))
+    period = 4 * K / rate
+    T = (2 if quick else 4) * period
+    H0 = 0.5 * np.sum(I * w0 * w0)
+    C0 = np.sum((I * w0) ** 2)
+    sol = solve(Problem(rhs.euler_free, w0, (0.0, T), I), "dop853", rtol=1e-12, atol=1e-15, record_steps=True)
+    dH = np.max(np.abs(0.5 * np.sum(I * sol.y_steps ** 2, axis=1) - H0)) / H0
+    ms, _ = rigid_body.free_body(I, I * w0, 0.005, int(T / 0.005), 4, 10)
+    dC = np.max(np.abs(np.sum(ms * ms, axis=1) - C0)) / C0
+    dHs = np.max(np.abs(0.5 * np.sum(ms * ms / I, axis=1) - H0)) / H0
+    results.number("separatrix_period", period, "time units")
+    results.number("separatrix_dop853_energy_error", dH, "1", note="rtol 1e-12")
+    results.number("separatrix_splitting_energy_error", dHs, "1", note="order 4, h = 0.005")
+    results.number("separatrix_splitting_casimir_error", dC, "1")
+    results.hard_case("separatrix_energy_surface", "Near the separatrix DOP853 (rtol 1e-12) stays on the energy "
+                      "surface (relative energy error)", dH, 1e-10)
+    rotations = 15 * int(T / 0.005)
+    results.hard_case("separatrix_casimir", "Near the separatrix the splitting keeps |m|² to round-off: its error "
+                      "over 10·√N·eps (N exact rotations)", dC / (10 * np.sqrt(rotations) * np.finfo(float).eps), 1.0)
+    # the reference itself against an independent integration, half a period (errors grow like e^{rate t})
+    t = np.linspace(0, period / 2, 9)
+    check = solve(Problem(rhs.euler_free, w0, (0.0, t[-1]), I), "dop853", rtol=1e-13, atol=1e-16, t_eval=t)
+    results.number("separatrix_reference_vs_dop853", float(np.max(np.abs(ref.free_rigid_body(I, I * w0, t)
+                                                                          - check.y_eval))), "rad/s",
+                   note="half a period; the separatrix amplifies any error like e^{rate t}")
+
+
+def _intermediate_axis(results):
+    """Spin q0 about the middle axis: perturbations grow like exp(q0 sqrt((A-B)(B-C)/(AC)) t)."""
+    A, B, C = 3.0, 2.0, 1.0
+    q0 = 1.0
+    theory = q0 * np.sqrt((A - B) * (B - C) / (A * C))
+    w0 = np.array([1e-10, q0, 1e-10])
+    t = np.linspace(0, 30, 601)
+    sol = solve(Problem(rhs.euler_free, w0, (0.0, 30.0), np.array([A, B, C])), "dop853", rtol=1e-12, atol=1e-20,
+                t_eval=t)
+    size = np.hypot(sol.y_eval[:, 0], sol.y_eval[:, 2])
+    window = (size > 1e-8) & (size < 1e-3)
+    measured = np.polyfit(t[window], np.log(size[window]), 1)[0]
+    results.number("intermediate_axis_growth_rate", measured, "1/time", note="fit of log|(w1, w3)| in the linear regime")
+    results.number("intermediate_axis_growth_theory", theory, "1/time", note="q0 sqrt((A-B)(B-C)/(AC))")
+    results.hard_case("intermediate_axis", "Spin about the middle axis: measured growth rate against "
+                      "q0·√((A−B)(B−C)/(AC)) (relative difference)", abs(measured / theory - 1), 1e-3)
+
+
+def _blow_up(results):
+    rows = []
+    for m, mu, p0 in ((1.0, 1.0, 0.0), (0.5, -0.2, -2.0), (-0.3, -0.5, 0.4), (0.0, 0.7, 1.5)):
+        exact = ref.riccati_blow_up_time(m, mu, p0)
+        sol = solve(Problem(rhs.riccati, [p0], (0.0, 2 * exact), [m, mu]), "dop853", rtol=1e-10, atol=1e-12)
+        rows.append({"m": m, "mu": mu, "p0": p0, "t_star_closed_form": exact, "t_star_measured": sol.t,
+                     "status": sol.status, "relative_difference": sol.t / exact - 1})
+    frame = pd.DataFrame(rows)
+    results.table("blow_up", frame, "Finite-time blow-up of p' = m + μp² (Lee 1964, eq. 2.4): the time at which "
+                  "the run stops (|p| passes 10¹²) against the closed form.")
+    worst = float(frame.relative_difference.abs().max())
+    results.number("blow_up_worst_relative_difference", worst, "1")
+    results.number("blow_up_lee_case_t_star", float(frame.t_star_measured.iloc[1]), "time units",
+                   note="m = 0.5, mu = -0.2, p0 = -2")
+    results.hard_case("blow_up", "Blow-up reported with its time (status 'blow-up', not NaN, not a hang): "
+                      "relative difference to the closed-form t*", worst, 1e-9)
+
+
+def _numerical_damping(results, quick):
+    """An undamped oscillator over 100 periods: the energy each method loses, as a spurious Q."""
+    periods = 100
+    T = periods * 2 * np.pi
+    problem = Problem(rhs.oscillator, [1.0, 0.0], (0.0, T), [1.0])
+    rows = []
+    for method in ("dop853", "dopri5", "scipy:RK45", "scipy:DOP853", "scipy:Radau", "scipy:BDF", "scipy:LSODA"):
+        for rtol in (1e-6, 1e-9):
+            sol = solve(problem, method, rtol=rtol, atol=rtol * 1e-3)
+            change = 0.5 * (sol.y[0] ** 2 + sol.y[1] ** 2) / 0.5 - 1
+            rows.append({"method": method, "rtol": rtol, "energy_change": change,
+                         "spurious_Q": 2 * np.pi * periods / abs(change) if change else np.inf})
+    for h in (2 * np.pi / 20, 2 * np.pi / 100):
+        n = int(round(T / h))
+        qs, vs = symplectic.integrate(symplectic.harmonic, np.array([1.0]), np.array([1.0]), np.array([0.0]), h, n,
+                                      2, n)
+        change = 0.5 * (qs[-1, 0] ** 2 + vs[-1, 0] ** 2) / 0.5 - 1
+        rows.append({"method": "Stormer-Verlet", "rtol": h, "energy_change": change,
+                     "spurious_Q": 2 * np.pi * periods / abs(change) if change else np.inf})
+    frame = pd.DataFrame(rows)
+    results.table("numerical_damping", frame, "An undamped oscillator over 100 periods: relative energy change "
+                  "and the quality factor it would be mistaken for, Q = 2π·(periods)/|ΔE/E| (for Störmer–Verlet "
+                  "the 'rtol' column is the step).")
+    bdf = frame[(frame.method == "scipy:BDF") & (frame.rtol == 1e-6)].iloc[0]
+    results.number("bdf_spurious_Q_rtol_1e-6", bdf.spurious_Q, "1")
+    results.number("bdf_energy_change_rtol_1e-6", bdf.energy_change, "1")
+    verlet = frame[frame.method == "Stormer-Verlet"]
+    results.number("verlet_worst_energy_change", float(verlet.energy_change.abs().max()), "1",
+                   note="bounded, oscillating; sampled at the end of the run")
+    fig, ax = new_figure(6.0, 3.6)
+    for rtol, part in frame[frame.method != "Stormer-Verlet"].groupby("rtol"):
+        ax.semilogy(part.method.str.replace("scipy:", "scipy\n"), np.abs(part.energy_change), "o",
+                    label=f"rtol = {rtol:g}")
+    ax.set_ylabel("|ΔE / E| after 100 periods")
+    ax.tick_params(axis="x", labelsize=7)
+    ax.legend(fontsize=8)
+    results.figure("numerical_damping", fig, "Energy an undamped oscillator loses in 100 periods, by method: "
+                   "BDF damps it most. A physical Q must be compared against this floor.")
+    del quick

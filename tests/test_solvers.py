@@ -1,0 +1,219 @@
+"""The solver layer against exact solutions, and its hard cases."""
+
+import mpmath
+import numpy as np
+import pytest
+from scipy import special
+
+from classical_dynamics.models import rigid_body as rhs
+from classical_dynamics.solvers import references as ref
+from classical_dynamics.solvers import rigid_body, symplectic
+from classical_dynamics.solvers.ode import Events, Problem, solve, solve_batch
+from classical_dynamics.solvers.runge_kutta import rhs_function
+
+HNW = Problem(rhs.euler_free, ref.HNW_Y0, (0.0, 20.0), ref.HNW_I)
+
+
+# Right-hand sides and event functions: compiled with the integrators' signature, cached.
+@rhs_function
+def torqued(t, w, p, out):
+    """Axisymmetric body (I, I, I3) = (p0, p0, p1) with body-fixed torque (p2, p3, p4)."""
+    out[0] = (p[0] - p[1]) / p[0] * w[1] * w[2] + p[2] / p[0]
+    out[1] = (p[1] - p[0]) / p[0] * w[2] * w[0] + p[3] / p[0]
+    out[2] = p[4] / p[1]
+
+
+@rhs_function
+def still(t, y, p, out):
+    out[0] = 0.0
+
+
+@rhs_function
+def fast_cosine(t, y, p, out):
+    out[0] = np.cos(40.0 * t)
+
+
+@rhs_function
+def second_component(t, y, p, out):
+    out[0] = y[1]
+
+
+@pytest.mark.parametrize("method,rtol,bound", [("dop853", 1e-12, 1e-11), ("dopri5", 1e-10, 1e-8),
+                                               ("scipy:DOP853", 1e-12, 1e-11)])
+def test_hnw_against_elliptic_functions(method, rtol, bound):
+    t = np.linspace(0, 20, 101)
+    sol = solve(HNW, method, rtol=rtol, atol=rtol * 1e-3, t_eval=t)
+    assert sol.status == "success"
+    assert np.max(np.abs(sol.y - ref.hnw_rigid_body(20.0))) < bound
+    assert np.max(np.abs(sol.y_eval - ref.hnw_rigid_body(t))) < 5 * bound       # dense output too
+
+
+def test_detest_b5():
+    sol = solve(Problem(rhs.detest_b5, [0.0, 1.0, 1.0], (0.0, 20.0)), "dop853", rtol=1e-12, atol=1e-15)
+    assert np.max(np.abs(sol.y - ref.detest_b5(20.0))) < 1e-11
+
+
+def test_compiled_dop853_takes_scipys_steps():
+    ours = solve(HNW, "dop853", rtol=1e-9, atol=1e-12)
+    theirs = solve(HNW, "scipy:DOP853", rtol=1e-9, atol=1e-12)
+    assert ours.n_steps == theirs.n_steps
+    assert np.allclose(ours.y, theirs.y, rtol=1e-12, atol=1e-14)
+
+
+@pytest.mark.parametrize("I,w0", [((1.0, 2.0, 3.0), (0.3, -0.8, 0.5)), ((1.0, 2.0, 3.0), (1.0, 0.3, -0.1)),
+                                  ((1.0, 2.0, 3.0), (-0.5, 0.2, -0.7)), ((0.7, 1.1, 2.9), (0.0, 1.2, 0.4))])
+def test_free_rigid_body_closed_form_on_both_sides_of_the_separatrix(I, w0):
+    t = np.linspace(0, 30, 31)
+    sol = solve(Problem(rhs.euler_free, w0, (0, 30), I), "dop853", rtol=1e-13, atol=1e-15, t_eval=t)
+    assert np.max(np.abs(ref.free_rigid_body(I, np.array(I) * np.array(w0), t) - sol.y_eval)) < 1e-11
+
+
+@pytest.mark.parametrize("one_minus_m", [1e-6, 1e-10, 1e-12])
+def test_jacobi_functions_near_the_separatrix_against_mpmath(one_minus_m):
+    # Hard case: scipy's ellipj is wrong by ~1e11 at m = 1 - 1e-10 (scipy #8480).
+    m = 1.0 - one_minus_m
+    u = np.linspace(-4 * special.ellipk(m), 8 * special.ellipk(m), 61)
+    ours = np.stack(ref.ellipj(u, m)[:3], axis=1)
+    with mpmath.workdps(30):
+        exact = np.array([[float(mpmath.ellipfun(f, mpmath.mpf(x), m=mpmath.mpf(m))) for f in ("sn", "cn", "dn")]
+                          for x in u])
+    assert np.max(np.abs(ours - exact)) < 1e-13
+
+
+def test_integrators_stay_on_the_energy_surface_near_the_separatrix():
+    I = np.array([1.0, 2.0, 3.0])
+    w0 = np.array([np.sqrt(3 * (1 - 1e-10)), 0.0, 1.0])
+    H0, C0 = 0.5 * np.sum(I * w0 * w0), np.sum((I * w0) ** 2)
+    sol = solve(Problem(rhs.euler_free, w0, (0.0, 150.0), I), "dop853", rtol=1e-12, atol=1e-15, record_steps=True)
+    assert np.max(np.abs(0.5 * np.sum(I * sol.y_steps ** 2, axis=1) / H0 - 1)) < 1e-10
+    ms, _ = rigid_body.free_body(I, I * w0, 0.01, 15000, 2, 10)
+    assert np.max(np.abs(np.sum(ms * ms, axis=1) / C0 - 1)) < 1e-12
+    assert np.max(np.abs(0.5 * np.sum(ms * ms / I, axis=1) / H0 - 1)) < 1e-3     # bounded O(h^2)
+
+
+def test_intermediate_axis_growth_rate():
+    A, B, C, q0 = 3.0, 2.0, 1.0, 1.5
+    theory = q0 * np.sqrt((A - B) * (B - C) / (A * C))
+    t = np.linspace(0, 20, 401)
+    sol = solve(Problem(rhs.euler_free, [1e-10, q0, 1e-10], (0, 20), [A, B, C]), "dop853", rtol=1e-12, atol=1e-20,
+                t_eval=t)
+    size = np.hypot(sol.y_eval[:, 0], sol.y_eval[:, 2])
+    window = (size > 1e-8) & (size < 1e-3)
+    assert np.polyfit(t[window], np.log(size[window]), 1)[0] == pytest.approx(theory, rel=1e-3)
+
+
+@pytest.mark.parametrize("m,mu,p0", [(1.0, 1.0, 0.0), (0.5, -0.2, -2.0), (-0.3, -0.5, 0.4), (-0.4, 0.3, 2.0),
+                                     (0.0, 0.7, 1.5)])
+def test_blow_up_time_matches_the_closed_form(m, mu, p0):
+    t_star = ref.riccati_blow_up_time(m, mu, p0)
+    sol = solve(Problem(rhs.riccati, [p0], (0.0, 2 * t_star), [m, mu]), "dop853", rtol=1e-10, atol=1e-12)
+    assert sol.status == "blow-up"
+    assert sol.t == pytest.approx(t_star, rel=1e-9)
+    assert np.isfinite(sol.y).all()
+
+
+def test_lee_blow_up_number():
+    assert ref.riccati_blow_up_time(0.5, -0.2, -2.0) == pytest.approx(3.39296045, abs=1e-8)
+
+
+@pytest.mark.parametrize("m,mu,p0", [(0.5, -0.2, 0.3), (0.5, -0.2, 2.0), (-0.3, 0.5, 0.2), (1.0, 1.0, 0.5)])
+def test_riccati_closed_forms_against_integration(m, mu, p0):
+    T = min(3.0, 0.9 * ref.riccati_blow_up_time(m, mu, p0))
+    t = np.linspace(0, T, 7)
+    sol = solve(Problem(rhs.riccati, [p0], (0.0, T), [m, mu]), "dop853", rtol=1e-12, atol=1e-14, t_eval=t)
+    assert np.allclose(sol.y_eval[:, 0], ref.riccati(m, mu, p0, t), rtol=1e-9)
+
+
+@pytest.mark.parametrize("M3", [0.03, 0.0, -0.03])
+def test_bodewadt_fresnel_solution(M3):
+    t = np.linspace(0, 50, 11)
+    sol = solve(Problem(torqued, [0.1, 0.0, 2.0], (0, 50), [1.0, 1.8, 0.05, -0.02, M3]), "dop853", rtol=1e-13,
+                atol=1e-15, t_eval=t)
+    closed = ref.bodewadt(1.0, 1.8, (0.05, -0.02, M3), np.array([0.1, 0.0, 2.0]), t)
+    assert np.max(np.abs(closed - sol.y_eval)) < 1e-11
+
+
+def test_events_do_not_miss_two_sign_changes_in_one_step():
+    # g = cos(40 t) on a trivial ODE: adaptive steps are huge, yet every crossing must be found.
+    sol = solve(Problem(still, [0.0], (0.0, 1.0)), "dop853", rtol=1e-6, atol=1e-9, events=Events(fast_cosine, 1),
+                subdivisions=64)
+    expected = (np.arange(13) + 0.5) * np.pi / 40
+    assert sol.n_steps < 10
+    assert np.allclose(sol.event_t, expected[expected < 1.0], atol=1e-12)
+
+
+def test_terminal_event_and_direction():
+    sol = solve(HNW, "dop853", rtol=1e-12, atol=1e-15,
+                events=Events(second_component, 1, directions=(-1,), terminal=(True,)))
+    assert sol.status == "terminal event"
+    assert sol.t == pytest.approx(ref.HNW_PERIOD / 2, rel=1e-10)        # y2 = a sn falls through 0 at u = 2K
+
+
+@pytest.mark.parametrize("kwargs,message", [
+    ({"rtol": 1e-15, "atol": 1e-18}, "below 100\\*eps"), ({"rtol": 0.0, "atol": 1e-9}, "positive"),
+    ({"rtol": 1e-6, "atol": -1.0}, "positive")])
+def test_tolerances_that_cannot_be_honoured_are_refused(kwargs, message):
+    with pytest.raises(ValueError, match=message):
+        solve(HNW, "dop853", **kwargs)
+
+
+def test_bad_initial_state_and_span_are_refused():
+    with pytest.raises(ValueError, match="not finite"):
+        solve(Problem(rhs.euler_free, [np.nan, 0, 1], (0, 1), ref.HNW_I), "dop853")
+    with pytest.raises(ValueError, match="not after"):
+        solve(Problem(rhs.euler_free, [1.0, 0, 1], (1.0, 0.0), ref.HNW_I), "dop853")
+    with pytest.raises(ValueError, match="positive"):
+        rigid_body.free_body(ref.HNW_I, [1, 0, 1], -0.1, 10)
+
+
+def test_splitting_orders_and_quaternion():
+    I, m0 = ref.HNW_I, ref.HNW_I * ref.HNW_Y0
+    for order, expected in ((2, 2.0), (4, 4.0)):
+        errors = [np.max(np.abs(rigid_body.free_body(I, m0, h, int(round(20 / h)), order, int(round(20 / h)))[0][-1]
+                                / I - ref.hnw_rigid_body(20.0))) for h in (0.05, 0.025)]
+        assert np.log2(errors[0] / errors[1]) == pytest.approx(expected, abs=0.15)
+    ms, qs = rigid_body.free_body(I, m0, 0.05, 100000, 2, 1000)
+    assert np.max(np.abs(np.linalg.norm(qs, axis=1) - 1)) < 1e-12               # Lie-group update
+    L = rigid_body.rotate_to_space(qs, ms)
+    assert np.max(np.abs(L - L[0])) < 1e-11                                      # space angular momentum
+
+
+def test_splitting_with_a_body_fixed_torque_converges_to_bodewadt():
+    from numba import njit
+
+    @njit
+    def axial(t, m, q, p, out):
+        out[0], out[1], out[2] = 0.0, 0.0, p[0]
+    I = np.array([1.0, 1.0, 1.8])
+    m0 = I * np.array([0.1, 0.0, 2.0])
+    exact = ref.bodewadt(1.0, 1.8, (0.0, 0.0, 0.03), np.array([0.1, 0.0, 2.0]), 50.0)
+    errors = []
+    for h in (0.002, 0.001):
+        ms, qs = rigid_body.integrate_torqued(I, m0, np.array([1.0, 0, 0, 0]), h, int(round(50 / h)), 2,
+                                              int(round(50 / h)), axial, np.array([0.03]))
+        errors.append(np.max(np.abs(ms[-1] / I - exact)))
+        assert abs(np.linalg.norm(qs[-1]) - 1) < 1e-12
+    assert errors[0] / errors[1] == pytest.approx(4.0, rel=0.05)
+
+
+def test_numerical_damping_of_an_undamped_oscillator():
+    problem = Problem(rhs.oscillator, [1.0, 0.0], (0.0, 200 * np.pi), [1.0])
+    change = {}
+    for method in ("scipy:BDF", "dop853"):
+        y = solve(problem, method, rtol=1e-6, atol=1e-9).y
+        change[method] = y[0] ** 2 + y[1] ** 2 - 1
+    assert change["scipy:BDF"] < -1e-4                         # BDF damps: not a physical Q
+    assert abs(change["dop853"]) < abs(change["scipy:BDF"]) / 10
+    qs, vs = symplectic.integrate(symplectic.harmonic, np.array([1.0]), np.array([1.0]), np.array([0.0]),
+                                  2 * np.pi / 50, 5000, 2, 1)
+    energy = qs[:, 0] ** 2 + vs[:, 0] ** 2
+    assert np.max(np.abs(energy - 1)) < 5e-3 and abs(energy[-1000:].mean() - energy[:1000].mean()) < 1e-4
+
+
+def test_batch_equals_one_at_a_time():
+    Y0 = np.array([[1.0, 0.0, 0.9], [0.5, 0.2, 0.9], [1.0, -0.3, 0.2]])
+    status, t_end, final, _ = solve_batch(rhs.euler_free, Y0, (0.0, 20.0), ref.HNW_I, rtol=1e-10, atol=1e-13)
+    for row, y in zip(Y0, final):
+        single = solve(Problem(rhs.euler_free, row, (0.0, 20.0), ref.HNW_I), "dop853", rtol=1e-10, atol=1e-13)
+        assert np.array_equal(single.y, y)
+    assert status == ["success"] * 3
