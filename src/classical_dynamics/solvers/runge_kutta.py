@@ -240,6 +240,17 @@ def _initial_step(f, p, t0, y0, f0, order, rtol, atol):
     return min(100 * h0, h1)
 
 
+@njit(cache=True)
+def _record(ts, ys, n_rec, t, y):
+    """Append (t, y) to the step record, doubling its storage when full."""
+    if n_rec == ts.size:
+        ts = np.concatenate((ts, np.empty(ts.size)))
+        ys = np.concatenate((ys, np.empty((ys.shape[0], ys.shape[1]))))
+    ts[n_rec] = t
+    ys[n_rec] = y
+    return ts, ys, n_rec + 1
+
+
 @njit(RHS_SIG, cache=True)
 def _no_events(t, y, p, out):
     pass
@@ -387,26 +398,14 @@ def integrate(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extr
             t = t_stop
             status = TERMINAL_EVENT if stop_here else BLOW_UP
             if record:
-                if n_rec == cap:
-                    ts = np.concatenate((ts, np.empty(cap)))
-                    ys = np.concatenate((ys, np.empty((cap, n))))
-                    cap *= 2
-                ts[n_rec] = t
-                ys[n_rec] = y
-                n_rec += 1
+                ts, ys, n_rec = _record(ts, ys, n_rec, t, y)
             break
         t = t_new
         y, y_new = y_new, y          # swap buffers: no copy, no allocation
         f_old[:] = K[s]
         h = h_next
         if record:
-            if n_rec == cap:
-                ts = np.concatenate((ts, np.empty(cap)))
-                ys = np.concatenate((ys, np.empty((cap, n))))
-                cap *= 2
-            ts[n_rec] = t
-            ys[n_rec] = y
-            n_rec += 1
+            ts, ys, n_rec = _record(ts, ys, n_rec, t, y)
     return (status, t, y, y_eval, nfev, naccept, nreject, ts[:n_rec], ys[:n_rec],
             ev_t[:n_ev], ev_y[:n_ev], ev_i[:n_ev])
 
