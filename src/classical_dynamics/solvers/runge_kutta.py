@@ -408,23 +408,3 @@ def integrate(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extr
             ts, ys, n_rec = _record(ts, ys, n_rec, t, y)
     return (status, t, y, y_eval, nfev, naccept, nreject, ts[:n_rec], ys[:n_rec],
             ev_t[:n_ev], ev_y[:n_ev], ev_i[:n_ev])
-
-
-@njit((FUNC, VEC, F64, VEC, F64, I64, MAT, VEC, VEC), cache=True)
-def fixed_step(f, p, t0, y0, h, n_steps, A, B, C):
-    """A fixed-step explicit Runge-Kutta loop (no error control): the 'hand-written' limit."""
-    n = y0.size
-    s = B.size
-    K = np.zeros((s + 1, n))
-    y = y0.copy()
-    y_new = np.empty(n)
-    tmp = np.empty(n)
-    t = t0
-    f_old = np.empty(n)
-    f(t, y, p, f_old)
-    for _ in range(n_steps):
-        _stages(f, p, t, y, h, A, B, C, K, f_old, tmp, y_new)
-        y, y_new = y_new, y
-        f_old[:] = K[s]
-        t += h
-    return y

@@ -65,7 +65,7 @@ def run(scene, results, quick):
                   "frequencies σ²l/g = (j/2)², periods, and the collocation solution's relative error.")
     _mode_shape_figure(results, j)
     if "rayleigh" in analysis:
-        _rayleigh(results, analysis["rayleigh"], (j[0] / 2) ** 2, (j[1] / 2) ** 2, quick)
+        _rayleigh(results, analysis["rayleigh"], (j[0] / 2) ** 2, quick)
     if "mcmahon_check" in analysis:
         _high_index_zeros(results, analysis["mcmahon_check"]["k_max"])
 
@@ -88,7 +88,7 @@ def _mode_shape_figure(results, j):
                    "drawn as in Lamb's Fig. 58 (suspension at the top); the node of mode 2 is marked.")
 
 
-def _rayleigh(results, spec, exact1, exact2, quick):
+def _rayleigh(results, spec, exact1, quick):
     beta = np.linspace(spec["beta_min"], spec["beta_max"], 241 if quick else 1201)
     f = rayleigh_quotient(beta)
     beta_star = (-2 + np.sqrt(34)) / 6                      # root of 6 beta^2 + 4 beta - 5 = 0
@@ -121,7 +121,6 @@ def _rayleigh(results, spec, exact1, exact2, quick):
     ax.legend(fontsize=8)
     results.figure("rayleigh", fig, "Rayleigh's estimate of the gravest frequency as a function of the "
                    "assumed type's β: always above the exact value, touching it closest at the stationary β.")
-    del exact2
 
 
 def _high_index_zeros(results, k_max):

@@ -19,7 +19,7 @@ def run(scene, results, quick):
     _separatrix(results, numerics.get("separatrix_one_minus_m", 1e-10), quick)
     _intermediate_axis(results)
     _blow_up(results)
-    _numerical_damping(results, quick)
+    _numerical_damping(results)
 
 
 def _separatrix(results, one_minus_m, quick):
@@ -104,7 +104,7 @@ def _blow_up(results):
                       "relative difference to the closed-form t*", worst, 1e-9)
 
 
-def _numerical_damping(results, quick):
+def _numerical_damping(results):
     """An undamped oscillator over 100 periods: the energy each method loses, as a spurious Q."""
     periods = 100
     T = periods * 2 * np.pi
@@ -142,4 +142,3 @@ def _numerical_damping(results, quick):
     ax.legend(fontsize=8)
     results.figure("numerical_damping", fig, "Energy an undamped oscillator loses in 100 periods, by method: "
                    "BDF damps it most. A physical Q must be compared against this floor.")
-    del quick
