@@ -12,6 +12,7 @@ from pathlib import Path
 from ...scenes import EffectRegistry, Scene, SceneError
 
 TITLE = "The solver layer"
+__all__ = ["TITLE", "EFFECTS", "check", "run"]
 EFFECTS = EffectRegistry("solvers")           # test problems have no physical effects to switch
 
 
