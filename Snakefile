@@ -2,7 +2,7 @@
 # This file is the report's table of contents: one include per study, in report order.
 #
 #   snakemake -c all                 everything: every scene of every study, then the report
-#   snakemake -c all chains          one study (its scenes only); also: solvers
+#   snakemake -c all chains          one study (its scenes only); also: chandler, solvers
 #   snakemake -c all report          the HTML and PDF report
 #   snakemake -c1 dist               a citable archive with SHA256SUMS
 #   snakemake -c all --config quick=1    a reduced build (what the tests run)
@@ -12,10 +12,11 @@ configfile: "workflow/config.yaml"
 
 include: "workflow/rules/common.smk"
 include: "workflow/rules/scenes.smk"
-# 1. Vibrations of chains: the hanging chain, discrete chains, strings, springs, rotating chains
+# Precession of the equinoxes            (to come: issue 5)
+# The Chandler wobble: Euler's rigid Earth, Lamb's elastic Earth, damping, excitation, the IERS data
+include: "workflow/rules/chandler.smk"
+# Vibrations of chains: the hanging chain, discrete chains, strings, springs, rotating chains
 include: "workflow/rules/chains.smk"
-# 2. Precession of the equinoxes        (to come: issue 5)
-# 3. The Chandler wobble                (to come: issue 4)
 # 4. The self-excited rigid body        (to come: issue 6)
 # The solver layer: what accuracy costs, against scipy's solve_ivp
 include: "workflow/rules/solvers.smk"

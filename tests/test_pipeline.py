@@ -120,10 +120,16 @@ def test_a_new_scene_file_is_picked_up_with_no_rule_edit(scratch):
      "chain.length_m"),
     ("title: x\nchain: {model: particles, n: 3, length_m: 1, mass_kg: 1}\neffects: {magic: {}}\n", "effects.magic"),
     ("title: [unclosed\n", "YAML at line"),
+    ("title: x\nobservation: {series: eopc04, start_year: 1962, end_year: 2100, window_years: 6.4, step_years: 1,"
+     " compare: {H: 0.00327, k2: 0.3}}\n", "observation.end_year"),
+    ("title: x\nearth: {H: 0.00327, H_definition: (C-A)/C, H_source: s}\n"
+     "effects: {elastic_yielding: {k2: 0.3, source: s}, dissipation: {Q: -1, source: s}}\n",
+     "effects.dissipation.Q"),
 ])
 def test_a_bad_scene_stops_the_build_and_touches_nothing(scratch, text, field):
     before = tree_digest(scratch / "results")
-    (scratch / "workflow/scenes/chains/broken.yaml").write_text(text)
+    study = "chandler" if "observation" in text or "earth" in text else "chains"
+    (scratch / f"workflow/scenes/{study}/broken.yaml").write_text(text)
     out = snakemake(scratch, "-c", "2", "--config", "quick=1", check=False)
     assert out.returncode != 0
     lines = [line for line in (out.stdout + out.stderr).splitlines() if "broken.yaml" in line]
@@ -144,7 +150,8 @@ def test_a_failing_must_hold_claim_fails_the_build_naming_it(scratch):
 def test_two_clean_builds_give_identical_results(built_repo, tmp_path):
     other = copy_repository(tmp_path / "again")
     snakemake(other, "-c", "2", "results/chains/hanging_particles", "results/chains/hanging_continuum",
-              "results/chains/hanging_time_domain", "results/chains/spring_chain", "--config", "quick=1")
+              "results/chains/hanging_time_domain", "results/chains/spring_chain", "results/chandler/excited",
+              "results/chandler/observed", "results/chandler/triaxial", "--config", "quick=1")
     mine = {k: v for k, v in result_files(built_repo).items() if k in result_files(other)}
     assert len(mine) > 10
     assert mine == result_files(other)

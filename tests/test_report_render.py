@@ -63,6 +63,7 @@ def test_pdf_pages(built_repo, tmp_path):
     for number in re.findall(r'<span class="label">Figure (\d+)\.</span>', html):
         assert f"Figure {number}." in text                                         # every figure, same number
     assert "Contents" in text and "References" in text and "Vibrations of chains" in text
+    assert "The Chandler wobble" in text and "Observed polar motion" in text
     # page numbers: the contents page names the page of the chains chapter
     assert re.search(r"Vibrations of chains\s*\.*\s*\d+", text)
     # figures are drawn: a figure page has much more ink than a text page

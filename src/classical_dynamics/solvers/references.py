@@ -62,26 +62,53 @@ def free_rigid_body(I, m0, t):
     if not (I[0] < I[1] < I[2]):
         raise ValueError("order the axes so that I1 < I2 < I3")
     w0 = np.asarray(m0, float) / I
-    M2 = float(np.sum((I * w0) ** 2))
-    E2 = float(np.sum(I * w0 * w0))                   # 2E
-    if M2 >= E2 * I[1]:                                # about the axis of largest moment
-        return _free_body_branch(I, w0, t, M2, E2)
+    if _about_largest_axis(I, w0):
+        return _free_body_branch(I, w0, t)
     # about the axis of least moment: swap axes 1 and 3 and flip the middle (Euler's form is kept)
     perm = np.array([2, 1, 0])
-    w = _free_body_branch(I[perm], w0[perm] * np.array([1.0, -1.0, 1.0]), t, M2, E2)
+    w = _free_body_branch(I[perm], w0[perm] * np.array([1.0, -1.0, 1.0]), t)
     return (w * np.array([1.0, -1.0, 1.0]))[..., perm]
 
 
-def _free_body_branch(I, w0, t, M2, E2):
+def free_rigid_body_period(I, m0) -> float:
+    """Period of omega(t) (4K / rate) of the free body of free_rigid_body."""
+    I = np.asarray(I, float)
+    w0 = np.asarray(m0, float) / I
+    if not _about_largest_axis(I, w0):
+        I, w0 = I[::-1], w0[::-1]
+    rate, m = _rate_and_parameter(I, w0)
+    return 4.0 * special.ellipk(m) / rate
+
+
+def _about_largest_axis(I, w0) -> bool:
+    return float(np.sum(I * w0 * w0 * (I - I[1]))) >= 0.0          # M^2 - 2E I2, summed term by term
+
+
+def _differences(I, w0):
+    """E2 I3 - M2 and M2 - E2 I1 (E2 = 2E, M2 = |L|^2) summed term by term: for a small wobble about
+    the largest axis the first is ~(wobble)^2 times M2, which M2 - E2 I3 computed whole would lose."""
+    d31 = float(np.sum(I * w0 * w0 * (I[2] - I)))
+    d13 = float(np.sum(I * w0 * w0 * (I - I[0])))
+    return d31, d13
+
+
+def _rate_and_parameter(I, w0):
+    I1, I2, I3 = I
+    d31, d13 = _differences(I, w0)
+    rate = np.sqrt(max((I3 - I2) * d13 / (I1 * I2 * I3), 0.0))
+    return rate, (I2 - I1) * d31 / ((I3 - I2) * d13)
+
+
+def _free_body_branch(I, w0, t):
     I1, I2, I3 = I
     s3 = 1.0 if w0[2] >= 0 else -1.0                  # (w1, w2, w3) -> (-w1, w2, -w3) is a symmetry
     w0 = w0 * np.array([s3, 1.0, s3])
+    d31, d13 = _differences(I, w0)
     # in the swapped branch numerators and denominators are both negative: the ratios stay positive
-    a1 = np.sqrt(max((E2 * I3 - M2) / (I1 * (I3 - I1)), 0.0))
-    a2 = np.sqrt(max((E2 * I3 - M2) / (I2 * (I3 - I2)), 0.0))
-    a3 = np.sqrt(max((M2 - E2 * I1) / (I3 * (I3 - I1)), 0.0))
-    rate = np.sqrt(max((I3 - I2) * (M2 - E2 * I1) / (I1 * I2 * I3), 0.0))
-    m = (I2 - I1) * (E2 * I3 - M2) / ((I3 - I2) * (M2 - E2 * I1))
+    a1 = np.sqrt(max(d31 / (I1 * (I3 - I1)), 0.0))
+    a2 = np.sqrt(max(d31 / (I2 * (I3 - I2)), 0.0))
+    a3 = np.sqrt(max(d13 / (I3 * (I3 - I1)), 0.0))
+    rate, m = _rate_and_parameter(I, w0)
     phi0 = np.arctan2(w0[1] / a2 if a2 > 0 else 0.0, w0[0] / a1 if a1 > 0 else 1.0)
     u0 = special.ellipkinc(phi0, m) if abs(phi0) <= np.pi / 2 else (
         np.sign(phi0) * 2 * special.ellipk(m) - special.ellipkinc(np.sign(phi0) * np.pi - phi0, m))

@@ -1,0 +1,111 @@
+"""Study: the Chandler wobble, from Euler's rigid Earth to the observed polar motion.
+
+A scene is either a model Earth (`earth` + `effects`: triaxiality, elastic_yielding, dissipation,
+excitation; none listed is the rigid symmetric Earth of Lamb Art. 47) or an observation
+(`observation`: a window of the IERS C04 series, fitted for the Chandler and annual wobbles).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ...models.wobble import EFFECTS
+from ...scenes import Scene, SceneError
+
+TITLE = "The Chandler wobble"
+__all__ = ["TITLE", "EFFECTS", "check", "run"]
+
+
+def check(path: Path, data: dict) -> None:
+    """Physical consistency the schema cannot express. Raises SceneError (one line)."""
+    from ...models import earth
+
+    if ("earth" in data) == ("observation" in data):
+        raise SceneError(path, "earth", "either `earth` (a model) or `observation` (the IERS series), not both "
+                         "or neither", sorted(k for k in ("earth", "observation") if k in data))
+    effects = data.get("effects") or {}
+    analysis = data.get("analysis", {})
+    if "observation" in data:
+        if effects:
+            raise SceneError(path, "effects", "no effects for an observation scene (the Earth supplies them)",
+                             sorted(effects))
+        if analysis:
+            raise SceneError(path, "analysis", "no model analysis for an observation scene", sorted(analysis))
+        _check_observation(path, data["observation"])
+        return
+    H = earth.h_over_c(data["earth"]["H"], data["earth"]["H_definition"])
+    triaxial = effects.get("triaxiality")
+    if triaxial is not None:
+        delta = triaxial.get("b_minus_a_over_c", "C22")
+        delta = earth.b_minus_a_over_c(H) if delta == "C22" else delta
+        if not delta < 2 * H:
+            raise SceneError(path, "effects.triaxiality.b_minus_a_over_c",
+                             f"a number below 2H = {2 * H:.6g} (B must stay below C)", delta)
+    elastic = effects.get("elastic_yielding")
+    if elastic is not None:
+        if ("k2" in elastic) == ("period_solar_days" in elastic):
+            raise SceneError(path, "effects.elastic_yielding", "one of k2 or period_solar_days (with source)",
+                             sorted(elastic))
+        k_s = earth.secular_love_number()
+        if "k2" in elastic and not elastic["k2"] < k_s:
+            raise SceneError(path, "effects.elastic_yielding.k2", f"a Love number below the fluid value "
+                             f"k_s = {k_s:.4f} (at k_s the wobble stops: a fluid Earth has no free wobble)",
+                             elastic["k2"])
+        rigid = earth.sidereal_to_solar_days(earth.euler_period_sidereal_days(H))
+        if "period_solar_days" in elastic and not elastic["period_solar_days"] > rigid:
+            raise SceneError(path, "effects.elastic_yielding.period_solar_days",
+                             f"a period longer than the rigid Earth's {rigid:.2f} days (yielding lengthens it)",
+                             elastic["period_solar_days"])
+    if "dissipation" in effects and elastic is None:
+        raise SceneError(path, "effects.dissipation", "elastic_yielding as well (a rigid body cannot dissipate: "
+                         "internal friction needs deformation)", sorted(effects))
+    random = (effects.get("excitation") or {}).get("random")
+    if random is not None and not random["periods_days"][0] < random["periods_days"][1]:
+        raise SceneError(path, "effects.excitation.random.periods_days", "[shortest, longest] with shortest < "
+                         "longest", random["periods_days"])
+    cost = analysis.get("accuracy_cost")
+    if cost is not None:
+        if set(effects) - {"triaxiality"}:
+            raise SceneError(path, "analysis.accuracy_cost", "a free rigid body (no effects but triaxiality): the "
+                             "work-precision reference is the closed form", sorted(effects))
+    if analysis.get("cones") and effects:
+        raise SceneError(path, "analysis.cones", "the rigid symmetric Earth (no effects)", sorted(effects))
+
+
+def _check_observation(path, obs):
+    from .polar_motion import eop_file, series_extent
+
+    first, last = series_extent(eop_file())
+    start, end = obs["start_year"], obs["end_year"]
+    end_value = last if end == "latest" else end
+    if not first <= start < last:
+        raise SceneError(path, "observation.start_year", f"a year inside the series ({first:.2f} to {last:.2f})",
+                         start)
+    if not (start < end_value <= last + 1e-9):
+        raise SceneError(path, "observation.end_year", f"a year after start_year and not after the series ends "
+                         f"({last:.2f}), or 'latest'", end)
+    if not obs["window_years"] <= end_value - start:
+        raise SceneError(path, "observation.window_years", f"a window no longer than the span "
+                         f"({end_value - start:.2f} years)", obs["window_years"])
+    if obs["compare"]["k2"] >= _k_s():
+        raise SceneError(path, "observation.compare.k2", f"a Love number below k_s = {_k_s():.4f}",
+                         obs["compare"]["k2"])
+
+
+def _k_s():
+    from ...models import earth
+    return earth.secular_love_number()
+
+
+def run(scene: Scene, quick: bool = False):
+    from ..results import Results       # imported here so that validation stays light
+    from . import accuracy, model, observed
+
+    results = Results("chandler", scene.name, scene.title)
+    if "observation" in scene.data:
+        observed.run(scene, results, quick)
+    else:
+        model.run(scene, results, quick)
+        if "accuracy_cost" in scene.data.get("analysis", {}):
+            accuracy.run(scene, results, quick)
+    return results

@@ -1,0 +1,323 @@
+"""A model Earth's wobble: the closed forms, the integration of the listed effects, what each adds."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from ...models import earth, wobble
+from ...solvers import references as ref
+from ...solvers import rigid_body
+from ...solvers.ode import Problem, solve
+from ...solvers.timing import min_time
+from ..results import new_figure
+from . import polar_motion
+
+DEFAULT_SPAN_YEARS = 100.0
+DEFAULT_RTOL = 1e-12
+SAMPLE_DAYS = 2.0
+PERIOD_BOUND = 1e-6           # the hard case: the wobble's period to 1e-6 relative over 100 years
+Q_BOUND = 0.05                # the hard case: Q recovered from a damped series to 5 %
+
+
+def setup(scene):
+    """(H, amplitude rad, model) of a model scene."""
+    H = earth.h_over_c(scene.data["earth"]["H"], scene.data["earth"]["H_definition"])
+    amplitude = scene.data["earth"].get("wobble_arcsec", 0.1) * earth.ARCSEC
+    return H, amplitude, wobble.assemble(H, scene.data.get("effects") or {})
+
+
+def integrate(model, amplitude, span_days, rtol, t_eval, method="dop853"):
+    y0 = np.array([amplitude, 0.0, 1.0])
+    problem = Problem(wobble.liouville, y0, (0.0, span_days), model.parameters(), name="wobble")
+    return solve(problem, method, rtol=rtol, atol=rtol * amplitude, t_eval=t_eval)
+
+
+def phase_rate(t, y):
+    """Mean angular rate (rad/day) of the pole p + iq about the figure axis, by a fit to the unwrapped phase."""
+    phase = np.unwrap(np.angle(y[:, 0] + 1j * y[:, 1]))
+    return float(np.polyfit(t, phase, 1)[0])
+
+
+def run(scene, results, quick):
+    H, amplitude, model = setup(scene)
+    effects = scene.data.get("effects") or {}
+    analysis = scene.data.get("analysis", {})
+    span_years = analysis.get("span_years", DEFAULT_SPAN_YEARS)
+    rtol = analysis.get("rtol", DEFAULT_RTOL)
+    span = span_years * earth.JULIAN_YEAR_DAYS
+    t = np.arange(0.0, span + 0.5 * SAMPLE_DAYS, SAMPLE_DAYS)
+    t = t[t <= span]
+
+    euler_sidereal = earth.euler_period_sidereal_days(H)
+    rigid_solar = earth.sidereal_to_solar_days(euler_sidereal)
+    closed = model.wobble_period_solar_days()
+    results.number("H_over_C", H, "1", note=scene.data["earth"]["H_source"])
+    results.number("euler_period_sidereal_days", euler_sidereal, "sidereal days",
+                   note="rigid symmetric Earth, A/(C − A) (Lamb Art. 47)")
+    results.number("euler_period_solar_days", rigid_solar, "d", note="the same in mean solar days")
+    results.number("wobble_period_closed_form_solar_days", closed, "d",
+                   note="closed form for the listed effects, small amplitude")
+    results.number("wobble_amplitude_arcsec", amplitude / earth.ARCSEC, "″")
+    results.number("span_years", span_years, "yr")
+
+    sol = integrate(model, amplitude, span, rtol, t)
+    seconds, _, _ = min_time(lambda: integrate(model, amplitude, span, rtol, None), repeats=5, budget_s=1.0)
+    results.timing_table("cost", pd.DataFrame([{
+        "effects": ", ".join(effects) or "none (rigid symmetric)", "span_years": span_years, "rtol": rtol,
+        "steps": sol.n_steps, "evaluations": sol.nfev, "seconds": seconds}]),
+        f"Cost of one {span_years:g}-year integration with this scene's effects (DOP853, minimum of repeats).")
+    y = sol.y_eval
+    m = (y[:, 0] + 1j * y[:, 1]) / earth.MAS          # the pole about the figure axis, mas
+
+    if "excitation" in effects:
+        measured = _excited(results, t, m, model, closed)
+    else:
+        rate = phase_rate(t, y)
+        measured = 2.0 * np.pi / rate
+        results.hard_case("period_to_1e-6", f"A {amplitude / earth.ARCSEC:g}″ wobble on a daily spin followed for "
+                          f"{span_years:g} years: its period against the closed form (relative)",
+                          measured / closed - 1.0, PERIOD_BOUND)
+        _sense(results, rate, y)
+        _invariants(results, y, model, "dissipation" in effects)
+        _polhode(results, t, m, measured, "dissipation" in effects)
+    results.number("wobble_period_solar_days", measured, "d",
+                   note="measured from the integration" + (" (fit to the simulated series)" if "excitation" in effects
+                                                           else " (mean rate of the pole's phase)"))
+    results.number("wobble_period_sidereal_days", earth.solar_to_sidereal_days(measured), "sidereal days")
+    results.number("period_change_from_effects_days", measured - rigid_solar, "d",
+                   note="against the rigid symmetric Earth of the same H")
+    results.number("period_relative_error", measured / closed - 1.0, "1", note="integration against closed form")
+
+    if "triaxiality" in effects:
+        _triaxial(results, model, amplitude, sol, t, rigid_solar)
+    if "elastic_yielding" in effects:
+        _elastic(results, model, H, effects["elastic_yielding"])
+    if "dissipation" in effects and "excitation" not in effects:
+        _damped(results, t, m, model, measured)
+        _dissipation_structure(results, model)
+    if analysis.get("cones"):
+        _cones(results, model, amplitude)
+
+
+def _sense(results, rate, y):
+    """Prograde: the pole turns about the figure axis in the sense of the spin (sign of omega_3)."""
+    prograde = np.sign(rate) == np.sign(np.mean(y[:, 2]))
+    results.number("wobble_sense", 1 if prograde else -1, "1",
+                   note="+1: the pole turns about the figure axis in the spin's sense (prograde)")
+    results.hard_case("prograde", "The free wobble turns in the sense of the spin (1 if it does not)",
+                      0.0 if prograde else 1.0, 0.0)
+
+
+def _invariants(results, y, model, damped):
+    """|L| along the run. (At 0.1″ the wobble's share of |L| and of the energy is ~1e-15, below what a
+    double can resolve, so the dissipation's structure is shown on a large wobble: _dissipation_structure.)"""
+    L, _ = wobble.invariants(y, model.parameters())
+    drift = float(np.max(np.abs(L / L[0] - 1.0)))
+    results.number("angular_momentum_drift", drift, "1", note="max |Δ|L|| / |L| over the run")
+    results.hard_case("angular_momentum_kept", "|L| kept over the run (relative)", drift, 1e-12)
+
+
+def _dissipation_structure(results, model, tilt_deg=10.0, periods=20):
+    """On a 10° wobble, where the wobble's energy is resolvable: |L| kept, the energy only falls."""
+    y0 = np.array([np.sin(np.radians(tilt_deg)), 0.0, np.cos(np.radians(tilt_deg))])
+    span = periods * model.wobble_period_solar_days()
+    t = np.linspace(0.0, span, 4001)
+    sol = solve(Problem(wobble.liouville, y0, (0.0, span), model.parameters()), "dop853", rtol=1e-12, atol=1e-15,
+                t_eval=t)
+    L, E = wobble.invariants(sol.y_eval, model.parameters())
+    fall = E[0] - E[-1]
+    rise = float(max(np.max(np.diff(E)), 0.0))
+    results.number("large_wobble_tilt_deg", tilt_deg, "°")
+    results.number("large_wobble_L_drift", float(np.max(np.abs(L / L[0] - 1.0))), "1",
+                   note=f"{tilt_deg:g}° wobble, {periods} periods")
+    results.number("large_wobble_energy_fall", float(fall / E[0]), "1", note="relative fall of the energy")
+    results.number("large_wobble_energy_largest_rise", rise / fall, "1",
+                   note="largest rise between samples / total fall (0: the energy only falls)")
+    results.hard_case("dissipation_keeps_L", f"Internal dissipation on a {tilt_deg:g}° wobble: |L| kept (relative) "
+                      "while the energy falls", float(np.max(np.abs(L / L[0] - 1.0))), 1e-12)
+    results.hard_case("dissipation_energy_falls", "… and the energy never rises (largest rise / total fall)",
+                      rise / fall, 1e-6)
+
+
+def _polhode(results, t, m, period, damped):
+    fig, ax = new_figure(4.2, 4.0)
+    one = t <= (t[-1] if damped else period)
+    ax.plot(m.real[one], m.imag[one], lw=0.8)
+    ax.plot([0], [0], "k+", ms=8)
+    ax.set_aspect("equal")
+    ax.set_xlabel("p/n toward Greenwich (mas)")
+    ax.set_ylabel("q/n toward 90° E (mas)")
+    what = "spirals in over the whole run" if damped else "over one period"
+    results.figure("polhode", fig, f"The polhode: the rotation axis about the figure axis in the body, {what}. "
+                   f"Period {period:.2f} d; the motion is counterclockwise seen from above the North Pole "
+                   "(prograde).")
+
+
+def _triaxial(results, model, amplitude, sol, t, rigid_solar):
+    """Against the exact elliptic-function motion: the period 4K/rate, the polhode's ellipse."""
+    a, b = earth.moments_over_c(model.H, model.b_minus_a_over_c)
+    I = np.array([a, b, 1.0])
+    w0 = model.n * np.array([amplitude, 0.0, 1.0])
+    exact = ref.free_rigid_body(I, I * w0, t) / model.n
+    err = float(np.max(np.abs(sol.y_eval - exact)[:, :2])) / amplitude
+    period = ref.free_rigid_body_period(I, I * w0)
+    results.number("B_minus_A_over_C", model.b_minus_a_over_c, "1", note="4 C22 H / J2 (EGM2008, IERS 2010)")
+    results.number("elliptic_period_solar_days", period, "d", note="4K(k)/λ of the exact motion")
+    results.number("elliptic_modulus_squared", float(_k2(I, w0)), "1")
+    results.number("triaxial_period_change_days", period - rigid_solar, "d",
+                   note="against the symmetric Earth with the same (C − (A+B)/2)/C")
+    results.number("triaxial_period_change_hours", 24.0 * (period - rigid_solar), "h")
+    axis_ratio = np.sqrt(a * (1.0 - a) / (b * (1.0 - b)))
+    results.number("polhode_axis_ratio", axis_ratio, "1",
+                   note="q_max/p_max = √(A(C − A)/(B(C − B))): the polhode is an ellipse")
+    y = sol.y_eval
+    results.number("polhode_axis_ratio_measured", float(np.max(np.abs(y[:, 1])) / np.max(np.abs(y[:, 0]))), "1")
+    results.number("exact_solution_error", err, "1",
+                   note="max over the run of |ω − ω_exact| in p, q, relative to the wobble")
+    results.hard_case("triaxial_exact", "Triaxial wobble against the elliptic-function solution over the run "
+                      "(relative to the wobble)", err, 1e-6)
+
+
+def _k2(I, w0):
+    _, m = ref._rate_and_parameter(I, w0)
+    return m
+
+
+def _elastic(results, model, H, params):
+    k_s = earth.secular_love_number()
+    results.number("secular_love_number", k_s, "1", note="k_s = 3 J2 / q (IERS 2010 constants)")
+    results.number("beta_n2_over_C", model.beta_n2, "1", note="Lamb's βn² in units of C")
+    results.number("beta_n2_over_A", model.beta_n2 / (1.0 - H), "1")
+    results.number("beta_n2_over_C_minus_A", model.beta_n2 / H, "1", note="= k2/k_s")
+    results.number("excess_over_observed", model.wobble_period_solar_days() / 433.1 - 1.0, "1",
+                   note="closed-form period / 433.1 d (Vicente & Wilson 1997) − 1")
+    k2 = params.get("k2", model.beta_n2 / H * k_s)
+    results.number("love_number_k2", k2, "1", note=params["source"])
+    for target, name in ((433.1, "433"), (427.0, "427")):
+        needed = earth.beta_n2_for_period(H, target)
+        results.number(f"k2_for_{name}_days", needed / H * k_s, "1",
+                       note=f"the Love number Lamb's model needs for a {target:g}-day wobble")
+
+
+def _damped(results, t, m, model, period):
+    """Q from the decay of the amplitude (a straight-line fit of log |m|), against the scene's Q."""
+    amp = np.abs(m)
+    slope = np.polyfit(t, np.log(amp), 1)[0]               # per day
+    sigma = 2.0 * np.pi / period
+    Q_fit = -sigma / (2.0 * slope)
+    e_fold_years = -1.0 / slope / earth.JULIAN_YEAR_DAYS
+    results.number("Q", model.Q, "1")
+    results.number("Q_recovered", Q_fit, "1", note="σ / (2 × decay rate) from the simulated amplitude")
+    results.number("Q_relative_error", Q_fit / model.Q - 1.0, "1")
+    results.number("amplitude_e_folding_years", e_fold_years, "yr", note="measured")
+    results.number("amplitude_e_folding_years_closed_form", model.Q * period / np.pi / earth.JULIAN_YEAR_DAYS, "yr",
+                   note="Q P / π")
+    results.hard_case("Q_recovered", "Q recovered from the damped series (relative)", Q_fit / model.Q - 1.0, Q_BOUND)
+    fig, ax = new_figure(5.6, 3.4)
+    years = t / earth.JULIAN_YEAR_DAYS
+    ax.semilogy(years, amp, lw=0.9, label="simulated |m|")
+    ax.semilogy(years, amp[0] * np.exp(-sigma * t / (2 * model.Q)), "k--", lw=0.8,
+                label=f"exp(−σt/2Q), Q = {model.Q:g}")
+    ax.set_xlabel("years")
+    ax.set_ylabel("wobble amplitude (mas)")
+    ax.legend(fontsize=8)
+    results.figure("decay", fig, f"A damped free wobble: the amplitude falls by e in {e_fold_years:.1f} years "
+                   f"(Q recovered: {Q_fit:.1f}); |L| is kept, the energy falls.")
+
+
+def _excited(results, t, m, model, closed):
+    """Fit the simulated series the way the observations are fitted: the fitter checked on a known truth."""
+    years = t / earth.JULIAN_YEAR_DAYS
+    fit = polar_motion.fit(years, m)
+    results.number("fitted_chandler_period_days", fit.chandler_period_days, "d")
+    results.number("fitted_chandler_amplitude_mas", fit.chandler_amplitude_mas, "mas")
+    results.number("fitted_annual_prograde_mas", fit.annual_prograde_mas, "mas")
+    results.number("fitted_annual_retrograde_mas", fit.annual_retrograde_mas, "mas")
+    annual_period = earth.TROPICAL_YEAR_DAYS
+    beat = 1.0 / abs(1.0 / annual_period - 1.0 / fit.chandler_period_days) / earth.JULIAN_YEAR_DAYS
+    results.number("beat_period_years", beat, "yr", note="1 / (f_annual − f_Chandler), fitted periods")
+    results.number("beat_period_closed_form_years",
+                   1.0 / abs(1.0 / annual_period - 1.0 / closed) / earth.JULIAN_YEAR_DAYS, "yr",
+                   note="from the model's closed-form period")
+    # a finite, randomly excited record fixes the period only to within the resonance's width, 1/Q relative
+    bound = 1.0 / model.Q if model.Q else 1e-3
+    results.hard_case("fitter_on_known_truth", "Fitting the simulated series recovers the model's period "
+                      "(relative; within the resonance width 1/Q)", fit.chandler_period_days / closed - 1.0, bound)
+    figure_path(results, "polar_path", t, m, "Model: the pole excited by an annual term and a random process "
+                f"(seeded); the beat of the {fit.chandler_period_days:.1f}-day wobble with the year, "
+                f"{beat:.2f} years, swells and shrinks the path.")
+    return fit.chandler_period_days
+
+
+def figure_path(results, name, t, m, caption, last_years=13.0):
+    """The pole's path in the right-handed frame (x toward Greenwich, y toward 90° E) and x, y against time."""
+    import matplotlib.pyplot as plt
+
+    years = t / earth.JULIAN_YEAR_DAYS if t[-1] > 1000 else t
+    keep = years >= years[-1] - last_years
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(7.4, 3.4), layout="constrained",
+                                 gridspec_kw={"width_ratios": [1, 1.5]})
+    centre = m[keep] - np.polyval(np.polyfit(years[keep], m[keep], 1), years[keep])
+    ax.plot(centre.real, centre.imag, lw=0.5)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (mas), toward Greenwich")
+    ax.set_ylabel("−y (mas), toward 90° E")
+    bx.plot(years[keep], centre.real, lw=0.6, label="x")
+    bx.plot(years[keep], centre.imag, lw=0.6, label="−y")
+    bx.set_xlabel("year")
+    bx.set_ylabel("mas (trend removed)")
+    bx.legend(fontsize=8)
+    for axis in (ax, bx):
+        axis.grid(True, alpha=0.25, linewidth=0.6)
+    results.figure(name, fig, caption)
+
+
+def _cones(results, model, amplitude):
+    """Body and space cones (Lamb Art. 47): tan β = (C/A) tan α; the herpolhode is H times the polhode."""
+    import matplotlib.pyplot as plt
+
+    a = model.parameters()[wobble.A_C]
+    I = np.array([a, a, 1.0])
+    w0 = model.n * np.array([amplitude, 0.0, 1.0])
+    m0 = I * w0
+    alpha = np.arctan2(np.hypot(m0[0], m0[1]), m0[2])        # figure axis to L
+    beta = np.arctan2(np.hypot(w0[0], w0[1]), w0[2])         # figure axis to omega
+    results.number("tan_beta_over_tan_alpha", np.tan(beta) / np.tan(alpha), "1", note="Lamb: C/A")
+    results.number("C_over_A", 1.0 / a, "1")
+    # two days of attitude by the splitting (fourth order, exact rotations), the herpolhode in space
+    h, days = 1e-3, 2.0
+    steps = int(round(days / h))
+    ms, qs = rigid_body.free_body(I, m0, h, steps, order=4, sample_every=10)
+    omega_space = rigid_body.rotate_to_space(qs, ms / I)
+    L_hat = rigid_body.rotate_to_space(qs[:1], ms[:1])[0]
+    L_hat /= np.linalg.norm(L_hat)
+    off_L = omega_space - np.outer(omega_space @ L_hat, L_hat)
+    herpolhode = np.linalg.norm(off_L, axis=1) / np.linalg.norm(omega_space, axis=1)
+    polhode = np.hypot(ms[:, 0], ms[:, 1]) / I[0] / np.linalg.norm(ms / I, axis=1)
+    ratio = float(np.mean(herpolhode) / np.mean(polhode))
+    results.number("herpolhode_over_polhode", ratio, "1", note="radii of the space and body cones, measured")
+    results.number("herpolhode_over_polhode_closed_form", np.sin(beta - alpha) / np.sin(beta), "1",
+                   note="sin(β − α)/sin β")
+    results.number("one_over_herpolhode_ratio", 1.0 / ratio, "1")
+    results.number("herpolhode_radius_mas", float(np.mean(herpolhode)) / earth.MAS, "mas")
+    space_rate = np.linalg.norm(m0) / I[0]
+    results.number("space_cone_period_sidereal_days", 2 * np.pi / space_rate * earth.SIDEREAL_PER_SOLAR_DAY,
+                   "sidereal days", note="ψ̇ = |L|/A: the plane of ω and the figure axis turns about L once a day")
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(7.0, 3.4), layout="constrained")
+    ax.plot(ms[:, 0] / I[0] / model.n / earth.MAS, ms[:, 1] / I[1] / model.n / earth.MAS, ".", ms=1.5)
+    ax.set_title("polhode (body), two days", fontsize=9)
+    e1 = np.cross(L_hat, [0.0, 1.0, 0.0])
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(L_hat, e1)
+    space = omega_space / model.n
+    ax_space = (space @ e1, space @ e2)
+    bx.plot(ax_space[0] / earth.MAS, ax_space[1] / earth.MAS, lw=0.8)
+    bx.set_title("herpolhode (space), two days", fontsize=9)
+    for axis in (ax, bx):
+        axis.set_aspect("equal")
+        axis.set_xlabel("mas")
+        axis.grid(True, alpha=0.25, linewidth=0.6)
+    results.figure("cones", fig, f"Body and space cones over two days: the rotation axis barely moves in the body "
+                   f"(left, a short arc of the {amplitude / earth.ARCSEC:g}″ polhode) while in space it runs "
+                   f"once a day round a circle {1 / ratio:.0f} times smaller (right).")
