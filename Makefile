@@ -41,6 +41,7 @@ system-report system-test: system-%:
 
 bench: venv
 	$(BIN)/python benchmarks/solver_speed.py
+	$(BIN)/python benchmarks/chandler_wobble.py
 	$(BIN)/python benchmarks/pipeline_build.py
 
 dist: venv
