@@ -62,8 +62,13 @@ class WobbleModel:
 
 @EFFECTS.register("triaxiality", "inertia", "B ≠ A: the equatorial ellipticity (B − A)/C")
 def _triaxiality(params, model: WobbleModel):
+    model.b_minus_a_over_c = b_minus_a_over_c(params, model.H)
+
+
+def b_minus_a_over_c(params, H: float) -> float:
+    """The triaxiality a scene asks for: a number, or 'C22' (the default) for today's Earth."""
     value = params.get("b_minus_a_over_c", "C22")
-    model.b_minus_a_over_c = earth.b_minus_a_over_c(model.H) if value == "C22" else float(value)
+    return earth.b_minus_a_over_c(H) if value == "C22" else float(value)
 
 
 @EFFECTS.register("elastic_yielding", "deformation",

@@ -72,12 +72,17 @@ def free_rigid_body(I, m0, t):
 
 def free_rigid_body_period(I, m0) -> float:
     """Period of omega(t) (4K / rate) of the free body of free_rigid_body."""
+    rate, m = free_rigid_body_rate_and_parameter(I, m0)
+    return 4.0 * special.ellipk(m) / rate
+
+
+def free_rigid_body_rate_and_parameter(I, m0):
+    """(rate lambda, parameter m = k^2) of the elliptic functions of free_rigid_body."""
     I = np.asarray(I, float)
     w0 = np.asarray(m0, float) / I
     if not _about_largest_axis(I, w0):
         I, w0 = I[::-1], w0[::-1]
-    rate, m = _rate_and_parameter(I, w0)
-    return 4.0 * special.ellipk(m) / rate
+    return _rate_and_parameter(I, w0)
 
 
 def _about_largest_axis(I, w0) -> bool:

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ...models.wobble import EFFECTS
+from ...models.wobble import EFFECTS, b_minus_a_over_c
 from ...scenes import Scene, SceneError
 
 TITLE = "The Chandler wobble"
@@ -36,8 +36,7 @@ def check(path: Path, data: dict) -> None:
     H = earth.h_over_c(data["earth"]["H"], data["earth"]["H_definition"])
     triaxial = effects.get("triaxiality")
     if triaxial is not None:
-        delta = triaxial.get("b_minus_a_over_c", "C22")
-        delta = earth.b_minus_a_over_c(H) if delta == "C22" else delta
+        delta = b_minus_a_over_c(triaxial, H)
         if not delta < 2 * H:
             raise SceneError(path, "effects.triaxiality.b_minus_a_over_c",
                              f"a number below 2H = {2 * H:.6g} (B must stay below C)", delta)

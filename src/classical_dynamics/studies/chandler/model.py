@@ -79,7 +79,7 @@ def run(scene, results, quick):
                           f"{span_years:g} years: its period against the closed form (relative)",
                           measured / closed - 1.0, PERIOD_BOUND)
         _sense(results, rate, y)
-        _invariants(results, y, model, "dissipation" in effects)
+        _invariants(results, y, model)
         _polhode(results, t, m, measured, "dissipation" in effects)
     results.number("wobble_period_solar_days", measured, "d",
                    note="measured from the integration" + (" (fit to the simulated series)" if "excitation" in effects
@@ -109,7 +109,7 @@ def _sense(results, rate, y):
                       0.0 if prograde else 1.0, 0.0)
 
 
-def _invariants(results, y, model, damped):
+def _invariants(results, y, model):
     """|L| along the run. (At 0.1″ the wobble's share of |L| and of the energy is ~1e-15, below what a
     double can resolve, so the dissipation's structure is shown on a large wobble: _dissipation_structure.)"""
     L, _ = wobble.invariants(y, model.parameters())
@@ -164,7 +164,7 @@ def _triaxial(results, model, amplitude, sol, t, rigid_solar):
     period = ref.free_rigid_body_period(I, I * w0)
     results.number("B_minus_A_over_C", model.b_minus_a_over_c, "1", note="4 C22 H / J2 (EGM2008, IERS 2010)")
     results.number("elliptic_period_solar_days", period, "d", note="4K(k)/λ of the exact motion")
-    results.number("elliptic_modulus_squared", float(_k2(I, w0)), "1")
+    results.number("elliptic_modulus_squared", float(ref.free_rigid_body_rate_and_parameter(I, I * w0)[1]), "1")
     results.number("triaxial_period_change_days", period - rigid_solar, "d",
                    note="against the symmetric Earth with the same (C − (A+B)/2)/C")
     results.number("triaxial_period_change_hours", 24.0 * (period - rigid_solar), "h")
@@ -177,11 +177,6 @@ def _triaxial(results, model, amplitude, sol, t, rigid_solar):
                    note="max over the run of |ω − ω_exact| in p, q, relative to the wobble")
     results.hard_case("triaxial_exact", "Triaxial wobble against the elliptic-function solution over the run "
                       "(relative to the wobble)", err, 1e-6)
-
-
-def _k2(I, w0):
-    _, m = ref._rate_and_parameter(I, w0)
-    return m
 
 
 def _elastic(results, model, H, params):

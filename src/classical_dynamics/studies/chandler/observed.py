@@ -17,8 +17,7 @@ VICENTE_WILSON_DAYS = (433.1, 1.7)
 def run(scene, results, quick):
     obs = scene.data["observation"]
     path = pm.eop_file()
-    first, last = pm.series_extent(path)
-    end = last + 1e-6 if obs["end_year"] == "latest" else obs["end_year"]
+    end = np.inf if obs["end_year"] == "latest" else obs["end_year"]
     t, m = pm.read_eop(path, obs["start_year"], end)
     results.notes.append(f"Data: {path.name} (IERS EOP 20 C04, from astropy-iers-data), sha256 {sha256_file(path)}, "
                          f"{t.size} daily values from {t[0] + 2000:.3f} to {t[-1] + 2000:.3f}.")
