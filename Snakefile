@@ -2,7 +2,7 @@
 # This file is the report's table of contents: one include per study, in report order.
 #
 #   snakemake -c all                 everything: every scene of every study, then the report
-#   snakemake -c all chains          one study (its scenes only); also: chandler, solvers
+#   snakemake -c all chains          one study (its scenes only); also: precession, chandler, solvers
 #   snakemake -c all report          the HTML and PDF report
 #   snakemake -c1 dist               a citable archive with SHA256SUMS
 #   snakemake -c all --config quick=1    a reduced build (what the tests run)
@@ -12,7 +12,8 @@ configfile: "workflow/config.yaml"
 
 include: "workflow/rules/common.smk"
 include: "workflow/rules/scenes.smk"
-# Precession of the equinoxes            (to come: issue 5)
+# Precession of the equinoxes: Lamb's secular formula, the averaged axis, the spin-resolved Earth
+include: "workflow/rules/precession.smk"
 # The Chandler wobble: Euler's rigid Earth, Lamb's elastic Earth, damping, excitation, the IERS data
 include: "workflow/rules/chandler.smk"
 # Vibrations of chains: the hanging chain, discrete chains, strings, springs, rotating chains

@@ -10,6 +10,7 @@ import yaml
 from ..scenes import Scene, load_scene
 
 STUDIES = {
+    "precession": "classical_dynamics.studies.precession",
     "chandler": "classical_dynamics.studies.chandler",
     "chains": "classical_dynamics.studies.chains",
     "solvers": "classical_dynamics.studies.solvers",

@@ -1,0 +1,129 @@
+"""Rung 2: the orbit-averaged spin-axis equations over a long span: the cone, the period, the obliquity."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from ...models import earth
+from ...models import precession as prec
+from ...solvers.ode import Problem, solve
+from ...solvers.timing import min_time
+from ..results import plt
+from . import fitting
+from .secular import ARCSEC_PER_TURN
+
+RTOL = 1e-12
+SAMPLE_DAYS = 0.25 * earth.JULIAN_YEAR_DAYS
+QUICK_SPAN_YEARS = 2000.0
+RATE_BOUND = 1e-9            # hard case: the averaged rate against the secular formula (exact without i)
+MEAN_OBLIQUITY_BOUND_ARCSEC = 0.1   # hard case: the mean obliquity stays the scene's (start on the forced state)
+
+
+def integrate(model, span_days, t_eval=None, rtol=RTOL):
+    problem = Problem(prec.averaged_rhs, prec.initial_axis(*prec.start(model, averaged=True)[::-1]), (0.0, span_days),
+                      prec.averaged_parameters(model), name="averaged spin axis")
+    return solve(problem, "dop853", rtol=rtol, atol=rtol, t_eval=t_eval)
+
+
+def run(scene, model, results, quick):
+    span_years = scene.data["analysis"]["span_years"]
+    if quick:
+        span_years = min(span_years, QUICK_SPAN_YEARS)
+    span = span_years * earth.JULIAN_YEAR_DAYS
+    t = np.arange(0.0, span, SAMPLE_DAYS)
+    sol = integrate(model, span, t)
+    seconds, _, _ = min_time(lambda: integrate(model, span), repeats=3, budget_s=2.0)
+    results.timing_table("cost", pd.DataFrame([{"rung": "averaged", "effects": ", ".join(model.listed),
+                                                "span_years": span_years, "steps": sol.n_steps,
+                                                "evaluations": sol.nfev, "seconds": seconds}]),
+                         f"Cost of the averaged equations over {span_years:g} years (DOP853, rtol {RTOL:g}).")
+    psi, eps = prec.precession_angles(sol.y_eval)
+    results.number("span_years", span_years, "yr")
+    norm_drift = float(np.max(np.abs(np.linalg.norm(sol.y_eval, axis=1) - 1.0)))
+    results.hard_case("unit_axis", "|s| = 1 kept by the averaged equations over the span", norm_drift, 1e-9)
+
+    # A fixed lunar orbit tilted to the ecliptic: the axis precesses about the orbits' mean pole, not the
+    # ecliptic's, and the obliquity swings; with the node regressing it averages to the ecliptic's.
+    nodal = model.moon and model.inclined
+    if nodal and not model.regressing:
+        rate = np.polyfit(t, psi, 1)[0]
+    else:
+        args = fitting.arguments(model, model.secular_rate())
+        rate = fitting.fit(t, psi, args).rate
+        mean_eps = fitting.fit(t, eps, args).offset
+        results.number("mean_obliquity_offset_arcsec", (mean_eps - model.obliquity) / earth.ARCSEC, "″",
+                       note="fitted mean obliquity − the scene's (mean) obliquity")
+        results.hard_case("start_on_forced_state", "The axis starts on the mean pole moved by the first-order "
+                          "nutation, so the mean obliquity is the scene's (″)",
+                          (mean_eps - model.obliquity) / earth.ARCSEC, MEAN_OBLIQUITY_BOUND_ARCSEC, "″")
+    if not nodal:
+        results.hard_case("averaged_rate_matches_formula", "The averaged equations' rate against the secular "
+                          "formula, exact for orbits in the ecliptic (relative)", rate / model.secular_rate() - 1.0,
+                          RATE_BOUND)
+    elif model.regressing:
+        results.number("second_order_lunar_mas_per_century", (rate - model.secular_rate()) * 36525.0 / earth.MAS,
+                       "mas/cy", note="averaged − secular: the node's regression couples to the nutation at second "
+                       "order")
+    rate_y = fitting.per_year_arcsec(rate)
+    results.number("precession_rate_arcsec_per_year", rate_y, "″/yr", note="fitted to the integrated ψ")
+    results.number("precession_period_years", ARCSEC_PER_TURN / rate_y, "yr", note="360° / fitted rate")
+    results.number("averaged_minus_secular_relative", rate / model.secular_rate() - 1.0, "1")
+    results.hard_case("retrograde", "The equinox moves westward (1 if it moves eastward)", 0.0 if rate > 0 else 1.0,
+                      0.0)
+    turn = _period_by_crossing(t, psi)
+    if turn is not None:
+        results.number("precession_period_by_crossing_years", turn / earth.JULIAN_YEAR_DAYS, "yr",
+                       note="the time for ψ to reach 360°, read off the integration")
+    eps_arcsec = eps / earth.ARCSEC
+    results.number("obliquity_range_arcsec", float(eps_arcsec.max() - eps_arcsec.min()), "″",
+                   note="max − min of the obliquity over the span")
+    k = max(1, len(t) // 20)
+    results.number("obliquity_drift_arcsec", float(np.mean(eps_arcsec[-k:]) - np.mean(eps_arcsec[:k])), "″",
+                   note="the mean of the last twentieth of the span minus the first's")
+    if model.moon and model.inclined and model.regressing:
+        _nutation(results, model, t, psi, eps)
+    _cone_figure(results, model, sol.y_eval, t, eps_arcsec, span_years)
+
+
+def _period_by_crossing(t, psi):
+    full = np.nonzero(psi >= 2.0 * np.pi)[0]
+    if len(full) == 0:
+        return None
+    j = full[0]
+    return float(np.interp(2.0 * np.pi, psi[j - 1:j + 1], t[j - 1:j + 1]))
+
+
+def _nutation(results, model, t, psi, eps):
+    """The 18.6-year nutation of the averaged model, fitted, against its first-order closed form."""
+    window = t <= min(t[-1], 1000.0 * earth.JULIAN_YEAR_DAYS)      # a millennium: the cone's curvature is
+    args = fitting.arguments(model, model.secular_rate())          # then negligible for a line fit
+    fp = fitting.fit(t[window], psi[window], args)
+    fe = fitting.fit(t[window], eps[window], args)
+    d_psi, d_eps = fitting.amplitude(fp, "18.6 yr"), fitting.amplitude(fe, "18.6 yr")
+    closed_psi, closed_eps = model.nutation_18p6yr()
+    results.number("nutation_longitude_18p6yr_arcsec", d_psi / earth.ARCSEC, "″", note="fitted, averaged equations")
+    results.number("nutation_obliquity_18p6yr_arcsec", d_eps / earth.ARCSEC, "″", note="fitted, averaged equations")
+    results.number("nutation_longitude_18p6yr_first_order_arcsec", closed_psi / earth.ARCSEC, "″",
+                   note="first order in i (digest §1.1)")
+    results.number("nutation_obliquity_18p6yr_first_order_arcsec", closed_eps / earth.ARCSEC, "″")
+    results.number("nutation_ratio_18p6yr", d_psi / d_eps, "1", note="Δψ/Δε; first order: 2 cot 2ε")
+    results.number("two_cot_two_eps", 2.0 / np.tan(2.0 * model.obliquity), "1")
+
+
+def _cone_figure(results, model, s, t, eps_arcsec, span_years):
+    years = t / earth.JULIAN_YEAR_DAYS
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(9.0, 3.8), layout="constrained")
+    ax.plot(s[:, 0], s[:, 1], lw=0.6)
+    ax.plot([0], [0], "k+", ms=8)
+    ax.set_aspect("equal")
+    ax.set_xlabel("toward the J2000 equinox")
+    ax.set_ylabel("pole, ecliptic coordinates")
+    ax.set_title("the pole on the ecliptic plane", fontsize=9)
+    bx.plot(years, eps_arcsec / 3600.0, lw=0.6)
+    bx.set_xlabel("years from J2000")
+    bx.set_ylabel("obliquity (°)")
+    bx.grid(True, alpha=0.25)
+    ax.grid(True, alpha=0.25)
+    results.figure("cone", fig, f"The cone traced by the pole over {span_years:g} years of the averaged equations "
+                   f"({', '.join(model.listed)}), and the obliquity against the fixed ecliptic.")

@@ -1,0 +1,254 @@
+"""Rung 3: the full torqued rigid Earth, spin resolved: precession, nutations, and their hard cases.
+
+The integrator is the Strang splitting of the symmetric body's exact free flow with the torque kick
+(solvers.rigid_body.integrate_symmetric_torqued). The precession is read off the angular momentum L in
+space (the figure axis differs from it by the forced diurnal wobble, the Oppolzer terms, reported).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from ...models import earth
+from ...models import precession as prec
+from ...solvers import rigid_body
+from ...solvers.timing import min_time
+from ..results import plt
+from . import averaged, fitting
+from .secular import ARCSEC_PER_TURN
+
+QUICK_SPAN_YEARS = 20.0
+FREE_NUTATION_YEARS = 3.0
+L_BOUND = 1e-12                  # hard case: |L| kept over the run (relative); the torque is normal to e3
+OBLIQUITY_RATE_BOUND = 1e-3      # ″ per century: no secular obliquity change against a fixed ecliptic
+ALIASING_BOUND = 1e-4            # relative spread of the rate fitted with the periodic terms, over windows
+FREE_NUTATION_STEP_HOURS = 0.75  # the diurnal forced wobble must be resolved to ~1 % to see the free one
+NUTATION_TERMS = {"18.6 yr": "18p6yr", "9.3 yr": "9p3yr", "annual": "annual", "semi-annual": "semiannual",
+                  "122-day": "122day", "monthly": "monthly", "fortnightly": "fortnightly",
+                  "13.6-day": "13p6day", "9.1-day": "9p1day"}
+
+
+def integrate(model, span_days, step_days, order=2, sample_days=1.0, forced=True):
+    """(t, m body, q) sampled every `sample_days` (a whole number of steps)."""
+    n = int(round(span_days / step_days))
+    h = span_days / n
+    every = max(1, int(round(sample_days / h)))
+    m0, q0 = prec.initial_state(model, forced)
+    ms, qs = rigid_body.integrate_symmetric_torqued(1.0 - model.H, 1.0, m0, q0, h, n, order, every,
+                                                    prec.torque_body, model.parameters())
+    return h * every * np.arange(len(ms)), ms, qs
+
+
+def angular_momentum_axis(ms, qs):
+    return rigid_body.rotate_to_space(qs, ms)
+
+
+def fit_series(model, t, psi, eps):
+    """Rate and periodic terms of psi and eps; the arguments' rates need the precession rate: iterate once."""
+    f = fitting.fit(t, psi, fitting.arguments(model, model.secular_rate()))
+    args = fitting.arguments(model, f.rate)
+    return fitting.fit(t, psi, args), fitting.fit(t, eps, args), args
+
+
+def run(scene, model, results, quick):
+    analysis = scene.data["analysis"]
+    span_years = min(analysis["span_years"], QUICK_SPAN_YEARS) if quick else analysis["span_years"]
+    span = span_years * earth.JULIAN_YEAR_DAYS
+    step = analysis["step_hours"] / 24.0
+    order = analysis.get("order", 2)
+    t, ms, qs = integrate(model, span, step, order)
+    seconds, _, _ = min_time(lambda: integrate(model, span, step, order), repeats=3, budget_s=3.0)
+    steps = int(round(span / step))
+    results.timing_table("cost", pd.DataFrame([{
+        "rung": "full", "effects": ", ".join(model.listed), "span_years": span_years, "step_hours": step * 24,
+        "order": order, "steps": steps, "seconds": seconds, "ns_per_step": seconds / steps * 1e9}]),
+        f"Cost of the spin-resolved run over {span_years:g} years (splitting of order {order}, minimum of repeats).")
+    results.number("span_years", span_years, "yr")
+    results.number("step_hours", step * 24.0, "h")
+    results.number("steps", steps, "1")
+
+    L = angular_momentum_axis(ms, qs)
+    psi, eps = prec.precession_angles(L)
+    fp, fe, args = fit_series(model, t, psi, eps)
+    rate_y = fitting.per_year_arcsec(fp.rate)
+    results.number("precession_rate_arcsec_per_year", rate_y, "″/yr",
+                   note="fitted to ψ of L together with the periodic terms")
+    results.number("precession_period_years", ARCSEC_PER_TURN / rate_y, "yr", note="360° / fitted rate")
+    results.number("full_minus_secular_relative", fp.rate / model.secular_rate() - 1.0, "1")
+    avg = averaged.integrate(model, span, t)
+    a_psi, _ = prec.precession_angles(avg.y_eval)
+    fa = fitting.fit(t, a_psi, args)
+    results.number("averaged_rate_arcsec_per_year", fitting.per_year_arcsec(fa.rate), "″/yr",
+                   note="the averaged equations over the same span")
+    results.number("full_minus_averaged_relative", fp.rate / fa.rate - 1.0, "1")
+    results.hard_case("retrograde", "The equinox moves westward (1 if it moves eastward)",
+                      0.0 if fp.rate > 0 else 1.0, 0.0)
+    for term, key in NUTATION_TERMS.items():
+        if term in args:
+            results.number(f"nutation_longitude_{key}_arcsec", fitting.amplitude(fp, term) / earth.ARCSEC, "″",
+                           note=f"{term} term of Δψ, fitted")
+            results.number(f"nutation_obliquity_{key}_arcsec", fitting.amplitude(fe, term) / earth.ARCSEC, "″",
+                           note=f"{term} term of Δε, fitted")
+    for name, (closed_psi, closed_eps) in (("18p6yr", model.nutation_18p6yr()), ("semiannual", model.semiannual())):
+        if closed_psi:
+            results.number(f"nutation_longitude_{name}_first_order_arcsec", closed_psi / earth.ARCSEC, "″")
+            results.number(f"nutation_obliquity_{name}_first_order_arcsec", closed_eps / earth.ARCSEC, "″")
+    results.number("fit_residual_longitude_mas", fp.residual_rms / earth.MAS, "mas",
+                   note="rms of ψ after the line and the fitted terms")
+
+    _invariants(results, ms, fe, span_years)
+    e3 = rigid_body.rotate_to_space(qs, np.array([0.0, 0.0, 1.0]))
+    cosang = np.clip(np.sum(L * e3, axis=1) / np.linalg.norm(L, axis=1), -1.0, 1.0)
+    results.number("figure_axis_offset_mas", float(np.max(np.arccos(cosang))) / earth.MAS, "mas",
+                   note="largest angle between L and the figure axis (forced diurnal wobble, Oppolzer terms)")
+    if analysis.get("compare_iau"):
+        _iau_nutation(results, model, t, psi, eps, fp, fe, args)
+    if analysis.get("aliasing_windows_years"):
+        _aliasing(results, model, t, psi, analysis["aliasing_windows_years"], span_years, args)
+    if analysis.get("free_nutation"):
+        _free_nutation(results, model, order)
+    if analysis.get("effect_ladder"):
+        _effect_ladder(results, model, scene, step, order, min(span_years, QUICK_SPAN_YEARS))
+
+
+def _invariants(results, ms, fe, span_years):
+    norms = np.linalg.norm(ms, axis=1)
+    drift = float(np.max(np.abs(norms / norms[0] - 1.0)))
+    results.number("angular_momentum_drift", drift, "1", note="max |Δ|L|| / |L| over the run")
+    results.hard_case("angular_momentum_kept", f"|L| over {span_years:g} years of daily spin (relative; the couple "
+                      "is normal to the figure axis)", drift, L_BOUND)
+    rate_cy = fe.rate * 36525.0 / earth.ARCSEC
+    results.number("obliquity_rate_arcsec_per_century", rate_cy, "″/cy",
+                   note="secular part of the fitted obliquity; IAU 2006's −46.8″/cy comes from the moving ecliptic")
+    results.hard_case("no_obliquity_drift", f"Secular obliquity change over {span_years:g} years against the fixed "
+                      "ecliptic (″ per century)", rate_cy, OBLIQUITY_RATE_BOUND, "″/cy")
+
+
+def _iau_nutation(results, model, t, psi, eps, fp, fe, args):
+    """IAU 2000B nutation (pyerfa nut00b) on the same days, fitted with the IAU arguments, side by side."""
+    import erfa
+
+    d_psi, d_eps = erfa.nut00b(2451545.0, t)
+    iau_args = {k: v for k, v in fitting.iau_arguments().items() if k in args}
+    ip, ie = fitting.fit(t, d_psi, iau_args), fitting.fit(t, d_eps, iau_args)
+    rows = []
+    for term in args:
+        rows.append({"term": term,
+                     "longitude_arcsec": fitting.amplitude(fp, term) / earth.ARCSEC,
+                     "longitude_iau2000b_arcsec": fitting.amplitude(ip, term) / earth.ARCSEC,
+                     "obliquity_arcsec": fitting.amplitude(fe, term) / earth.ARCSEC,
+                     "obliquity_iau2000b_arcsec": fitting.amplitude(ie, term) / earth.ARCSEC})
+    frame = pd.DataFrame(rows)
+    results.table("nutation", frame, "Amplitudes of the nutation terms: ours (the full model, fitted) and the "
+                  "IAU 2000B series (pyerfa nut00b on the same days, fitted the same way with the IAU arguments).")
+    for row in rows:
+        key = NUTATION_TERMS[row["term"]]
+        results.number(f"iau2000b_longitude_{key}_arcsec", row["longitude_iau2000b_arcsec"], "″")
+        results.number(f"iau2000b_obliquity_{key}_arcsec", row["obliquity_iau2000b_arcsec"], "″")
+    # the periodic parts, day by day
+    ours_psi = psi - (fp.offset + fp.rate * t)
+    ours_eps = eps - (fe.offset + fe.rate * t)
+    results.number("nutation_difference_rms_longitude_arcsec", float(np.sqrt(np.mean((ours_psi - d_psi) ** 2)))
+                   / earth.ARCSEC, "″", note="ours − IAU 2000B, day by day (rms)")
+    results.number("nutation_difference_rms_obliquity_arcsec", float(np.sqrt(np.mean((ours_eps - d_eps) ** 2)))
+                   / earth.ARCSEC, "″")
+    show = t <= 20.0 * earth.JULIAN_YEAR_DAYS
+    years = 2000.0 + t[show] / earth.JULIAN_YEAR_DAYS
+    fig, axes = plt.subplots(2, 1, figsize=(6.4, 4.6), sharex=True, layout="constrained")
+    for ax, ours, iau, name in ((axes[0], ours_psi, d_psi, "Δψ (″)"), (axes[1], ours_eps, d_eps, "Δε (″)")):
+        ax.plot(years, iau[show] / earth.ARCSEC, color="0.6", lw=1.6, label="IAU 2000B (pyerfa)")
+        ax.plot(years, ours[show] / earth.ARCSEC, lw=0.6, label="full model")
+        ax.set_ylabel(name)
+        ax.grid(True, alpha=0.25)
+    axes[0].legend(fontsize=7, loc="upper right")
+    axes[1].set_xlabel("year")
+    results.figure("nutation", fig, "Nutation in longitude and obliquity: the full model (ψ and ε of L less their "
+                   "fitted lines) and the IAU 2000B series over the first 20 years.")
+
+
+def _aliasing(results, model, t, psi, windows_years, span_years, args):
+    """The rate from windows of awkward lengths: a bare line against the line with the periodic terms."""
+    rows = []
+    for w in windows_years:
+        inside = t <= w * earth.JULIAN_YEAR_DAYS
+        if inside.sum() < 30:
+            continue
+        bare = np.polyfit(t[inside], psi[inside], 1)[0]
+        with_terms = fitting.fit(t[inside], psi[inside], args).rate
+        rows.append({"window_years": w, "line_only_arcsec_per_year": fitting.per_year_arcsec(bare),
+                     "with_periodic_terms_arcsec_per_year": fitting.per_year_arcsec(with_terms)})
+    frame = pd.DataFrame(rows)
+    results.table("aliasing", frame, "The secular rate fitted over windows that are not whole periods of the "
+                  "nutations: a bare straight line, and a line fitted together with the periodic terms.")
+    spread = lambda col: float((frame[col].max() - frame[col].min()) / frame[col].mean())     # noqa: E731
+    results.number("aliasing_spread_line_only", spread("line_only_arcsec_per_year"), "1",
+                   note="(max − min)/mean of the bare line's rate over the windows")
+    results.number("aliasing_spread_with_terms", spread("with_periodic_terms_arcsec_per_year"), "1")
+    results.hard_case("aliasing", "The rate fitted with the periodic terms does not depend on the window (relative "
+                      "spread over the windows)", spread("with_periodic_terms_arcsec_per_year"), ALIASING_BOUND)
+
+
+def free_wobble_amplitude(model, step, order, forced, years=FREE_NUTATION_YEARS):
+    """The Euler free wobble a start excites: the projection of the body-frame pole offset onto e^{i sigma t}
+    over whole Euler periods (the forced terms are near-diurnal and average out)."""
+    sigma = model.n * model.H / (1.0 - model.H)
+    periods = max(1, int(years * earth.JULIAN_YEAR_DAYS * sigma / (2.0 * np.pi)))
+    span = periods * 2.0 * np.pi / sigma
+    t, ms, _ = integrate(model, span, step, order, sample_days=step, forced=forced)
+    w = (ms[:, 0] + 1j * ms[:, 1]) / ((1.0 - model.H) * model.n)
+    inner = w[:-1] * np.exp(-1j * sigma * t[:-1])             # the last sample repeats the first phase
+    return float(abs(np.mean(inner)))
+
+
+def _free_nutation(results, model, order):
+    """The forced start e3 x N/(Cn) is first order: it neglects the couple's own rate of change, so it may
+    leave a fraction of order nu/n of the axis start's wobble, nu the fastest couple (the Moon's fortnightly
+    2 n1, or the Sun's semi-annual 2 n'): that fraction is the bound."""
+    step = FREE_NUTATION_STEP_HOURS / 24.0
+    axis = free_wobble_amplitude(model, step, order, forced=False)
+    forced = free_wobble_amplitude(model, step, order, forced=True)
+    fastest = 2.0 * (model.orbits.moon_n if model.moon else model.orbits.sun_n)
+    _, q0 = prec.initial_state(model)
+    expected = float(np.linalg.norm(prec.forced_offset(model, q0))) / model.n
+    results.number("free_wobble_axis_start_mas", axis / earth.MAS, "mas",
+                   note="Euler free wobble excited by starting with ω along the figure axis")
+    results.number("free_wobble_expected_mas", expected / earth.MAS, "mas", note="|e3 × N|/(Cn²) at the start: the pole's velocity over n")
+    results.number("free_wobble_forced_start_mas", forced / earth.MAS, "mas",
+                   note="starting on the steady forced precession")
+    results.hard_case("forced_start", "The free wobble left by starting on the forced state, as a fraction of the "
+                      f"one left by starting on the figure axis (bound: the fastest couple's ν/n; step "
+                      f"{FREE_NUTATION_STEP_HOURS:g} h)", forced / axis, fastest / model.n)
+
+
+LADDER = ("solar_torque", "lunar_torque", "orbit_eccentricity", "lunar_inclination", "node_regression")
+
+
+def _effect_ladder(results, model, scene, step, order, years):
+    """The listed effects switched on one at a time: what each changes in the headline numbers and costs."""
+    span = years * earth.JULIAN_YEAR_DAYS
+    rows, times = [], []
+    listed = [e for e in LADDER if e in model.listed]
+    for k in range(1, len(listed) + 1):
+        effects = {e: {} for e in listed[:k]}
+        sub = prec.assemble(model.H, model.obliquity, model.orbits, effects)
+        t, ms, qs = integrate(sub, span, step, order)
+        seconds, _, _ = min_time(lambda: integrate(sub, span, step, order), repeats=3, budget_s=2.0)
+        psi, eps = prec.precession_angles(angular_momentum_axis(ms, qs))
+        fp, fe, args = fit_series(sub, t, psi, eps)
+        row = {"effects": " + ".join(listed[:k]), "rate_arcsec_per_year": fitting.per_year_arcsec(fp.rate),
+               "secular_formula_arcsec_per_year": fitting.per_year_arcsec(sub.secular_rate()),
+               "nutation_longitude_18p6yr_arcsec": fitting.amplitude(fp, "18.6 yr") / earth.ARCSEC
+               if "18.6 yr" in args else 0.0,
+               "nutation_longitude_semiannual_arcsec": fitting.amplitude(fp, "semi-annual") / earth.ARCSEC}
+        rows.append(row)
+        steps = int(round(span / step))
+        times.append({"effects": row["effects"], "span_years": years, "steps": steps, "seconds": seconds,
+                      "ns_per_step": seconds / steps * 1e9})
+    frame = pd.DataFrame(rows)
+    frame["rate_change_arcsec_per_year"] = frame.rate_arcsec_per_year.diff().fillna(frame.rate_arcsec_per_year)
+    results.table("effect_ladder", frame, f"The full model over {years:g} years with the effects switched on one "
+                  "at a time: the rate (fitted), the secular formula for the same effects, the 18.6-year and "
+                  "semi-annual nutations in longitude, and what each effect changes.")
+    results.timing_table("effect_ladder", pd.DataFrame(times), "What each effect costs: the same runs, timed "
+                         "(minimum of repeats). An effect not listed is not evaluated.")

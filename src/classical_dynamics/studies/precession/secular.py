@@ -1,0 +1,87 @@
+"""Rung 1: Lamb's secular formula (Art. 61), the IAU 2006 precession beside it, and the inverse problem."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...models import earth
+from ...models import precession as prec
+from .fitting import per_year_arcsec
+
+ARCSEC_PER_TURN = 1296000.0
+
+
+def setup(scene) -> prec.PrecessionModel:
+    e = scene.data["earth"]
+    H = earth.h_over_c(e["H"], e["H_definition"])
+    orbits = prec.CONSTANTS[scene.data["constants"]]()
+    return prec.assemble(H, np.radians(e["obliquity_deg"]), orbits, scene.data.get("effects") or {})
+
+
+def iau2006_rates() -> dict:
+    """Rates at J2000 of the IAU 2006 precession (pyerfa p06e), arcsec per Julian year, by central
+    differences over +-1 year (the quadratic terms cancel)."""
+    import erfa
+
+    before, after = erfa.p06e(2451545.0, -365.25), erfa.p06e(2451545.0, 365.25)
+    eps0 = erfa.p06e(2451545.0, 0.0)[0]
+    rate = lambda k: (after[k] - before[k]) / 2.0 / earth.ARCSEC                   # noqa: E731
+    return {"psi_A": rate(1), "p_A": rate(12), "omega_A": rate(2), "eps0_arcsec": eps0 / earth.ARCSEC}
+
+
+def run(scene, results) -> prec.PrecessionModel:
+    model = setup(scene)
+    data = scene.data
+    results.number("H_over_C", model.H, "1", note=data["earth"]["H_source"])
+    results.number("obliquity_deg", np.degrees(model.obliquity), "°", note=data["earth"]["obliquity_source"])
+    results.number("spin_turns_per_year", model.orbits.spin_turns_per_year, "1",
+                   note="n/n′: sidereal turns of the Earth in its orbital period")
+    for line in model.orbits.sources:
+        results.notes.append(f"Constants ({model.orbits.name}): {line}.")
+    solar, lunar = per_year_arcsec(model.solar_rate()), per_year_arcsec(model.lunar_rate())
+    total = solar + lunar
+    results.number("secular_solar_rate_arcsec_per_year", solar, "″/yr", note="Lamb Art. 61 (7), per Julian year")
+    results.number("secular_lunar_rate_arcsec_per_year", lunar, "″/yr", note="Lamb Art. 61 (16)")
+    results.number("secular_rate_arcsec_per_year", total, "″/yr", note="westward (retrograde), positive")
+    if model.sun and model.moon:
+        results.number("lunar_to_solar_ratio", lunar / solar, "1", note="from the secular rates of this scene's "
+                       "effects")
+    per_orbit = model.secular_rate() * model.orbits.year_days / earth.ARCSEC
+    results.number("secular_per_orbit_arcsec", per_orbit, "″",
+                   note="per revolution of the Earth round the Sun (Lamb's 'per annum')")
+    if data["fidelity"] == "secular":
+        results.number("precession_rate_arcsec_per_year", total, "″/yr", note="the secular formula")
+        results.number("precession_period_years", ARCSEC_PER_TURN / total, "yr", note="Julian years, 360°/rate")
+    inverse = data.get("analysis", {}).get("inverse_problem")
+    if inverse:
+        _inverse(results, model, inverse)
+    if data["constants"] == "modern":
+        _iau(results, model, total)
+    return model
+
+
+def _inverse(results, model, spec):
+    """Lamb's 'inverse process': the rate is proportional to H, so H = H_model x observed / computed."""
+    observed = spec["observed_rate_arcsec_per_year"]
+    computed = model.secular_rate() * model.orbits.year_days / earth.ARCSEC
+    # Lamb's 'per annum' is per revolution; a modern rate is per Julian year: compare like with like
+    if model.orbits.name != "lamb1920":
+        computed = per_year_arcsec(model.secular_rate())
+    H = model.H * observed / computed
+    results.number("inverse_observed_rate_arcsec_per_year", observed, "″/yr", note=spec["source"])
+    results.number("H_from_observed_rate", H, "1", note="(C − A)/C that reproduces the observed rate")
+    results.number("C_minus_A_over_A_from_observed_rate", H / (1.0 - H), "1", note="the same as (C − A)/A")
+
+
+def _iau(results, model, total):
+    iau = iau2006_rates()
+    results.number("iau2006_psi_A_rate_arcsec_per_year", iau["psi_A"], "″/yr",
+                   note="luni-solar precession, IAU 2006 (pyerfa p06e), at J2000")
+    results.number("iau2006_p_A_rate_arcsec_per_year", iau["p_A"], "″/yr",
+                   note="general precession in longitude, IAU 2006 (pyerfa p06e)")
+    results.number("iau2006_omega_A_rate_arcsec_per_year", iau["omega_A"], "″/yr",
+                   note="obliquity against the J2000 ecliptic, IAU 2006 (pyerfa p06e)")
+    results.number("iau2006_eps0_arcsec", iau["eps0_arcsec"], "″", note="obliquity at J2000 (pyerfa p06e)")
+    results.number("secular_minus_psi_A_relative", total / iau["psi_A"] - 1.0, "1",
+                   note="the first-order formula against the IAU 2006 luni-solar precession")
+    results.number("iau2006_period_years", ARCSEC_PER_TURN / iau["p_A"], "yr", note="360° / p_A")
