@@ -42,6 +42,7 @@ system-report system-test: system-%:
 bench: venv
 	$(BIN)/python benchmarks/solver_speed.py
 	$(BIN)/python benchmarks/chandler_wobble.py
+	$(BIN)/python benchmarks/precession_cycle.py
 	$(BIN)/python benchmarks/pipeline_build.py
 
 dist: venv

@@ -125,10 +125,13 @@ def test_a_new_scene_file_is_picked_up_with_no_rule_edit(scratch):
     ("title: x\nearth: {H: 0.00327, H_definition: (C-A)/C, H_source: s}\n"
      "effects: {elastic_yielding: {k2: 0.3, source: s}, dissipation: {Q: -1, source: s}}\n",
      "effects.dissipation.Q"),
+    ("title: x\nfidelity: full\nconstants: modern\nearth: {H: 0.00327, H_definition: (C-A)/C, H_source: s,"
+     " obliquity_deg: 23.4, obliquity_source: s}\neffects: {solar_torque: }\nanalysis: {span_years: 10}\n",
+     "analysis.step_hours"),
 ])
 def test_a_bad_scene_stops_the_build_and_touches_nothing(scratch, text, field):
     before = tree_digest(scratch / "results")
-    study = "chandler" if "observation" in text or "earth" in text else "chains"
+    study = "precession" if "fidelity" in text else "chandler" if "observation" in text or "earth" in text else "chains"
     (scratch / f"workflow/scenes/{study}/broken.yaml").write_text(text)
     out = snakemake(scratch, "-c", "2", "--config", "quick=1", check=False)
     assert out.returncode != 0
@@ -151,7 +154,8 @@ def test_two_clean_builds_give_identical_results(built_repo, tmp_path):
     other = copy_repository(tmp_path / "again")
     snakemake(other, "-c", "2", "results/chains/hanging_particles", "results/chains/hanging_continuum",
               "results/chains/hanging_time_domain", "results/chains/spring_chain", "results/chandler/excited",
-              "results/chandler/observed", "results/chandler/triaxial", "--config", "quick=1")
+              "results/chandler/observed", "results/chandler/triaxial", "results/precession/lamb_1920",
+              "results/precession/full_sun", "results/precession/averaged_cycle", "--config", "quick=1")
     mine = {k: v for k, v in result_files(built_repo).items() if k in result_files(other)}
     assert len(mine) > 10
     assert mine == result_files(other)

@@ -64,6 +64,7 @@ def test_pdf_pages(built_repo, tmp_path):
         assert f"Figure {number}." in text                                         # every figure, same number
     assert "Contents" in text and "References" in text and "Vibrations of chains" in text
     assert "The Chandler wobble" in text and "Observed polar motion" in text
+    assert "Precession of the equinoxes" in text and "The spin-resolved Earth" in text
     # page numbers: the contents page names the page of the chains chapter
     assert re.search(r"Vibrations of chains\s*\.*\s*\d+", text)
     # figures are drawn: a figure page has much more ink than a text page

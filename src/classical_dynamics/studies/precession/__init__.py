@@ -71,4 +71,9 @@ def run(scene: Scene, quick: bool = False):
         full.run(scene, model, results, quick)
         if "accuracy_cost" in scene.data.get("analysis", {}):
             accuracy.run(scene, model, results, quick)
+    if scene.data["constants"] == "modern":
+        rate = results.numbers["precession_rate_arcsec_per_year"]["value"]
+        psi_A = results.numbers["iau2006_psi_A_rate_arcsec_per_year"]["value"]
+        results.number("rate_minus_psi_A_relative", rate / psi_A - 1.0, "1",
+                       note="this rung's rate against the IAU 2006 luni-solar precession")
     return results

@@ -146,6 +146,10 @@ def _iau_nutation(results, model, t, psi, eps, fp, fe, args):
         key = NUTATION_TERMS[row["term"]]
         results.number(f"iau2000b_longitude_{key}_arcsec", row["longitude_iau2000b_arcsec"], "″")
         results.number(f"iau2000b_obliquity_{key}_arcsec", row["obliquity_iau2000b_arcsec"], "″")
+        results.number(f"longitude_{key}_over_iau_minus_one", row["longitude_arcsec"] / row["longitude_iau2000b_arcsec"]
+                       - 1.0, "1", note="ours / IAU 2000B − 1")
+        results.number(f"obliquity_{key}_over_iau_minus_one", row["obliquity_arcsec"] / row["obliquity_iau2000b_arcsec"]
+                       - 1.0, "1", note="ours / IAU 2000B − 1")
     # the periodic parts, day by day
     ours_psi = psi - (fp.offset + fp.rate * t)
     ours_eps = eps - (fe.offset + fe.rate * t)

@@ -70,6 +70,8 @@ def _inverse(results, model, spec):
     H = model.H * observed / computed
     results.number("inverse_observed_rate_arcsec_per_year", observed, "″/yr", note=spec["source"])
     results.number("H_from_observed_rate", H, "1", note="(C − A)/C that reproduces the observed rate")
+    results.number("computed_over_observed_minus_one", computed / observed - 1.0, "1",
+                   note="the formula's rate against the observed one")
     results.number("C_minus_A_over_A_from_observed_rate", H / (1.0 - H), "1", note="the same as (C − A)/A")
 
 
