@@ -240,19 +240,19 @@ def _effect_ladder(results, model, scene, step, order, years):
         seconds, _, _ = min_time(lambda: integrate(sub, span, step, order), repeats=3, budget_s=2.0)
         psi, eps = prec.precession_angles(angular_momentum_axis(ms, qs))
         fp, fe, args = fit_series(sub, t, psi, eps)
-        row = {"effects": " + ".join(listed[:k]), "rate_arcsec_per_year": fitting.per_year_arcsec(fp.rate),
-               "secular_formula_arcsec_per_year": fitting.per_year_arcsec(sub.secular_rate()),
-               "nutation_longitude_18p6yr_arcsec": fitting.amplitude(fp, "18.6 yr") / earth.ARCSEC
-               if "18.6 yr" in args else 0.0,
-               "nutation_longitude_semiannual_arcsec": fitting.amplitude(fp, "semi-annual") / earth.ARCSEC}
-        rows.append(row)
+        added = ("" if k == 1 else "+ ") + listed[k - 1]
+        rows.append({"adds": added, "rate": fitting.per_year_arcsec(fp.rate),
+                     "secular_formula": fitting.per_year_arcsec(sub.secular_rate()),
+                     "dpsi_18p6yr": fitting.amplitude(fp, "18.6 yr") / earth.ARCSEC if "18.6 yr" in args else 0.0,
+                     "dpsi_semiannual": fitting.amplitude(fp, "semi-annual") / earth.ARCSEC})
         steps = int(round(span / step))
-        times.append({"effects": row["effects"], "span_years": years, "steps": steps, "seconds": seconds,
+        times.append({"adds": added, "span_years": years, "steps": steps, "seconds": seconds,
                       "ns_per_step": seconds / steps * 1e9})
     frame = pd.DataFrame(rows)
-    frame["rate_change_arcsec_per_year"] = frame.rate_arcsec_per_year.diff().fillna(frame.rate_arcsec_per_year)
+    frame["rate_change"] = frame.rate.diff().fillna(frame.rate)
     results.table("effect_ladder", frame, f"The full model over {years:g} years with the effects switched on one "
-                  "at a time: the rate (fitted), the secular formula for the same effects, the 18.6-year and "
-                  "semi-annual nutations in longitude, and what each effect changes.")
+                  "at a time (each row adds one to those above): the rate (fitted) and the secular formula for the "
+                  "same effects (″/yr), the 18.6-year and semi-annual nutations in longitude (″), and the change in "
+                  "the rate each effect brings (″/yr).")
     results.timing_table("effect_ladder", pd.DataFrame(times), "What each effect costs: the same runs, timed "
                          "(minimum of repeats). An effect not listed is not evaluated.")
