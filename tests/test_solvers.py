@@ -11,7 +11,7 @@ from classical_dynamics.solvers import rigid_body, symplectic
 from classical_dynamics.solvers.ode import Events, Problem, solve, solve_batch
 from classical_dynamics.solvers.runge_kutta import rhs_function
 
-HNW = Problem(rhs.euler_free, ref.HNW_Y0, (0.0, 20.0), ref.HNW_I)
+HNW = Problem(rhs.euler_free, ref.HNW_Y0, (0.0, 20.0), rhs.euler_coefficients(ref.HNW_I))
 
 
 # Right-hand sides and event functions: compiled with the integrators' signature, cached.
@@ -64,7 +64,8 @@ def test_compiled_dop853_takes_scipys_steps():
                                   ((1.0, 2.0, 3.0), (-0.5, 0.2, -0.7)), ((0.7, 1.1, 2.9), (0.0, 1.2, 0.4))])
 def test_free_rigid_body_closed_form_on_both_sides_of_the_separatrix(I, w0):
     t = np.linspace(0, 30, 31)
-    sol = solve(Problem(rhs.euler_free, w0, (0, 30), I), "dop853", rtol=1e-13, atol=1e-15, t_eval=t)
+    sol = solve(Problem(rhs.euler_free, w0, (0, 30), rhs.euler_coefficients(I)), "dop853", rtol=1e-13, atol=1e-15,
+                t_eval=t)
     assert np.max(np.abs(ref.free_rigid_body(I, np.array(I) * np.array(w0), t) - sol.y_eval)) < 1e-11
 
 
@@ -84,7 +85,8 @@ def test_integrators_stay_on_the_energy_surface_near_the_separatrix():
     I = np.array([1.0, 2.0, 3.0])
     w0 = np.array([np.sqrt(3 * (1 - 1e-10)), 0.0, 1.0])
     H0, C0 = 0.5 * np.sum(I * w0 * w0), np.sum((I * w0) ** 2)
-    sol = solve(Problem(rhs.euler_free, w0, (0.0, 150.0), I), "dop853", rtol=1e-12, atol=1e-15, record_steps=True)
+    sol = solve(Problem(rhs.euler_free, w0, (0.0, 150.0), rhs.euler_coefficients(I)), "dop853", rtol=1e-12,
+                atol=1e-15, record_steps=True)
     assert np.max(np.abs(0.5 * np.sum(I * sol.y_steps ** 2, axis=1) / H0 - 1)) < 1e-10
     ms, _ = rigid_body.free_body(I, I * w0, 0.01, 15000, 2, 10)
     assert np.max(np.abs(np.sum(ms * ms, axis=1) / C0 - 1)) < 1e-12
@@ -95,7 +97,8 @@ def test_intermediate_axis_growth_rate():
     A, B, C, q0 = 3.0, 2.0, 1.0, 1.5
     theory = q0 * np.sqrt((A - B) * (B - C) / (A * C))
     t = np.linspace(0, 20, 401)
-    sol = solve(Problem(rhs.euler_free, [1e-10, q0, 1e-10], (0, 20), [A, B, C]), "dop853", rtol=1e-12, atol=1e-20,
+    sol = solve(Problem(rhs.euler_free, [1e-10, q0, 1e-10], (0, 20), rhs.euler_coefficients([A, B, C])), "dop853",
+                rtol=1e-12, atol=1e-20,
                 t_eval=t)
     size = np.hypot(sol.y_eval[:, 0], sol.y_eval[:, 2])
     window = (size > 1e-8) & (size < 1e-3)
@@ -159,9 +162,9 @@ def test_tolerances_that_cannot_be_honoured_are_refused(kwargs, message):
 
 def test_bad_initial_state_and_span_are_refused():
     with pytest.raises(ValueError, match="not finite"):
-        solve(Problem(rhs.euler_free, [np.nan, 0, 1], (0, 1), ref.HNW_I), "dop853")
+        solve(Problem(rhs.euler_free, [np.nan, 0, 1], (0, 1), rhs.euler_coefficients(ref.HNW_I)), "dop853")
     with pytest.raises(ValueError, match="not after"):
-        solve(Problem(rhs.euler_free, [1.0, 0, 1], (1.0, 0.0), ref.HNW_I), "dop853")
+        solve(Problem(rhs.euler_free, [1.0, 0, 1], (1.0, 0.0), rhs.euler_coefficients(ref.HNW_I)), "dop853")
     with pytest.raises(ValueError, match="positive"):
         rigid_body.free_body(ref.HNW_I, [1, 0, 1], -0.1, 10)
 
@@ -212,8 +215,10 @@ def test_numerical_damping_of_an_undamped_oscillator():
 
 def test_batch_equals_one_at_a_time():
     Y0 = np.array([[1.0, 0.0, 0.9], [0.5, 0.2, 0.9], [1.0, -0.3, 0.2]])
-    status, t_end, final, _ = solve_batch(rhs.euler_free, Y0, (0.0, 20.0), ref.HNW_I, rtol=1e-10, atol=1e-13)
+    status, t_end, final, _ = solve_batch(rhs.euler_free, Y0, (0.0, 20.0), rhs.euler_coefficients(ref.HNW_I),
+                                          rtol=1e-10, atol=1e-13)
     for row, y in zip(Y0, final):
-        single = solve(Problem(rhs.euler_free, row, (0.0, 20.0), ref.HNW_I), "dop853", rtol=1e-10, atol=1e-13)
+        single = solve(Problem(rhs.euler_free, row, (0.0, 20.0), rhs.euler_coefficients(ref.HNW_I)), "dop853",
+                       rtol=1e-10, atol=1e-13)
         assert np.array_equal(single.y, y)
     assert status == ["success"] * 3

@@ -166,7 +166,8 @@ class PrecessionModel:
         """Westward rate of the equinox from the Sun, rad/day (Lamb Art. 61 (7))."""
         if not self.sun:
             return 0.0
-        return 1.5 * self.orbits.sun_gm_over_a3 * (1.0 - self.sun_e**2) ** -1.5 * self.H * np.cos(self.obliquity) / self.n
+        strength = 1.5 * self.orbits.sun_gm_over_a3 * (1.0 - self.sun_e**2) ** -1.5
+        return strength * self.H * np.cos(self.obliquity) / self.n
 
     def lunar_rate(self) -> float:
         """The Moon's part, with the node averaged out: the factor (3 cos^2 i - 1)/2 (Art. 61 (16))."""

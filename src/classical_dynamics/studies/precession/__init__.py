@@ -24,7 +24,8 @@ def check(path: Path, data: dict) -> None:
     analysis = data.get("analysis") or {}
     fidelity = data["fidelity"]
     if not {"solar_torque", "lunar_torque"} & set(effects):
-        raise SceneError(path, "effects", "solar_torque or lunar_torque (nothing else exerts a couple)", sorted(effects))
+        raise SceneError(path, "effects", "solar_torque or lunar_torque (nothing else exerts a couple)",
+                         sorted(effects))
     for name, needs in (("lunar_inclination", "lunar_torque"), ("node_regression", "lunar_inclination")):
         if name in effects and needs not in effects:
             raise SceneError(path, f"effects.{name}", f"{needs} as well", sorted(effects))

@@ -217,7 +217,8 @@ def _free_nutation(results, model, order):
     expected = float(np.linalg.norm(prec.forced_offset(model, q0))) / model.n
     results.number("free_wobble_axis_start_mas", axis / earth.MAS, "mas",
                    note="Euler free wobble excited by starting with ω along the figure axis")
-    results.number("free_wobble_expected_mas", expected / earth.MAS, "mas", note="|e3 × N|/(Cn²) at the start: the pole's velocity over n")
+    results.number("free_wobble_expected_mas", expected / earth.MAS, "mas",
+                   note="|e3 × N|/(Cn²) at the start: the pole's velocity over n")
     results.number("free_wobble_forced_start_mas", forced / earth.MAS, "mas",
                    note="starting on the steady forced precession")
     results.hard_case("forced_start", "The free wobble left by starting on the forced state, as a fraction of the "

@@ -46,7 +46,8 @@ def _separatrix(results, one_minus_m, quick):
     T = (2 if quick else 4) * period
     H0 = 0.5 * np.sum(I * w0 * w0)
     C0 = np.sum((I * w0) ** 2)
-    sol = solve(Problem(rhs.euler_free, w0, (0.0, T), I), "dop853", rtol=1e-12, atol=1e-15, record_steps=True)
+    sol = solve(Problem(rhs.euler_free, w0, (0.0, T), rhs.euler_coefficients(I)), "dop853", rtol=1e-12, atol=1e-15,
+                record_steps=True)
     dH = np.max(np.abs(0.5 * np.sum(I * sol.y_steps ** 2, axis=1) - H0)) / H0
     ms, _ = rigid_body.free_body(I, I * w0, 0.005, int(T / 0.005), 4, 10)
     dC = np.max(np.abs(np.sum(ms * ms, axis=1) - C0)) / C0
@@ -62,7 +63,8 @@ def _separatrix(results, one_minus_m, quick):
                       "over 10·√N·eps (N exact rotations)", dC / (10 * np.sqrt(rotations) * np.finfo(float).eps), 1.0)
     # the reference itself against an independent integration, half a period (errors grow like e^{rate t})
     t = np.linspace(0, period / 2, 9)
-    check = solve(Problem(rhs.euler_free, w0, (0.0, t[-1]), I), "dop853", rtol=1e-13, atol=1e-16, t_eval=t)
+    check = solve(Problem(rhs.euler_free, w0, (0.0, t[-1]), rhs.euler_coefficients(I)), "dop853", rtol=1e-13,
+                  atol=1e-16, t_eval=t)
     results.number("separatrix_reference_vs_dop853", float(np.max(np.abs(ref.free_rigid_body(I, I * w0, t)
                                                                           - check.y_eval))), "rad/s",
                    note="half a period; the separatrix amplifies any error like e^{rate t}")
@@ -75,12 +77,13 @@ def _intermediate_axis(results):
     theory = q0 * np.sqrt((A - B) * (B - C) / (A * C))
     w0 = np.array([1e-10, q0, 1e-10])
     t = np.linspace(0, 30, 601)
-    sol = solve(Problem(rhs.euler_free, w0, (0.0, 30.0), np.array([A, B, C])), "dop853", rtol=1e-12, atol=1e-20,
-                t_eval=t)
+    sol = solve(Problem(rhs.euler_free, w0, (0.0, 30.0), rhs.euler_coefficients(np.array([A, B, C]))), "dop853",
+                rtol=1e-12, atol=1e-20, t_eval=t)
     size = np.hypot(sol.y_eval[:, 0], sol.y_eval[:, 2])
     window = (size > 1e-8) & (size < 1e-3)
     measured = np.polyfit(t[window], np.log(size[window]), 1)[0]
-    results.number("intermediate_axis_growth_rate", measured, "1/time", note="fit of log|(w1, w3)| in the linear regime")
+    results.number("intermediate_axis_growth_rate", measured, "1/time",
+                   note="fit of log|(w1, w3)| in the linear regime")
     results.number("intermediate_axis_growth_theory", theory, "1/time", note="q0 sqrt((A-B)(B-C)/(AC))")
     results.hard_case("intermediate_axis", "Spin about the middle axis: measured growth rate against "
                       "q0·√((A−B)(B−C)/(AC)) (relative difference)", abs(measured / theory - 1), 1e-3)

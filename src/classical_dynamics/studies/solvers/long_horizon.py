@@ -32,7 +32,8 @@ def run(scene, results, quick):
         curves[f"splitting order {order}, h = {h}"] = (t_periods, dH, dC, block * h / period)
     rtol = numerics["rtol"]
     t_eval = np.unique(np.concatenate([np.linspace(0, max_periods, 20001) * period]))
-    sol = solve(Problem(rhs.euler_free, ref.HNW_Y0, (0.0, max_periods * period), I), "dop853", rtol=rtol,
+    sol = solve(Problem(rhs.euler_free, ref.HNW_Y0, (0.0, max_periods * period), rhs.euler_coefficients(I)), "dop853",
+                rtol=rtol,
                 atol=rtol * 1e-3, t_eval=t_eval)
     m = sol.y_eval * I
     curves[f"dop853, rtol = {rtol:g}"] = (t_eval / period, np.abs(0.5 * np.sum(m * m / I, axis=1) - H0) / H0,

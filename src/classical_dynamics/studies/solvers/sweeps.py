@@ -15,7 +15,8 @@ from ..results import new_figure
 def case_for(problem: str) -> tuple[wp.Case, np.ndarray | None]:
     if problem == "hnw_rigid_body":
         I = ref.HNW_I
-        case = wp.Case("HNW rigid body", Problem(rhs.euler_free, ref.HNW_Y0, (0.0, 20.0), I), ref.hnw_rigid_body,
+        case = wp.Case("HNW rigid body", Problem(rhs.euler_free, ref.HNW_Y0, (0.0, 20.0), rhs.euler_coefficients(I)),
+                       ref.hnw_rigid_body,
                        {"energy": lambda y: 0.5 * np.sum(I * y * y, axis=-1),
                         "casimir": lambda y: np.sum((I * y) ** 2, axis=-1)})
         return case, I
