@@ -222,3 +222,36 @@ def test_batch_equals_one_at_a_time():
                        rtol=1e-10, atol=1e-13)
         assert np.array_equal(single.y, y)
     assert status == ["success"] * 3
+
+
+@pytest.mark.parametrize("method", ["dop853", "dopri5"])
+def test_the_final_state_loop_takes_the_full_loops_steps(method):
+    """solve() without dense output, events or a step record runs the lean loop: same steps, same result."""
+    lean = solve(HNW, method, rtol=1e-9, atol=1e-12)
+    full = solve(HNW, method, rtol=1e-9, atol=1e-12, record_steps=True)
+    specialized = solve(HNW, method, rtol=1e-9, atol=1e-12, specialize=True)
+    for sol in (lean, specialized):
+        assert np.array_equal(sol.y, full.y)
+        assert (sol.nfev, sol.n_steps, sol.n_rejected, sol.status) == (full.nfev, full.n_steps, full.n_rejected,
+                                                                       full.status)
+
+
+def test_blow_up_is_located_without_dense_output_asked_for():
+    m, mu, p0 = 1.0, 1.0, 0.0                          # p' = 1 + p^2: p = tan t, blows up at pi/2
+    problem = Problem(rhs.riccati, [p0], (0.0, 3.0), [m, mu])
+    for specialize in (False, True):
+        sol = solve(problem, "dop853", rtol=1e-10, atol=1e-12, specialize=specialize)
+        assert sol.status == "blow-up"
+        assert sol.t == pytest.approx(ref.riccati_blow_up_time(m, mu, p0), rel=1e-6)
+    status, t_end, _, _ = solve_batch(rhs.riccati, np.array([[p0], [0.5]]), (0.0, 3.0), [m, mu], rtol=1e-10,
+                                      atol=1e-12, specialize=True)
+    assert status == ["blow-up", "blow-up"]
+    assert t_end[1] == pytest.approx(ref.riccati_blow_up_time(m, mu, 0.5), rel=1e-6)
+
+
+def test_specialized_batch_equals_plain_batch():
+    Y0 = ref.HNW_Y0 + 0.05 * np.random.default_rng(3).standard_normal((40, 3))
+    a = rhs.euler_coefficients(ref.HNW_I)
+    plain = solve_batch(rhs.euler_free, Y0, (0.0, 20.0), a, rtol=1e-10, atol=1e-13)
+    fast = solve_batch(rhs.euler_free, Y0, (0.0, 20.0), a, rtol=1e-10, atol=1e-13, specialize=True)
+    assert np.array_equal(plain[2], fast[2]) and plain[0] == fast[0]

@@ -21,6 +21,10 @@ from numba import njit
 from . import runge_kutta as rk
 
 EPS = np.finfo(float).eps
+_NO_TIMES = np.zeros(0)
+_NO_TIMES.flags.writeable = False
+_NO_EVENTS = np.zeros(0, dtype=np.int64)
+_NO_EVENTS.flags.writeable = False
 RTOL_FLOOR = 100 * EPS            # below this a double cannot honour rtol (scipy clamps it silently)
 COMPILED = ("dopri5", "dop853")
 PEERS = ("scipy:RK45", "scipy:DOP853", "scipy:Radau", "scipy:BDF", "scipy:LSODA", "scipy:RK23")
@@ -35,9 +39,18 @@ class Problem:
     name: str = ""
 
     def __post_init__(self):
+        """A problem that cannot be integrated is refused when it is made, with a clear message."""
         object.__setattr__(self, "y0", np.ascontiguousarray(self.y0, dtype=float))
         object.__setattr__(self, "params", np.ascontiguousarray(self.params, dtype=float))
         require_signature(self.rhs)
+        if not np.isfinite(self.y0).all():
+            raise ValueError(f"initial state is not finite: {self.y0}")
+        t0, t1 = map(float, self.t_span)
+        if not (np.isfinite(t0) and np.isfinite(t1)):
+            raise ValueError(f"time span must be finite, got {self.t_span}")
+        if t1 <= t0:
+            raise ValueError(f"t_end = {t1} is not after t0 = {t0}: integrate forward in time")
+        object.__setattr__(self, "t_span", (t0, t1))
 
 
 def require_signature(func):
@@ -77,15 +90,9 @@ class Solution:
         return self.status in ("success", "terminal event")
 
 
-def check_inputs(problem: Problem, rtol=None, atol=None, h=None):
-    """Refuse what cannot be honoured, with a clear message; nothing is clamped silently."""
-    t0, t1 = map(float, problem.t_span)
-    if not np.all(np.isfinite(problem.y0)):
-        raise ValueError(f"initial state is not finite: {problem.y0}")
-    if not (np.isfinite(t0) and np.isfinite(t1)):
-        raise ValueError(f"time span must be finite, got {problem.t_span}")
-    if t1 <= t0:
-        raise ValueError(f"t_end = {t1} is not after t0 = {t0}: integrate forward in time")
+def check_inputs(rtol=None, atol=None, h=None):
+    """Refuse tolerances or steps that cannot be honoured (the problem checked itself when it was made);
+    nothing is clamped silently."""
     if rtol is not None:
         if not (rtol > 0 and atol is not None and atol > 0):
             raise ValueError(f"tolerances must be positive, got rtol={rtol}, atol={atol}")
@@ -98,16 +105,32 @@ def check_inputs(problem: Problem, rtol=None, atol=None, h=None):
 
 def solve(problem: Problem, method: str = "dop853", *, rtol: float = 1e-8, atol: float = 1e-11, t_eval=None,
           events: Events | None = None, max_steps: int = 10**8, bound: float = 1e12, subdivisions: int = 8,
-          record_steps: bool = False) -> Solution:
-    check_inputs(problem, rtol, atol)
-    t0, t1 = map(float, problem.t_span)
+          record_steps: bool = False, specialize: bool = False) -> Solution:
+    """Integrate `problem` with `method`. With no t_eval, events or step record the final-state loop runs
+    (the same steps, without the machinery); specialize=True compiles it for this right-hand side (see
+    runge_kutta.specialized_final_state): the fastest path, for sweeps and benchmarks."""
+    check_inputs(rtol, atol)
+    t0, t1 = problem.t_span
+    if method not in rk.TABLEAUS and method not in PEERS:
+        raise ValueError(f"unknown method {method!r}; known: {', '.join(COMPILED + PEERS)}")
+    if t_eval is None and events is None and not record_steps and method in rk.TABLEAUS:
+        # the final state only: the lean loop, and as little Python around it as possible
+        args = (problem.params, t0, t1, problem.y0, float(rtol), float(atol), *rk.TABLEAUS[method].stepping_arrays(),
+                int(max_steps), float(bound))
+        if specialize:
+            status, t, y, nfev, nacc, nrej = rk.specialized_final_state(problem.rhs)(*args)
+        else:
+            status, t, y, nfev, nacc, nrej = rk.final_state(problem.rhs, *args)
+        if status != rk.BLOW_UP:          # a blow-up is located on the dense output by the full loop below
+            rows = np.zeros((0, y.size))
+            return Solution(rk.STATUS[status], t, y, _NO_TIMES, rows, nfev, nacc, nrej, _NO_TIMES, rows, _NO_TIMES,
+                            rows, _NO_EVENTS, method)
     t_eval = np.zeros(0) if t_eval is None else np.ascontiguousarray(t_eval, dtype=float)
     if t_eval.size and (np.any(np.diff(t_eval) < 0) or t_eval[0] < t0 or t_eval[-1] > t1):
         raise ValueError("t_eval must be increasing and inside the time span")
     if method in PEERS:
         return _solve_scipy(problem, method, rtol, atol, t_eval, events, record_steps)
-    if method not in rk.TABLEAUS:
-        raise ValueError(f"unknown method {method!r}; known: {', '.join(COMPILED + PEERS)}")
+    tableau = rk.TABLEAUS[method]
     g, n_events = (events.g, events.n) if events else (rk._no_events, 0)
     require_signature(g)
     directions = np.array(events.directions or (0,) * n_events if events else (0,), dtype=np.int64)
@@ -115,7 +138,7 @@ def solve(problem: Problem, method: str = "dop853", *, rtol: float = 1e-8, atol:
     # the right-hand side goes in as itself (numba's direct calling convention, the fast path per call);
     # the event function by address (usually the no-op: converting it at every call would cost ~20 us)
     out = rk.integrate(problem.rhs, problem.params, t0, t1, problem.y0, float(rtol), float(atol),
-                       *rk.TABLEAUS[method].arrays(), t_eval, int(max_steps), float(bound), rk.by_address(g), n_events,
+                       *tableau.arrays(), t_eval, int(max_steps), float(bound), rk.by_address(g), n_events,
                        directions, terminal, int(subdivisions), bool(record_steps))
     status, t, y, y_eval, nfev, nacc, nrej, ts, ys, et, ey, ei = out
     return Solution(rk.STATUS[status], t, y, t_eval, y_eval, nfev, nacc, nrej, ts, ys, et, ey, ei, method)
@@ -192,15 +215,34 @@ def _batch(f, P, t0, t1, Y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extra, 
     return status, t_end, final, out
 
 
-def solve_batch(rhs, Y0, t_span, params, method="dop853", *, rtol=1e-8, atol=1e-11, t_eval=None, bound=1e12):
-    """Many initial conditions (rows of Y0; params one row each or shared) in one compiled call."""
+def solve_batch(rhs, Y0, t_span, params, method="dop853", *, rtol=1e-8, atol=1e-11, t_eval=None, bound=1e12,
+                specialize=False):
+    """Many initial conditions (rows of Y0; params one row each or shared) in one compiled call.
+
+    Without t_eval only the final states are computed, by the final-state loop (specialize=True: compiled
+    for this right-hand side, the rows shared out over the cores); a row that blows up is rerun alone by
+    the full loop, which locates the blow-up. Returns (statuses, end times, final states, states at t_eval).
+    """
     require_signature(rhs)
     Y0 = np.ascontiguousarray(Y0, dtype=float)
     P = np.atleast_1d(np.asarray(params, dtype=float))
     P = np.ascontiguousarray(np.broadcast_to(P, (Y0.shape[0], P.shape[-1])))
     for row in Y0:
-        check_inputs(Problem(rhs, row, t_span), rtol, atol)
+        Problem(rhs, row, t_span)           # checks the state and the span
+    check_inputs(rtol, atol)
     t_eval = np.zeros(0) if t_eval is None else np.ascontiguousarray(t_eval, dtype=float)
-    status, t_end, final, out = _batch(rhs, P, float(t_span[0]), float(t_span[1]), Y0, float(rtol), float(atol),
-                                       *rk.TABLEAUS[method].arrays(), t_eval, float(bound))
-    return [rk.STATUS[s] for s in status], t_end, final, out
+    t0, t1 = float(t_span[0]), float(t_span[1])
+    if t_eval.size:
+        status, t_end, final, out = _batch(rhs, P, t0, t1, Y0, float(rtol), float(atol),
+                                           *rk.TABLEAUS[method].arrays(), t_eval, float(bound))
+        return [rk.STATUS[s] for s in status], t_end, final, out
+    args = (P, t0, t1, Y0, float(rtol), float(atol), *rk.TABLEAUS[method].arrays()[:6], float(bound))
+    if specialize:
+        status, t_end, final = rk.specialized_final_state_rows(rhs)(*args)
+    else:
+        status, t_end, final = rk.final_state_rows(rhs, *args)
+    for i in np.nonzero(status == rk.BLOW_UP)[0]:
+        sol = solve(Problem(rhs, Y0[i], (t0, t1), P[i]), method, rtol=rtol, atol=atol, bound=bound,
+                    record_steps=True)                   # the full loop, which locates the blow-up
+        status[i], t_end[i], final[i] = rk.BLOW_UP, sol.t, sol.y
+    return [rk.STATUS[s] for s in status], t_end, final, np.zeros((Y0.shape[0], 0, Y0.shape[1]))
