@@ -217,29 +217,16 @@ class PrecessionModel:
         return self.solar_rate() / half_cycle, self.solar_rate() * np.tan(self.obliquity) / half_cycle
 
 
-@EFFECTS.register("solar_torque", "torque", "the Sun's couple on the equatorial bulge (a point mass on its orbit)")
-def _solar(params, model: PrecessionModel):
-    model.sun = True
-
-
-@EFFECTS.register("lunar_torque", "torque", "the Moon's couple on the equatorial bulge")
-def _lunar(params, model: PrecessionModel):
-    model.moon = True
-
-
-@EFFECTS.register("orbit_eccentricity", "orbit", "Keplerian ellipses: e' = 0.0167 (Sun), 0.0549 (Moon)")
-def _eccentric(params, model: PrecessionModel):
-    model.eccentric = True
-
-
-@EFFECTS.register("lunar_inclination", "orbit", "the lunar orbit tilted by i = 5.145° to the ecliptic")
-def _inclined(params, model: PrecessionModel):
-    model.inclined = True
-
-
-@EFFECTS.register("node_regression", "orbit", "the lunar node regresses once in 18.6 years")
-def _regressing(params, model: PrecessionModel):
-    model.regressing = True
+# Each effect switches on one block of the kernels (a flag of the model); none takes parameters.
+SWITCHES = {
+    "solar_torque": ("sun", "torque", "the Sun's couple on the equatorial bulge (a point mass on its orbit)"),
+    "lunar_torque": ("moon", "torque", "the Moon's couple on the equatorial bulge"),
+    "orbit_eccentricity": ("eccentric", "orbit", "Keplerian ellipses: e' = 0.0167 (Sun), 0.0549 (Moon)"),
+    "lunar_inclination": ("inclined", "orbit", "the lunar orbit tilted by i = 5.145° to the ecliptic"),
+    "node_regression": ("regressing", "orbit", "the lunar node regresses once in 18.6 years"),
+}
+for _name, (_flag, _kind, _summary) in SWITCHES.items():
+    EFFECTS.register(_name, _kind, _summary)(lambda params, model, flag=_flag: setattr(model, flag, True))
 
 
 def assemble(H: float, obliquity_rad: float, orbits: Orbits, effects: dict) -> PrecessionModel:

@@ -116,12 +116,28 @@ def fitted_orders(frame: pd.DataFrame) -> dict:
     return out
 
 
-def plot(frame: pd.DataFrame, ax, orders: dict | None = None):
-    """Log-log, error on x and time on y, one line per method (x inverted: accuracy grows to the right)."""
+def plot(frame: pd.DataFrame, ax, orders: dict | None = None, error: str = "error_final", floor: float = 1e-17,
+         xlabel: str = "error at the final time (max over components)"):
+    """Log-log, error on x and time on y, one line per method (x inverted: accuracy grows to the right):
+    solid for this library's adaptive methods, dashed for scipy's, dotted squares for fixed-step splittings."""
     for method, part in frame.groupby("method", sort=False):
         label = method + (f" (order {orders[method]:.2f})" if orders and method in orders else "")
-        dashed = method.startswith("scipy:")
-        ax.loglog(np.maximum(part.error_final, 1e-17), part.seconds, "o--" if dashed else "o-", ms=3, label=label)
-    ax.set_xlabel("error at the final time (max over components)")
+        style = "o--" if method.startswith("scipy:") else ("s:" if method.startswith("splitting") else "o-")
+        ax.loglog(np.maximum(part[error], floor), part.seconds, style, ms=3, label=label)
+    ax.set_xlabel(xlabel)
     ax.set_ylabel("wall time (s), min over repeats")
     ax.invert_xaxis()
+
+
+def method_key(method: str) -> str:
+    """A method's label as part of a results number's name: 'scipy:DOP853' -> 'scipy_DOP853'."""
+    return method.replace("scipy:", "scipy_").replace(", order ", "")
+
+
+def best_by_method(frame: pd.DataFrame, error: str = "error_final") -> dict:
+    """{method_key: (smallest error, the setting that reached it)} per method."""
+    out = {}
+    for method, part in frame.groupby("method", sort=False):
+        best = part.loc[part[error].idxmin()]
+        out[method_key(method)] = (float(best[error]), float(best.setting))
+    return out

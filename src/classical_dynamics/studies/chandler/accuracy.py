@@ -13,6 +13,7 @@ import pandas as pd
 from ...models import earth
 from ...solvers import references as ref
 from ...solvers import rigid_body
+from ...solvers import workprecision as wp
 from ...solvers.timing import min_time
 from ..results import new_figure
 from . import model as wobble_model
@@ -74,21 +75,15 @@ def run(scene, results, quick):
                   "energy in; inf: no change at all in double precision).")
     results.timing_table("accuracy", frame, "Work-precision of the wobble: the same runs with their wall times.")
     fig, ax = new_figure(6.2, 4.0)
-    for method, part in frame.groupby("method", sort=False):
-        style = "o--" if method.startswith("scipy:") else ("s:" if method.startswith("splitting") else "o-")
-        ax.loglog(np.maximum(part.error_final, 1e-16), part.seconds, style, ms=3, label=method)
-    ax.set_xlabel("error at the final time / wobble amplitude")
-    ax.set_ylabel("wall time (s), min over repeats")
-    ax.invert_xaxis()
+    wp.plot(frame, ax, floor=1e-16, xlabel="error at the final time / wobble amplitude")
     ax.legend(fontsize=7)
     results.timing_figure("work_precision", fig, f"What accuracy costs for {span_years:g} years of wobble. "
                           "Runge–Kutta in the body frame follows only the slow wobble; the splitting turns the body "
                           "through every day of spin and pays for it.")
+    for key, (best, setting) in wp.best_by_method(frame).items():
+        results.number(f"best_error_{key}", best, "1", note=f"at {setting:g}")
     for method, part in frame.groupby("method", sort=False):
-        key = method.replace("scipy:", "scipy_").replace(", order ", "")
-        best = part.loc[part.error_final.idxmin()]
-        results.number(f"best_error_{key}", float(best.error_final), "1", note=f"at {best.setting:g}")
-        results.number(f"min_abs_spurious_Q_{key}", float(np.min(np.abs(part.spurious_Q))), "1",
+        results.number(f"min_abs_spurious_Q_{wp.method_key(method)}", float(np.min(np.abs(part.spurious_Q))), "1",
                        note="smallest |Q_num| over the settings")
     _speedup(results, frame)
 

@@ -14,6 +14,7 @@ import pandas as pd
 from ...models import earth
 from ...models import precession as prec
 from ...solvers import rigid_body
+from ...solvers import workprecision as wp
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
 from ..results import new_figure
@@ -82,17 +83,10 @@ def run(scene, model, results, quick):
                   "(mas) against the reference, and the steps taken.")
     results.timing_table("accuracy", frame, "Work-precision of the spin-resolved Earth, with wall times.")
     fig, ax = new_figure(6.2, 4.0)
-    for method, part in frame.groupby("method", sort=False):
-        style = "o--" if method.startswith("scipy:") else ("s:" if method.startswith("splitting") else "o-")
-        ax.loglog(np.maximum(part.error_mas, 1e-9), part.seconds, style, ms=3, label=method)
-    ax.set_xlabel("error of the final L axis (mas)")
-    ax.set_ylabel("wall time (s), min over repeats")
-    ax.invert_xaxis()
+    wp.plot(frame, ax, error="error_mas", floor=1e-9, xlabel="error of the final L axis (mas)")
     ax.legend(fontsize=7)
     results.timing_figure("work_precision", fig, f"What accuracy costs for {span_years:g} years of the spin-resolved "
                           "Earth: the splitting with the exact free flow against adaptive Runge–Kutta on Euler's "
                           "equations and the quaternion, compiled and through solve_ivp.")
-    for method, part in frame.groupby("method", sort=False):
-        key = method.replace("scipy:", "scipy_").replace(", order ", "")
-        best = part.loc[part.error_mas.idxmin()]
-        results.number(f"best_error_mas_{key}", float(best.error_mas), "mas", note=f"at {best.setting:g}")
+    for key, (best, setting) in wp.best_by_method(frame, "error_mas").items():
+        results.number(f"best_error_mas_{key}", best, "mas", note=f"at {setting:g}")
