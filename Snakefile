@@ -2,7 +2,7 @@
 # This file is the report's table of contents: one include per study, in report order.
 #
 #   snakemake -c all                 everything: every scene of every study, then the report
-#   snakemake -c all chains          one study (its scenes only); also: precession, chandler, solvers
+#   snakemake -c all chains          one study (its scenes only); also: precession, chandler, self_excited, solvers
 #   snakemake -c all report          the HTML and PDF report
 #   snakemake -c1 dist               a citable archive with SHA256SUMS
 #   snakemake -c all --config quick=1    a reduced build (what the tests run)
@@ -18,7 +18,8 @@ include: "workflow/rules/precession.smk"
 include: "workflow/rules/chandler.smk"
 # Vibrations of chains: the hanging chain, discrete chains, strings, springs, rotating chains
 include: "workflow/rules/chains.smk"
-# 4. The self-excited rigid body        (to come: issue 6)
+# The self-excited rigid body (Lee 1964): phase planes under a body-fixed torque
+include: "workflow/rules/self_excited.smk"
 # The solver layer: what accuracy costs, against scipy's solve_ivp
 include: "workflow/rules/solvers.smk"
 include: "workflow/rules/report.smk"

@@ -128,10 +128,13 @@ def test_a_new_scene_file_is_picked_up_with_no_rule_edit(scratch):
     ("title: x\nfidelity: full\nconstants: modern\nearth: {H: 0.00327, H_definition: (C-A)/C, H_source: s,"
      " obliquity_deg: 23.4, obliquity_source: s}\neffects: {solar_torque: }\nanalysis: {span_years: 10}\n",
      "analysis.step_hours"),
+    ("title: x\nbody: {moments: [4.0, 2.5, 1.0]}\ntorque_axis: largest\nplane: {m1: 0.5, nu: 0, delta: 1}\n"
+     "effects: {body_torque: }\n", "body.moments"),
 ])
 def test_a_bad_scene_stops_the_build_and_touches_nothing(scratch, text, field):
     before = tree_digest(scratch / "results")
-    study = "precession" if "fidelity" in text else "chandler" if "observation" in text or "earth" in text else "chains"
+    study = ("precession" if "fidelity" in text else "self_excited" if "torque_axis" in text
+             else "chandler" if "observation" in text or "earth" in text else "chains")
     (scratch / f"workflow/scenes/{study}/broken.yaml").write_text(text)
     out = snakemake(scratch, "-c", "2", "--config", "quick=1", check=False)
     assert out.returncode != 0
@@ -155,7 +158,8 @@ def test_two_clean_builds_give_identical_results(built_repo, tmp_path):
     snakemake(other, "-c", "2", "results/chains/hanging_particles", "results/chains/hanging_continuum",
               "results/chains/hanging_time_domain", "results/chains/spring_chain", "results/chandler/excited",
               "results/chandler/observed", "results/chandler/triaxial", "results/precession/lamb_1920",
-              "results/precession/full_sun", "results/precession/averaged_cycle", "--config", "quick=1")
+              "results/precession/full_sun", "results/precession/averaged_cycle",
+              "results/self_excited/largest_perturbed_cycles", "--config", "quick=1")
     mine = {k: v for k, v in result_files(built_repo).items() if k in result_files(other)}
     assert len(mine) > 10
     assert mine == result_files(other)

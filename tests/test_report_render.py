@@ -65,6 +65,7 @@ def test_pdf_pages(built_repo, tmp_path):
     assert "Contents" in text and "References" in text and "Vibrations of chains" in text
     assert "The Chandler wobble" in text and "Observed polar motion" in text
     assert "Precession of the equinoxes" in text and "The spin-resolved Earth" in text
+    assert "The self-excited rigid body" in text and "Periodic motions as series" in text
     # page numbers: the contents page names the page of the chains chapter
     assert re.search(r"Vibrations of chains\s*\.*\s*\d+", text)
     # figures are drawn: a figure page has much more ink than a text page

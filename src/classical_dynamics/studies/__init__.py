@@ -13,6 +13,7 @@ STUDIES = {
     "precession": "classical_dynamics.studies.precession",
     "chandler": "classical_dynamics.studies.chandler",
     "chains": "classical_dynamics.studies.chains",
+    "self_excited": "classical_dynamics.studies.self_excited",
     "solvers": "classical_dynamics.studies.solvers",
 }
 

@@ -1,0 +1,76 @@
+"""Study: the self-excited rigid body and its phase planes (Lee 1964).
+
+A scene names a body (three principal moments, in any order), the axis of the body-fixed torque
+(largest, middle or smallest) and the point of the reduced plane to draw: m1, the drag nu (mu1 = -nu)
+and the cylinder delta; the physical torque (M and mu0, per unit of the axis' moment) follows and is
+reported. The effects it lists must be those the plane needs: body_torque when M != 0, quadratic_torque
+when nu != 0. This build covers the torque along the largest axis (Lee §2, §4.2).
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+from ...models.self_excited import EFFECTS
+from ...scenes import Scene, SceneError
+
+TITLE = "The self-excited rigid body"
+__all__ = ["TITLE", "EFFECTS", "check", "run"]
+
+
+def _numbers(data, prefix=""):
+    """Every number in the scene, with its field path (a YAML .nan or .inf passes the schema)."""
+    if isinstance(data, dict):
+        for k, v in data.items():
+            yield from _numbers(v, f"{prefix}{k}.")
+    elif isinstance(data, list):
+        for i, v in enumerate(data):
+            yield from _numbers(v, f"{prefix[:-1]}[{i}].")
+    elif isinstance(data, (int, float)) and not isinstance(data, bool):
+        yield prefix[:-1], data
+
+
+def check(path: Path, data: dict) -> None:
+    """Physical consistency the schema cannot express. Raises SceneError (one line)."""
+    from ...models.self_excited import Body, LargestAxis
+
+    for field, value in _numbers(data):
+        if not math.isfinite(value):
+            raise SceneError(path, field, "a finite number", value)
+    moments = data["body"]["moments"]
+    A, B, C = sorted(moments, reverse=True)
+    if not A < B + C:
+        raise SceneError(path, "body.moments", "moments a body can have: each less than the sum of the other "
+                         "two (A < B + C)", moments)
+    if data["torque_axis"] != "largest":
+        raise SceneError(path, "torque_axis", "largest (the middle- and smallest-axis cases are not built yet)",
+                         data["torque_axis"])
+    if not A > B > C:
+        raise SceneError(path, "body.moments", "three different moments (the reduction to the plane needs "
+                         "A > B > C)", moments)
+    plane = data["plane"]
+    effects = data.get("effects") or {}
+    if plane["nu"] != 0.0 and "quadratic_torque" not in effects:
+        raise SceneError(path, "effects", "quadratic_torque listed (nu != 0 is the mu0 |omega|^2 part of the "
+                         "torque)", sorted(effects))
+    if plane["nu"] == 0.0 and "quadratic_torque" in effects:
+        raise SceneError(path, "effects.quadratic_torque", "nu != 0 in plane (an unused effect is not listed)",
+                         plane["nu"])
+    L = LargestAxis.with_plane_parameters(Body(A, B, C), plane["m1"], -plane["nu"], plane["delta"])
+    if abs(L.m) > 0.0 and "body_torque" not in effects:
+        raise SceneError(path, "effects", f"body_torque listed (this plane needs M/A = {L.m:.4g})", sorted(effects))
+    if L.m == 0.0 and "body_torque" in effects:
+        raise SceneError(path, "effects.body_torque", "a plane that needs a constant torque (M/A = 0 here)", 0.0)
+    lo, hi = data.get("portrait", {}).get("phi2_range", [-3 * math.pi, 3 * math.pi])
+    if not lo < hi:
+        raise SceneError(path, "portrait.phi2_range", "[low, high] with low < high", [lo, hi])
+
+
+def run(scene: Scene, quick: bool = False):
+    from ..results import Results       # imported here so that validation stays light
+    from . import largest_axis
+
+    results = Results("self_excited", scene.name, scene.title)
+    largest_axis.run(scene, results, quick)
+    return results

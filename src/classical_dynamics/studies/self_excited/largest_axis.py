@@ -1,0 +1,252 @@
+"""Torque along the largest axis (Lee §2, §4.2): the phase plane (phi2, p1), checked against Euler's equations.
+
+Every portrait draws trajectories of the plane system (2.10), the separatrices from their closed forms
+((2.23), (2.13), the limit cycles (2.30)), the singular points typed by the linearization, and full
+three-dimensional integrations of Euler's equations mapped into the plane by the inverse map, which
+must lie on the plane's trajectories.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from ...models import self_excited as se
+from ...solvers.ode import Events, Problem, solve
+from ...solvers.runge_kutta import rhs_function
+from ...solvers.timing import min_time
+from ..results import new_figure
+
+RTOL = 1e-12
+OVERLAY_BOUND = 1e-8          # hard case: Euler's equations mapped into the plane against the plane system
+INVARIANT_BOUND = 1e-8        # hard case: relative spread of E or C1 along the plane's trajectories
+CYLINDER_BOUND = 1e-10        # hard case: relative spread of q^2/b + r^2/c along Euler's equations
+BLOW_UP_BOUND = 1e8
+DEFAULT_AMPLITUDES = (0.4, 0.2, 0.1, 0.05)
+
+
+@rhs_function
+def _p1_zero(t, y, p, out):
+    out[0] = y[1]
+
+
+def run(scene, results, quick):
+    data = scene.data
+    body = se.Body.from_moments(data["body"]["moments"])
+    plane = data["plane"]
+    m1, nu, delta = float(plane["m1"]), float(plane["nu"]), float(plane["delta"])
+    L = se.LargestAxis.with_plane_parameters(body, m1, -nu, delta)
+    portrait = data.get("portrait", {})
+    lo, hi = portrait.get("phi2_range", [-3 * np.pi, 3 * np.pi])
+    p1_max = portrait.get("p1_max", 3.0)
+    tau_max = portrait.get("tau_max", 12.0)
+
+    for name, value in (("A", body.A), ("B", body.B), ("C", body.C), ("a", body.a), ("b", body.b), ("c", body.c)):
+        results.number(f"body_{name}", value, "1", note="moments sorted A > B > C; a, b, c Lee's inertia numbers")
+    results.number("m1", m1, "1", note=plane.get("source", "chosen to show the regime"))
+    results.number("nu", nu, "1", note="mu1 = −nu")
+    results.number("delta", delta, "1", note="the elliptic cylinder q²/b + r²/c = δ²")
+    results.number("M_over_A", L.m, "1/time²", note="the constant torque per unit A that gives m1 on this cylinder")
+    results.number("mu0_over_A", L.mu, "1", note="the coefficient of |ω|² per unit A")
+    results.number("tau_per_t", L.time_scale, "1/time", note="τ = √(2d) t")
+    if 0.0 < m1 < 1.0:
+        results.number("nu_star", se.nu_star(m1), "1", note="limit cycles F, F1 exist for nu below this (Lee §2.5)")
+    cycles = se.limit_cycle_p1(np.array([0.0]), m1, nu) is not None
+    results.number("limit_cycles", int(cycles), "1", note="1 if F and F1 exist (m1/ν > 2/√(1 + 4ν²))")
+
+    points = se.singular_points(m1, -nu, lo, hi)
+    results.number("singular_points", points, "1", note="p1 = 0, sin φ2 = −m1, typed by the linearization")
+    for kind in ("saddle", "center", "degenerate"):
+        results.number(f"n_{kind}s", sum(pt["type"] == kind for pt in points), "1")
+    _eigenvalue_check(results, m1, nu, points)
+
+    fig, ax = new_figure(7.0, 4.4)
+    seconds, _, _ = min_time(lambda: _trajectories(m1, nu, lo, hi, p1_max, tau_max, points), repeats=1,
+                             budget_s=0.1)
+    spreads = _draw_trajectories(ax, m1, nu, lo, hi, p1_max, tau_max, points)
+    results.number("invariant_spread", spreads, "1", note=("E" if nu == 0 else "C1") + ": largest relative spread "
+                   "along one trajectory")
+    results.hard_case("plane_invariant", f"The plane's first integral ({'E' if nu == 0 else 'C1'}) along its "
+                      "trajectories (largest relative spread)", spreads, INVARIANT_BOUND)
+    _draw_separatrices(ax, m1, nu, lo, hi, p1_max, points)
+    deviation, cyl = _overlay(ax, L, m1, nu, lo, hi, points)
+    results.number("overlay_deviation", deviation, "1", note="Euler's equations in the plane against (2.10), max")
+    results.number("cylinder_spread", cyl, "1", note="relative spread of q²/b + r²/c along Euler's equations")
+    results.hard_case("overlay", "Full integrations of Euler's equations, mapped into the plane, on the plane's "
+                      "trajectories (max deviation in (φ2, p1))", deviation, OVERLAY_BOUND)
+    results.hard_case("elliptic_cylinder", "The end of ω stays on its elliptic cylinder (relative spread of "
+                      "q²/b + r²/c)", cyl, CYLINDER_BOUND)
+    _mark_points(ax, points)
+    ax.set_xlim(lo, hi)
+    ax.set_ylim(-p1_max, p1_max)
+    ax.set_xlabel("φ2")
+    ax.set_ylabel("p1")
+    ax.legend(fontsize=6, loc="upper left", framealpha=0.9)
+    regime = f"m1 = {m1:g}" + (f", ν = {nu:g}" if nu else ", unperturbed")
+    results.figure("portrait", fig, f"Phase plane of Lee's (2.10) for the torque along the largest axis, {regime}: "
+                   "trajectories (grey), separatrices from the closed forms (black), limit cycles F and F1 (red) "
+                   "where they exist, singular points by type, and Euler's equations integrated in three "
+                   "dimensions and mapped into the plane (dots).")
+    results.timing_table("cost", pd.DataFrame([{"what": "plane trajectories of the portrait", "seconds": seconds}]),
+                         "Cost of the portrait's plane trajectories.")
+
+    centers = [pt for pt in points if pt["type"] == "center"]
+    if centers:
+        amplitudes = data.get("analysis", {}).get("series_amplitudes", DEFAULT_AMPLITUDES)
+        _series(results, m1, nu, centers[0]["phi2"], amplitudes)
+    if cycles:
+        _blow_up(results, m1, nu)
+
+
+def _eigenvalue_check(results, m1, nu, points):
+    """The type of each point from the numerical Jacobian of (2.10), against the closed-form type."""
+    wrong = 0
+    for pt in points:
+        h = 1e-6
+        J = np.empty((2, 2))
+        out_p, out_m = np.empty(2), np.empty(2)
+        base = np.array([pt["phi2"], 0.0])
+        for k in range(2):
+            e = np.zeros(2)
+            e[k] = h
+            se.plane_largest(0.0, base + e, np.array([m1, -nu, 1.0]), out_p)
+            se.plane_largest(0.0, base - e, np.array([m1, -nu, 1.0]), out_m)
+            J[:, k] = (out_p - out_m) / (2 * h)
+        lam = np.linalg.eigvals(J)
+        kind = "degenerate" if np.max(np.abs(lam)) < 1e-4 else ("saddle" if np.max(lam.real) > 1e-8 else "center")
+        wrong += kind != pt["type"]
+    results.hard_case("singular_point_types", "Singular points whose type from the numerical Jacobian differs from "
+                      "the closed form (count)", wrong, 0)
+
+
+def _starts(m1, nu, lo, hi, p1_max, points):
+    starts = [(lo + 0.05, v) for v in np.linspace(-0.8 * p1_max, 0.8 * p1_max, 7)]
+    starts += [(x, 0.0) for x in np.linspace(lo, hi, 7)[1:-1]]
+    for pt in points:
+        if pt["type"] == "center":
+            starts += [(pt["phi2"] + s, 0.0) for s in (0.4, 0.9, 1.5)]
+    return starts
+
+
+def _trajectories(m1, nu, lo, hi, p1_max, tau_max, points):
+    out = []
+    for phi, p1 in _starts(m1, nu, lo, hi, p1_max, points):
+        for direction in (1.0, -1.0):
+            problem = Problem(se.plane_largest, [phi, p1], (0.0, tau_max), [m1, -nu, direction])
+            t = np.linspace(0.0, tau_max, 600)
+            sol = solve(problem, "dop853", rtol=RTOL, atol=RTOL * 1e-2, t_eval=t, bound=BLOW_UP_BOUND)
+            out.append(sol.y_eval[np.all(np.isfinite(sol.y_eval), axis=1)])
+    return out
+
+
+def _draw_trajectories(ax, m1, nu, lo, hi, p1_max, tau_max, points):
+    worst = 0.0
+    for y in _trajectories(m1, nu, lo, hi, p1_max, tau_max, points):
+        ax.plot(y[:, 0], y[:, 1], color="0.65", lw=0.5)
+        inside = (np.abs(y[:, 1]) < 10 * p1_max) & (np.abs(y[:, 0]) < 10 * max(abs(lo), abs(hi)))
+        y = y[inside]
+        if len(y) < 2:
+            continue
+        values = se.energy(y, m1) if nu == 0 else se.lee_c1(y, m1, -nu)
+        scale = max(np.max(np.abs(values)), 1e-300)
+        worst = max(worst, float(np.ptp(values) / scale))
+    return worst
+
+
+def _draw_separatrices(ax, m1, nu, lo, hi, p1_max, points):
+    phi = np.linspace(lo, hi, 4001)
+    first = True
+    for pt in points:
+        if pt["type"] == "center":
+            continue
+        sq = se.separatrix_p1_squared(phi, m1, -nu, pt["phi2"])
+        ok = sq >= 0
+        for sign in (1, -1):
+            y = np.where(ok, sign * np.sqrt(np.where(ok, sq, 0.0)), np.nan)
+            ax.plot(phi, y, color="k", lw=1.1, label="separatrices (closed form)" if first else None)
+            first = False
+    F = se.limit_cycle_p1(phi, m1, nu)
+    if F is not None:
+        ax.plot(phi, F, color="C3", lw=1.4, label="F (stable limit cycle)")
+        ax.plot(phi, -F, color="C3", lw=1.4, ls="--", label="F1 (unstable)")
+
+
+def _mark_points(ax, points):
+    style = {"saddle": ("x", "saddle"), "center": ("o", "center"), "degenerate": ("^", "degenerate point")}
+    seen = set()
+    for pt in points:
+        marker, label = style[pt["type"]]
+        ax.plot(pt["phi2"], 0.0, marker, color="C0", ms=6, mfc="none" if marker == "o" else None,
+                label=None if label in seen else label)
+        seen.add(label)
+
+
+def _overlay(ax, L, m1, nu, lo, hi, points):
+    """Three starts integrated in (p, q, r) and in the plane: their largest disagreement after mapping."""
+    centers = [pt["phi2"] for pt in points if pt["type"] == "center"]
+    starts = [(centers[0] + 0.7, 0.0)] if centers else []
+    starts += [(0.5 * (lo + hi), 1.2), (lo + 0.3 * (hi - lo), -0.6)]
+    worst, cyl_worst = 0.0, 0.0
+    tau_span = 6.0
+    for k, (phi, p1) in enumerate(starts):
+        tau = np.linspace(0.0, tau_span, 121)
+        w0 = L.from_plane(phi, p1)
+        full = solve(Problem(se.euler_largest, w0, (0.0, tau_span / L.time_scale), L.euler_parameters()), "dop853",
+                     rtol=1e-13, atol=1e-15, t_eval=tau / L.time_scale, bound=BLOW_UP_BOUND)
+        flat = solve(Problem(se.plane_largest, [phi, p1], (0.0, tau_span), [m1, -nu, 1.0]), "dop853", rtol=1e-13,
+                     atol=1e-15, t_eval=tau, bound=BLOW_UP_BOUND)
+        good = np.all(np.isfinite(full.y_eval), axis=1) & np.all(np.isfinite(flat.y_eval), axis=1)
+        mapped = L.to_plane(full.y_eval[good], phi2_start=phi)
+        scale = np.maximum(1.0, np.abs(flat.y_eval[good]))
+        worst = max(worst, float(np.max(np.abs(mapped - flat.y_eval[good]) / scale)))
+        cyl = se.cylinder(L.body, full.y_eval[good])
+        cyl_worst = max(cyl_worst, float(np.ptp(cyl) / cyl[0]))
+        ax.plot(mapped[::4, 0], mapped[::4, 1], ".", color="C2", ms=3,
+                label="Euler's equations, mapped" if k == 0 else None)
+    return worst, cyl_worst
+
+
+def _period(m1, nu, phi_c, eta):
+    problem = Problem(se.plane_largest, [phi_c + eta, 0.0], (0.0, 60.0), [m1, -nu, 1.0])
+    sol = solve(problem, "dop853", rtol=1e-13, atol=1e-15, events=Events(_p1_zero, 1, (-1,)))
+    return float(sol.event_t[1] - sol.event_t[0])
+
+
+def _series(results, m1, nu, phi_c, amplitudes):
+    """Lee §4.2: the series period against the measured one; the error must shrink like eta^4."""
+    rows = []
+    for eta in amplitudes:
+        measured, series = _period(m1, nu, phi_c, eta), se.series_period(m1, nu, eta)
+        rows.append({"eta": eta, "period_measured": measured, "period_series": series,
+                     "relative_error": abs(series / measured - 1.0)})
+    frame = pd.DataFrame(rows)
+    results.table("series", frame, "Lee §4.2: the period (in τ) of the oscillation about the center started at "
+                  "φ2c + η, measured from the plane system and from the series 2π(1 − m1²)^(−1/4)(1 + h2η² + h3η³).")
+    slope = float(np.polyfit(np.log(frame.eta), np.log(frame.relative_error), 1)[0])
+    results.number("series_error_slope", slope, "1", note="log-log slope of the series' error against η; 4 expected")
+    results.number("period_tau", _period(m1, nu, phi_c, 0.1), "τ", note="oscillation about the center, η = 0.1")
+    results.number("period_tau_linear", 2 * np.pi / (1 - m1**2) ** 0.25, "τ", note="2π(1 − m1²)^(−1/4)")
+    results.hard_case("series_order", "The series' period error falls like η⁴ (|slope − 4|)", abs(slope - 4.0), 0.5)
+    fig, ax = new_figure(4.8, 3.4)
+    ax.loglog(frame.eta, frame.relative_error, "o-", ms=3, label="series against integration")
+    ax.loglog(frame.eta, frame.relative_error.iloc[-1] * (frame.eta / frame.eta.iloc[-1]) ** 4, "k:", lw=0.8,
+              label="η⁴")
+    ax.set_xlabel("amplitude η")
+    ax.set_ylabel("relative error of the period")
+    ax.legend(fontsize=7)
+    results.figure("series", fig, "The period series of Lee §4.2 against the integrated period: the error falls "
+                   "like η⁴, the first term the series leaves out.")
+
+
+def _blow_up(results, m1, nu):
+    """Below F1 the spin runs to the negative x-axis in finite time: p1' ~ -nu p1^2."""
+    F1_at_0 = -se.limit_cycle_p1(np.array([0.0]), m1, nu)[0]
+    start = F1_at_0 - 0.5
+    sol = solve(Problem(se.plane_largest, [0.0, start], (0.0, 100.0), [m1, -nu, 1.0]), "dop853", rtol=1e-12,
+                atol=1e-14, bound=BLOW_UP_BOUND)
+    if sol.status == "blow-up":
+        results.number("blow_up_time", sol.t, "τ", note=f"from φ2 = 0, p1 = {start:.4g} (below F1): |y| passes "
+                       f"{BLOW_UP_BOUND:g}, within 1/(ν·{BLOW_UP_BOUND:g}) of the singularity")
+    results.hard_case("below_F1_blows_up", "A start below F1 leaves every bound in finite time (1 if it does not)",
+                      0.0 if sol.status == "blow-up" else 1.0, 0.0)
+

@@ -1,0 +1,163 @@
+"""The self-excited rigid body (Lee 1964), torque along the largest axis: the reduction, its invariants,
+singular points, limit cycles, the period series, blow-up, and bad scenes."""
+
+import numpy as np
+import pytest
+import yaml
+
+from classical_dynamics.models import self_excited as se
+from classical_dynamics.scenes import SceneError
+from classical_dynamics.solvers import references as ref
+from classical_dynamics.solvers.ode import Events, Problem, solve
+from classical_dynamics.studies import validate
+from classical_dynamics.studies.self_excited import largest_axis
+
+from .conftest import ROOT
+
+SCHEMA = ROOT / "workflow" / "schemas" / "self_excited.schema.yaml"
+BODY = se.Body.from_moments([3.0, 2.2, 1.2])
+
+
+def test_moments_in_any_order_make_the_same_body_and_lees_identity():
+    assert se.Body.from_moments([1.2, 3.0, 2.2]) == BODY
+    assert BODY.a - BODY.b + BODY.c == pytest.approx(BODY.a * BODY.b * BODY.c, rel=1e-14)   # a - b + c = abc
+
+
+@pytest.mark.parametrize("m1,mu1,start,tau_end", [
+    (0.5, 0.0, (0.3, 0.9), 5.0), (-0.5, 0.0, (-2.0, 1.5), 5.0), (0.5, -0.1, (4.0, 0.2), 5.0), (1.5, -0.1, (0.0, -1.0), 5.0),
+    (0.7, 0.2, (1.0, 0.5), 2.0), (0.0, 0.0, (-8.0, 0.4), 5.0)])
+def test_eulers_equations_mapped_into_the_plane_follow_the_plane(m1, mu1, start, tau_end):
+    # (mu1 > 0 runs away in finite time: the samples must stay close enough to unwrap the phase)
+    L = se.LargestAxis.with_plane_parameters(BODY, m1, mu1, 0.8)
+    assert (L.m1, L.mu1) == pytest.approx((m1, mu1), abs=1e-14)
+    tau = np.linspace(0.0, tau_end, 101)
+    full = solve(Problem(se.euler_largest, L.from_plane(*start), (0, tau[-1] / L.time_scale), L.euler_parameters()),
+                 rtol=1e-13, atol=1e-15, t_eval=tau / L.time_scale)
+    flat = solve(Problem(se.plane_largest, start, (0, tau[-1]), [m1, mu1, 1.0]), rtol=1e-13, atol=1e-15, t_eval=tau)
+    assert full.status == flat.status
+    good = np.all(np.isfinite(full.y_eval), axis=1) & np.all(np.isfinite(flat.y_eval), axis=1)
+    assert good.sum() > 20
+    mapped = L.to_plane(full.y_eval[good], phi2_start=start[0])
+    assert np.max(np.abs(mapped - flat.y_eval[good]) / np.maximum(1, np.abs(flat.y_eval[good]))) < 1e-9
+    # the elliptic cylinder, and the plane's first integral
+    cyl = se.cylinder(BODY, full.y_eval[good])
+    assert np.ptp(cyl) < 1e-11 * cyl[0]
+    if mu1 == 0.0:
+        assert np.ptp(se.energy(flat.y_eval[good], m1)) < 1e-10
+    else:
+        c1 = se.lee_c1(flat.y_eval[good], m1, mu1)
+        assert np.ptp(c1) < 1e-9 * np.max(np.abs(c1))
+
+
+def test_the_branch_of_phi2_matters_far_from_the_origin():
+    """(q, r) fix phi2 only modulo 4 pi; the plane is not periodic, so the map must take the start's branch."""
+    L = se.LargestAxis.with_plane_parameters(BODY, 0.5, 0.0, 1.0)
+    w = L.from_plane(-8.2, 0.3)
+    assert L.to_plane(w, phi2_start=-8.2)[0] == pytest.approx([-8.2, 0.3], abs=1e-12)
+    assert L.to_plane(w)[0, 0] == pytest.approx(-8.2 + 4 * np.pi, abs=1e-12)
+
+
+def test_singular_points_and_their_types():
+    points = se.singular_points(0.5, 0.0, -np.pi, np.pi)
+    assert [p["type"] for p in points] == ["center", "saddle"]
+    assert points[1]["phi2"] == pytest.approx(-np.arcsin(0.5)) and points[0]["phi2"] == pytest.approx(
+        np.pi + np.arcsin(0.5) - 2 * np.pi)
+    assert se.singular_points(1.5, 0.0, -10, 10) == []
+    assert {p["type"] for p in se.singular_points(1.0, 0.0, -10, 10)} == {"degenerate"}
+    # permanent rotations in physical terms (digest §6, item 14): p = 0, q r = -m/a
+    L = se.LargestAxis.with_plane_parameters(BODY, 0.5, 0.0, 1.0)
+    for pt in se.singular_points(0.5, 0.0, -np.pi, np.pi):
+        p, q, r = L.from_plane(pt["phi2"], 0.0)
+        assert q * r == pytest.approx(-L.m / BODY.a, rel=1e-12)
+        assert (q**2 / BODY.b < r**2 / BODY.c) == (pt["type"] == "center")       # stable iff nearer the z-axis
+
+
+def test_limit_cycle_F_and_the_critical_drag():
+    m1, nu = 0.5, 0.1
+    sigma3 = np.arctan(-1 / (2 * nu))
+    tau = np.linspace(0, 40, 400)
+    sol = solve(Problem(se.plane_largest, [-sigma3, np.sqrt(m1 / nu)], (0, 40), [m1, -nu, 1.0]), rtol=1e-12,
+                atol=1e-14, t_eval=tau)
+    assert np.max(np.abs(se.limit_cycle_p1(sol.y_eval[:, 0], m1, nu) - sol.y_eval[:, 1])) < 1e-9
+    # nearby starts converge to F: it is stable
+    near = solve(Problem(se.plane_largest, [-sigma3, np.sqrt(m1 / nu) + 0.3], (0, 60), [m1, -nu, 1.0]), rtol=1e-12,
+                 atol=1e-14)
+    assert near.y[1] == pytest.approx(se.limit_cycle_p1(np.array([near.y[0]]), m1, nu)[0], abs=1e-6)
+    # the cycles exist exactly below nu* (digest item 11: 0.288675 at m1 = 0.5)
+    assert se.nu_star(0.5) == pytest.approx(0.288675, abs=1e-6)
+    assert se.limit_cycle_p1(np.zeros(1), 0.5, 0.2886) is not None
+    assert se.limit_cycle_p1(np.zeros(1), 0.5, 0.2888) is None
+    # at nu*, (2.36): the curve touches p1 = 0 at the saddles
+    ns = se.nu_star(0.5)
+    sq = se.separatrix_p1_squared(np.array([-np.arcsin(0.5) + 2 * np.pi]), 0.5, -ns, -np.arcsin(0.5))
+    assert sq[0] == pytest.approx(0.0, abs=1e-12)
+
+
+def test_omega_on_F_has_twice_the_period_of_p():
+    """p is 2 pi-periodic in phi2, but (q, r) -> (-q, -r) after 2 pi: omega returns only after 4 pi."""
+    L = se.LargestAxis.with_plane_parameters(BODY, 0.5, -0.1, 1.0)
+    sigma3 = np.arctan(-1 / 0.2)
+    w0 = L.from_plane(-sigma3, np.sqrt(5.0))
+    assert np.allclose(L.from_plane(-sigma3 + 2 * np.pi, np.sqrt(5.0))[1:], -w0[1:])
+    assert np.allclose(L.from_plane(-sigma3 + 4 * np.pi, np.sqrt(5.0)), w0)
+
+
+def test_period_series_error_falls_like_eta_to_the_fourth():
+    m1, nu = 0.5, 0.1
+    phi_c = np.pi + np.arcsin(m1)
+    errors = [abs(se.series_period(m1, nu, eta) / largest_axis._period(m1, nu, phi_c, eta) - 1) for eta in (0.2, 0.1)]
+    assert errors[0] / errors[1] == pytest.approx(16, rel=0.15)
+    assert largest_axis._period(m1, nu, phi_c, 0.1) == pytest.approx(6.7575599248, abs=1e-8)     # digest item 19
+    # the pendulum limit m1 = nu = 0: T = 4 K(sin^2(eta/2)), h2 = 1/16 (digest item 20)
+    from scipy.special import ellipk
+    assert largest_axis._period(0.0, 0.0, np.pi, 0.2) == pytest.approx(4 * ellipk(np.sin(0.1) ** 2), rel=1e-10)
+
+
+def test_reversible_centres_stay_closed():
+    """A perturbed center (nu > 0) is still a center: no spurious damping over many periods."""
+    m1, nu = 0.5, 0.3
+    phi_c = np.pi + np.arcsin(m1)
+    sol = solve(Problem(se.plane_largest, [phi_c + 0.6, 0.0], (0, 400), [m1, -nu, 1.0]), rtol=1e-12, atol=1e-14,
+                events=Events(largest_axis._p1_zero, 1, (-1,)))
+    turning = sol.event_y[:, 0]
+    assert len(turning) > 40 and np.ptp(turning) < 1e-8
+
+
+def test_blow_up_of_p_alone_against_the_closed_form():
+    """q0 = r0 = 0: p' = m + mu p^2 (Lee 2.4); digest item 7: m = 0.5, mu = -0.2, p0 = -2 blows up at 3.39296045."""
+    m, mu, p0 = 0.5, -0.2, -2.0
+    params = np.array([BODY.a, BODY.b, BODY.c, m, mu])
+    sol = solve(Problem(se.euler_largest, [p0, 0.0, 0.0], (0, 10), params), rtol=1e-12, atol=1e-14)
+    assert sol.status == "blow-up"
+    assert sol.t == pytest.approx(ref.riccati_blow_up_time(m, mu, p0), rel=1e-8)
+    assert sol.t == pytest.approx(3.39296045, abs=1e-7)
+
+
+GOOD = {"title": "x", "body": {"moments": [3.0, 2.2, 1.2]}, "torque_axis": "largest",
+        "plane": {"m1": 0.5, "nu": 0.1, "delta": 1.0}, "effects": {"body_torque": None, "quadratic_torque": None}}
+
+
+@pytest.mark.parametrize("change,field", [
+    (lambda d: d["body"].update(moments=[4.0, 2.5, 1.0]), "body.moments"),          # 4 > 2.5 + 1: not a body
+    (lambda d: d["body"].update(moments=[3.0, 2.2, 2.2]), "body.moments"),          # equal moments
+    (lambda d: d.update(torque_axis="diagonal"), "torque_axis"),
+    (lambda d: d.update(torque_axis="middle"), "torque_axis"),
+    (lambda d: d["plane"].update(m1=float("nan")), "plane.m1"),
+    (lambda d: d["plane"].update(delta=float("inf")), "plane.delta"),
+    (lambda d: d["effects"].pop("quadratic_torque"), "effects"),
+    (lambda d: d["effects"].update(magic=None), "effects.magic"),
+])
+def test_bad_scenes_name_the_field(tmp_path, change, field):
+    import copy
+    data = copy.deepcopy(GOOD)
+    change(data)
+    path = tmp_path / "bad.yaml"
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(SceneError) as err:
+        validate("self_excited", path, SCHEMA)
+    assert field in str(err.value) and "bad.yaml" in str(err.value) and "\n" not in str(err.value)
+
+
+def test_every_shipped_scene_validates():
+    for scene in sorted((ROOT / "workflow/scenes/self_excited").glob("*.yaml")):
+        validate("self_excited", scene, SCHEMA)
