@@ -44,3 +44,18 @@ def built_repo(tmp_path_factory):
     repo = copy_repository(tmp_path_factory.mktemp("built") / "repo")
     snakemake(repo, "-c", "2", "--config", "quick=1")
     return repo
+
+
+def assert_refused(tmp_path: Path, study: str, data: dict, field: str) -> None:
+    """Writing `data` as a scene of `study` is refused with one line that names the file and `field`."""
+    import yaml
+
+    from classical_dynamics.scenes import SceneError
+    from classical_dynamics.studies import validate
+
+    path = tmp_path / "bad.yaml"
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(SceneError) as err:
+        validate(study, path, ROOT / "workflow" / "schemas" / f"{study}.schema.yaml")
+    message = str(err.value)
+    assert field in message and "bad.yaml" in message and "\n" not in message
