@@ -156,3 +156,26 @@ def test_bad_scenes_name_the_field(tmp_path, change, field):
 def test_every_shipped_scene_validates():
     for scene in sorted((ROOT / "workflow/scenes/self_excited").glob("*.yaml")):
         validate("self_excited", scene, SCHEMA)
+
+
+def test_period_on_F_against_jacobis_form():
+    """digest item 10: for m1 = 0.8, nu = 0.3 the tau-period of p1 on F is 4K(k)/sqrt(alpha + beta) = 4.2418796151."""
+    assert se.limit_cycle_period(0.8, 0.3) == pytest.approx(4.2418796151, abs=1e-10)
+    sigma3 = np.arctan(-1 / 0.6)
+    start = se.limit_cycle_p1(np.array([-sigma3]), 0.8, 0.3)[0]
+    sol = solve(Problem(se.plane_by_phase, [0.0, start], (-sigma3, -sigma3 + 2 * np.pi), [0.8, -0.3]), rtol=1e-13,
+                atol=1e-15)
+    assert sol.y[0] == pytest.approx(4.2418796151, abs=1e-9) and sol.y[1] == pytest.approx(start, abs=1e-10)
+
+
+@pytest.mark.parametrize("m1,nu,passages", [(0.5, 0.0, 1), (-0.5, 0.0, 1), (0.0, 0.0, 2), (0.5, 0.1, 1)])
+def test_next_to_the_separatrix_each_side_keeps_its_fate(m1, nu, passages):
+    """Hard case: 1e-10 either side of the separatrix, the side decides (closed orbit or run past the saddle),
+    and the period inside grows like n ln(1/eps)/lambda."""
+    from classical_dynamics.studies.results import Results
+    results = Results("self_excited", "t", "t")
+    largest_axis._separatrix_sides(results, m1, nu)
+    cases = {h["name"]: h for h in results.stability}
+    assert cases["separatrix_sides"]["measured"] == 0
+    expected = passages / (1 - m1**2) ** 0.25
+    assert results.numbers["separatrix_period_slope"]["value"] == pytest.approx(expected, rel=0.01)

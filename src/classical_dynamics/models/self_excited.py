@@ -160,6 +160,13 @@ def plane_largest(t, y, p, out):
         out[1] += p[2] * p[1] * y[1] * y[1]
 
 
+@rhs_function
+def plane_by_phase(phi2, y, p, out):
+    """(2.10) with phi2 as the clock, y = (tau, p1), p = (m1, mu1): for motions with p1 of one sign."""
+    out[0] = 1.0 / y[1]
+    out[1] = (p[0] + np.sin(phi2) + p[1] * y[1] * y[1]) / y[1]
+
+
 # --- singular points, separatrices and invariants of the plane (2.10) ----------------------------------
 def singular_points(m1: float, mu1: float, phi_min: float, phi_max: float) -> list[dict]:
     """sin(phi2) = -m1, p1 = 0, in [phi_min, phi_max], typed by the linearization: the Jacobian
@@ -195,6 +202,20 @@ def lee_c1(y: np.ndarray, m1: float, mu1: float) -> np.ndarray:
     return np.exp(-2 * mu1 * phi) * (p1**2 + m1 / mu1 + 2 * (2 * mu1 * np.sin(phi) + np.cos(phi)) / (1 + 4 * mu1**2))
 
 
+def invariant_spread(y: np.ndarray, m1: float, mu1: float) -> float:
+    """Spread of E (mu1 = 0) or C1 along rows y, relative to the size of the terms that make it up (either
+    may be near zero on a particular trajectory, where a relative spread would mean nothing)."""
+    y = np.atleast_2d(y)
+    phi, p1 = y[:, 0], y[:, 1]
+    if mu1 == 0.0:
+        values = energy(y, m1)
+        size = 0.5 * p1**2 + abs(m1 * phi) + 1.0
+    else:
+        values = lee_c1(y, m1, mu1)
+        size = np.exp(-2 * mu1 * phi) * (p1**2 + abs(m1 / mu1) + 2 * (2 * abs(mu1) + 1) / (1 + 4 * mu1**2))
+    return float(np.ptp(values) / np.max(size))
+
+
 def separatrix_p1_squared(phi: np.ndarray, m1: float, mu1: float, phi_saddle: float) -> np.ndarray:
     """p1^2 along the curves through the saddle at phi_saddle: (2.23) for mu1 = 0, (2.13) with C1 fixed by
     p1 = 0 at the saddle otherwise. Negative values mark where the curve does not exist."""
@@ -223,6 +244,16 @@ def series_period(m1: float, nu: float, eta: float) -> float:
     h2 = (5 * beta2**2 + 10 * beta2 * k2 * mu1 + 3 * beta3 * k2 + 8 * k2**2 * mu1**2) / (48 * k2**2)
     h3 = -(beta2 + 4 * k2 * mu1) / (3 * k2) * h2
     return 2.0 * np.pi / np.sqrt(k2) * (1.0 + h2 * eta**2 + h3 * eta**3)
+
+
+def limit_cycle_period(m1: float, nu: float) -> float:
+    """The tau-period of p1 on F in Jacobi's form (digest §2.5): alpha = m1/nu, beta = 2/sqrt(1 + 4 nu^2),
+    k^2 = 2 beta/(alpha + beta), p1 = sqrt(alpha + beta) dn(u, k), u = u0 - tau sqrt(alpha + beta)/2, so the
+    period is 4 K(k)/sqrt(alpha + beta). omega's own period is twice that."""
+    from scipy.special import ellipk
+
+    alpha, beta = m1 / nu, 2.0 / np.sqrt(1.0 + 4.0 * nu**2)
+    return 4.0 * ellipk(2.0 * beta / (alpha + beta)) / np.sqrt(alpha + beta)
 
 
 def nu_star(m1: float) -> float:

@@ -19,6 +19,7 @@ from ..results import new_figure
 
 RTOL = 1e-12
 OVERLAY_BOUND = 1e-8          # hard case: Euler's equations mapped into the plane against the plane system
+OVERLAY_P1_MAX = 100.0        # beyond it the samples (every 0.05 in tau) could not follow the phase of (q, r)
 INVARIANT_BOUND = 1e-8        # hard case: relative spread of E or C1 along the plane's trajectories
 CYLINDER_BOUND = 1e-10        # hard case: relative spread of q^2/b + r^2/c along Euler's equations
 BLOW_UP_BOUND = 1e8
@@ -64,8 +65,8 @@ def run(scene, results, quick):
     seconds, _, _ = min_time(lambda: _trajectories(m1, nu, lo, hi, p1_max, tau_max, points), repeats=1,
                              budget_s=0.1)
     spreads = _draw_trajectories(ax, m1, nu, lo, hi, p1_max, tau_max, points)
-    results.number("invariant_spread", spreads, "1", note=("E" if nu == 0 else "C1") + ": largest relative spread "
-                   "along one trajectory")
+    results.number("invariant_spread", spreads, "1", note=("E" if nu == 0 else "C1") + ": largest spread along "
+                   "one trajectory, relative to the size of its terms")
     results.hard_case("plane_invariant", f"The plane's first integral ({'E' if nu == 0 else 'C1'}) along its "
                       "trajectories (largest relative spread)", spreads, INVARIANT_BOUND)
     _draw_separatrices(ax, m1, nu, lo, hi, p1_max, points)
@@ -94,8 +95,11 @@ def run(scene, results, quick):
     if centers:
         amplitudes = data.get("analysis", {}).get("series_amplitudes", DEFAULT_AMPLITUDES)
         _series(results, m1, nu, centers[0]["phi2"], amplitudes)
+        if nu == 0.0 or nu < (1.0 - 1e-9) * se.nu_star(m1):    # where the saddle's own loop encloses the center
+            _separatrix_sides(results, m1, nu)
     if cycles:
         _blow_up(results, m1, nu)
+        _limit_cycle_period(results, m1, nu)
 
 
 def _eigenvalue_check(results, m1, nu, points):
@@ -147,9 +151,7 @@ def _draw_trajectories(ax, m1, nu, lo, hi, p1_max, tau_max, points):
         y = y[inside]
         if len(y) < 2:
             continue
-        values = se.energy(y, m1) if nu == 0 else se.lee_c1(y, m1, -nu)
-        scale = max(np.max(np.abs(values)), 1e-300)
-        worst = max(worst, float(np.ptp(values) / scale))
+        worst = max(worst, se.invariant_spread(y, m1, -nu))
     return worst
 
 
@@ -196,6 +198,7 @@ def _overlay(ax, L, m1, nu, lo, hi, points):
         flat = solve(Problem(se.plane_largest, [phi, p1], (0.0, tau_span), [m1, -nu, 1.0]), "dop853", rtol=1e-13,
                      atol=1e-15, t_eval=tau, bound=BLOW_UP_BOUND)
         good = np.all(np.isfinite(full.y_eval), axis=1) & np.all(np.isfinite(flat.y_eval), axis=1)
+        good &= np.cumprod(np.abs(np.nan_to_num(flat.y_eval[:, 1], nan=np.inf)) < OVERLAY_P1_MAX).astype(bool)
         mapped = L.to_plane(full.y_eval[good], phi2_start=phi)
         scale = np.maximum(1.0, np.abs(flat.y_eval[good]))
         worst = max(worst, float(np.max(np.abs(mapped - flat.y_eval[good]) / scale)))
@@ -249,4 +252,57 @@ def _blow_up(results, m1, nu):
                        f"{BLOW_UP_BOUND:g}, within 1/(ν·{BLOW_UP_BOUND:g}) of the singularity")
     results.hard_case("below_F1_blows_up", "A start below F1 leaves every bound in finite time (1 if it does not)",
                       0.0 if sol.status == "blow-up" else 1.0, 0.0)
+
+
+SEPARATRIX_OFFSETS = (1e-2, 1e-4, 1e-6, 1e-8, 1e-10)
+
+
+def _separatrix_sides(results, m1, nu):
+    """Starts a relative 1e-2 ... 1e-10 inside and outside the saddle's loop, on the vertical through its
+    center and heading for the saddle: inside, p1 must change sign (a closed orbit) with a period growing
+    like n ln(1/eps)/lambda, lambda = (1 - m1^2)^(1/4) the saddle's rate and n the saddles passed in a
+    period (1 on a homoclinic loop; 2 for m1 = 0, where the separatrix joins two saddles); outside, p1
+    must never change sign (the motion runs past the saddle)."""
+    phi_s = -np.arcsin(m1)
+    side = -1.0 if m1 >= 0 else 1.0                  # the loop lies left of its saddle for m1 > 0
+    phi_c = phi_s + side * (np.pi - 2.0 * abs(np.arcsin(m1)))
+    p_sep = -side * float(np.sqrt(se.separatrix_p1_squared(np.array([phi_c]), m1, -nu, phi_s))[0])
+    passages = 2 if m1 == 0.0 else 1
+    rows, wrong = [], 0
+    for eps in SEPARATRIX_OFFSETS:
+        fates = {}
+        for name, factor in (("inside", 1.0 - eps), ("outside", 1.0 + eps)):
+            sol = solve(Problem(se.plane_largest, [phi_c, p_sep * factor], (0.0, 200.0), [m1, -nu, 1.0]), "dop853",
+                        rtol=1e-13, atol=1e-15, events=Events(_p1_zero, 1, (-1,)), bound=BLOW_UP_BOUND)
+            fates[name] = sol.event_t
+        wrong += (len(fates["inside"]) < 2) + (len(fates["outside"]) > 0)
+        period = float(fates["inside"][1] - fates["inside"][0]) if len(fates["inside"]) >= 2 else np.nan
+        rows.append({"offset": eps, "period_inside": period, "outside_turns_back": len(fates["outside"]) > 0})
+    frame = pd.DataFrame(rows)
+    results.table("separatrix", frame, "Starts a relative offset inside and outside the separatrix loop: the "
+                  "period inside (τ), and whether the start outside ever turns back (it must not).")
+    slope = float(np.polyfit(np.log(1.0 / frame.offset), frame.period_inside, 1)[0])
+    rate = (1.0 - m1**2) ** 0.25 / passages
+    results.number("separatrix_period_slope", slope, "τ", note="d(period)/d ln(1/ε) inside the loop")
+    results.number("separatrix_slope_expected", 1.0 / rate, "τ", note="n/λ, λ = (1 − m1²)^(1/4), n saddles passed")
+    results.hard_case("separatrix_sides", "Starts 1e-2 ... 1e-10 either side of the separatrix that end on the "
+                      "wrong side (count)", wrong, 0)
+    results.hard_case("separatrix_period_growth", "Near the separatrix the period grows like n ln(1/ε)/λ "
+                      "(relative error of the slope)", slope * rate - 1.0, 0.01)
+
+
+def _limit_cycle_period(results, m1, nu):
+    """The period of p1 on F, integrated with phi2 as the clock over one turn, against Jacobi's form."""
+    sigma3 = np.arctan(-1.0 / (2.0 * nu))
+    start = float(se.limit_cycle_p1(np.array([-sigma3]), m1, nu)[0])
+    sol = solve(Problem(se.plane_by_phase, [0.0, start], (-sigma3, -sigma3 + 2 * np.pi), [m1, -nu]), "dop853",
+                rtol=1e-13, atol=1e-15)
+    closed = se.limit_cycle_period(m1, nu)
+    results.number("period_tau_F", float(sol.y[0]), "τ", note="p1 on F, one turn of φ2 (2π), integrated")
+    results.number("period_tau_F_jacobi", closed, "τ", note="4K(k)/√(α + β), Jacobi's form")
+    results.number("omega_period_tau_F", 2 * float(sol.y[0]), "τ", note="ω returns after two turns of φ2 (4π)")
+    results.hard_case("limit_cycle_period", "The period on F, integrated against Jacobi's closed form (relative)",
+                      float(sol.y[0]) / closed - 1.0, 1e-9)
+    results.hard_case("limit_cycle_closes", "p1 on F returns to its start after one turn of φ2 (absolute)",
+                      float(sol.y[1]) - start, 1e-9)
 
