@@ -255,3 +255,12 @@ def test_specialized_batch_equals_plain_batch():
     plain = solve_batch(rhs.euler_free, Y0, (0.0, 20.0), a, rtol=1e-10, atol=1e-13)
     fast = solve_batch(rhs.euler_free, Y0, (0.0, 20.0), a, rtol=1e-10, atol=1e-13, specialize=True)
     assert np.array_equal(plain[2], fast[2]) and plain[0] == fast[0]
+
+
+def test_batch_with_parameters_per_row():
+    """Each row its own parameters (a sweep): the same as one at a time."""
+    Y0 = np.tile([0.0, 1.0], (3, 1))
+    P = np.array([[0.5, 1.0], [1.0, 2.0], [2.0, 0.5]])             # p' = m + mu p^2, as (m, mu) rows
+    status, t_end, final, _ = solve_batch(rhs.riccati, Y0[:, :1], (0.0, 0.3), P, rtol=1e-10, atol=1e-12)
+    for row, p, y in zip(Y0[:, :1], P, final):
+        assert np.array_equal(solve(Problem(rhs.riccati, row, (0.0, 0.3), p), rtol=1e-10, atol=1e-12).y, y)

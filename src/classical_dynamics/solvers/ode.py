@@ -226,7 +226,7 @@ def solve_batch(rhs, Y0, t_span, params, method="dop853", *, rtol=1e-8, atol=1e-
     require_signature(rhs)
     Y0 = np.ascontiguousarray(Y0, dtype=float)
     P = np.atleast_1d(np.asarray(params, dtype=float))
-    P = np.ascontiguousarray(np.broadcast_to(P, (Y0.shape[0], P.shape[-1])))
+    P = np.array(np.broadcast_to(P, (Y0.shape[0], P.shape[-1])), dtype=float, order="C")   # writable: numba's type
     for row in Y0:
         Problem(rhs, row, t_span)           # checks the state and the span
     check_inputs(rtol, atol)

@@ -12,7 +12,7 @@ import numpy as np
 import pandas as pd
 
 from ...models import self_excited as se
-from ...solvers.ode import Events, Problem, solve
+from ...solvers.ode import Events, Problem, solve, solve_batch
 from ...solvers.runge_kutta import rhs_function
 from ...solvers.timing import min_time
 from ..results import new_figure
@@ -100,6 +100,9 @@ def run(scene, results, quick):
     if cycles:
         _blow_up(results, m1, nu)
         _limit_cycle_period(results, m1, nu)
+    if data.get("analysis", {}).get("bifurcation"):
+        _singular_point_bifurcation(results)
+        _limit_cycle_bifurcation(results, m1, nu)
 
 
 def _eigenvalue_check(results, m1, nu, points):
@@ -305,4 +308,78 @@ def _limit_cycle_period(results, m1, nu):
                       float(sol.y[0]) / closed - 1.0, 1e-9)
     results.hard_case("limit_cycle_closes", "p1 on F returns to its start after one turn of φ2 (absolute)",
                       float(sol.y[1]) - start, 1e-9)
+
+
+def _singular_point_bifurcation(results):
+    """Where the permanent rotations appear, merge and vanish as m1 crosses +-1: roots of m1 + sin(phi2) found
+    numerically (sign changes and bisection, types from the numerical Jacobian) against the closed form."""
+    from scipy.optimize import brentq
+
+    m1_grid = np.linspace(-1.5, 1.5, 60)             # an even count: +-1 and 0 are not on it
+    phi = np.linspace(-np.pi, np.pi, 2001)
+    found, wrong = [], 0
+    for m1 in m1_grid:
+        f = m1 + np.sin(phi)
+        roots = [brentq(lambda x: m1 + np.sin(x), phi[i], phi[i + 1], xtol=1e-14)
+                 for i in np.nonzero(np.sign(f[:-1]) * np.sign(f[1:]) < 0)[0]]
+        closed = se.singular_points(m1, 0.0, -np.pi, np.pi)
+        wrong += len(roots) != len(closed)
+        for x in roots:
+            kind = "saddle" if np.cos(x) > 0 else "center"            # eigenvalues +-sqrt(cos phi2)
+            match = [pt for pt in closed if abs(pt["phi2"] - x) < 1e-10 and pt["type"] == kind]
+            wrong += len(match) != 1
+            found.append((m1, x, kind))
+    results.hard_case("singular_point_bifurcation", "Singular points found numerically for m1 in [−1.5, 1.5] that "
+                      "the closed form misses, misplaces or mistypes (count)", wrong, 0)
+    fig, ax = new_figure(5.6, 3.6)
+    m = np.linspace(-1.0, 1.0, 401)
+    ax.plot(m, -np.arcsin(m), "k-", lw=1.2, label="saddles, closed form")
+    centre = np.pi + np.arcsin(m)
+    ax.plot(m, np.where(centre > np.pi, centre - 2 * np.pi, centre), "k--", lw=1.2, label="centers, closed form")
+    for kind, marker in (("saddle", "x"), ("center", "o")):
+        pts = np.array([(a, b) for a, b, k in found if k == kind])
+        ax.plot(pts[:, 0], pts[:, 1], marker, ms=3, color="C0", mfc="none", label=f"{kind}s, found numerically")
+    ax.axvline(-1, color="0.6", lw=0.6)
+    ax.axvline(1, color="0.6", lw=0.6)
+    ax.set_xlabel("m1")
+    ax.set_ylabel("φ2 of the singular point (one period)")
+    ax.legend(fontsize=6)
+    results.figure("bifurcation_m1", fig, "Singular points of (2.10) against m1: each saddle–center pair merges "
+                   "into a degenerate point at m1 = ±1 and vanishes beyond; lines from the closed form, markers "
+                   "from numerical root finding.")
+
+
+def _limit_cycle_bifurcation(results, m1_scene, nu_scene):
+    """Where F exists in the (m1, nu) plane: a start high above (phi2 = 0, p1 = 4) stays bounded exactly when
+    it has F to converge to; otherwise it runs to the negative x-axis in finite time. One batch call."""
+    m1s, nus = np.linspace(0.05, 1.95, 39), np.linspace(0.025, 1.0, 40)
+    M, N = np.meshgrid(m1s, nus, indexing="ij")
+    P = np.column_stack([M.ravel(), -N.ravel(), np.ones(M.size)])
+    status, _, _, _ = solve_batch(se.plane_largest, np.tile([0.0, 4.0], (M.size, 1)), (0.0, 300.0), P, rtol=1e-9,
+                                  atol=1e-11, bound=1e6)
+    bounded = np.array([s_ == "success" for s_ in status]).reshape(M.shape)
+    exists = np.array([se.limit_cycle_p1(np.zeros(1), a, b) is not None for a, b in zip(M.ravel(), N.ravel())])
+    exists = exists.reshape(M.shape)
+    star = np.full(M.shape, np.inf)
+    below = M < 1.0
+    star[below] = M[below] / (2.0 * np.sqrt(1.0 - M[below] ** 2))
+    clear = np.abs(N / star - 1.0) > 0.02                     # cells on the boundary itself are undecided
+    wrong = int(np.sum((bounded != exists) & clear))
+    results.number("limit_cycle_grid_cells", int(M.size), "1")
+    results.hard_case("limit_cycle_bifurcation", "Cells of the (m1, ν) grid where the integrated fate disagrees "
+                      "with ν* = m1/(2√(1 − m1²)) (count, cells within 2 % of the curve excluded)", wrong, 0)
+    fig, ax = new_figure(5.6, 3.8)
+    ax.plot(M[bounded], N[bounded], "s", ms=2.5, color="C2", label="bounded: tends to F (integrated)")
+    ax.plot(M[~bounded], N[~bounded], "s", ms=2.5, color="0.75", label="runs to −x in finite time")
+    m = np.linspace(0.01, 0.999, 400)
+    ax.plot(m, m / (2 * np.sqrt(1 - m**2)), "k-", lw=1.2, label="ν* = m1/(2√(1 − m1²))")
+    ax.plot([m1_scene], [nu_scene], "r*", ms=9, label="this scene")
+    ax.set_xlim(0, 2)
+    ax.set_ylim(0, 1.02)
+    ax.set_xlabel("m1")
+    ax.set_ylabel("ν")
+    ax.legend(fontsize=6, loc="upper left")
+    results.figure("bifurcation_nu", fig, "Where the limit cycles exist: each cell is the fate of a start above F "
+                   f"integrated to τ = 300 ({M.size} integrations in one batch call), and the curve ν* from the "
+                   "closed form; for m1 ≥ 1 the cycles exist at every ν.")
 
