@@ -22,6 +22,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit
 
 from ..scenes import EffectRegistry
 from ..solvers.runge_kutta import rhs_function
@@ -158,6 +159,12 @@ def plane_largest(t, y, p, out):
     out[1] = p[2] * (p[0] + np.sin(y[0]))
     if p[1] != 0.0:
         out[1] += p[2] * p[1] * y[1] * y[1]
+
+
+@njit(cache=True)
+def plane_largest_force(q, p, out):
+    """The unperturbed (2.10) as phi2'' = a(phi2) = m1 + sin(phi2), p = (m1,), for symplectic.integrate."""
+    out[0] = p[0] + np.sin(q[0])
 
 
 @rhs_function

@@ -100,6 +100,12 @@ def run(scene, results, quick):
     if cycles:
         _blow_up(results, m1, nu)
         _limit_cycle_period(results, m1, nu)
+    if data.get("analysis", {}).get("accuracy_cost"):
+        from . import accuracy
+        if nu == 0.0 and centers:
+            accuracy.separatrix(results, m1, quick)
+        if cycles:
+            accuracy.limit_cycle(results, m1, nu, quick)
     if data.get("analysis", {}).get("bifurcation"):
         _singular_point_bifurcation(results)
         _limit_cycle_bifurcation(results, m1, nu)
