@@ -140,7 +140,10 @@ GOOD = {"title": "x", "body": {"moments": [3.0, 2.2, 1.2]}, "torque_axis": "larg
     (lambda d: d["body"].update(moments=[4.0, 2.5, 1.0]), "body.moments"),          # 4 > 2.5 + 1: not a body
     (lambda d: d["body"].update(moments=[3.0, 2.2, 2.2]), "body.moments"),          # equal moments
     (lambda d: d.update(torque_axis="diagonal"), "torque_axis"),
-    (lambda d: d.update(torque_axis="middle"), "torque_axis"),
+    (lambda d: d.update(torque_axis="smallest"), "torque_axis"),
+    (lambda d: d.update(torque_axis="middle"), "plane.alpha"),
+    (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.5, 0.5])), "plane.alpha"),
+    (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.8, 0.3], nu=0.6)), "plane.nu"),
     (lambda d: d["plane"].update(m1=float("nan")), "plane.m1"),
     (lambda d: d["plane"].update(delta=float("inf")), "plane.delta"),
     (lambda d: d["effects"].pop("quadratic_torque"), "effects"),
@@ -179,3 +182,37 @@ def test_next_to_the_separatrix_each_side_keeps_its_fate(m1, nu, passages):
     assert cases["separatrix_sides"]["measured"] == 0
     expected = passages / (1 - m1**2) ** 0.25
     assert results.numbers["separatrix_period_slope"]["value"] == pytest.approx(expected, rel=0.01)
+
+
+@pytest.mark.parametrize("m1,nu,alpha", [(0.5, 0.0, (0.8, 0.3)), (0.5, 0.2, (0.8, 0.3)), (-0.5, 0.1, (0.5, -0.2))])
+def test_middle_axis_reduction_hyperbola_and_closed_orbits(m1, nu, alpha):
+    M = se.MiddleAxis.with_plane_parameters(BODY, m1, -nu, *alpha)
+    assert abs(M.k1) > abs(M.k2) and M.eps1 == -1.0 and M.m1 == pytest.approx(m1, abs=1e-14)
+    start = (np.arcsinh(m1) + 0.9, 0.0)
+    tau = np.linspace(0.0, 10.0, 201)
+    full = solve(Problem(se.euler_middle, M.from_plane(*start), (0, 10 / M.time_scale), M.euler_parameters()),
+                 rtol=1e-13, atol=1e-15, t_eval=tau / M.time_scale)
+    flat = solve(Problem(se.plane_middle, start, (0, 10), [m1, -nu, -1.0, 1.0]), rtol=1e-13, atol=1e-15, t_eval=tau)
+    assert np.max(np.abs(M.to_plane(full.y_eval) - flat.y_eval)) < 1e-9
+    h = se.hyperbola(BODY, full.y_eval)
+    assert np.ptp(h) < 1e-11 * abs(h[0]) and h[0] == pytest.approx(alpha[0] ** 2 - alpha[1] ** 2, rel=1e-12)
+    invariant = se.middle_energy(flat.y_eval, m1, -1.0) if nu == 0 else se.middle_c1(flat.y_eval, m1, -nu, -1.0)
+    assert np.ptp(invariant) < 1e-9 * np.max(np.abs(invariant))
+    # closed: the orbit comes back to its start (reversible, no spurious damping over many turns)
+    sol = solve(Problem(se.plane_middle, start, (0, 300), [m1, -nu, -1.0, 1.0]), rtol=1e-12, atol=1e-14,
+                events=Events(largest_axis._p1_zero, 1, (-1,)))
+    assert len(sol.event_y) > 20 and np.ptp(sol.event_y[:, 0]) < 1e-8
+
+
+def test_middle_axis_critical_drag_and_series():
+    """mu_c = b sqrt(ac)/(a + c), where k1 = k2; nu_c = b/(2(a + c)) < 1/2 for every body (a - b + c = abc > 0)."""
+    M = se.MiddleAxis(BODY, 0.3, -se.MiddleAxis.mu_c(BODY), 0.8, 0.3)
+    assert M.k1 == pytest.approx(M.k2, rel=1e-12)
+    assert BODY.b / (2 * (BODY.a + BODY.c)) < 0.5
+    center = np.arcsinh(0.5)
+    errors = []
+    for eta in (0.2, 0.1):
+        sol = solve(Problem(se.plane_middle, [center + eta, 0.0], (0, 60), [0.5, -0.1, -1.0, 1.0]), rtol=1e-13,
+                    atol=1e-15, events=Events(largest_axis._p1_zero, 1, (-1,)))
+        errors.append(abs(se.middle_series_period(0.5, 0.1, eta) / (sol.event_t[1] - sol.event_t[0]) - 1))
+    assert errors[0] / errors[1] == pytest.approx(16, rel=0.2)

@@ -266,3 +266,140 @@ def limit_cycle_period(m1: float, nu: float) -> float:
 def nu_star(m1: float) -> float:
     """The drag at which the limit cycles F, F1 vanish (0 < m1 < 1): m1 / (2 sqrt(1 - m1^2))."""
     return m1 / (2.0 * np.sqrt(1.0 - m1**2))
+
+
+# --- torque along the middle axis (Lee §3), the case |k1| > |k2| ------------------------------------------
+@dataclass(frozen=True)
+class MiddleAxis:
+    """The §3 reduction for one hyperbolic cylinder p^2/a - r^2/c = alpha1^2 - alpha2^2 of one body under
+    m + mu |omega|^2 along y, in the case |k1| > |k2| (every |mu| below mu_c = b sqrt(ac)/(a + c)):
+
+        phi = int q dt, X = sqrt(ac) phi: p/sqrt(a) = alpha1 cosh X + alpha2 sinh X, r/sqrt(c) = alpha1 sinh X + alpha2 cosh X
+        k1 sinh 2X + k2 cosh 2X = eps1 d1 sinh(2X + sigma1),  phi2 = 2X + sigma1,  tau = sqrt(2 sqrt(ac) d1) t,
+        dq1/dtau = m1 + eps1 sinh(phi2) + mu1 q1^2,  q1 = dphi2/dtau,  m1 = m0/d1,  mu1 = mu/(2 sqrt(ac)).
+    """
+    body: Body
+    m: float
+    mu: float
+    alpha1: float
+    alpha2: float
+
+    @property
+    def m0(self) -> float:
+        a, c = self.body.a, self.body.c
+        return self.m + 0.5 * self.mu * (a - c) * (self.alpha1**2 - self.alpha2**2)
+
+    @property
+    def k1(self) -> float:
+        a, b, c = self.body.a, self.body.b, self.body.c
+        s = self.alpha1**2 + self.alpha2**2
+        return self.mu * (a + c) * self.alpha1 * self.alpha2 - 0.5 * b * np.sqrt(a * c) * s
+
+    @property
+    def k2(self) -> float:
+        a, b, c = self.body.a, self.body.b, self.body.c
+        s = self.alpha1**2 + self.alpha2**2
+        return 0.5 * self.mu * (a + c) * s - b * np.sqrt(a * c) * self.alpha1 * self.alpha2
+
+    @property
+    def d1(self) -> float:
+        return np.sqrt(self.k1**2 - self.k2**2)
+
+    @property
+    def sigma1(self) -> float:
+        return np.arctanh(self.k2 / self.k1)
+
+    @property
+    def eps1(self) -> float:
+        return float(np.sign(self.k1))
+
+    @property
+    def time_scale(self) -> float:
+        return np.sqrt(2.0 * np.sqrt(self.body.a * self.body.c) * self.d1)
+
+    @property
+    def m1(self) -> float:
+        return self.m0 / self.d1
+
+    @property
+    def mu1(self) -> float:
+        return self.mu / (2.0 * np.sqrt(self.body.a * self.body.c))
+
+    @staticmethod
+    def mu_c(body: Body) -> float:
+        """|mu| at which k1 = k2: b sqrt(ac)/(a + c)."""
+        return body.b * np.sqrt(body.a * body.c) / (body.a + body.c)
+
+    @classmethod
+    def with_plane_parameters(cls, body: Body, m1: float, mu1: float, alpha1: float, alpha2: float) -> "MiddleAxis":
+        """The torque (m, mu) that gives the plane (m1, mu1) on the cylinder of (alpha1, alpha2)."""
+        mu = 2.0 * np.sqrt(body.a * body.c) * mu1
+        trial = cls(body, 0.0, mu, alpha1, alpha2)
+        m0 = m1 * trial.d1
+        m = m0 - 0.5 * mu * (body.a - body.c) * (alpha1**2 - alpha2**2)
+        return cls(body, m, mu, alpha1, alpha2)
+
+    def euler_parameters(self) -> np.ndarray:
+        return np.array([self.body.a, self.body.b, self.body.c, self.m, self.mu])
+
+    def to_plane(self, w: np.ndarray) -> np.ndarray:
+        """Rows (p, q, r) -> rows (phi2, q1): e^X = (p/sqrt a + r/sqrt c)/(alpha1 + alpha2)."""
+        w = np.atleast_2d(w)
+        a, c = self.body.a, self.body.c
+        X = np.log((w[:, 0] / np.sqrt(a) + w[:, 2] / np.sqrt(c)) / (self.alpha1 + self.alpha2))
+        return np.column_stack([2.0 * X + self.sigma1, 2.0 * np.sqrt(a * c) * w[:, 1] / self.time_scale])
+
+    def from_plane(self, phi2: float, q1: float) -> np.ndarray:
+        a, c = self.body.a, self.body.c
+        X = 0.5 * (phi2 - self.sigma1)
+        return np.array([np.sqrt(a) * (self.alpha1 * np.cosh(X) + self.alpha2 * np.sinh(X)),
+                         self.time_scale * q1 / (2.0 * np.sqrt(a * c)),
+                         np.sqrt(c) * (self.alpha1 * np.sinh(X) + self.alpha2 * np.cosh(X))])
+
+
+def hyperbola(body: Body, w: np.ndarray) -> np.ndarray:
+    """p^2/a - r^2/c of rows (p, q, r): constant for any torque along y (Lee (3.32))."""
+    w = np.atleast_2d(w)
+    return w[:, 0] ** 2 / body.a - w[:, 2] ** 2 / body.c
+
+
+@rhs_function
+def euler_middle(t, w, p, out):
+    """Lee (3.1): p' = a q r, q' = -b r p + m + mu |w|^2, r' = c p q; p = (a, b, c, m, mu)."""
+    out[0] = p[0] * w[1] * w[2]
+    out[1] = -p[1] * w[2] * w[0] + p[3]
+    if p[4] != 0.0:
+        out[1] += p[4] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2])
+    out[2] = p[2] * w[0] * w[1]
+
+
+@rhs_function
+def plane_middle(t, y, p, out):
+    """Lee (3.12) in y = (phi2, q1): dq1/dtau = m1 + eps1 sinh(phi2) + mu1 q1^2; p = (m1, mu1, eps1, direction)."""
+    out[0] = p[3] * y[1]
+    out[1] = p[3] * (p[0] + p[2] * np.sinh(y[0]))
+    if p[1] != 0.0:
+        out[1] += p[3] * p[1] * y[1] * y[1]
+
+
+def middle_c1(y: np.ndarray, m1: float, mu1: float, eps1: float) -> np.ndarray:
+    """C1 of (3.14), constant when mu1 != 0 (4 mu1^2 != 1)."""
+    y = np.atleast_2d(y)
+    phi, q1 = y[:, 0], y[:, 1]
+    return np.exp(-2 * mu1 * phi) * (q1**2 + m1 / mu1
+                                     - 2 * eps1 * (2 * mu1 * np.sinh(phi) + np.cosh(phi)) / (1 - 4 * mu1**2))
+
+
+def middle_energy(y: np.ndarray, m1: float, eps1: float) -> np.ndarray:
+    """E = q1^2/2 - m1 phi2 - eps1 cosh(phi2), constant when mu1 = 0."""
+    y = np.atleast_2d(y)
+    return 0.5 * y[:, 1] ** 2 - m1 * y[:, 0] - eps1 * np.cosh(y[:, 0])
+
+
+def middle_series_period(m1: float, nu: float, eta: float) -> float:
+    """Lee (4.13): about the center of (3.52), T = 2 pi (1 + m1^2)^(-1/4)(1 + h2 eta^2 + h3 eta^3)."""
+    k2 = np.sqrt(1.0 + m1**2)
+    beta2, beta3, mu1 = -m1, -k2, -nu
+    h2 = (5 * beta2**2 + 10 * beta2 * k2 * mu1 + 3 * beta3 * k2 + 8 * k2**2 * mu1**2) / (48 * k2**2)
+    h3 = -(beta2 + 4 * k2 * mu1) / (3 * k2) * h2
+    return 2.0 * np.pi / np.sqrt(k2) * (1.0 + h2 * eta**2 + h3 * eta**3)

@@ -4,7 +4,8 @@ A scene names a body (three principal moments, in any order), the axis of the bo
 (largest, middle or smallest) and the point of the reduced plane to draw: m1, the drag nu (mu1 = -nu)
 and the cylinder delta; the physical torque (M and mu0, per unit of the axis' moment) follows and is
 reported. The effects it lists must be those the plane needs: body_torque when M != 0, quadratic_torque
-when nu != 0. This build covers the torque along the largest axis (Lee §2, §4.2).
+when nu != 0. This build covers the torque along the largest axis (Lee §2, §4.2) and along the middle
+axis below mu_c (§3, case |k1| > |k2|; (4.13)).
 """
 
 from __future__ import annotations
@@ -43,14 +44,22 @@ def check(path: Path, data: dict) -> None:
     if not A < B + C:
         raise SceneError(path, "body.moments", "moments a body can have: each less than the sum of the other "
                          "two (A < B + C)", moments)
-    if data["torque_axis"] != "largest":
-        raise SceneError(path, "torque_axis", "largest (the middle- and smallest-axis cases are not built yet)",
-                         data["torque_axis"])
+    axis = data["torque_axis"]
+    if axis == "smallest":
+        raise SceneError(path, "torque_axis", "largest or middle (the smallest-axis case is not built yet)", axis)
     if not A > B > C:
         raise SceneError(path, "body.moments", "three different moments (the reduction to the plane needs "
                          "A > B > C)", moments)
     plane = data["plane"]
     effects = data.get("effects") or {}
+    shape = "delta" if axis == "largest" else "alpha"
+    if shape not in plane:
+        raise SceneError(path, f"plane.{shape}", "the elliptic cylinder delta (torque along the largest axis)"
+                         if axis == "largest" else "alpha: [alpha1, alpha2], the hyperbolic cylinder (middle axis)",
+                         None)
+    if axis == "middle":
+        _check_middle(path, Body(A, B, C), plane, effects)
+        return
     if plane["nu"] != 0.0 and "quadratic_torque" not in effects:
         raise SceneError(path, "effects", "quadratic_torque listed (nu != 0 is the mu0 |omega|^2 part of the "
                          "torque)", sorted(effects))
@@ -62,15 +71,40 @@ def check(path: Path, data: dict) -> None:
         raise SceneError(path, "effects", f"body_torque listed (this plane needs M/A = {L.m:.4g})", sorted(effects))
     if L.m == 0.0 and "body_torque" in effects:
         raise SceneError(path, "effects.body_torque", "a plane that needs a constant torque (M/A = 0 here)", 0.0)
+    _check_range(path, data)
+
+
+def _check_range(path, data):
     lo, hi = data.get("portrait", {}).get("phi2_range", [-3 * math.pi, 3 * math.pi])
     if not lo < hi:
         raise SceneError(path, "portrait.phi2_range", "[low, high] with low < high", [lo, hi])
 
 
+def _check_middle(path, body, plane, effects):
+    from ...models.self_excited import MiddleAxis
+
+    alpha1, alpha2 = plane["alpha"]
+    if abs(alpha1) == abs(alpha2):
+        raise SceneError(path, "plane.alpha", "|alpha1| != |alpha2| (the planes of the separating polhodes are "
+                         "not built yet)", plane["alpha"])
+    if not alpha1 + alpha2 > 0:
+        raise SceneError(path, "plane.alpha", "alpha1 + alpha2 > 0 (orient the axes so; the map takes its log)",
+                         plane["alpha"])
+    nu_c = MiddleAxis.mu_c(body) / (2 * math.sqrt(body.a * body.c))
+    if not plane["nu"] < nu_c:
+        raise SceneError(path, "plane.nu", f"nu below nu_c = {nu_c:.4g} (the case |k1| > |k2|; beyond it is not "
+                         "built yet)", plane["nu"])
+    if plane["nu"] != 0.0 and "quadratic_torque" not in effects:
+        raise SceneError(path, "effects", "quadratic_torque listed (nu != 0)", sorted(effects))
+    M = MiddleAxis.with_plane_parameters(body, plane["m1"], -plane["nu"], alpha1, alpha2)
+    if M.m != 0.0 and "body_torque" not in effects:
+        raise SceneError(path, "effects", f"body_torque listed (this plane needs M/B = {M.m:.4g})", sorted(effects))
+
+
 def run(scene: Scene, quick: bool = False):
     from ..results import Results       # imported here so that validation stays light
-    from . import largest_axis
+    from . import largest_axis, middle_axis
 
     results = Results("self_excited", scene.name, scene.title)
-    largest_axis.run(scene, results, quick)
+    (largest_axis if scene.data["torque_axis"] == "largest" else middle_axis).run(scene, results, quick)
     return results

@@ -16,13 +16,13 @@ from ...solvers.ode import Events, Problem, solve, solve_batch
 from ...solvers.runge_kutta import rhs_function
 from ...solvers.timing import min_time
 from ..results import new_figure
+from . import portrait
 
-RTOL = 1e-12
 OVERLAY_BOUND = 1e-8          # hard case: Euler's equations mapped into the plane against the plane system
 OVERLAY_P1_MAX = 100.0        # beyond it the samples (every 0.05 in tau) could not follow the phase of (q, r)
 INVARIANT_BOUND = 1e-8        # hard case: relative spread of E or C1 along the plane's trajectories
 CYLINDER_BOUND = 1e-10        # hard case: relative spread of q^2/b + r^2/c along Euler's equations
-BLOW_UP_BOUND = 1e8
+BLOW_UP_BOUND = portrait.BLOW_UP_BOUND
 DEFAULT_AMPLITUDES = (0.4, 0.2, 0.1, 0.05)
 
 
@@ -77,7 +77,7 @@ def run(scene, results, quick):
                       "trajectories (max deviation in (φ2, p1))", deviation, OVERLAY_BOUND)
     results.hard_case("elliptic_cylinder", "The end of ω stays on its elliptic cylinder (relative spread of "
                       "q²/b + r²/c)", cyl, CYLINDER_BOUND)
-    _mark_points(ax, points)
+    portrait.mark_points(ax, points)
     ax.set_xlim(lo, hi)
     ax.set_ylim(-p1_max, p1_max)
     ax.set_xlabel("φ2")
@@ -142,14 +142,8 @@ def _starts(m1, nu, lo, hi, p1_max, points):
 
 
 def _trajectories(m1, nu, lo, hi, p1_max, tau_max, points):
-    out = []
-    for phi, p1 in _starts(m1, nu, lo, hi, p1_max, points):
-        for direction in (1.0, -1.0):
-            problem = Problem(se.plane_largest, [phi, p1], (0.0, tau_max), [m1, -nu, direction])
-            t = np.linspace(0.0, tau_max, 600)
-            sol = solve(problem, "dop853", rtol=RTOL, atol=RTOL * 1e-2, t_eval=t, bound=BLOW_UP_BOUND)
-            out.append(sol.y_eval[np.all(np.isfinite(sol.y_eval), axis=1)])
-    return out
+    return portrait.trajectories(se.plane_largest, lambda direction: [m1, -nu, direction],
+                                 _starts(m1, nu, lo, hi, p1_max, points), tau_max)
 
 
 def _draw_trajectories(ax, m1, nu, lo, hi, p1_max, tau_max, points):
@@ -180,16 +174,6 @@ def _draw_separatrices(ax, m1, nu, lo, hi, p1_max, points):
     if F is not None:
         ax.plot(phi, F, color="C3", lw=1.4, label="F (stable limit cycle)")
         ax.plot(phi, -F, color="C3", lw=1.4, ls="--", label="F1 (unstable)")
-
-
-def _mark_points(ax, points):
-    style = {"saddle": ("x", "saddle"), "center": ("o", "center"), "degenerate": ("^", "degenerate point")}
-    seen = set()
-    for pt in points:
-        marker, label = style[pt["type"]]
-        ax.plot(pt["phi2"], 0.0, marker, color="C0", ms=6, mfc="none" if marker == "o" else None,
-                label=None if label in seen else label)
-        seen.add(label)
 
 
 def _overlay(ax, L, m1, nu, lo, hi, points):
