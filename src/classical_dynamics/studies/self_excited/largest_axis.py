@@ -37,10 +37,10 @@ def run(scene, results, quick):
     plane = data["plane"]
     m1, nu, delta = float(plane["m1"]), float(plane["nu"]), float(plane["delta"])
     L = se.LargestAxis.with_plane_parameters(body, m1, -nu, delta)
-    portrait = data.get("portrait", {})
-    lo, hi = portrait.get("phi2_range", [-3 * np.pi, 3 * np.pi])
-    p1_max = portrait.get("p1_max", 3.0)
-    tau_max = portrait.get("tau_max", 12.0)
+    view = data.get("portrait", {})
+    lo, hi = view.get("phi2_range", [-3 * np.pi, 3 * np.pi])
+    p1_max = view.get("p1_max", 3.0)
+    tau_max = view.get("tau_max", 12.0)
 
     for name, value in (("A", body.A), ("B", body.B), ("C", body.C), ("a", body.a), ("b", body.b), ("c", body.c)):
         results.number(f"body_{name}", value, "1", note="moments sorted A > B > C; a, b, c Lee's inertia numbers")
@@ -77,12 +77,7 @@ def run(scene, results, quick):
                       "trajectories (max deviation in (φ2, p1))", deviation, OVERLAY_BOUND)
     results.hard_case("elliptic_cylinder", "The end of ω stays on its elliptic cylinder (relative spread of "
                       "q²/b + r²/c)", cyl, CYLINDER_BOUND)
-    portrait.mark_points(ax, points)
-    ax.set_xlim(lo, hi)
-    ax.set_ylim(-p1_max, p1_max)
-    ax.set_xlabel("φ2")
-    ax.set_ylabel("p1")
-    ax.legend(fontsize=6, loc="upper left", framealpha=0.9)
+    portrait.finish(ax, points, (lo, hi), p1_max, "p1")
     regime = f"m1 = {m1:g}" + (f", ν = {nu:g}" if nu else ", unperturbed")
     results.figure("portrait", fig, f"Phase plane of Lee's (2.10) for the torque along the largest axis, {regime}: "
                    "trajectories (grey), separatrices from the closed forms (black), limit cycles F and F1 (red) "

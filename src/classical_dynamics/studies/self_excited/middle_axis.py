@@ -60,12 +60,7 @@ def run(scene, results, quick):
                       "trajectories (max deviation in (φ2, q1))", deviation, OVERLAY_BOUND)
     results.hard_case("hyperbolic_cylinder", "The end of ω stays on its hyperbolic cylinder (relative spread of "
                       "p²/a − r²/c)", hyp, 1e-10)
-    portrait.mark_points(ax, points)
-    ax.set_xlim(lo, hi)
-    ax.set_ylim(-q1_max, q1_max)
-    ax.set_xlabel("φ2")
-    ax.set_ylabel("q1")
-    ax.legend(fontsize=6, loc="upper left", framealpha=0.9)
+    portrait.finish(ax, points, (lo, hi), q1_max, "q1")
     regime = f"m1 = {m1:g}" + (f", ν = {nu:g}" if nu else ", unperturbed")
     results.figure("portrait", fig, f"Phase plane of Lee's (3.12) for the torque along the middle axis, {regime}: "
                    "one center, every trajectory closed (grey), and Euler's equations mapped into the plane (dots).")

@@ -31,3 +31,13 @@ def mark_points(ax, points):
         ax.plot(pt["phi2"], 0.0, marker, color="C0", ms=6, mfc="none" if marker == "o" else None,
                 label=None if label in seen else label)
         seen.add(label)
+
+
+def finish(ax, points, phi2_range, y_max, y_label):
+    """Singular points, the window, the labels and the legend of a portrait."""
+    mark_points(ax, points)
+    ax.set_xlim(*phi2_range)
+    ax.set_ylim(-y_max, y_max)
+    ax.set_xlabel("φ2")
+    ax.set_ylabel(y_label)
+    ax.legend(fontsize=6, loc="upper left", framealpha=0.9)
