@@ -9,7 +9,7 @@ from classical_dynamics.models import self_excited as se
 from classical_dynamics.solvers import references as ref
 from classical_dynamics.solvers.ode import Events, Problem, solve
 from classical_dynamics.studies import validate
-from classical_dynamics.studies.self_excited import largest_axis
+from classical_dynamics.studies.self_excited import largest_axis, portrait
 
 from .conftest import ROOT, assert_refused
 
@@ -117,7 +117,7 @@ def test_reversible_centres_stay_closed():
     m1, nu = 0.5, 0.3
     phi_c = np.pi + np.arcsin(m1)
     sol = solve(Problem(se.plane_largest, [phi_c + 0.6, 0.0], (0, 400), [m1, -nu, 1.0]), rtol=1e-12, atol=1e-14,
-                events=Events(largest_axis._p1_zero, 1, (-1,)))
+                events=Events(portrait.velocity_zero, 1, (-1,)))
     turning = sol.event_y[:, 0]
     assert len(turning) > 40 and np.ptp(turning) < 1e-8
 
@@ -200,7 +200,7 @@ def test_middle_axis_reduction_hyperbola_and_closed_orbits(m1, nu, alpha):
     assert np.ptp(invariant) < 1e-9 * np.max(np.abs(invariant))
     # closed: the orbit comes back to its start (reversible, no spurious damping over many turns)
     sol = solve(Problem(se.plane_middle, start, (0, 300), [m1, -nu, -1.0, 1.0]), rtol=1e-12, atol=1e-14,
-                events=Events(largest_axis._p1_zero, 1, (-1,)))
+                events=Events(portrait.velocity_zero, 1, (-1,)))
     assert len(sol.event_y) > 20 and np.ptp(sol.event_y[:, 0]) < 1e-8
 
 
@@ -213,6 +213,6 @@ def test_middle_axis_critical_drag_and_series():
     errors = []
     for eta in (0.2, 0.1):
         sol = solve(Problem(se.plane_middle, [center + eta, 0.0], (0, 60), [0.5, -0.1, -1.0, 1.0]), rtol=1e-13,
-                    atol=1e-15, events=Events(largest_axis._p1_zero, 1, (-1,)))
+                    atol=1e-15, events=Events(portrait.velocity_zero, 1, (-1,)))
         errors.append(abs(se.middle_series_period(0.5, 0.1, eta) / (sol.event_t[1] - sol.event_t[0]) - 1))
     assert errors[0] / errors[1] == pytest.approx(16, rel=0.2)

@@ -104,9 +104,5 @@ def _tables(results, frame, name, error, caption, xlabel):
 
 
 def _period_estimate(m1, y0):
-    from ...solvers.ode import Events
-    from .largest_axis import _p1_zero
-
-    sol = solve(Problem(se.plane_largest, y0, (0.0, 400.0), [m1, 0.0, 1.0]), "dop853", rtol=1e-13, atol=1e-15,
-                events=Events(_p1_zero, 1, (-1,)))
-    return float(sol.event_t[1] - sol.event_t[0])
+    from .portrait import period
+    return period(se.plane_largest, [m1, 0.0, 1.0], y0, span=400.0)

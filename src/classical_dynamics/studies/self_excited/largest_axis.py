@@ -13,7 +13,6 @@ import pandas as pd
 
 from ...models import self_excited as se
 from ...solvers.ode import Events, Problem, solve, solve_batch
-from ...solvers.runge_kutta import rhs_function
 from ...solvers.timing import min_time
 from ..results import new_figure
 from . import portrait
@@ -24,11 +23,6 @@ INVARIANT_BOUND = 1e-8        # hard case: relative spread of E or C1 along the 
 CYLINDER_BOUND = 1e-10        # hard case: relative spread of q^2/b + r^2/c along Euler's equations
 BLOW_UP_BOUND = portrait.BLOW_UP_BOUND
 DEFAULT_AMPLITUDES = (0.4, 0.2, 0.1, 0.05)
-
-
-@rhs_function
-def _p1_zero(t, y, p, out):
-    out[0] = y[1]
 
 
 def run(scene, results, quick):
@@ -198,26 +192,16 @@ def _overlay(ax, L, m1, nu, lo, hi, points):
 
 
 def _period(m1, nu, phi_c, eta):
-    problem = Problem(se.plane_largest, [phi_c + eta, 0.0], (0.0, 60.0), [m1, -nu, 1.0])
-    sol = solve(problem, "dop853", rtol=1e-13, atol=1e-15, events=Events(_p1_zero, 1, (-1,)))
-    return float(sol.event_t[1] - sol.event_t[0])
+    return portrait.period(se.plane_largest, [m1, -nu, 1.0], [phi_c + eta, 0.0], span=60.0)
 
 
 def _series(results, m1, nu, phi_c, amplitudes):
     """Lee §4.2: the series period against the measured one; the error must shrink like eta^4."""
-    rows = []
-    for eta in amplitudes:
-        measured, series = _period(m1, nu, phi_c, eta), se.series_period(m1, nu, eta)
-        rows.append({"eta": eta, "period_measured": measured, "period_series": series,
-                     "relative_error": abs(series / measured - 1.0)})
-    frame = pd.DataFrame(rows)
-    results.table("series", frame, "Lee §4.2: the period (in τ) of the oscillation about the center started at "
-                  "φ2c + η, measured from the plane system and from the series 2π(1 − m1²)^(−1/4)(1 + h2η² + h3η³).")
-    slope = float(np.polyfit(np.log(frame.eta), np.log(frame.relative_error), 1)[0])
-    results.number("series_error_slope", slope, "1", note="log-log slope of the series' error against η; 4 expected")
-    results.number("period_tau", _period(m1, nu, phi_c, 0.1), "τ", note="oscillation about the center, η = 0.1")
+    frame = portrait.series_check(
+        results, lambda eta: _period(m1, nu, phi_c, eta), lambda eta: se.series_period(m1, nu, eta), amplitudes,
+        "Lee §4.2: the period (in τ) of the oscillation about the center started at φ2c + η, measured from the "
+        "plane system and from the series 2π(1 − m1²)^(−1/4)(1 + h2η² + h3η³).")
     results.number("period_tau_linear", 2 * np.pi / (1 - m1**2) ** 0.25, "τ", note="2π(1 − m1²)^(−1/4)")
-    results.hard_case("series_order", "The series' period error falls like η⁴ (|slope − 4|)", abs(slope - 4.0), 0.5)
     fig, ax = new_figure(4.8, 3.4)
     ax.loglog(frame.eta, frame.relative_error, "o-", ms=3, label="series against integration")
     ax.loglog(frame.eta, frame.relative_error.iloc[-1] * (frame.eta / frame.eta.iloc[-1]) ** 4, "k:", lw=0.8,
@@ -261,7 +245,7 @@ def _separatrix_sides(results, m1, nu):
         fates = {}
         for name, factor in (("inside", 1.0 - eps), ("outside", 1.0 + eps)):
             sol = solve(Problem(se.plane_largest, [phi_c, p_sep * factor], (0.0, 200.0), [m1, -nu, 1.0]), "dop853",
-                        rtol=1e-13, atol=1e-15, events=Events(_p1_zero, 1, (-1,)), bound=BLOW_UP_BOUND)
+                        rtol=1e-13, atol=1e-15, events=Events(portrait.velocity_zero, 1, (-1,)), bound=BLOW_UP_BOUND)
             fates[name] = sol.event_t
         wrong += (len(fates["inside"]) < 2) + (len(fates["outside"]) > 0)
         period = float(fates["inside"][1] - fates["inside"][0]) if len(fates["inside"]) >= 2 else np.nan

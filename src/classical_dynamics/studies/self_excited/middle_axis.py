@@ -9,13 +9,12 @@ Euler's equations overlaid, and the period series (4.13).
 from __future__ import annotations
 
 import numpy as np
-import pandas as pd
 
 from ...models import self_excited as se
 from ...solvers.ode import Events, Problem, solve
 from ..results import new_figure
 from . import portrait
-from .largest_axis import OVERLAY_BOUND, _p1_zero
+from .largest_axis import OVERLAY_BOUND
 
 AMPLITUDES = (0.4, 0.2, 0.1, 0.05)
 
@@ -50,7 +49,7 @@ def run(scene, results, quick):
         ax.plot(y[:, 0], y[:, 1], color="0.55", lw=0.6)
     for phi, q1 in starts:                          # Lee: every trajectory closes; each must turn back twice
         sol = solve(Problem(se.plane_middle, [phi, q1], (0.0, 200.0), [m1, -nu, eps1, 1.0]), "dop853", rtol=1e-12,
-                    atol=1e-14, events=Events(_p1_zero, 1, (-1,)), bound=portrait.BLOW_UP_BOUND)
+                    atol=1e-14, events=Events(portrait.velocity_zero, 1, (-1,)), bound=portrait.BLOW_UP_BOUND)
         closed += len(sol.event_t) >= 2
     results.hard_case("all_orbits_closed", "Starts around the center whose orbit does not close (count; Lee: every "
                       "motion is periodic for |μ| < μ_c)", len(starts) - closed, 0)
@@ -85,19 +84,8 @@ def _overlay(ax, M, m1, nu, starts):
 
 
 def _series(results, m1, nu, eps1, center):
-    rows = []
-    for eta in AMPLITUDES:
-        sol = solve(Problem(se.plane_middle, [center + eta, 0.0], (0.0, 80.0), [m1, -nu, eps1, 1.0]), "dop853",
-                    rtol=1e-13, atol=1e-15, events=Events(_p1_zero, 1, (-1,)))
-        measured = float(sol.event_t[1] - sol.event_t[0])
-        series = se.middle_series_period(m1, nu, eta)
-        rows.append({"eta": eta, "period_measured": measured, "period_series": series,
-                     "relative_error": abs(series / measured - 1.0)})
-    frame = pd.DataFrame(rows)
-    results.table("series", frame, "Lee (4.13): the period (in τ) about the center started at φ2c + η, measured and "
-                  "from the series 2π(1 + m1²)^(−1/4)(1 + h2η² + h3η³).")
-    slope = float(np.polyfit(np.log(frame.eta), np.log(frame.relative_error), 1)[0])
-    results.number("series_error_slope", slope, "1", note="log-log slope of the series' error against η; 4 expected")
-    results.number("period_tau", float(frame.period_measured[frame.eta == 0.1].iloc[0]), "τ",
-                   note="about the center, η = 0.1")
-    results.hard_case("series_order", "The series' period error falls like η⁴ (|slope − 4|)", abs(slope - 4.0), 0.5)
+    portrait.series_check(
+        results, lambda eta: portrait.period(se.plane_middle, [m1, -nu, eps1, 1.0], [center + eta, 0.0]),
+        lambda eta: se.middle_series_period(m1, nu, eta), AMPLITUDES,
+        "Lee (4.13): the period (in τ) about the center started at φ2c + η, measured and from the series "
+        "2π(1 + m1²)^(−1/4)(1 + h2η² + h3η³).")
