@@ -140,7 +140,7 @@ GOOD = {"title": "x", "body": {"moments": [3.0, 2.2, 1.2]}, "torque_axis": "larg
     (lambda d: d["body"].update(moments=[4.0, 2.5, 1.0]), "body.moments"),          # 4 > 2.5 + 1: not a body
     (lambda d: d["body"].update(moments=[3.0, 2.2, 2.2]), "body.moments"),          # equal moments
     (lambda d: d.update(torque_axis="diagonal"), "torque_axis"),
-    (lambda d: d.update(torque_axis="smallest"), "torque_axis"),
+    (lambda d: (d.update(torque_axis="smallest"), d["plane"].pop("delta")), "plane.delta"),
     (lambda d: d.update(torque_axis="middle"), "plane.alpha"),
     (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.5, 0.5])), "plane.alpha"),
     (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.8, 0.3], nu=0.6)), "plane.nu"),
@@ -216,3 +216,19 @@ def test_middle_axis_critical_drag_and_series():
                     atol=1e-15, events=Events(portrait.velocity_zero, 1, (-1,)))
         errors.append(abs(se.middle_series_period(0.5, 0.1, eta) / (sol.event_t[1] - sol.event_t[0]) - 1))
     assert errors[0] / errors[1] == pytest.approx(16, rel=0.2)
+
+
+def test_smallest_axis_is_the_largest_axis_with_p_r_and_a_c_exchanged():
+    """Euler's equations with the torque along z, read as (r, q, p), follow Lee's (2.10) built from (c, b, a)."""
+    L = se.LargestAxis.with_plane_parameters(BODY.swapped(), 0.5, -0.1, 0.9)
+    start = (0.7, 0.8)
+    tau = np.linspace(0.0, 5.0, 101)
+    w0 = L.from_plane(*start)[[2, 1, 0]]
+    params = np.array([BODY.a, BODY.b, BODY.c, L.m, L.mu])
+    full = solve(Problem(se.euler_smallest, w0, (0, 5 / L.time_scale), params), rtol=1e-13, atol=1e-15,
+                 t_eval=tau / L.time_scale)
+    flat = solve(Problem(se.plane_largest, start, (0, 5), [0.5, -0.1, 1.0]), rtol=1e-13, atol=1e-15, t_eval=tau)
+    assert np.max(np.abs(L.to_plane(full.y_eval[:, [2, 1, 0]], phi2_start=start[0]) - flat.y_eval)) < 1e-9
+    # the invariant cylinder about z: q^2/b + p^2/a
+    cyl = full.y_eval[:, 1] ** 2 / BODY.b + full.y_eval[:, 0] ** 2 / BODY.a
+    assert np.ptp(cyl) < 1e-11 * cyl[0]

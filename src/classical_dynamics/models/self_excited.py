@@ -65,11 +65,24 @@ class Body:
     def c(self) -> float:
         return (self.A - self.B) / self.C
 
+    def swapped(self) -> "InertiaNumbers":
+        """Lee §2 for a torque along the smallest axis: the same reduction with p <-> r and a <-> c."""
+        return InertiaNumbers(self.c, self.b, self.a)
+
+
+@dataclass(frozen=True)
+class InertiaNumbers:
+    """(a, b, c) as the reductions use them; a Body's own, or swapped for the smallest axis."""
+    a: float
+    b: float
+    c: float
+
 
 @dataclass(frozen=True)
 class LargestAxis:
-    """The §2 reduction for one elliptic cylinder (delta) of one body under m + mu |omega|^2 along x."""
-    body: Body
+    """The §2 reduction for one elliptic cylinder (delta) of one body under m + mu |omega|^2 along x (body: a
+    Body, or its swapped numbers with the state (r, q, p) for a torque along the smallest axis)."""
+    body: Body | InertiaNumbers
     m: float
     mu: float
     delta: float
@@ -150,6 +163,16 @@ def euler_largest(t, w, p, out):
         out[0] += p[4] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2])
     out[1] = -p[1] * w[2] * w[0]
     out[2] = p[2] * w[0] * w[1]
+
+
+@rhs_function
+def euler_smallest(t, w, p, out):
+    """Lee (2.1) with the torque along z: p' = a q r, q' = -b r p, r' = c p q + m + mu |w|^2; p = (a, b, c, m, mu)."""
+    out[0] = p[0] * w[1] * w[2]
+    out[1] = -p[1] * w[2] * w[0]
+    out[2] = p[2] * w[0] * w[1] + p[3]
+    if p[4] != 0.0:
+        out[2] += p[4] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2])
 
 
 @rhs_function

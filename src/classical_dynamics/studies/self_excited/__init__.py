@@ -4,8 +4,8 @@ A scene names a body (three principal moments, in any order), the axis of the bo
 (largest, middle or smallest) and the point of the reduced plane to draw: m1, the drag nu (mu1 = -nu)
 and the cylinder delta; the physical torque (M and mu0, per unit of the axis' moment) follows and is
 reported. The effects it lists must be those the plane needs: body_torque when M != 0, quadratic_torque
-when nu != 0. This build covers the torque along the largest axis (Lee §2, §4.2) and along the middle
-axis below mu_c (§3, case |k1| > |k2|; (4.13)).
+when nu != 0. This build covers the torque along the largest or the smallest axis (Lee §2, §4.2) and
+along the middle axis below mu_c (§3, case |k1| > |k2|; (4.13)).
 """
 
 from __future__ import annotations
@@ -45,18 +45,16 @@ def check(path: Path, data: dict) -> None:
         raise SceneError(path, "body.moments", "moments a body can have: each less than the sum of the other "
                          "two (A < B + C)", moments)
     axis = data["torque_axis"]
-    if axis == "smallest":
-        raise SceneError(path, "torque_axis", "largest or middle (the smallest-axis case is not built yet)", axis)
     if not A > B > C:
         raise SceneError(path, "body.moments", "three different moments (the reduction to the plane needs "
                          "A > B > C)", moments)
     plane = data["plane"]
     effects = data.get("effects") or {}
-    shape = "delta" if axis == "largest" else "alpha"
+    shape = "alpha" if axis == "middle" else "delta"
     if shape not in plane:
-        raise SceneError(path, f"plane.{shape}", "the elliptic cylinder delta (torque along the largest axis)"
-                         if axis == "largest" else "alpha: [alpha1, alpha2], the hyperbolic cylinder (middle axis)",
-                         None)
+        raise SceneError(path, f"plane.{shape}", "the elliptic cylinder delta (torque along the largest or the "
+                         "smallest axis)" if shape == "delta" else "alpha: [alpha1, alpha2], the hyperbolic cylinder "
+                         "(middle axis)", None)
     if axis == "middle":
         _check_middle(path, Body(A, B, C), plane, effects)
         return
@@ -66,11 +64,13 @@ def check(path: Path, data: dict) -> None:
     if plane["nu"] == 0.0 and "quadratic_torque" in effects:
         raise SceneError(path, "effects.quadratic_torque", "nu != 0 in plane (an unused effect is not listed)",
                          plane["nu"])
-    L = LargestAxis.with_plane_parameters(Body(A, B, C), plane["m1"], -plane["nu"], plane["delta"])
+    numbers = Body(A, B, C).swapped() if axis == "smallest" else Body(A, B, C)
+    L = LargestAxis.with_plane_parameters(numbers, plane["m1"], -plane["nu"], plane["delta"])
     if abs(L.m) > 0.0 and "body_torque" not in effects:
-        raise SceneError(path, "effects", f"body_torque listed (this plane needs M/A = {L.m:.4g})", sorted(effects))
+        raise SceneError(path, "effects", f"body_torque listed (this plane needs a torque of {L.m:.4g} per unit "
+                         "moment)", sorted(effects))
     if L.m == 0.0 and "body_torque" in effects:
-        raise SceneError(path, "effects.body_torque", "a plane that needs a constant torque (M/A = 0 here)", 0.0)
+        raise SceneError(path, "effects.body_torque", "a plane that needs a constant torque (none here)", 0.0)
     _check_range(path, data)
 
 

@@ -30,7 +30,8 @@ def run(scene, results, quick):
     body = se.Body.from_moments(data["body"]["moments"])
     plane = data["plane"]
     m1, nu, delta = float(plane["m1"]), float(plane["nu"]), float(plane["delta"])
-    L = se.LargestAxis.with_plane_parameters(body, m1, -nu, delta)
+    smallest = data["torque_axis"] == "smallest"
+    L = se.LargestAxis.with_plane_parameters(body.swapped() if smallest else body, m1, -nu, delta)
     view = data.get("portrait", {})
     lo, hi = view.get("phi2_range", [-3 * np.pi, 3 * np.pi])
     p1_max = view.get("p1_max", 3.0)
@@ -41,8 +42,10 @@ def run(scene, results, quick):
     results.number("m1", m1, "1", note=plane.get("source", "chosen to show the regime"))
     results.number("nu", nu, "1", note="mu1 = −nu")
     results.number("delta", delta, "1", note="the elliptic cylinder q²/b + r²/c = δ²")
-    results.number("M_over_A", L.m, "1/time²", note="the constant torque per unit A that gives m1 on this cylinder")
-    results.number("mu0_over_A", L.mu, "1", note="the coefficient of |ω|² per unit A")
+    moment = "C" if smallest else "A"
+    results.number("M_over_moment", L.m, "1/time²", note=f"the constant torque per unit {moment} (the torque axis' "
+                   "moment) that gives m1 on this cylinder")
+    results.number("mu0_over_moment", L.mu, "1", note=f"the coefficient of |ω|² per unit {moment}")
     results.number("tau_per_t", L.time_scale, "1/time", note="τ = √(2d) t")
     if 0.0 < m1 < 1.0:
         results.number("nu_star", se.nu_star(m1), "1", note="limit cycles F, F1 exist for nu below this (Lee §2.5)")
@@ -64,7 +67,7 @@ def run(scene, results, quick):
     results.hard_case("plane_invariant", f"The plane's first integral ({'E' if nu == 0 else 'C1'}) along its "
                       "trajectories (largest relative spread)", spreads, INVARIANT_BOUND)
     _draw_separatrices(ax, m1, nu, lo, hi, p1_max, points)
-    deviation, cyl = _overlay(ax, L, m1, nu, lo, hi, points)
+    deviation, cyl = _overlay(ax, L, body, smallest, m1, nu, lo, hi, points)
     results.number("overlay_deviation", deviation, "1", note="Euler's equations in the plane against (2.10), max")
     results.number("cylinder_spread", cyl, "1", note="relative spread of q²/b + r²/c along Euler's equations")
     results.hard_case("overlay", "Full integrations of Euler's equations, mapped into the plane, on the plane's "
@@ -73,7 +76,8 @@ def run(scene, results, quick):
                       "q²/b + r²/c)", cyl, CYLINDER_BOUND)
     portrait.finish(ax, points, (lo, hi), p1_max, "p1")
     regime = f"m1 = {m1:g}" + (f", ν = {nu:g}" if nu else ", unperturbed")
-    results.figure("portrait", fig, f"Phase plane of Lee's (2.10) for the torque along the largest axis, {regime}: "
+    results.figure("portrait", fig, f"Phase plane of Lee's (2.10) for the torque along the {data['torque_axis']} "
+                   f"axis, {regime}: "
                    "trajectories (grey), separatrices from the closed forms (black), limit cycles F and F1 (red) "
                    "where they exist, singular points by type, and Euler's equations integrated in three "
                    "dimensions and mapped into the plane (dots).")
@@ -165,8 +169,12 @@ def _draw_separatrices(ax, m1, nu, lo, hi, p1_max, points):
         ax.plot(phi, -F, color="C3", lw=1.4, ls="--", label="F1 (unstable)")
 
 
-def _overlay(ax, L, m1, nu, lo, hi, points):
-    """Three starts integrated in (p, q, r) and in the plane: their largest disagreement after mapping."""
+def _overlay(ax, L, body, smallest, m1, nu, lo, hi, points):
+    """Three starts integrated in (p, q, r) and in the plane: their largest disagreement after mapping.
+    For the smallest axis the physical equations are integrated and their state read as (r, q, p)."""
+    order = [2, 1, 0] if smallest else [0, 1, 2]
+    rhs = se.euler_smallest if smallest else se.euler_largest
+    physical = np.array([body.a, body.b, body.c, L.m, L.mu])
     centers = [pt["phi2"] for pt in points if pt["type"] == "center"]
     starts = [(centers[0] + 0.7, 0.0)] if centers else []
     starts += [(0.5 * (lo + hi), 1.2), (lo + 0.3 * (hi - lo), -0.6)]
@@ -174,17 +182,18 @@ def _overlay(ax, L, m1, nu, lo, hi, points):
     tau_span = 6.0
     for k, (phi, p1) in enumerate(starts):
         tau = np.linspace(0.0, tau_span, 121)
-        w0 = L.from_plane(phi, p1)
-        full = solve(Problem(se.euler_largest, w0, (0.0, tau_span / L.time_scale), L.euler_parameters()), "dop853",
+        w0 = L.from_plane(phi, p1)[order]
+        full = solve(Problem(rhs, w0, (0.0, tau_span / L.time_scale), physical), "dop853",
                      rtol=1e-13, atol=1e-15, t_eval=tau / L.time_scale, bound=BLOW_UP_BOUND)
         flat = solve(Problem(se.plane_largest, [phi, p1], (0.0, tau_span), [m1, -nu, 1.0]), "dop853", rtol=1e-13,
                      atol=1e-15, t_eval=tau, bound=BLOW_UP_BOUND)
         good = np.all(np.isfinite(full.y_eval), axis=1) & np.all(np.isfinite(flat.y_eval), axis=1)
         good &= np.cumprod(np.abs(np.nan_to_num(flat.y_eval[:, 1], nan=np.inf)) < OVERLAY_P1_MAX).astype(bool)
-        mapped = L.to_plane(full.y_eval[good], phi2_start=phi)
+        reduced = full.y_eval[good][:, order]
+        mapped = L.to_plane(reduced, phi2_start=phi)
         scale = np.maximum(1.0, np.abs(flat.y_eval[good]))
         worst = max(worst, float(np.max(np.abs(mapped - flat.y_eval[good]) / scale)))
-        cyl = se.cylinder(L.body, full.y_eval[good])
+        cyl = se.cylinder(L.body, reduced)
         cyl_worst = max(cyl_worst, float(np.ptp(cyl) / cyl[0]))
         ax.plot(mapped[::4, 0], mapped[::4, 1], ".", color="C2", ms=3,
                 label="Euler's equations, mapped" if k == 0 else None)
