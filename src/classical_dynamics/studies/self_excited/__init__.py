@@ -106,5 +106,5 @@ def run(scene: Scene, quick: bool = False):
     from . import largest_axis, middle_axis
 
     results = Results("self_excited", scene.name, scene.title)
-    (largest_axis if scene.data["torque_axis"] == "largest" else middle_axis).run(scene, results, quick)
+    (middle_axis if scene.data["torque_axis"] == "middle" else largest_axis).run(scene, results, quick)
     return results
