@@ -143,7 +143,7 @@ GOOD = {"title": "x", "body": {"moments": [3.0, 2.2, 1.2]}, "torque_axis": "larg
     (lambda d: (d.update(torque_axis="smallest"), d["plane"].pop("delta")), "plane.delta"),
     (lambda d: d.update(torque_axis="middle"), "plane.alpha"),
     (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.5, 0.5])), "plane.alpha"),
-    (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.8, 0.3], nu=0.6)), "plane.nu"),
+    (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.8, 0.3], nu=0.5)), "plane.nu"),
     (lambda d: d["plane"].update(m1=float("nan")), "plane.m1"),
     (lambda d: d["plane"].update(delta=float("inf")), "plane.delta"),
     (lambda d: d["effects"].pop("quadratic_torque"), "effects"),
@@ -192,14 +192,14 @@ def test_middle_axis_reduction_hyperbola_and_closed_orbits(m1, nu, alpha):
     tau = np.linspace(0.0, 10.0, 201)
     full = solve(Problem(se.euler_middle, M.from_plane(*start), (0, 10 / M.time_scale), M.euler_parameters()),
                  rtol=1e-13, atol=1e-15, t_eval=tau / M.time_scale)
-    flat = solve(Problem(se.plane_middle, start, (0, 10), [m1, -nu, -1.0, 1.0]), rtol=1e-13, atol=1e-15, t_eval=tau)
+    flat = solve(Problem(se.plane_middle, start, (0, 10), [m1, -nu, -1.0, 1.0, 0.0]), rtol=1e-13, atol=1e-15, t_eval=tau)
     assert np.max(np.abs(M.to_plane(full.y_eval) - flat.y_eval)) < 1e-9
     h = se.hyperbola(BODY, full.y_eval)
     assert np.ptp(h) < 1e-11 * abs(h[0]) and h[0] == pytest.approx(alpha[0] ** 2 - alpha[1] ** 2, rel=1e-12)
     invariant = se.middle_energy(flat.y_eval, m1, -1.0) if nu == 0 else se.middle_c1(flat.y_eval, m1, -nu, -1.0)
     assert np.ptp(invariant) < 1e-9 * np.max(np.abs(invariant))
     # closed: the orbit comes back to its start (reversible, no spurious damping over many turns)
-    sol = solve(Problem(se.plane_middle, start, (0, 300), [m1, -nu, -1.0, 1.0]), rtol=1e-12, atol=1e-14,
+    sol = solve(Problem(se.plane_middle, start, (0, 300), [m1, -nu, -1.0, 1.0, 0.0]), rtol=1e-12, atol=1e-14,
                 events=Events(portrait.velocity_zero, 1, (-1,)))
     assert len(sol.event_y) > 20 and np.ptp(sol.event_y[:, 0]) < 1e-8
 
@@ -212,7 +212,7 @@ def test_middle_axis_critical_drag_and_series():
     center = np.arcsinh(0.5)
     errors = []
     for eta in (0.2, 0.1):
-        sol = solve(Problem(se.plane_middle, [center + eta, 0.0], (0, 60), [0.5, -0.1, -1.0, 1.0]), rtol=1e-13,
+        sol = solve(Problem(se.plane_middle, [center + eta, 0.0], (0, 60), [0.5, -0.1, -1.0, 1.0, 0.0]), rtol=1e-13,
                     atol=1e-15, events=Events(portrait.velocity_zero, 1, (-1,)))
         errors.append(abs(se.middle_series_period(0.5, 0.1, eta) / (sol.event_t[1] - sol.event_t[0]) - 1))
     assert errors[0] / errors[1] == pytest.approx(16, rel=0.2)
@@ -232,3 +232,24 @@ def test_smallest_axis_is_the_largest_axis_with_p_r_and_a_c_exchanged():
     # the invariant cylinder about z: q^2/b + p^2/a
     cyl = full.y_eval[:, 1] ** 2 / BODY.b + full.y_eval[:, 0] ** 2 / BODY.a
     assert np.ptp(cyl) < 1e-11 * cyl[0]
+
+
+def test_middle_axis_above_the_critical_drag_cosh_form():
+    """|mu| > mu_c: |k2| > |k1|, Lee (3.56); Euler's equations follow it, the saddle's outside blows up."""
+    M = se.MiddleAxis.with_plane_parameters(BODY, 1.5, -0.45, 0.8, 0.3)
+    assert M.cosh_form and M.eps1 == -1.0 and M.m1 == pytest.approx(1.5, abs=1e-13)
+    start = (np.arccosh(1.5) - 0.5, 0.0)
+    tau = np.linspace(0.0, 8.0, 161)
+    full = solve(Problem(se.euler_middle, M.from_plane(*start), (0, 8 / M.time_scale), M.euler_parameters()),
+                 rtol=1e-13, atol=1e-15, t_eval=tau / M.time_scale)
+    flat = solve(Problem(se.plane_middle, start, (0, 8), M.plane_parameters()), rtol=1e-13, atol=1e-15, t_eval=tau)
+    assert np.max(np.abs(M.to_plane(full.y_eval) - flat.y_eval)) < 1e-9
+    c1 = se.middle_c1_cosh(flat.y_eval, 1.5, -0.45, -1.0)
+    assert np.ptp(c1) < 1e-9 * np.max(np.abs(c1))
+    outside = solve(Problem(se.plane_middle, [-np.arccosh(1.5) - 0.3, 0.0], (0, 100), M.plane_parameters()),
+                    rtol=1e-12, atol=1e-14)
+    assert outside.status == "blow-up"
+    errors = [abs(se.middle_series_period(1.5, 0.45, eta, True)
+                  / portrait.period(se.plane_middle, M.plane_parameters(), [np.arccosh(1.5) + eta, 0.0]) - 1)
+              for eta in (0.1, 0.05)]
+    assert errors[0] / errors[1] == pytest.approx(16, rel=0.25)

@@ -291,15 +291,18 @@ def nu_star(m1: float) -> float:
     return m1 / (2.0 * np.sqrt(1.0 - m1**2))
 
 
-# --- torque along the middle axis (Lee §3), the case |k1| > |k2| ------------------------------------------
+# --- torque along the middle axis (Lee §3), away from the planes of the separating polhodes ---------------
 @dataclass(frozen=True)
 class MiddleAxis:
     """The §3 reduction for one hyperbolic cylinder p^2/a - r^2/c = alpha1^2 - alpha2^2 of one body under
-    m + mu |omega|^2 along y, in the case |k1| > |k2| (every |mu| below mu_c = b sqrt(ac)/(a + c)):
+    m + mu |omega|^2 along y:
 
         phi = int q dt, X = sqrt(ac) phi: p/sqrt(a) = alpha1 cosh X + alpha2 sinh X, r/sqrt(c) = alpha1 sinh X + alpha2 cosh X
-        k1 sinh 2X + k2 cosh 2X = eps1 d1 sinh(2X + sigma1),  phi2 = 2X + sigma1,  tau = sqrt(2 sqrt(ac) d1) t,
-        dq1/dtau = m1 + eps1 sinh(phi2) + mu1 q1^2,  q1 = dphi2/dtau,  m1 = m0/d1,  mu1 = mu/(2 sqrt(ac)).
+        phi'' - mu phi'^2 = m0 + k1 sinh 2X + k2 cosh 2X,
+    and, with phi2 = 2X + sigma, tau = sqrt(2 sqrt(ac) d) t, q1 = dphi2/dtau, mu1 = mu/(2 sqrt(ac)):
+        |k1| > |k2| (|mu| below mu_c): k1 sinh + k2 cosh = eps d sinh(. + sigma), dq1/dtau = m1 + eps sinh phi2 + mu1 q1^2
+        |k2| > |k1| (|mu| above mu_c): k1 sinh + k2 cosh = eps d cosh(. + sigma), dq1/dtau = m2 + eps cosh phi2 + mu1 q1^2
+    with d = sqrt(|k1^2 - k2^2|), m1 (or m2) = m0/d.
     """
     body: Body
     m: float
@@ -325,16 +328,20 @@ class MiddleAxis:
         return 0.5 * self.mu * (a + c) * s - b * np.sqrt(a * c) * self.alpha1 * self.alpha2
 
     @property
+    def cosh_form(self) -> bool:
+        return abs(self.k2) > abs(self.k1)
+
+    @property
     def d1(self) -> float:
-        return np.sqrt(self.k1**2 - self.k2**2)
+        return np.sqrt(abs(self.k1**2 - self.k2**2))
 
     @property
     def sigma1(self) -> float:
-        return np.arctanh(self.k2 / self.k1)
+        return np.arctanh(self.k1 / self.k2) if self.cosh_form else np.arctanh(self.k2 / self.k1)
 
     @property
     def eps1(self) -> float:
-        return float(np.sign(self.k1))
+        return float(np.sign(self.k2 if self.cosh_form else self.k1))
 
     @property
     def time_scale(self) -> float:
@@ -342,11 +349,16 @@ class MiddleAxis:
 
     @property
     def m1(self) -> float:
+        """m1 (sinh form) or m2 (cosh form): m0/d."""
         return self.m0 / self.d1
 
     @property
     def mu1(self) -> float:
         return self.mu / (2.0 * np.sqrt(self.body.a * self.body.c))
+
+    def plane_parameters(self, direction: float = 1.0) -> list:
+        """For plane_middle: (m1 or m2, mu1, eps, direction, 1 for the cosh form)."""
+        return [self.m1, self.mu1, self.eps1, direction, float(self.cosh_form)]
 
     @staticmethod
     def mu_c(body: Body) -> float:
@@ -398,9 +410,10 @@ def euler_middle(t, w, p, out):
 
 @rhs_function
 def plane_middle(t, y, p, out):
-    """Lee (3.12) in y = (phi2, q1): dq1/dtau = m1 + eps1 sinh(phi2) + mu1 q1^2; p = (m1, mu1, eps1, direction)."""
+    """Lee (3.12) or (3.56) in y = (phi2, q1): dq1/dtau = m + eps sinh(phi2) (or cosh) + mu1 q1^2;
+    p = (m1 or m2, mu1, eps, direction, cosh form 0/1)."""
     out[0] = p[3] * y[1]
-    out[1] = p[3] * (p[0] + p[2] * np.sinh(y[0]))
+    out[1] = p[3] * (p[0] + p[2] * (np.cosh(y[0]) if p[4] != 0.0 else np.sinh(y[0])))
     if p[1] != 0.0:
         out[1] += p[3] * p[1] * y[1] * y[1]
 
@@ -419,9 +432,18 @@ def middle_energy(y: np.ndarray, m1: float, eps1: float) -> np.ndarray:
     return 0.5 * y[:, 1] ** 2 - m1 * y[:, 0] - eps1 * np.cosh(y[:, 0])
 
 
-def middle_series_period(m1: float, nu: float, eta: float) -> float:
-    """Lee (4.13): about the center of (3.52), T = 2 pi (1 + m1^2)^(-1/4)(1 + h2 eta^2 + h3 eta^3)."""
-    k2 = np.sqrt(1.0 + m1**2)
+def middle_c1_cosh(y: np.ndarray, m2: float, mu1: float, eps2: float) -> np.ndarray:
+    """C1 of (3.19), the cosh form (4 mu1^2 != 1): e^{-2 mu1 phi2}[q1^2 + m2/mu1 - 2 eps2 (sinh + 2 mu1 cosh)/(1 - 4 mu1^2)]."""
+    y = np.atleast_2d(y)
+    phi, q1 = y[:, 0], y[:, 1]
+    return np.exp(-2 * mu1 * phi) * (q1**2 + m2 / mu1
+                                     - 2 * eps2 * (np.sinh(phi) + 2 * mu1 * np.cosh(phi)) / (1 - 4 * mu1**2))
+
+
+def middle_series_period(m1: float, nu: float, eta: float, cosh_form: bool = False) -> float:
+    """Lee (4.13): about the center of (3.52), T = 2 pi (1 + m1^2)^(-1/4)(1 + h2 eta^2 + h3 eta^3); (4.14) for
+    the cosh form (3.56) with m2 > 1: sqrt(1 + m1^2) -> sqrt(m2^2 - 1), m1 -> m2."""
+    k2 = np.sqrt(m1**2 - 1.0) if cosh_form else np.sqrt(1.0 + m1**2)
     beta2, beta3, mu1 = -m1, -k2, -nu
     h2 = (5 * beta2**2 + 10 * beta2 * k2 * mu1 + 3 * beta3 * k2 + 8 * k2**2 * mu1**2) / (48 * k2**2)
     h3 = -(beta2 + 4 * k2 * mu1) / (3 * k2) * h2

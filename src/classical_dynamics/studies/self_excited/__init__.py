@@ -90,13 +90,15 @@ def _check_middle(path, body, plane, effects):
     if not alpha1 + alpha2 > 0:
         raise SceneError(path, "plane.alpha", "alpha1 + alpha2 > 0 (orient the axes so; the map takes its log)",
                          plane["alpha"])
-    nu_c = MiddleAxis.mu_c(body) / (2 * math.sqrt(body.a * body.c))
-    if not plane["nu"] < nu_c:
-        raise SceneError(path, "plane.nu", f"nu below nu_c = {nu_c:.4g} (the case |k1| > |k2|; beyond it is not "
-                         "built yet)", plane["nu"])
+    M = MiddleAxis.with_plane_parameters(body, plane["m1"], -plane["nu"], alpha1, alpha2)
+    if abs(abs(M.k1) - abs(M.k2)) <= 1e-9 * max(abs(M.k1), abs(M.k2)):
+        raise SceneError(path, "plane.nu", "a drag away from mu_c, where |k1| = |k2| (that form is not built yet)",
+                         plane["nu"])
+    if M.cosh_form and (abs(2 * plane["nu"] - 1.0) < 1e-9 or M.eps1 > 0):
+        raise SceneError(path, "plane.nu", "nu != 1/2 with k2 < 0 above mu_c (the other forms are not built yet)",
+                         plane["nu"])
     if plane["nu"] != 0.0 and "quadratic_torque" not in effects:
         raise SceneError(path, "effects", "quadratic_torque listed (nu != 0)", sorted(effects))
-    M = MiddleAxis.with_plane_parameters(body, plane["m1"], -plane["nu"], alpha1, alpha2)
     if M.m != 0.0 and "body_torque" not in effects:
         raise SceneError(path, "effects", f"body_torque listed (this plane needs M/B = {M.m:.4g})", sorted(effects))
 
