@@ -89,7 +89,7 @@ def test_node_average_by_quadrature():
     """P5: the Moon's couple averaged over the node is the ecliptic's with the factor (3cos^2 i - 1)/2."""
     m = model(("lunar_torque", "lunar_inclination", "node_regression"))
     p = prec.averaged_parameters(m)
-    s = prec.initial_axis(EPS0, 0.3)
+    s = prec.initial_axis(0.3, EPS0)
     out, mean = np.empty(3), np.zeros(3)
     nodes = np.linspace(0.0, 2 * np.pi, 64, endpoint=False)
     for node in nodes:

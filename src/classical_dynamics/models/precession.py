@@ -162,30 +162,24 @@ class PrecessionModel:
         return p
 
     # --- rung 1: the secular formula ---------------------------------------------------------------------
-    def solar_rate(self) -> float:
-        """Westward rate of the equinox from the Sun, rad/day (Lamb Art. 61 (7))."""
-        if not self.sun:
-            return 0.0
-        strength = 1.5 * self.orbits.sun_gm_over_a3 * (1.0 - self.sun_e**2) ** -1.5
-        return strength * self.H * np.cos(self.obliquity) / self.n
-
-    def lunar_rate(self) -> float:
-        """The Moon's part, with the node averaged out: the factor (3 cos^2 i - 1)/2 (Art. 61 (16))."""
-        if not self.moon:
-            return 0.0
-        p2 = 0.5 * (3.0 * np.cos(self.moon_i) ** 2 - 1.0)
-        return (1.5 * self.orbits.moon_gm_over_a3 * (1.0 - self.moon_e**2) ** -1.5 * p2 * self.H
-                * np.cos(self.obliquity) / self.n)
-
-    def secular_rate(self) -> float:
-        return self.solar_rate() + self.lunar_rate()
-
     def alphas(self) -> tuple[float, float]:
-        """alpha_b = (3/2)(GM/a^3)(1 - e^2)^(-3/2) H / n (rad/day) of the averaged equations."""
+        """alpha_b = (3/2)(GM/a^3)(1 - e^2)^(-3/2) H / n (rad/day) of the averaged equations; 0 for a body
+        not listed."""
         k = 1.5 * self.H / self.n
         sun = k * self.orbits.sun_gm_over_a3 * (1.0 - self.sun_e**2) ** -1.5 if self.sun else 0.0
         moon = k * self.orbits.moon_gm_over_a3 * (1.0 - self.moon_e**2) ** -1.5 if self.moon else 0.0
         return sun, moon
+
+    def solar_rate(self) -> float:
+        """Westward rate of the equinox from the Sun, rad/day (Lamb Art. 61 (7)): alpha_sun cos(eps)."""
+        return self.alphas()[0] * np.cos(self.obliquity)
+
+    def lunar_rate(self) -> float:
+        """The Moon's part, with the node averaged out: the factor (3 cos^2 i - 1)/2 (Art. 61 (16))."""
+        return self.alphas()[1] * 0.5 * (3.0 * np.cos(self.moon_i) ** 2 - 1.0) * np.cos(self.obliquity)
+
+    def secular_rate(self) -> float:
+        return self.solar_rate() + self.lunar_rate()
 
     def nutation_18p6yr(self) -> tuple[float, float]:
         """First-order amplitudes (rad) of the 18.6-year nutation in longitude and obliquity (digest §1.1):
@@ -235,7 +229,7 @@ def assemble(H: float, obliquity_rad: float, orbits: Orbits, effects: dict) -> P
     return model
 
 
-def initial_axis(obliquity: float, psi: float = 0.0) -> np.ndarray:
+def initial_axis(psi: float, obliquity: float) -> np.ndarray:
     """The spin axis at obliquity eps whose equinox has moved psi west of x: ecliptic longitude 90 deg - psi."""
     return np.array([np.sin(obliquity) * np.sin(psi), np.sin(obliquity) * np.cos(psi), np.cos(obliquity)])
 

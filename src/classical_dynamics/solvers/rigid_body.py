@@ -82,37 +82,37 @@ def step(m, q, I, h, t, order, torque, p):
 
 
 @njit(cache=True)
-def integrate_free(I, m0, q0, h, n_steps, order, sample_every):
-    """Free body: samples of m and q every `sample_every` steps (row 0 is the start)."""
-    m, q = m0.copy(), q0.copy()
+def _sample_buffers(m, q, n_steps, sample_every):
+    """Rows for m and q at steps 0, sample_every, 2 sample_every, ...; row 0 is the start."""
     n_samples = n_steps // sample_every + 1
     ms = np.empty((n_samples, 3))
     qs = np.empty((n_samples, 4))
     ms[0], qs[0] = m, q
-    k = 1
+    return ms, qs
+
+
+@njit(cache=True)
+def integrate_free(I, m0, q0, h, n_steps, order, sample_every):
+    """Free body: samples of m and q every `sample_every` steps (row 0 is the start)."""
+    m, q = m0.copy(), q0.copy()
+    ms, qs = _sample_buffers(m, q, n_steps, sample_every)
     for i in range(1, n_steps + 1):
         free_composed(m, q, I, h, order)
         if i % sample_every == 0:
-            ms[k], qs[k] = m, q
-            k += 1
-    return ms[:k], qs[:k]
+            ms[i // sample_every], qs[i // sample_every] = m, q
+    return ms, qs
 
 
 @njit
 def integrate_torqued(I, m0, q0, h, n_steps, order, sample_every, torque, p):
     """With a torque(t, m, q, p, out) kick Strang-split around each free flow (compiled per torque)."""
     m, q = m0.copy(), q0.copy()
-    n_samples = n_steps // sample_every + 1
-    ms = np.empty((n_samples, 3))
-    qs = np.empty((n_samples, 4))
-    ms[0], qs[0] = m, q
-    k = 1
+    ms, qs = _sample_buffers(m, q, n_steps, sample_every)
     for i in range(1, n_steps + 1):
         step(m, q, I, h, (i - 1) * h, order, torque, p)
         if i % sample_every == 0:
-            ms[k], qs[k] = m, q
-            k += 1
-    return ms[:k], qs[:k]
+            ms[i // sample_every], qs[i // sample_every] = m, q
+    return ms, qs
 
 
 @njit(cache=True)
@@ -220,10 +220,7 @@ def integrate_symmetric_torqued(A, C, m0, q0, h, n_steps, order, sample_every, t
     one evaluation. Order 2, or 4 by Yoshida's triple jump. Samples of m and q every `sample_every` steps.
     """
     m, q = m0.copy(), q0.copy()
-    n_samples = n_steps // sample_every + 1
-    ms = np.empty((n_samples, 3))
-    qs = np.empty((n_samples, 4))
-    ms[0], qs[0] = m, q
+    ms, qs = _sample_buffers(m, q, n_steps, sample_every)
     if order == 2:
         weights = np.array([1.0])
     else:
@@ -231,7 +228,6 @@ def integrate_symmetric_torqued(A, C, m0, q0, h, n_steps, order, sample_every, t
     tau = np.empty(3)
     t = 0.0
     torque(t, q, p, tau)
-    k = 1
     for i in range(1, n_steps + 1):
         for w in weights:
             m += 0.5 * w * h * tau
@@ -241,6 +237,5 @@ def integrate_symmetric_torqued(A, C, m0, q0, h, n_steps, order, sample_every, t
             m += 0.5 * w * h * tau
         t = i * h                       # no accumulated rounding in the clock
         if i % sample_every == 0:
-            ms[k], qs[k] = m, q
-            k += 1
-    return ms[:k], qs[:k]
+            ms[i // sample_every], qs[i // sample_every] = m, q
+    return ms, qs

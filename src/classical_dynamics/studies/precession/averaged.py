@@ -20,7 +20,7 @@ MEAN_OBLIQUITY_BOUND_ARCSEC = 0.1   # hard case: the mean obliquity stays the sc
 
 
 def integrate(model, span_days, t_eval=None, rtol=RTOL):
-    problem = Problem(prec.averaged_rhs, prec.initial_axis(*prec.start(model, averaged=True)[::-1]), (0.0, span_days),
+    problem = Problem(prec.averaged_rhs, prec.initial_axis(*prec.start(model, averaged=True)), (0.0, span_days),
                       prec.averaged_parameters(model), name="averaged spin axis")
     return solve(problem, "dop853", rtol=rtol, atol=rtol, t_eval=t_eval)
 

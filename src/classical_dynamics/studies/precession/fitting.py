@@ -57,7 +57,7 @@ def arguments(model: PrecessionModel, rate_rad_per_day: float) -> dict:
     return {k: terms[k] for k in TERMS if k in terms}
 
 
-def iau_arguments(t_days: np.ndarray | None = None) -> dict:
+def iau_arguments() -> dict:
     """The same terms with the IAU 2000 fundamental arguments (pyerfa; Simon et al. 1994, t from J2000)."""
     import erfa
 

@@ -57,8 +57,7 @@ def run(scene, model, results, quick):
     span = span_years * earth.JULIAN_YEAR_DAYS
     step = analysis["step_hours"] / 24.0
     order = analysis.get("order", 2)
-    t, ms, qs = integrate(model, span, step, order)
-    seconds, _, _ = min_time(lambda: integrate(model, span, step, order), repeats=3, budget_s=3.0)
+    seconds, (t, ms, qs), _ = min_time(lambda: integrate(model, span, step, order), repeats=3, budget_s=3.0)
     steps = int(round(span / step))
     results.timing_table("cost", pd.DataFrame([{
         "rung": "full", "effects": ", ".join(model.listed), "span_years": span_years, "step_hours": step * 24,
@@ -237,8 +236,7 @@ def _effect_ladder(results, model, scene, step, order, years):
     for k in range(1, len(listed) + 1):
         effects = {e: {} for e in listed[:k]}
         sub = prec.assemble(model.H, model.obliquity, model.orbits, effects)
-        t, ms, qs = integrate(sub, span, step, order)
-        seconds, _, _ = min_time(lambda: integrate(sub, span, step, order), repeats=3, budget_s=2.0)
+        seconds, (t, ms, qs), _ = min_time(lambda: integrate(sub, span, step, order), repeats=3, budget_s=2.0)
         psi, eps = prec.precession_angles(angular_momentum_axis(ms, qs))
         fp, fe, args = fit_series(sub, t, psi, eps)
         added = ("" if k == 1 else "+ ") + listed[k - 1]

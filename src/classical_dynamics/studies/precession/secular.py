@@ -63,10 +63,9 @@ def run(scene, results) -> prec.PrecessionModel:
 def _inverse(results, model, spec):
     """Lamb's 'inverse process': the rate is proportional to H, so H = H_model x observed / computed."""
     observed = spec["observed_rate_arcsec_per_year"]
-    computed = model.secular_rate() * model.orbits.year_days / earth.ARCSEC
     # Lamb's 'per annum' is per revolution; a modern rate is per Julian year: compare like with like
-    if model.orbits.name != "lamb1920":
-        computed = per_year_arcsec(model.secular_rate())
+    rate = model.secular_rate()
+    computed = rate * model.orbits.year_days / earth.ARCSEC if model.orbits.name == "lamb1920" else per_year_arcsec(rate)
     H = model.H * observed / computed
     results.number("inverse_observed_rate_arcsec_per_year", observed, "″/yr", note=spec["source"])
     results.number("H_from_observed_rate", H, "1", note="(C − A)/C that reproduces the observed rate")

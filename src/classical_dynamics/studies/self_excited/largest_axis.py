@@ -59,9 +59,9 @@ def run(scene, results, quick):
     _eigenvalue_check(results, m1, nu, points)
 
     fig, ax = new_figure(7.0, 4.4)
-    seconds, _, _ = min_time(lambda: _trajectories(m1, nu, lo, hi, p1_max, tau_max, points), repeats=1,
-                             budget_s=0.1)
-    spreads = _draw_trajectories(ax, m1, nu, lo, hi, p1_max, tau_max, points)
+    seconds, curves, _ = min_time(lambda: _trajectories(m1, nu, lo, hi, p1_max, tau_max, points), repeats=1,
+                                  budget_s=0.1)
+    spreads = _draw_trajectories(ax, curves, m1, nu, lo, hi, p1_max)
     results.number("invariant_spread", spreads, "1", note=("E" if nu == 0 else "C1") + ": largest spread along "
                    "one trajectory, relative to the size of its terms")
     results.hard_case("plane_invariant", f"The plane's first integral ({'E' if nu == 0 else 'C1'}) along its "
@@ -139,9 +139,10 @@ def _trajectories(m1, nu, lo, hi, p1_max, tau_max, points):
                                  _starts(m1, nu, lo, hi, p1_max, points), tau_max)
 
 
-def _draw_trajectories(ax, m1, nu, lo, hi, p1_max, tau_max, points):
+def _draw_trajectories(ax, curves, m1, nu, lo, hi, p1_max):
+    """Draw the plane's trajectories; return the largest spread of the first integral along one of them."""
     worst = 0.0
-    for y in _trajectories(m1, nu, lo, hi, p1_max, tau_max, points):
+    for y in curves:
         ax.plot(y[:, 0], y[:, 1], color="0.65", lw=0.5)
         inside = (np.abs(y[:, 1]) < 10 * p1_max) & (np.abs(y[:, 0]) < 10 * max(abs(lo), abs(hi)))
         y = y[inside]
