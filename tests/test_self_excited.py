@@ -142,7 +142,10 @@ GOOD = {"title": "x", "body": {"moments": [3.0, 2.2, 1.2]}, "torque_axis": "larg
     (lambda d: d.update(torque_axis="diagonal"), "torque_axis"),
     (lambda d: (d.update(torque_axis="smallest"), d["plane"].pop("delta")), "plane.delta"),
     (lambda d: d.update(torque_axis="middle"), "plane.alpha"),
-    (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.5, 0.5])), "plane.alpha"),
+    (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[-0.5, -0.5])), "plane.alpha"),
+    (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.5, -0.5], nu="nu_c")), "plane.nu"),
+    (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.5, -0.5], nu=0.5)), "plane.nu"),
+    (lambda d: d["plane"].update(nu="nu_c"), "plane.nu"),
     (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.8, 0.3], nu=0.5)), "plane.nu"),
     (lambda d: d["plane"].update(m1=float("nan")), "plane.m1"),
     (lambda d: d["plane"].update(delta=float("inf")), "plane.delta"),
@@ -253,3 +256,60 @@ def test_middle_axis_above_the_critical_drag_cosh_form():
                   / portrait.period(se.plane_middle, M.plane_parameters(), [np.arccosh(1.5) + eta, 0.0]) - 1)
               for eta in (0.1, 0.05)]
     assert errors[0] / errors[1] == pytest.approx(16, rel=0.25)
+
+
+@pytest.mark.parametrize("alpha,nu,m3,form,eps", [
+    ((0.6, 0.6), 0.2, 0.5, "exp", -1.0),           # plane I (3.58)
+    ((0.6, -0.6), 0.1, -0.5, "exp-", 1.0),         # plane II below nu_c (3.62): -sgn k1 = +1
+    ((0.6, -0.6), 0.45, 2.0, "exp-", -1.0),        # plane II above nu_c (3.63): a saddle
+    ((0.8, 0.3), "nu_c", 0.5, "exp", -1.0),        # |mu| = mu_c, off the planes
+])
+def test_exponential_forms_against_eulers_equations(alpha, nu, m3, form, eps):
+    """Lee §3, |k1| = |k2|: Euler's equations mapped into the plane follow dq1/dtau = m3 + eps e^{+-phi2} - nu q1^2,
+    the planes are invariant, and C of (3.60)/(3.62)/(3.63) is constant along the plane's solution."""
+    from classical_dynamics.studies.self_excited.middle_axis import nu_value
+    body = se.Body.from_moments([3.0, 2.2, 1.2])
+    nu = nu_value({"nu": nu}, body)
+    M = se.MiddleAxis.with_plane_parameters(body, m3, -nu, *alpha)
+    assert M.form == form and M.eps1 == eps and M.m1 == pytest.approx(m3, rel=1e-12)
+    start = [np.log(abs(m3)) * (1 if form == "exp" else -1) + 0.25, 0.1]
+    tau = np.linspace(0.0, 3.0, 61)
+    flat = solve(Problem(se.plane_middle, start, (0, 3.0), M.plane_parameters()), rtol=1e-13, atol=1e-15, t_eval=tau)
+    full = solve(Problem(se.euler_middle, M.from_plane(*start), (0, 3.0 / M.time_scale), M.euler_parameters()),
+                 rtol=1e-13, atol=1e-15, t_eval=tau / M.time_scale)
+    assert np.max(np.abs(M.to_plane(full.y_eval) - flat.y_eval)) < 1e-9
+    if alpha[0] == -alpha[1] or alpha[0] == alpha[1]:       # the plane r/sqrt(c) = +-p/sqrt(a) is invariant
+        sign = np.sign(alpha[1] / alpha[0])
+        w = full.y_eval
+        assert np.max(np.abs(w[:, 2] / np.sqrt(body.c) - sign * w[:, 0] / np.sqrt(body.a))) < 1e-10 * np.max(np.abs(w))
+    s = 1.0 if form == "exp" else -1.0
+    C = se.exponential_c1(flat.y_eval, m3, -nu, eps, s)
+    assert np.ptp(C) < 1e-9 * np.max(np.abs(C))
+
+
+def test_plane_series_closed_forms():
+    """Lee (4.15), (4.16): h2 = (1 +- nu)(1 +- 4 nu)/24 from the general (4.6); and digest §6 item 21: plane II,
+    m3 = -0.8, nu = 0.1, eta = 0.2: integrated period 7.0308868 against the series 7.0308842."""
+    nu = 0.1
+    for k_sq, beta3, sign in ((0.5, -0.5, 1.0), (0.8, -0.8, 1.0)):     # plane I: beta2 = beta3 = -m3
+        T = se.lyapunov_period(k_sq, -k_sq, beta3, -nu, 1.0)
+        h2 = (1 + nu) * (1 + 4 * nu) / 24
+        h3 = (1 + 4 * nu) ** 2 * (1 + nu) / 72
+        assert T == pytest.approx(2 * np.pi / np.sqrt(k_sq) * (1 + h2 + h3), rel=1e-13)
+    m3 = -0.8                                                           # plane II: k^2 = -m3, beta2 = -m3, beta3 = m3
+    T = se.lyapunov_period(-m3, -m3, m3, -nu, 0.2)
+    assert T == pytest.approx(7.0308842, abs=5e-7)
+    measured = portrait.period(se.plane_middle, [m3, -nu, 1.0, 1.0, 3.0], [-np.log(-m3) + 0.2, 0.0])
+    assert measured == pytest.approx(7.0308868, abs=5e-7)
+
+
+def test_plane_one_outside_F_blows_up_inside_closes():
+    """Lee §3.4, plane I: outside F (C > 0) omega runs to the -y axis in finite time, inside it closes."""
+    m3, nu = 0.5, 0.2
+    turn = np.log(m3 * (1 + 2 * nu) / (2 * nu))                       # C = 0 at q1 = 0
+    params = [m3, -nu, -1.0, 1.0, 2.0]
+    out = solve(Problem(se.plane_middle, [turn + 0.01, 0.0], (0, 100), params), rtol=1e-12, atol=1e-14, bound=1e8)
+    inside = solve(Problem(se.plane_middle, [turn - 0.01, 0.0], (0, 200), params), rtol=1e-12, atol=1e-14,
+                   events=Events(portrait.velocity_zero, 1, (-1,)), bound=1e8)
+    assert out.status == "blow-up" and out.y[1] < 0
+    assert inside.status != "blow-up" and len(inside.event_t) >= 2

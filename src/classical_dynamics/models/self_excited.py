@@ -41,6 +41,12 @@ def _quadratic_torque(params, context):
     return params
 
 
+@EFFECTS.register("drag", "medium", "a viscous medium's resisting torque, -mu1 (p, q) equatorial and -mu0 r axial "
+                  "(Lee §5; both or neither)")
+def _drag(params, context):
+    return params
+
+
 @dataclass(frozen=True)
 class Body:
     """Principal moments sorted so that A > B > C, and Lee's inertia numbers."""
@@ -328,20 +334,43 @@ class MiddleAxis:
         return 0.5 * self.mu * (a + c) * s - b * np.sqrt(a * c) * self.alpha1 * self.alpha2
 
     @property
+    def form(self) -> str:
+        """Which of Lee's reductions holds: 'sinh' (|k1| > |k2|, (3.12)), 'cosh' (|k2| > |k1|, (3.56)),
+        'exp' (k1 = k2: plane I or |mu| = mu_c, (3.24)/(3.58)) or 'exp-' (k1 = -k2: plane II, (3.25)/(3.59))."""
+        k1, k2 = self.k1, self.k2
+        scale = max(abs(k1), abs(k2))
+        if abs(k1 - k2) <= 1e-12 * scale:
+            return "exp"
+        if abs(k1 + k2) <= 1e-12 * scale:
+            return "exp-"
+        return "cosh" if abs(k2) > abs(k1) else "sinh"
+
+    @property
     def cosh_form(self) -> bool:
-        return abs(self.k2) > abs(self.k1)
+        return self.form == "cosh"
 
     @property
     def d1(self) -> float:
+        """d1 = sqrt(k1^2 - k2^2) (or d2 = sqrt(k2^2 - k1^2)); |k1| in the exponential forms."""
+        if self.form in ("exp", "exp-"):
+            return abs(self.k1)
         return np.sqrt(abs(self.k1**2 - self.k2**2))
 
     @property
     def sigma1(self) -> float:
-        return np.arctanh(self.k1 / self.k2) if self.cosh_form else np.arctanh(self.k2 / self.k1)
+        form = self.form
+        if form in ("exp", "exp-"):
+            return 0.0
+        return np.arctanh(self.k1 / self.k2) if form == "cosh" else np.arctanh(self.k2 / self.k1)
 
     @property
     def eps1(self) -> float:
-        return float(np.sign(self.k2 if self.cosh_form else self.k1))
+        """The sign of the hyperbolic or exponential term: sgn k1 (sinh), sgn k2 (cosh), sgn k1 (exp: k1 e^Y),
+        -sgn k1 (exp-: k1 sinh Y - k1 cosh Y = -k1 e^-Y)."""
+        form = self.form
+        if form == "cosh":
+            return float(np.sign(self.k2))
+        return -float(np.sign(self.k1)) if form == "exp-" else float(np.sign(self.k1))
 
     @property
     def time_scale(self) -> float:
@@ -349,7 +378,7 @@ class MiddleAxis:
 
     @property
     def m1(self) -> float:
-        """m1 (sinh form) or m2 (cosh form): m0/d."""
+        """m1 (sinh form), m2 (cosh form) or m3 (exponential forms): m0/d."""
         return self.m0 / self.d1
 
     @property
@@ -357,8 +386,8 @@ class MiddleAxis:
         return self.mu / (2.0 * np.sqrt(self.body.a * self.body.c))
 
     def plane_parameters(self, direction: float = 1.0) -> list:
-        """For plane_middle: (m1 or m2, mu1, eps, direction, 1 for the cosh form)."""
-        return [self.m1, self.mu1, self.eps1, direction, float(self.cosh_form)]
+        """For plane_middle: (m1, m2 or m3, mu1, eps, direction, form code)."""
+        return [self.m1, self.mu1, self.eps1, direction, float(FORMS.index(self.form))]
 
     @staticmethod
     def mu_c(body: Body) -> float:
@@ -378,10 +407,14 @@ class MiddleAxis:
         return np.array([self.body.a, self.body.b, self.body.c, self.m, self.mu])
 
     def to_plane(self, w: np.ndarray) -> np.ndarray:
-        """Rows (p, q, r) -> rows (phi2, q1): e^X = (p/sqrt a + r/sqrt c)/(alpha1 + alpha2)."""
+        """Rows (p, q, r) -> rows (phi2, q1): e^X = (p/sqrt a + r/sqrt c)/(alpha1 + alpha2), or, in plane II
+        (alpha1 = -alpha2), e^-X = (p/sqrt a - r/sqrt c)/(alpha1 - alpha2)."""
         w = np.atleast_2d(w)
         a, c = self.body.a, self.body.c
-        X = np.log((w[:, 0] / np.sqrt(a) + w[:, 2] / np.sqrt(c)) / (self.alpha1 + self.alpha2))
+        if abs(self.alpha1 + self.alpha2) >= abs(self.alpha1 - self.alpha2):
+            X = np.log((w[:, 0] / np.sqrt(a) + w[:, 2] / np.sqrt(c)) / (self.alpha1 + self.alpha2))
+        else:
+            X = -np.log((w[:, 0] / np.sqrt(a) - w[:, 2] / np.sqrt(c)) / (self.alpha1 - self.alpha2))
         return np.column_stack([2.0 * X + self.sigma1, 2.0 * np.sqrt(a * c) * w[:, 1] / self.time_scale])
 
     def from_plane(self, phi2: float, q1: float) -> np.ndarray:
@@ -408,12 +441,23 @@ def euler_middle(t, w, p, out):
     out[2] = p[2] * w[0] * w[1]
 
 
+FORMS = ("sinh", "cosh", "exp", "exp-")
+
+
 @rhs_function
 def plane_middle(t, y, p, out):
-    """Lee (3.12) or (3.56) in y = (phi2, q1): dq1/dtau = m + eps sinh(phi2) (or cosh) + mu1 q1^2;
-    p = (m1 or m2, mu1, eps, direction, cosh form 0/1)."""
+    """Lee (3.12), (3.56), (3.24)/(3.58) or (3.25)/(3.59) in y = (phi2, q1): dq1/dtau = m + eps f(phi2) + mu1 q1^2,
+    f = sinh, cosh, exp or exp(-.); p = (m, mu1, eps, direction, form code: index in FORMS)."""
     out[0] = p[3] * y[1]
-    out[1] = p[3] * (p[0] + p[2] * (np.cosh(y[0]) if p[4] != 0.0 else np.sinh(y[0])))
+    if p[4] == 0.0:
+        f = np.sinh(y[0])
+    elif p[4] == 1.0:
+        f = np.cosh(y[0])
+    elif p[4] == 2.0:
+        f = np.exp(y[0])
+    else:
+        f = np.exp(-y[0])
+    out[1] = p[3] * (p[0] + p[2] * f)
     if p[1] != 0.0:
         out[1] += p[3] * p[1] * y[1] * y[1]
 
@@ -443,8 +487,27 @@ def middle_c1_cosh(y: np.ndarray, m2: float, mu1: float, eps2: float) -> np.ndar
 def middle_series_period(m1: float, nu: float, eta: float, cosh_form: bool = False) -> float:
     """Lee (4.13): about the center of (3.52), T = 2 pi (1 + m1^2)^(-1/4)(1 + h2 eta^2 + h3 eta^3); (4.14) for
     the cosh form (3.56) with m2 > 1: sqrt(1 + m1^2) -> sqrt(m2^2 - 1), m1 -> m2."""
-    k2 = np.sqrt(m1**2 - 1.0) if cosh_form else np.sqrt(1.0 + m1**2)
-    beta2, beta3, mu1 = -m1, -k2, -nu
-    h2 = (5 * beta2**2 + 10 * beta2 * k2 * mu1 + 3 * beta3 * k2 + 8 * k2**2 * mu1**2) / (48 * k2**2)
-    h3 = -(beta2 + 4 * k2 * mu1) / (3 * k2) * h2
-    return 2.0 * np.pi / np.sqrt(k2) * (1.0 + h2 * eta**2 + h3 * eta**3)
+    k_sq = np.sqrt(m1**2 - 1.0) if cosh_form else np.sqrt(1.0 + m1**2)
+    return lyapunov_period(k_sq, -m1, -k_sq, -nu, eta)
+
+
+def exponential_c1(y: np.ndarray, m3: float, mu1: float, eps: float, s: float) -> np.ndarray:
+    """For dq1/dtau = m3 + eps e^{s phi2} + mu1 q1^2 (s = +1 plane I or mu_c, -1 plane II; Lee (3.27), (3.28),
+    (3.60), (3.62), (3.63)): q1^2 = C e^{2 mu1 phi2} - m3/mu1 + 2 eps e^{s phi2}/(s - 2 mu1), so
+    C = e^{-2 mu1 phi2} [q1^2 + m3/mu1 - 2 eps e^{s phi2}/(s - 2 mu1)] is constant (mu1 != 0, 2 mu1 != s)."""
+    y = np.atleast_2d(y)
+    phi, q1 = y[:, 0], y[:, 1]
+    return np.exp(-2 * mu1 * phi) * (q1**2 + m3 / mu1 - 2 * eps * np.exp(s * phi) / (s - 2 * mu1))
+
+
+def exponential_energy(y: np.ndarray, m3: float, eps: float, s: float) -> np.ndarray:
+    """E = q1^2/2 - m3 phi2 - eps e^{s phi2}/s, constant when mu1 = 0 (Lee (3.47), (3.48))."""
+    y = np.atleast_2d(y)
+    return 0.5 * y[:, 1] ** 2 - m3 * y[:, 0] - eps * np.exp(s * y[:, 0]) / s
+
+
+def lyapunov_period(k_sq: float, beta2: float, beta3: float, mu1: float, eta: float) -> float:
+    """Lee (4.2), (4.6)-(4.8): the period 2 pi/k (1 + h2 eta^2 + h3 eta^3) of the Lyapunov system (4.1)."""
+    h2 = (5 * beta2**2 + 10 * beta2 * k_sq * mu1 + 3 * beta3 * k_sq + 8 * k_sq**2 * mu1**2) / (48 * k_sq**2)
+    h3 = -(beta2 + 4 * k_sq * mu1) / (3 * k_sq) * h2
+    return 2.0 * np.pi / np.sqrt(k_sq) * (1.0 + h2 * eta**2 + h3 * eta**3)

@@ -112,3 +112,11 @@ def new_figure(width=6.0, height=3.8):
     fig, ax = plt.subplots(figsize=(width, height), layout="constrained")
     ax.grid(True, which="both", alpha=0.25, linewidth=0.6)
     return fig, ax
+
+
+def new_figures(ncols, width=7.2, height=3.4):
+    """A row of ncols panels, styled as new_figure."""
+    fig, axes = plt.subplots(1, ncols, figsize=(width, height), layout="constrained")
+    for ax in axes:
+        ax.grid(True, which="both", alpha=0.25, linewidth=0.6)
+    return fig, axes

@@ -5,7 +5,8 @@ A scene names a body (three principal moments, in any order), the axis of the bo
 and the cylinder delta; the physical torque (M and mu0, per unit of the axis' moment) follows and is
 reported. The effects it lists must be those the plane needs: body_torque when M != 0, quadratic_torque
 when nu != 0. This build covers the torque along the largest or the smallest axis (Lee §2, §4.2) and
-along the middle axis below mu_c (§3, case |k1| > |k2|; (4.13)).
+along the middle axis (§3, (4.13), (4.14)). A scene with a `viscous` block instead of a plane is Lee §5:
+a symmetric body in a viscous medium under a constant body-fixed torque (effects body_torque and drag).
 """
 
 from __future__ import annotations
@@ -44,6 +45,12 @@ def check(path: Path, data: dict) -> None:
     if not A < B + C:
         raise SceneError(path, "body.moments", "moments a body can have: each less than the sum of the other "
                          "two (A < B + C)", moments)
+    if "viscous" in data:
+        _check_viscous(path, data)
+        return
+    for field in ("torque_axis", "plane"):
+        if field not in data:
+            raise SceneError(path, field, "torque_axis and plane (a phase-plane scene), or viscous (Lee §5)", None)
     axis = data["torque_axis"]
     if not A > B > C:
         raise SceneError(path, "body.moments", "three different moments (the reduction to the plane needs "
@@ -58,6 +65,8 @@ def check(path: Path, data: dict) -> None:
     if axis == "middle":
         _check_middle(path, Body(A, B, C), plane, effects)
         return
+    if isinstance(plane["nu"], str):
+        raise SceneError(path, "plane.nu", "a number (nu_c is the middle axis' critical drag)", plane["nu"])
     if plane["nu"] != 0.0 and "quadratic_torque" not in effects:
         raise SceneError(path, "effects", "quadratic_torque listed (nu != 0 is the mu0 |omega|^2 part of the "
                          "torque)", sorted(effects))
@@ -82,31 +91,69 @@ def _check_range(path, data):
 
 def _check_middle(path, body, plane, effects):
     from ...models.self_excited import MiddleAxis
+    from .middle_axis import nu_value
 
     alpha1, alpha2 = plane["alpha"]
-    if abs(alpha1) == abs(alpha2):
-        raise SceneError(path, "plane.alpha", "|alpha1| != |alpha2| (the planes of the separating polhodes are "
-                         "not built yet)", plane["alpha"])
-    if not alpha1 + alpha2 > 0:
+    if alpha1 == alpha2 == 0.0:
+        raise SceneError(path, "plane.alpha", "a hyperbolic cylinder, not both alpha zero", plane["alpha"])
+    if abs(alpha1) == abs(alpha2) and not alpha1 > 0:
+        raise SceneError(path, "plane.alpha", "alpha1 > 0 in the planes of the separating polhodes (orient the "
+                         "axes so; the map takes a log)", plane["alpha"])
+    if abs(alpha1) != abs(alpha2) and not alpha1 + alpha2 > 0:
         raise SceneError(path, "plane.alpha", "alpha1 + alpha2 > 0 (orient the axes so; the map takes its log)",
                          plane["alpha"])
-    M = MiddleAxis.with_plane_parameters(body, plane["m1"], -plane["nu"], alpha1, alpha2)
-    if abs(abs(M.k1) - abs(M.k2)) <= 1e-9 * max(abs(M.k1), abs(M.k2)):
-        raise SceneError(path, "plane.nu", "a drag away from mu_c, where |k1| = |k2| (that form is not built yet)",
-                         plane["nu"])
-    if M.cosh_form and (abs(2 * plane["nu"] - 1.0) < 1e-9 or M.eps1 > 0):
+    nu = nu_value(plane, body)
+    M = MiddleAxis.with_plane_parameters(body, plane["m1"], -nu, alpha1, alpha2)
+    if max(abs(M.k1), abs(M.k2)) <= 1e-12 * body.b * (alpha1**2 + alpha2**2):
+        raise SceneError(path, "plane.nu", "nu != nu_c in plane II (there k1 = k2 = 0: Lee's rare case (3.65), not "
+                         "built)", plane["nu"])
+    if M.form == "cosh" and (abs(2 * nu - 1.0) < 1e-9 or M.eps1 > 0):
         raise SceneError(path, "plane.nu", "nu != 1/2 with k2 < 0 above mu_c (the other forms are not built yet)",
                          plane["nu"])
-    if plane["nu"] != 0.0 and "quadratic_torque" not in effects:
+    if M.form == "exp-" and abs(2 * nu - 1.0) < 1e-9:
+        raise SceneError(path, "plane.nu", "nu != 1/2 in plane II (2 mu1 = -1 changes the form of (3.62))",
+                         plane["nu"])
+    if nu != 0.0 and "quadratic_torque" not in effects:
         raise SceneError(path, "effects", "quadratic_torque listed (nu != 0)", sorted(effects))
     if M.m != 0.0 and "body_torque" not in effects:
         raise SceneError(path, "effects", f"body_torque listed (this plane needs M/B = {M.m:.4g})", sorted(effects))
 
 
+def _check_viscous(path, data):
+    from ...models.viscous_medium import ViscousMedium, symmetric_axis
+
+    for field in ("torque_axis", "plane"):
+        if field in data:
+            raise SceneError(path, field, "no phase plane in a viscous-medium scene (Lee §5 has none)", data[field])
+    moments = data["body"]["moments"]
+    if symmetric_axis(moments) is None:
+        raise SceneError(path, "body.moments", "a symmetric body, two moments equal (Lee §5: A = B)", moments)
+    v, effects = data["viscous"], data.get("effects") or {}
+    nu, mu = v.get("nu", 0.0), v.get("mu", 0.0)
+    if (nu > 0.0) != (mu > 0.0):
+        raise SceneError(path, "viscous.mu" if nu > 0.0 else "viscous.nu", "both drags positive or both zero (the "
+                         "medium resists equatorial and axial turning alike)", [nu, mu])
+    if (nu > 0.0) != ("drag" in effects):
+        raise SceneError(path, "effects", "drag listed exactly when nu and mu are positive", sorted(effects))
+    if any(v["torque"]) != ("body_torque" in effects):
+        raise SceneError(path, "effects", "body_torque listed exactly when the torque is not zero", sorted(effects))
+    if "quadratic_torque" in effects:
+        raise SceneError(path, "effects.quadratic_torque", "body_torque and drag only (Lee §5)", None)
+    A, C = symmetric_axis(moments)
+    V = ViscousMedium.from_moments(A, C, nu, mu, v["torque"], v["omega0"])
+    if mu > 0.0 and V.h != 0.0 and V.g != 0.0 and float(nu / mu).is_integer():
+        raise SceneError(path, "viscous.nu", "nu/mu not an integer (Lee's reduction (5.32)/(5.33) needs "
+                         "0 < Re w' < 1)", nu / mu)
+
+
 def run(scene: Scene, quick: bool = False):
     from ..results import Results       # imported here so that validation stays light
-    from . import largest_axis, middle_axis
+    from . import largest_axis, middle_axis, viscous
 
     results = Results("self_excited", scene.name, scene.title)
-    (middle_axis if scene.data["torque_axis"] == "middle" else largest_axis).run(scene, results, quick)
+    if "viscous" in scene.data:
+        module = viscous
+    else:
+        module = middle_axis if scene.data["torque_axis"] == "middle" else largest_axis
+    module.run(scene, results, quick)
     return results

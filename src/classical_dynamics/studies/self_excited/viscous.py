@@ -1,0 +1,266 @@
+"""Lee §5: the symmetric body in a viscous medium under a constant torque fixed in the body.
+
+Lee's quadrature solution (through his generalized sine and cosine integrals, or Fresnel's without
+friction) against Euler's equations integrated, and against itself with the integrals at 30 digits; its
+error bound; the limiting rotation of Theorem 3 and the bounds of Theorem 1 with friction; the circles of
+Theorem 2 without. With `analysis.special_functions`, what si and ci cost by series, asymptotic expansion
+and quadrature, and what the solution costs by quadrature formula against integration.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from ...models.viscous_medium import ViscousMedium, symmetric_axis, viscous_symmetric
+from ...solvers import sine_cosine_integrals as sc
+from ...solvers import workprecision as wp
+from ...solvers.ode import Problem, solve
+from ...solvers.timing import min_time
+from ..results import new_figure, new_figures
+
+SAMPLES = 401
+REFERENCE_SAMPLES = 41
+CLOSED_VS_ODE_BOUND = 1e-9    # hard case: Lee's formula against Euler's equations (rtol 1e-13)
+LIMIT_BOUND = 1e-6            # hard case: the state at t_max against Theorem 3's rotation
+
+
+def medium(data) -> ViscousMedium:
+    v = data["viscous"]
+    A, C = symmetric_axis(data["body"]["moments"])
+    drag = "drag" in (data.get("effects") or {})
+    return ViscousMedium.from_moments(A, C, v.get("nu", 0.0) if drag else 0.0, v.get("mu", 0.0) if drag else 0.0,
+                                      v["torque"], v["omega0"])
+
+
+def run(scene, results, quick):
+    data = scene.data
+    V = medium(data)
+    t_max = float(data["viscous"]["t_max"])
+    source = data["viscous"].get("source", "chosen to show the case")
+    for name, value, note in (("h", V.h, "(A − C)/A"), ("nu", V.nu, "μ1/A, equatorial drag"),
+                              ("mu", V.mu, "μ0/C, axial drag"), ("m1", V.m[0], "M1/A"), ("m2", V.m[1], "M2/A"),
+                              ("m3", V.m[2], "M3/C")):
+        results.number(name, value, "1/time" if name in ("nu", "mu") else ("1" if name == "h" else "1/time²"),
+                       note=note + ("; " + source if name == "h" else ""))
+    results.number("case", V.case, "", note="Lee's case of §5.3")
+    if V.mu > 0 and V.g != 0.0 and V.h != 0.0:
+        results.number("w_real", V.w.real, "1", note="w1 = 1 + (ν + i g1)/μ of (5.27)")
+        results.number("w_imag", V.w.imag, "1")
+        results.number("g", V.g, "1", note="(h/μ)(r0 − m3/μ)")
+
+    t = np.linspace(0.0, t_max, SAMPLES)
+    ode = solve(Problem(viscous_symmetric, list(V.omega0), (0.0, t_max), V.parameters()), "dop853", rtol=1e-13,
+                atol=1e-15, t_eval=t)
+    closed, bound = V.closed_form(t)
+    deviation = float(np.max(np.abs(closed - ode.y_eval)))
+    results.number("closed_vs_ode", deviation, "1/time", note="Lee's quadratures against Euler's equations "
+                   "(DOP853, rtol 1e-13), max over p, q, r and t")
+    results.hard_case("closed_form_vs_euler", "Lee's quadrature solution against Euler's equations integrated, "
+                      f"t ≤ {t_max:g} (max |Δω|)", deviation, CLOSED_VS_ODE_BOUND)
+    every = (SAMPLES - 1) // (REFERENCE_SAMPLES - 1)
+    exact, _ = V.closed_form(t[::every], integrals=sc.reference_value)
+    error = np.hypot(*(closed[::every, :2] - exact[:, :2]).T)
+    results.number("closed_form_error", float(error.max()), "1/time", note="against the same formula with si, ci "
+                   "at 30 digits (mpmath), max over t")
+    results.number("closed_form_bound", float(bound.max()), "1/time", note="the formula's own bound, from those "
+                   "of the series and expansions, max over t")
+    results.hard_case("closed_form_within_bound", "The quadrature solution's error (against si, ci at 30 digits) "
+                      "over its own bound (1e-13 added for round-off), max over t",
+                      float(np.max(error / (bound[::every] + 1e-13))), 1.0)
+    points = _asymptotics(results, V, ode, t_max)
+    fig = _figure(V, t, closed, ode, points)
+    results.figure("solution", fig, _caption(V, t_max))
+    if data.get("analysis", {}).get("special_functions"):
+        special_function_costs(results, quick)
+        solution_costs(results, V, quick)
+
+
+def _asymptotics(results, V, ode, t_max):
+    """Theorem 1 and 3 with friction, Theorem 2 (circles) without; the scene's singular points."""
+    y = ode.y_eval
+    limit = V.limit()
+    if limit is not None:
+        for k, name in enumerate("pqr"):
+            results.number(f"limit_{name}", float(limit[k]), "1/time", note="Theorem 3: (νm1 + g1m2, νm2 − g1m1)/"
+                           "(ν² + g1²), m3/μ")
+        gap = float(np.max(np.abs(y[-1] - limit)))
+        results.number("limit_gap", gap, "1/time", note=f"|ω(t = {t_max:g}) − Theorem 3's rotation|")
+        results.hard_case("limiting_rotation", f"Euler's equations at t = {t_max:g} against Theorem 3's uniform "
+                          "rotation", gap, LIMIT_BOUND)
+        pq_bound, r_bound = V.bounds()
+        ratio = max(float(np.max(np.abs(y[:, :2]))) / pq_bound, float(np.max(np.abs(y[:, 2]))) / r_bound)
+        results.hard_case("theorem_1_bounds", "Theorem 1: max |p|, |q| over its bound δ + (|m1| + |m2|)/ν, and |r| "
+                          "over |r0| + |m3|/μ (the larger ratio)", ratio, 1.0)
+        kind = "stable focus" if V.g1 != 0.0 else "stable node"
+        results.number("singular_points", [{"p": float(limit[0]), "q": float(limit[1]), "r": float(limit[2]),
+                                            "type": kind}], "1/time", note="the uniform rotation all motions tend to")
+        return [limit]
+    center = V.circle_center()
+    if center is not None:
+        radius = np.hypot(y[:, 0] - center[0], y[:, 1] - center[1])
+        results.number("radius_spread", float(np.ptp(radius) / radius[0]), "1", note="relative, along the circle")
+        results.hard_case("circle_closed", "Without friction, m3 = 0: ω keeps its circle about Theorem 2's center "
+                          "(relative spread of the radius)", float(np.ptp(radius) / radius[0]), 1e-10)
+        period = 2 * np.pi / abs(V.h * V.omega0[2])
+        results.number("period_tau", float(period), "time", note="2π/|h r0| (Theorem 2); §5 has no reduced time: τ = t")
+        angle = np.unwrap(np.arctan2(y[:, 1] - center[1], y[:, 0] - center[0]))
+        measured = 2 * np.pi * (ode.t_eval[-1] - ode.t_eval[0]) / abs(angle[-1] - angle[0])
+        results.number("period_measured", float(measured), "time", note="from the angle swept about the center")
+        results.hard_case("circle_period", "The circles' period against 2π/|h r0| (relative)",
+                          abs(measured / period - 1.0), 1e-9)
+        results.number("singular_points", [{"p": float(center[0]), "q": float(center[1]), "r": float(center[2]),
+                                            "type": "center"}], "1/time", note="Theorem 2: a stable permanent rotation")
+        return [center]
+    results.number("singular_points", [], "1/time", note="none: without friction and with m3 ≠ 0, r grows without "
+                   "bound while p and q stay bounded")
+    results.number("pq_max", float(np.max(np.abs(y[:, :2]))), "1/time", note="max |p|, |q| (bounded, Fresnel)")
+    results.number("r_final", float(y[-1, 2]), "1/time", note="r = r0 + m3 t")
+    return []
+
+
+def _figure(V, t, closed, ode, points):
+    fig, (ax, bx) = new_figures(2)
+    for k, (name, color) in enumerate(zip("pqr", ("C0", "C1", "C2"))):
+        ax.plot(t, closed[:, k], color=color, lw=1.0, label=f"{name}, Lee's quadratures")
+        ax.plot(ode.t_eval[::10], ode.y_eval[::10, k], ".", color=color, ms=3)
+    ax.plot([], [], "k.", ms=3, label="Euler's equations")
+    ax.set_xlabel("t")
+    ax.set_ylabel("body rates")
+    ax.legend(fontsize=6)
+    bx.plot(closed[:, 0], closed[:, 1], color="C0", lw=0.9)
+    for extra in _extra_starts(V):
+        y, _ = extra.closed_form(np.linspace(0.0, t[-1], 800))
+        bx.plot(y[:, 0], y[:, 1], color="0.6", lw=0.6)
+    for pt in points:
+        bx.plot(pt[0], pt[1], "k+", ms=8)
+    bx.set_xlabel("p")
+    bx.set_ylabel("q")
+    bx.set_aspect("equal", adjustable="datalim")
+    return fig
+
+
+def _extra_starts(V):
+    """Figures 5.4 and 5.5: more circles about Theorem 2's center; a start in the plane r = m3/mu (g = 0),
+    whose spiral is elementary."""
+    if V.circle_center() is not None:
+        return [ViscousMedium(V.h, V.nu, V.mu, V.m, (V.omega0[0] * f, V.omega0[1] * f, V.omega0[2]))
+                for f in (0.4, 0.7, 1.4)]
+    if V.limit() is not None and V.m[2] != 0.0:
+        return [ViscousMedium(V.h, V.nu, V.mu, V.m, (V.omega0[0], V.omega0[1], V.m[2] / V.mu))]
+    return []
+
+
+def _caption(V, t_max):
+    what = {"I": "Case I: straight lines to (m1/ν, m2/ν, 0)", "II": "Case II: m3 = 0, r0 ≠ 0",
+            "III": "Case III: m3 ≠ 0", "III (g = 0)": "Case III with r0 = m3/μ, elementary", "IV": "Case IV: h = 0"}
+    friction = (f"with friction ν = {V.nu:g}, μ = {V.mu:g}" if V.friction else "without friction")
+    return (f"Lee §5, {what[V.case]}, {friction}, h = {V.h:g}, m = ({V.m[0]:g}, {V.m[1]:g}, {V.m[2]:g}), "
+            f"ω0 = ({V.omega0[0]:g}, {V.omega0[1]:g}, {V.omega0[2]:g}). Left: p, q, r against t from Lee's "
+            "quadrature solution (lines) and from Euler's equations (dots). Right: the end of ω projected on the "
+            "equatorial plane" + (", with the limiting rotation (+) and, grey, a start in the plane r = m3/μ that "
+            "spirals into it (Figure 5.5)" if V.limit() is not None and V.m[2] != 0.0 else
+            ", with Theorem 2's center (+) and concentric circles from other starts (Figure 5.4)"
+            if V.circle_center() is not None else "") + f"; t ≤ {t_max:g}.")
+
+
+X_POINTS = (0.5, 2.0, 10.0, 30.0)
+W_POINTS = (0.3 + 0.4j, 1.7 + 0.5j)
+
+
+def special_function_costs(results, quick):
+    """Table T-D of the digest: si, ci by series, expansion and quadrature against 30 digits, with bounds;
+    and error against time for each method at x = 2 and x = 30."""
+    rows = []
+    for w in W_POINTS:
+        for x in X_POINTS:
+            ref_si, ref_ci = (complex(v) for v in sc.reference(x, w))
+            row = {"w": f"{w.real:g}{w.imag:+g}i", "x": x, "si_real": ref_si.real, "si_imag": ref_si.imag}
+            for name, f in (("series", sc.series), ("asymptotic", sc.asymptotic), ("quadrature", sc.quadrature)):
+                v = f(x, w)
+                row[f"{name}_error"] = max(abs(v.si - ref_si), abs(v.ci - ref_ci))
+                row[f"{name}_bound"] = v.bound
+            rows.append(row)
+    frame = pd.DataFrame(rows)
+    results.table("si_ci_values", frame, "Lee's generalized sine integral si(x, w) at 30 digits (incomplete gamma, "
+                  "mpmath), and the error (max over si and ci) and error bound of each way to compute it in double "
+                  "precision: series (5.38)/(5.39) with the reduction (5.32)/(5.33) (terms until the Lagrange bound "
+                  "(5.40)/(5.41) is below 1e-16 of the sum, plus a round-off estimate); the asymptotic expansion "
+                  "(5.42)–(5.48) cut at its smallest remainder bound (5.45); quadrature (scipy's QAWO over [x, 40], "
+                  "the expansion beyond; its own estimate).")
+    held = (frame.series_error <= frame.series_bound + 1e-16) & (frame.asymptotic_error <= frame.asymptotic_bound)
+    results.hard_case("si_ci_bounds_hold", "Cases where the series' or the expansion's error exceeds its bound "
+                      "(count)", int((~held).sum()), 0)
+    results.number("si_ci_digest_check_x2", float(frame.series_error[(frame.x == 2.0)].iloc[0]), "1",
+                   note="series error at x = 2, w = 0.3 + 0.4i")
+    timing_rows = []
+    w = W_POINTS[0]
+    for x in (2.0, 30.0):
+        ref_si, ref_ci = (complex(v) for v in sc.reference(x, w, dps=40))
+
+        def err(v):
+            return max(abs(complex(v.si) - ref_si), abs(complex(v.ci) - ref_ci))
+
+        settings = [("series", n, lambda n=n: sc.series(x, w, terms=n)) for n in (2, 4, 6, 8, 12, 20, 30, 45)]
+        settings += [("asymptotic", n, lambda n=n: sc.asymptotic(x, w, terms=n)) for n in (1, 2, 4, 8, 16, 30)]
+        settings += [("quadrature (scipy QAWO)", e, lambda e=e: sc.quadrature(x, w, epsabs=e))
+                     for e in (1e-4, 1e-8, 1e-12, 1e-15)]
+        settings += [("mpmath incomplete gamma", d, lambda d=d: sc.Value(*map(complex, sc.reference(x, w, dps=d)), 0.0, 0))
+                     for d in (15, 20, 30)]
+        for method, setting, run in settings[::2] if quick else settings:
+            seconds, value, _ = min_time(run, repeats=5, budget_s=0.2)
+            timing_rows.append({"x": x, "method": method, "kind": "setting", "setting": setting, "error": err(value),
+                                "bound": value.bound, "seconds": seconds})
+    timing = pd.DataFrame(timing_rows)
+    caption = (f"What si and ci cost: error (against 40 digits) of si(x, w) and ci(x, w), w = {w.real:g}{w.imag:+g}i, "
+               "for each method and setting (series: terms; expansion: terms; quadrature: requested absolute "
+               "error; mpmath: digits), at x = 2 (left) and x = 30 (right).")
+    results.table("si_ci_costs", timing.drop(columns=["seconds"]), caption)
+    results.timing_table("si_ci_costs", timing, caption + " With wall times.")
+    fig, axes = new_figures(2)
+    drawn = timing.assign(error=np.minimum(timing.error, 1.0))     # the expansion diverges: cut at 1
+    for ax, x in zip(axes, (2.0, 30.0)):
+        wp.plot(drawn[drawn.x == x], ax, error="error", floor=1e-18, xlabel=f"error at x = {x:g} (above 1 drawn at 1)")
+        ax.legend(fontsize=5)
+    results.timing_figure("si_ci_costs", fig, caption)
+    for x in (2.0, 30.0):
+        part = timing[(timing.x == x) & (timing.method != "mpmath incomplete gamma")]
+        for method, rows_ in part.groupby("method"):
+            good = rows_[rows_.error <= 1e-12]
+            key = method.split(" ")[0]
+            results.number(f"si_ci_reaches_1e-12_x{x:g}_{key}", int(len(good) > 0), "1",
+                           note=f"whether {method} reaches 1e-12 at x = {x:g}")
+
+
+def solution_costs(results, V, quick, t_end=4.0):
+    """The state at t_end by Lee's formula (series with a given number of terms) against integration, each
+    against the formula at 30 digits."""
+    exact = V.closed_form([t_end], integrals=sc.reference_value)[0][0]
+    rows = []
+
+    def add(method, kind, setting, run, repeats):
+        seconds, y, _ = min_time(run, repeats=repeats, budget_s=0.3)
+        rows.append({"method": method, "kind": kind, "setting": setting,
+                     "error": float(np.max(np.abs(np.asarray(y)[:2] - exact[:2]))), "seconds": seconds})
+
+    for n in (2, 3, 4, 6, 8, 12):
+        add("Lee's formula, series", "terms", n,
+            lambda n=n: V.closed_form([t_end], integrals=lambda x, w: sc.series(x, w, terms=n))[0][0], 5)
+    problem = Problem(viscous_symmetric, list(V.omega0), (0.0, t_end), V.parameters())
+    for method in ("dop853", "dopri5", "scipy:DOP853", "scipy:RK45"):
+        for rtol in ((1e-6, 1e-9, 1e-12) if quick or method.startswith("scipy") else (1e-6, 1e-8, 1e-10, 1e-12, 1e-13)):
+            add(method, "tolerance", rtol, lambda m=method, r=rtol: solve(problem, m, rtol=r, atol=r * 1e-2).y,
+                1 if method.startswith("scipy") else 5)
+    frame = pd.DataFrame(rows)
+    caption = (f"What the solution costs: ω at t = {t_end:g} (Case {V.case}) by Lee's quadrature formula, si and ci "
+               "by the series with a given number of terms, and by integrating Euler's equations; error against the "
+               "formula with si, ci at 30 digits.")
+    results.table("solution_costs", frame.drop(columns=["seconds"]), caption)
+    results.timing_table("solution_costs", frame, caption + " With wall times.")
+    fig, ax = new_figure(6.0, 3.8)
+    wp.plot(frame, ax, error="error", floor=1e-17, xlabel=f"error of (p, q) at t = {t_end:g}")
+    ax.legend(fontsize=7)
+    results.timing_figure("solution_costs", fig, caption)
+    for key, (best, setting) in wp.best_by_method(frame, "error").items():
+        results.number(f"best_solution_error_{key.replace(' ', '_').replace(',', '').replace(chr(39), '')}", best,
+                       "1/time", note=f"at setting {setting:g}")
