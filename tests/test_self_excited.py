@@ -199,7 +199,7 @@ def test_middle_axis_reduction_hyperbola_and_closed_orbits(m1, nu, alpha):
     assert np.max(np.abs(M.to_plane(full.y_eval) - flat.y_eval)) < 1e-9
     h = se.hyperbola(BODY, full.y_eval)
     assert np.ptp(h) < 1e-11 * abs(h[0]) and h[0] == pytest.approx(alpha[0] ** 2 - alpha[1] ** 2, rel=1e-12)
-    invariant = se.middle_energy(flat.y_eval, m1, -1.0) if nu == 0 else se.middle_c1(flat.y_eval, m1, -nu, -1.0)
+    invariant = se.middle_energy(flat.y_eval, m1, -1.0) if nu == 0 else se.middle_c1(flat.y_eval, m1, -nu, -1.0, "sinh")
     assert np.ptp(invariant) < 1e-9 * np.max(np.abs(invariant))
     # closed: the orbit comes back to its start (reversible, no spurious damping over many turns)
     sol = solve(Problem(se.plane_middle, start, (0, 300), [m1, -nu, -1.0, 1.0, 0.0]), rtol=1e-12, atol=1e-14,
@@ -247,7 +247,7 @@ def test_middle_axis_above_the_critical_drag_cosh_form():
                  rtol=1e-13, atol=1e-15, t_eval=tau / M.time_scale)
     flat = solve(Problem(se.plane_middle, start, (0, 8), M.plane_parameters()), rtol=1e-13, atol=1e-15, t_eval=tau)
     assert np.max(np.abs(M.to_plane(full.y_eval) - flat.y_eval)) < 1e-9
-    c1 = se.middle_c1_cosh(flat.y_eval, 1.5, -0.45, -1.0)
+    c1 = se.middle_c1(flat.y_eval, 1.5, -0.45, -1.0, "cosh")
     assert np.ptp(c1) < 1e-9 * np.max(np.abs(c1))
     outside = solve(Problem(se.plane_middle, [-np.arccosh(1.5) - 0.3, 0.0], (0, 100), M.plane_parameters()),
                     rtol=1e-12, atol=1e-14)
@@ -267,9 +267,8 @@ def test_middle_axis_above_the_critical_drag_cosh_form():
 def test_exponential_forms_against_eulers_equations(alpha, nu, m3, form, eps):
     """Lee §3, |k1| = |k2|: Euler's equations mapped into the plane follow dq1/dtau = m3 + eps e^{+-phi2} - nu q1^2,
     the planes are invariant, and C of (3.60)/(3.62)/(3.63) is constant along the plane's solution."""
-    from classical_dynamics.studies.self_excited.middle_axis import nu_value
     body = se.Body.from_moments([3.0, 2.2, 1.2])
-    nu = nu_value({"nu": nu}, body)
+    nu = se.MiddleAxis.plane_nu(nu, body)
     M = se.MiddleAxis.with_plane_parameters(body, m3, -nu, *alpha)
     assert M.form == form and M.eps1 == eps and M.m1 == pytest.approx(m3, rel=1e-12)
     start = [np.log(abs(m3)) * (1 if form == "exp" else -1) + 0.25, 0.1]
@@ -282,8 +281,7 @@ def test_exponential_forms_against_eulers_equations(alpha, nu, m3, form, eps):
         sign = np.sign(alpha[1] / alpha[0])
         w = full.y_eval
         assert np.max(np.abs(w[:, 2] / np.sqrt(body.c) - sign * w[:, 0] / np.sqrt(body.a))) < 1e-10 * np.max(np.abs(w))
-    s = 1.0 if form == "exp" else -1.0
-    C = se.exponential_c1(flat.y_eval, m3, -nu, eps, s)
+    C = se.middle_c1(flat.y_eval, m3, -nu, eps, form)
     assert np.ptp(C) < 1e-9 * np.max(np.abs(C))
 
 

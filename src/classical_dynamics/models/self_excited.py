@@ -394,6 +394,11 @@ class MiddleAxis:
         """|mu| at which k1 = k2: b sqrt(ac)/(a + c)."""
         return body.b * np.sqrt(body.a * body.c) / (body.a + body.c)
 
+    @staticmethod
+    def plane_nu(nu, body: Body) -> float:
+        """A scene's plane.nu: a number, or 'nu_c', the critical drag mu_c/(2 sqrt(ac)) = b/(2(a + c))."""
+        return body.b / (2.0 * (body.a + body.c)) if nu == "nu_c" else float(nu)
+
     @classmethod
     def with_plane_parameters(cls, body: Body, m1: float, mu1: float, alpha1: float, alpha2: float) -> "MiddleAxis":
         """The torque (m, mu) that gives the plane (m1, mu1) on the cylinder of (alpha1, alpha2)."""
@@ -462,12 +467,22 @@ def plane_middle(t, y, p, out):
         out[1] += p[3] * p[1] * y[1] * y[1]
 
 
-def middle_c1(y: np.ndarray, m1: float, mu1: float, eps1: float) -> np.ndarray:
-    """C1 of (3.14), constant when mu1 != 0 (4 mu1^2 != 1)."""
+def middle_g(phi, m: float, mu1: float, eps: float, form: str):
+    """The solution of Lee's middle-axis planes, q1^2 = C e^{2 mu1 phi2} + g(phi2), for
+    dq1/dtau = m + eps f(phi2) + mu1 q1^2 (mu1 != 0): (3.14) sinh, (3.19) cosh (4 mu1^2 != 1),
+    (3.27)/(3.28), (3.60), (3.62), (3.63) for f = e^{s phi2}, s = +1 ('exp') or -1 ('exp-') (2 mu1 != s)."""
+    if form == "sinh":
+        return -m / mu1 + 2 * eps * (2 * mu1 * np.sinh(phi) + np.cosh(phi)) / (1 - 4 * mu1**2)
+    if form == "cosh":
+        return -m / mu1 + 2 * eps * (np.sinh(phi) + 2 * mu1 * np.cosh(phi)) / (1 - 4 * mu1**2)
+    s = 1.0 if form == "exp" else -1.0
+    return -m / mu1 + 2 * eps * np.exp(s * phi) / (s - 2 * mu1)
+
+
+def middle_c1(y: np.ndarray, m: float, mu1: float, eps: float, form: str) -> np.ndarray:
+    """C = e^{-2 mu1 phi2} (q1^2 - g(phi2)), constant along the plane's trajectories (see middle_g)."""
     y = np.atleast_2d(y)
-    phi, q1 = y[:, 0], y[:, 1]
-    return np.exp(-2 * mu1 * phi) * (q1**2 + m1 / mu1
-                                     - 2 * eps1 * (2 * mu1 * np.sinh(phi) + np.cosh(phi)) / (1 - 4 * mu1**2))
+    return np.exp(-2 * mu1 * y[:, 0]) * (y[:, 1] ** 2 - middle_g(y[:, 0], m, mu1, eps, form))
 
 
 def middle_energy(y: np.ndarray, m1: float, eps1: float) -> np.ndarray:
@@ -476,34 +491,11 @@ def middle_energy(y: np.ndarray, m1: float, eps1: float) -> np.ndarray:
     return 0.5 * y[:, 1] ** 2 - m1 * y[:, 0] - eps1 * np.cosh(y[:, 0])
 
 
-def middle_c1_cosh(y: np.ndarray, m2: float, mu1: float, eps2: float) -> np.ndarray:
-    """C1 of (3.19), the cosh form (4 mu1^2 != 1): e^{-2 mu1 phi2}[q1^2 + m2/mu1 - 2 eps2 (sinh + 2 mu1 cosh)/(1 - 4 mu1^2)]."""
-    y = np.atleast_2d(y)
-    phi, q1 = y[:, 0], y[:, 1]
-    return np.exp(-2 * mu1 * phi) * (q1**2 + m2 / mu1
-                                     - 2 * eps2 * (np.sinh(phi) + 2 * mu1 * np.cosh(phi)) / (1 - 4 * mu1**2))
-
-
 def middle_series_period(m1: float, nu: float, eta: float, cosh_form: bool = False) -> float:
     """Lee (4.13): about the center of (3.52), T = 2 pi (1 + m1^2)^(-1/4)(1 + h2 eta^2 + h3 eta^3); (4.14) for
     the cosh form (3.56) with m2 > 1: sqrt(1 + m1^2) -> sqrt(m2^2 - 1), m1 -> m2."""
     k_sq = np.sqrt(m1**2 - 1.0) if cosh_form else np.sqrt(1.0 + m1**2)
     return lyapunov_period(k_sq, -m1, -k_sq, -nu, eta)
-
-
-def exponential_c1(y: np.ndarray, m3: float, mu1: float, eps: float, s: float) -> np.ndarray:
-    """For dq1/dtau = m3 + eps e^{s phi2} + mu1 q1^2 (s = +1 plane I or mu_c, -1 plane II; Lee (3.27), (3.28),
-    (3.60), (3.62), (3.63)): q1^2 = C e^{2 mu1 phi2} - m3/mu1 + 2 eps e^{s phi2}/(s - 2 mu1), so
-    C = e^{-2 mu1 phi2} [q1^2 + m3/mu1 - 2 eps e^{s phi2}/(s - 2 mu1)] is constant (mu1 != 0, 2 mu1 != s)."""
-    y = np.atleast_2d(y)
-    phi, q1 = y[:, 0], y[:, 1]
-    return np.exp(-2 * mu1 * phi) * (q1**2 + m3 / mu1 - 2 * eps * np.exp(s * phi) / (s - 2 * mu1))
-
-
-def exponential_energy(y: np.ndarray, m3: float, eps: float, s: float) -> np.ndarray:
-    """E = q1^2/2 - m3 phi2 - eps e^{s phi2}/s, constant when mu1 = 0 (Lee (3.47), (3.48))."""
-    y = np.atleast_2d(y)
-    return 0.5 * y[:, 1] ** 2 - m3 * y[:, 0] - eps * np.exp(s * y[:, 0]) / s
 
 
 def lyapunov_period(k_sq: float, beta2: float, beta3: float, mu1: float, eta: float) -> float:

@@ -70,6 +70,11 @@ class ViscousMedium:
         return self.h * self.m[2] / self.mu if self.mu > 0 else self.h * self.omega0[2]
 
     @property
+    def generalized(self) -> bool:
+        """Whether J needs Lee's generalized integrals: friction, h != 0 and g != 0 (xi not linear in t)."""
+        return self.mu > 0.0 and self.h != 0.0 and self.g != 0.0
+
+    @property
     def w(self) -> complex:
         """Lee's w1 = 1 + (nu + i g1)/mu of (5.27) (a1 = 1 + nu/mu of (5.22) when g1 = 0)."""
         return 1.0 + complex(self.nu, self.g1) / self.mu
@@ -99,26 +104,28 @@ class ViscousMedium:
             return (r0 - m3 / self.mu) * np.exp(-self.mu * t) + m3 / self.mu
         return r0 + m3 * t
 
-    def J(self, t: float, integrals=sc.si_ci) -> tuple[complex, float]:
-        """int_0^t e^{nu s + i xi(s)} ds and a bound on its error, from the bounds on si and ci;
-        `integrals(x, w)` gives si and ci (a Value)."""
-        if t == 0.0:
-            return 0.0j, 0.0
-        if self.mu > 0.0 and self.g != 0.0 and self.h != 0.0:
+    def J(self, t, integrals=sc.si_ci) -> tuple[np.ndarray, np.ndarray]:
+        """int_0^t e^{nu s + i xi(s)} ds at the times t, and a bound on its error from the bounds on si and ci;
+        `integrals(x, w)` gives si and ci (a Value). The integrals at the fixed end are computed once."""
+        t = np.atleast_1d(np.asarray(t, float))
+        if self.generalized:
             return self._J_generalized(t, integrals)
         if self.mu == 0.0 and self.m[2] != 0.0 and self.h != 0.0:
             return self._J_fresnel(t, integrals)
         rate = complex(self.nu, self.g1 if self.h != 0.0 else 0.0)   # xi linear in t: xi = g1 t
-        return (t if rate == 0 else (np.exp(rate * t) - 1.0) / rate), 0.0
+        J = t.astype(complex) if rate == 0 else (np.exp(rate * t) - 1.0) / rate
+        return J, np.zeros(len(t))
 
     def _J_generalized(self, t, integrals):
         """(5.22)/(5.27): u = G e^{-mu s}, G = |g|, sigma = sgn g:
         J = e^{ig} G^{w-1}/mu {[ci(G) - ci(x_t)] - i sigma [si(G) - si(x_t)]},  x_t = G e^{-mu t}."""
         G, sigma, w = abs(self.g), np.sign(self.g), self.w
-        top, bottom = integrals(G, w), integrals(G * np.exp(-self.mu * t), w)
-        inner = (top.ci - bottom.ci) - 1j * sigma * (top.si - bottom.si)
+        top = integrals(G, w)
+        bottoms = [integrals(x, w) for x in G * np.exp(-self.mu * t)]
+        inner = np.array([(top.ci - b.ci) - 1j * sigma * (top.si - b.si) for b in bottoms])
         scale = G ** (w.real - 1.0) / self.mu                       # |G^(w-1)|/mu: the bounds are magnified by it
-        return np.exp(1j * self.g) * G ** (w - 1.0) / self.mu * inner, scale * 2.0 * (top.bound + bottom.bound)
+        bound = scale * 2.0 * (top.bound + np.array([b.bound for b in bottoms]))
+        return np.exp(1j * self.g) * G ** (w - 1.0) / self.mu * inner, bound
 
     def _J_fresnel(self, t, integrals):
         """Without friction, xi = a s + b s^2 (a = h r0, b = h m3/2): J = e^{-i a^2/(4b)} [F(v0 + t) - F(v0)],
@@ -135,29 +142,26 @@ class ViscousMedium:
             return (np.sign(v) * scale * (value.ci + sc.B(0.5) + 1j * np.sign(b) * (value.si + sc.A(0.5))),
                     scale * 2.0 * value.bound)
 
-        (Ft, bt), (F0, b0) = F(v0 + t), F(v0)
-        return np.exp(-1j * a * a / (4.0 * b)) * (Ft - F0), bt + b0
+        F0, b0 = F(v0)
+        Ft = [F(v0 + s) for s in t]
+        J = np.exp(-1j * a * a / (4.0 * b)) * (np.array([f for f, _ in Ft]) - F0)
+        return J, np.array([bt for _, bt in Ft]) + b0
 
     def closed_form(self, t, integrals=sc.si_ci) -> tuple[np.ndarray, np.ndarray]:
         """Rows (p, q, r) at the times t from Lee's quadratures, and a bound on the error of p + iq at each
         (from the bounds on si and ci; round-off in the elementary parts aside)."""
         t = np.atleast_1d(np.asarray(t, float))
-        p0, q0, _ = self.omega0
+        J, J_bound = self.J(t, integrals)
+        decay = np.exp(-self.nu * t)
         torque = complex(self.m[0], self.m[1])
-        pi, bound = np.empty(len(t), complex), np.empty(len(t))
-        for k, s in enumerate(t):
-            J, J_bound = self.J(s, integrals)
-            decay = np.exp(-self.nu * s)
-            pi[k] = decay * np.exp(-1j * self.xi(s)) * (complex(p0, q0) + torque * J)
-            bound[k] = decay * abs(torque) * J_bound
-        return np.column_stack([pi.real, pi.imag, self.r(t)]), bound
+        pi = decay * np.exp(-1j * self.xi(t)) * (complex(self.omega0[0], self.omega0[1]) + torque * J)
+        return np.column_stack([pi.real, pi.imag, self.r(t)]), decay * abs(torque) * J_bound
 
     def limit(self) -> np.ndarray | None:
         """Theorem 3: with friction, omega -> ((nu m1 + g1 m2), (nu m2 - g1 m1))/(nu^2 + g1^2), m3/mu."""
         if not (self.nu > 0.0 and self.mu > 0.0):
             return None
-        m1, m2, m3 = self.m
-        g1 = self.h * m3 / self.mu
+        (m1, m2, m3), g1 = self.m, self.g1
         d = self.nu**2 + g1**2
         return np.array([(self.nu * m1 + g1 * m2) / d, (self.nu * m2 - g1 * m1) / d, m3 / self.mu])
 

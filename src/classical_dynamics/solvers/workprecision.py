@@ -9,6 +9,8 @@ never the method itself. Tolerances are paired reltol = 1000 x abstol.
 
 from __future__ import annotations
 
+import re
+
 from dataclasses import dataclass
 from typing import Callable
 
@@ -130,8 +132,10 @@ def plot(frame: pd.DataFrame, ax, orders: dict | None = None, error: str = "erro
 
 
 def method_key(method: str) -> str:
-    """A method's label as part of a results number's name: 'scipy:DOP853' -> 'scipy_DOP853'."""
-    return method.replace("scipy:", "scipy_").replace(", order ", "")
+    """A method's label as part of a results number's name: 'scipy:DOP853' -> 'scipy_DOP853',
+    'splitting, order 2' -> 'splitting2', any other run of non-word characters -> '_'."""
+    key = method.replace("scipy:", "scipy_").replace(", order ", "")
+    return re.sub(r"\W+", "_", key).strip("_")
 
 
 def best_by_method(frame: pd.DataFrame, error: str = "error_final") -> dict:

@@ -91,7 +91,6 @@ def _check_range(path, data):
 
 def _check_middle(path, body, plane, effects):
     from ...models.self_excited import MiddleAxis
-    from .middle_axis import nu_value
 
     alpha1, alpha2 = plane["alpha"]
     if alpha1 == alpha2 == 0.0:
@@ -102,7 +101,7 @@ def _check_middle(path, body, plane, effects):
     if abs(alpha1) != abs(alpha2) and not alpha1 + alpha2 > 0:
         raise SceneError(path, "plane.alpha", "alpha1 + alpha2 > 0 (orient the axes so; the map takes its log)",
                          plane["alpha"])
-    nu = nu_value(plane, body)
+    nu = MiddleAxis.plane_nu(plane["nu"], body)
     M = MiddleAxis.with_plane_parameters(body, plane["m1"], -nu, alpha1, alpha2)
     if max(abs(M.k1), abs(M.k2)) <= 1e-12 * body.b * (alpha1**2 + alpha2**2):
         raise SceneError(path, "plane.nu", "nu != nu_c in plane II (there k1 = k2 = 0: Lee's rare case (3.65), not "
@@ -141,7 +140,7 @@ def _check_viscous(path, data):
         raise SceneError(path, "effects.quadratic_torque", "body_torque and drag only (Lee §5)", None)
     A, C = symmetric_axis(moments)
     V = ViscousMedium.from_moments(A, C, nu, mu, v["torque"], v["omega0"])
-    if mu > 0.0 and V.h != 0.0 and V.g != 0.0 and float(nu / mu).is_integer():
+    if V.generalized and float(nu / mu).is_integer():
         raise SceneError(path, "viscous.nu", "nu/mu not an integer (Lee's reduction (5.32)/(5.33) needs "
                          "0 < Re w' < 1)", nu / mu)
 

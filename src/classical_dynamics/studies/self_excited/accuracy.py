@@ -71,7 +71,7 @@ def separatrix(results, m1, quick):
     results.number("separatrix_span_tau", span, "τ", note=f"{PERIODS} periods of the orbit")
     results.number("separatrix_runs_on_wrong_side", int(frame.wrong_side.sum()), "1",
                    note="settings whose energy error carried the motion across the separatrix")
-    _tables(results, frame, "separatrix", "energy_error", f"{PERIODS} periods of a closed orbit a relative "
+    publish(results, frame, "separatrix", "energy_error", f"{PERIODS} periods of a closed orbit a relative "
             f"{SEPARATRIX_OFFSET:g} inside the separatrix (m1 = {m1:g}): energy error at the end, and whether it "
             "crossed to the wrong side (the motion then runs away).", "energy error at the end")
 
@@ -87,12 +87,13 @@ def limit_cycle(results, m1, nu, quick):
 
     rows = _adaptive_rows(Problem(se.plane_largest, y0, (0.0, span), [m1, -nu, 1.0]), error_of, quick)
     frame = pd.DataFrame(rows)
-    _tables(results, frame, "limit_cycle", "error", f"{PERIODS} periods on the limit cycle F (m1 = {m1:g}, "
+    publish(results, frame, "limit_cycle", "error", f"{PERIODS} periods on the limit cycle F (m1 = {m1:g}, "
             f"ν = {nu:g}): distance at the end from the closed form (φ2 advanced by 20π, p1 back at its start).",
             "error at the end against the closed form")
 
 
-def _tables(results, frame, name, error, caption, xlabel):
+def publish(results, frame, name, error, caption, xlabel):
+    """A work-precision frame as table, timing table, figure and best error per method."""
     results.table(f"accuracy_{name}", frame.drop(columns=["seconds"]), caption)
     results.timing_table(f"accuracy_{name}", frame, caption + " With wall times.")
     fig, ax = new_figure(6.0, 3.8)

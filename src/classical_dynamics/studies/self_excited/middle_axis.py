@@ -30,16 +30,11 @@ SHAPES = {"sinh": "one center, every trajectory closed",
           "exp-": "the plane of the other separating polhode"}
 
 
-def nu_value(plane, body):
-    """plane.nu, a number or 'nu_c' (Lee's critical drag b/(2(a + c)), where |k1| = |k2|)."""
-    return se.MiddleAxis.mu_c(body) / (2 * np.sqrt(body.a * body.c)) if plane["nu"] == "nu_c" else float(plane["nu"])
-
-
 def run(scene, results, quick):
     data = scene.data
     body = se.Body.from_moments(data["body"]["moments"])
     plane = data["plane"]
-    m1, nu = float(plane["m1"]), nu_value(plane, body)
+    m1, nu = float(plane["m1"]), se.MiddleAxis.plane_nu(plane["nu"], body)
     alpha1, alpha2 = (float(x) for x in plane["alpha"])
     M = se.MiddleAxis.with_plane_parameters(body, m1, -nu, alpha1, alpha2)
     lo, hi = data.get("portrait", {}).get("phi2_range", [-4.0, 4.0])
@@ -48,7 +43,7 @@ def run(scene, results, quick):
     name = LABELS[form]
     results.number("m1", m1, "1", note=f"{name} of the plane: " + plane.get("source", "chosen to show the regime"))
     results.number("nu", nu, "1", note="mu1 = −nu")
-    results.number("nu_c", se.MiddleAxis.mu_c(body) / (2 * np.sqrt(body.a * body.c)), "1",
+    results.number("nu_c", se.MiddleAxis.plane_nu("nu_c", body), "1",
                    note="b/(2(a + c)): above it the cosh form (3.56) takes over")
     results.number("cosh_form", int(form == "cosh"), "1", note="1: |k2| > |k1|, Lee (3.56); 0 otherwise")
     results.number("form", form, "", note="Lee's reduction: sinh (3.12), cosh (3.56), exp (k1 = k2: plane I or "
@@ -56,7 +51,7 @@ def run(scene, results, quick):
     results.number("M_over_B", M.m, "1/time²", note=f"the constant torque per unit B that gives {name} here")
     results.number("mu0_over_B", M.mu, "1")
     results.number("hyperbola", alpha1**2 - alpha2**2, "1", note="p²/a − r²/c = α1² − α2²")
-    points = singular_points(m1, form, M.eps1)
+    points = _singular_points(m1, form, M.eps1)
     results.number("singular_points", points, "1", note=f"q1 = 0 where {name} + ε f(φ2) = 0, typed by the "
                    "linearization")
     for kind in ("saddle", "center", "degenerate"):
@@ -98,7 +93,7 @@ def run(scene, results, quick):
     results.hard_case("overlay", "Full integrations of Euler's equations, mapped into the plane, on the plane's "
                       "trajectories (max deviation in (φ2, q1))", deviation, OVERLAY_BOUND)
     results.hard_case("hyperbolic_cylinder", "The end of ω stays on its hyperbolic cylinder (relative spread of "
-                      "p²/a − r²/c; absolute in the planes, where it is 0)", hyp, 1e-10)
+                      "p²/a − r²/c, against p²/a + r²/c at the start in the planes, where it is 0)", hyp, 1e-10)
     portrait.finish(ax, points, (lo, hi), q1_max, "q1")
     regime = f"{name} = {m1:g}" + (f", ν = {nu:.6g}" if nu else ", unperturbed")
     where = {"exp": "plane I (α1 = α2)" if alpha1 == alpha2 else "|μ| = μ_c", "exp-": "plane II (α1 = −α2)"}
@@ -123,7 +118,7 @@ def _derivatives(m, form, eps, phi):
     return (m + eps * f[0], eps * f[1], eps * f[2], eps * f[3])
 
 
-def singular_points(m, form, eps):
+def _singular_points(m, form, eps):
     """q1 = 0 and m + eps f(phi2) = 0; center where F' < 0, saddle where F' > 0, degenerate where F' = 0."""
     target = -m / eps
     if form == "sinh":
@@ -142,33 +137,23 @@ def singular_points(m, form, eps):
     return out
 
 
-def _g(M, phi):
-    """q1^2 = C e^{2 mu1 phi2} + g(phi2): Lee (3.14), (3.19), (3.27)/(3.28), (3.60), (3.62), (3.63)."""
-    m, mu1, eps, form = M.m1, M.mu1, M.eps1, M.form
-    if form == "sinh":
-        return -m / mu1 + 2 * eps * (2 * mu1 * np.sinh(phi) + np.cosh(phi)) / (1 - 4 * mu1**2)
-    if form == "cosh":
-        return -m / mu1 + 2 * eps * (np.sinh(phi) + 2 * mu1 * np.cosh(phi)) / (1 - 4 * mu1**2)
-    s = 1.0 if form == "exp" else -1.0
-    return -m / mu1 + 2 * eps * np.exp(s * phi) / (s - 2 * mu1)
-
-
 def _separatrix(ax, M, saddles, lo, hi):
     """Through the saddle; in the exponential form without a saddle, Lee's F (C = 0)."""
     if M.mu1 == 0.0 or (not saddles and M.form != "exp"):
         return
-    C = -_g(M, saddles[0]) * np.exp(-2 * M.mu1 * saddles[0]) if saddles else 0.0
+    C = -se.middle_g(saddles[0], M.m1, M.mu1, M.eps1, M.form) * np.exp(-2 * M.mu1 * saddles[0]) if saddles else 0.0
     phi = np.linspace(lo, hi, 3001)
-    sq = C * np.exp(2 * M.mu1 * phi) + _g(M, phi)
+    sq = C * np.exp(2 * M.mu1 * phi) + se.middle_g(phi, M.m1, M.mu1, M.eps1, M.form)
     for sign in (1, -1):
         ax.plot(phi, np.where(sq >= 0, sign * np.sqrt(np.maximum(sq, 0.0)), np.nan), "k-", lw=1.1,
                 label=("separatrix (closed form)" if saddles else "F, C = 0 (closed form)") if sign == 1 else None)
 
 
 def _escaping_start(M, centers, saddles, hi):
-    """A start that must leave every bound: just beyond the saddle, or right of F's turning point."""
+    """A start that must leave every bound: just left of the saddle (with mu1 <= 0 a saddle occurs only in the
+    cosh form and in plane II, and beyond it to the left the motion runs away), or right of F's turning point."""
     if saddles:
-        return [saddles[0] + (-0.3 if M.form == "cosh" or M.form == "exp-" else 0.3), 0.0]
+        return [saddles[0] - 0.3, 0.0]
     if M.form == "exp" and M.mu1 < 0 and centers:
         turn = np.log(M.m1 * (1 - 2 * M.mu1) / (-2 * M.mu1))      # C = 0 at q1 = 0
         return [turn + 0.3, 0.0]
@@ -190,9 +175,10 @@ def _overlay(ax, M, starts):
     for k, (phi, q1) in enumerate(starts):
         tau = np.linspace(0.0, 12.0, 241)
         full = solve(Problem(se.euler_middle, M.from_plane(phi, q1), (0.0, tau[-1] / M.time_scale),
-                             M.euler_parameters()), "dop853", rtol=1e-13, atol=1e-15, t_eval=tau / M.time_scale)
+                             M.euler_parameters()), "dop853", rtol=1e-13, atol=1e-15, t_eval=tau / M.time_scale,
+                     bound=portrait.BLOW_UP_BOUND)           # a start that runs away stops there, as in the plane
         flat = solve(Problem(se.plane_middle, [phi, q1], (0.0, tau[-1]), M.plane_parameters()), "dop853",
-                     rtol=1e-13, atol=1e-15, t_eval=tau)
+                     rtol=1e-13, atol=1e-15, t_eval=tau, bound=portrait.BLOW_UP_BOUND)
         good = np.all(np.isfinite(full.y_eval), axis=1) & np.all(np.isfinite(flat.y_eval), axis=1)
         good &= np.cumprod(np.abs(np.nan_to_num(flat.y_eval[:, 1], nan=np.inf)) < 100.0).astype(bool)
         mapped = M.to_plane(full.y_eval[good])

@@ -9,6 +9,8 @@ and quadrature, and what the solution costs by quadrature formula against integr
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pandas as pd
 
@@ -17,7 +19,8 @@ from ...solvers import sine_cosine_integrals as sc
 from ...solvers import workprecision as wp
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
-from ..results import new_figure, new_figures
+from ..results import new_figures
+from .accuracy import publish
 
 SAMPLES = 401
 REFERENCE_SAMPLES = 41
@@ -44,7 +47,8 @@ def run(scene, results, quick):
         results.number(name, value, "1/time" if name in ("nu", "mu") else ("1" if name == "h" else "1/time²"),
                        note=note + ("; " + source if name == "h" else ""))
     results.number("case", V.case, "", note="Lee's case of §5.3")
-    if V.mu > 0 and V.g != 0.0 and V.h != 0.0:
+    results.number("t_max", t_max, "time", note="the end of the run")
+    if V.generalized:
         results.number("w_real", V.w.real, "1", note="w1 = 1 + (ν + i g1)/μ of (5.27)")
         results.number("w_imag", V.w.imag, "1")
         results.number("g", V.g, "1", note="(h/μ)(r0 − m3/μ)")
@@ -74,6 +78,7 @@ def run(scene, results, quick):
     if data.get("analysis", {}).get("special_functions"):
         special_function_costs(results, quick)
         solution_costs(results, V, quick)
+        large_order(results, V)
 
 
 def _asymptotics(results, V, ode, t_max):
@@ -129,7 +134,7 @@ def _figure(V, t, closed, ode, points):
     ax.set_ylabel("body rates")
     ax.legend(fontsize=6)
     bx.plot(closed[:, 0], closed[:, 1], color="C0", lw=0.9)
-    for extra in _extra_starts(V):
+    for extra in _extra_starts(V)[0]:
         y, _ = extra.closed_form(np.linspace(0.0, t[-1], 800))
         bx.plot(y[:, 0], y[:, 1], color="0.6", lw=0.6)
     for pt in points:
@@ -141,14 +146,16 @@ def _figure(V, t, closed, ode, points):
 
 
 def _extra_starts(V):
-    """Figures 5.4 and 5.5: more circles about Theorem 2's center; a start in the plane r = m3/mu (g = 0),
-    whose spiral is elementary."""
+    """Figures 5.4 and 5.5: more circles about Theorem 2's center, or a start in the plane r = m3/mu (g = 0), whose
+    spiral is elementary; and what the caption says of them."""
     if V.circle_center() is not None:
-        return [ViscousMedium(V.h, V.nu, V.mu, V.m, (V.omega0[0] * f, V.omega0[1] * f, V.omega0[2]))
-                for f in (0.4, 0.7, 1.4)]
+        return ([replace(V, omega0=(V.omega0[0] * f, V.omega0[1] * f, V.omega0[2])) for f in (0.4, 0.7, 1.4)],
+                ", with Theorem 2's center (+) and concentric circles from other starts (Figure 5.4)")
     if V.limit() is not None and V.m[2] != 0.0:
-        return [ViscousMedium(V.h, V.nu, V.mu, V.m, (V.omega0[0], V.omega0[1], V.m[2] / V.mu))]
-    return []
+        return ([replace(V, omega0=(V.omega0[0], V.omega0[1], V.m[2] / V.mu))],
+                ", with the limiting rotation (+) and, grey, a start in the plane r = m3/μ that spirals into it "
+                "(Figure 5.5)")
+    return [], ""
 
 
 def _caption(V, t_max):
@@ -158,10 +165,7 @@ def _caption(V, t_max):
     return (f"Lee §5, {what[V.case]}, {friction}, h = {V.h:g}, m = ({V.m[0]:g}, {V.m[1]:g}, {V.m[2]:g}), "
             f"ω0 = ({V.omega0[0]:g}, {V.omega0[1]:g}, {V.omega0[2]:g}). Left: p, q, r against t from Lee's "
             "quadrature solution (lines) and from Euler's equations (dots). Right: the end of ω projected on the "
-            "equatorial plane" + (", with the limiting rotation (+) and, grey, a start in the plane r = m3/μ that "
-            "spirals into it (Figure 5.5)" if V.limit() is not None and V.m[2] != 0.0 else
-            ", with Theorem 2's center (+) and concentric circles from other starts (Figure 5.4)"
-            if V.circle_center() is not None else "") + f"; t ≤ {t_max:g}.")
+            f"equatorial plane{_extra_starts(V)[1]}; t ≤ {t_max:g}.")
 
 
 X_POINTS = (0.5, 2.0, 10.0, 30.0)
@@ -193,6 +197,9 @@ def special_function_costs(results, quick):
                       "(count)", int((~held).sum()), 0)
     results.number("si_ci_digest_check_x2", float(frame.series_error[(frame.x == 2.0)].iloc[0]), "1",
                    note="series error at x = 2, w = 0.3 + 0.4i")
+    for method in ("series", "asymptotic"):
+        results.number(f"si_ci_{method}_error_x30", float(frame[f"{method}_error"][frame.x == 30.0].iloc[0]), "1",
+                       note="at x = 30, w = 0.3 + 0.4i")
     timing_rows = []
     w = W_POINTS[0]
     for x in (2.0, 30.0):
@@ -244,23 +251,32 @@ def solution_costs(results, V, quick, t_end=4.0):
                      "error": float(np.max(np.abs(np.asarray(y)[:2] - exact[:2]))), "seconds": seconds})
 
     for n in (2, 3, 4, 6, 8, 12):
-        add("Lee's formula, series", "terms", n,
+        add("Lee formula, series", "terms", n,
             lambda n=n: V.closed_form([t_end], integrals=lambda x, w: sc.series(x, w, terms=n))[0][0], 5)
     problem = Problem(viscous_symmetric, list(V.omega0), (0.0, t_end), V.parameters())
     for method in ("dop853", "dopri5", "scipy:DOP853", "scipy:RK45"):
         for rtol in ((1e-6, 1e-9, 1e-12) if quick or method.startswith("scipy") else (1e-6, 1e-8, 1e-10, 1e-12, 1e-13)):
             add(method, "tolerance", rtol, lambda m=method, r=rtol: solve(problem, m, rtol=r, atol=r * 1e-2).y,
                 1 if method.startswith("scipy") else 5)
-    frame = pd.DataFrame(rows)
     caption = (f"What the solution costs: ω at t = {t_end:g} (Case {V.case}) by Lee's quadrature formula, si and ci "
                "by the series with a given number of terms, and by integrating Euler's equations; error against the "
                "formula with si, ci at 30 digits.")
-    results.table("solution_costs", frame.drop(columns=["seconds"]), caption)
-    results.timing_table("solution_costs", frame, caption + " With wall times.")
-    fig, ax = new_figure(6.0, 3.8)
-    wp.plot(frame, ax, error="error", floor=1e-17, xlabel=f"error of (p, q) at t = {t_end:g}")
-    ax.legend(fontsize=7)
-    results.timing_figure("solution_costs", fig, caption)
-    for key, (best, setting) in wp.best_by_method(frame, "error").items():
-        results.number(f"best_solution_error_{key.replace(' ', '_').replace(',', '').replace(chr(39), '')}", best,
-                       "1/time", note=f"at setting {setting:g}")
+    results.number("solution_t_end", t_end, "time", note="the time at which the costs are measured")
+    publish(results, pd.DataFrame(rows), "solution", "error", caption, f"error of (p, q) at t = {t_end:g}")
+
+
+def large_order(results, V, nu=0.32, mu=0.05, times=(5.0, 20.0, 40.0)):
+    """Hard case (digest §7 item 9): with mu small against nu, w = 1 + (nu + i g1)/mu is large, si and ci are tiny
+    and are multiplied by |g|^(nu/mu)/mu: the formula loses digits. Its bound must say so, and hold."""
+    W = replace(V, nu=nu, mu=mu)
+    y, bound = W.closed_form(times)
+    exact, _ = W.closed_form(times, integrals=sc.reference_value)
+    error = np.hypot(*(y[:, :2] - exact[:, :2]).T)
+    results.number("large_order_w_real", W.w.real, "1", note=f"ν = {nu:g}, μ = {mu:g}")
+    results.number("large_order_w_imag", W.w.imag, "1")
+    results.number("large_order_factor", abs(W.g) ** (nu / mu) / mu, "1", note="|g|^(ν/μ)/μ, which multiplies si, ci")
+    results.number("large_order_error", float(error.max()), "1/time", note=f"against 30 digits, t in {list(times)}")
+    results.number("large_order_bound", float(bound.max()), "1/time", note="the formula's own bound")
+    results.hard_case("large_order_bound_holds", f"Large order w = {W.w.real:.3g}{W.w.imag:+.3g}i: the formula's error "
+                      "over its own bound (1e-13 added for round-off), max over t", float(np.max(error / (bound + 1e-13))),
+                      1.0)
