@@ -143,7 +143,13 @@ GOOD = {"title": "x", "body": {"moments": [3.0, 2.2, 1.2]}, "torque_axis": "larg
     (lambda d: (d.update(torque_axis="smallest"), d["plane"].pop("delta")), "plane.delta"),
     (lambda d: d.update(torque_axis="middle"), "plane.alpha"),
     (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[-0.5, -0.5])), "plane.alpha"),
-    (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.5, -0.5], nu="nu_c")), "plane.nu"),
+    (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.5, -0.5], nu="nu_c", m1=0.0)), "plane.m1"),
+    (lambda d: (d.update(torque_axis="middle", excursion={"q0": 10.0}), d["plane"].update(alpha=[0.5, 0.5])),
+     "excursion"),                                                                  # plane I: not every orbit closes
+    (lambda d: (d.update(torque_axis="middle", excursion={"q0": 0.0}), d["plane"].update(alpha=[0.8, 0.3])),
+     "excursion.q0"),
+    (lambda d: d.update(excursion={"q0": 10.0}), "excursion"),                      # the largest axis has none
+    (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.8, 0.3], nu=0.0)), "effects"),
     (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.5, -0.5], nu=0.5)), "plane.nu"),
     (lambda d: d["plane"].update(nu="nu_c"), "plane.nu"),
     (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.8, 0.3], nu=0.5)), "plane.nu"),
@@ -311,3 +317,83 @@ def test_plane_one_outside_F_blows_up_inside_closes():
                    events=Events(portrait.velocity_zero, 1, (-1,)), bound=1e8)
     assert out.status == "blow-up" and out.y[1] < 0
     assert inside.status != "blow-up" and len(inside.event_t) >= 2
+
+
+def test_rare_case_riccati_and_escape_to_plane_two():
+    """Lee (3.65)-(3.66), plane II at nu = nu_c: k1 = k2 = 0 and q' = m0 - |mu| q^2 alone. Above the line q0 = -sqrt(m0/|mu|)
+    q tends to sqrt(m0/|mu|); below it q blows up at the Riccati time, and p, r grow faster than q (ln|q| against
+    ln|(p, r)| has slope |mu|/sqrt(ac) = b/(a + c) < 1): omega turns to an axis of plane II."""
+    body = se.Body.from_moments([3.0, 2.2, 1.2])
+    M = se.MiddleAxis.with_plane_parameters(body, 0.5, -se.MiddleAxis.plane_nu("nu_c", body), 0.6, -0.6)
+    assert M.form == "rare" and M.k1 == pytest.approx(0.0, abs=1e-15) and M.time_scale == pytest.approx(1.0)
+    m0, mu = M.m0, -M.mu
+    s = np.sqrt(m0 / mu)                                # physical q
+    # q -> s by the Riccati solution q = s tanh(s |mu| t) (the rotation about +y is a saddle and plane II its stable
+    # manifold: a rounding error leaves the plane like e^{2 sqrt(ac) s t}, so the approach is checked, not the end)
+    up = solve(Problem(se.euler_middle, [0.4, 0.0, -0.4 * np.sqrt(body.c / body.a)], (0, 10), M.euler_parameters()),
+               rtol=1e-12, atol=1e-14)
+    assert up.y[1] == pytest.approx(s * np.tanh(s * mu * 10), rel=1e-10)
+    q0 = -1.5 * s
+    w0 = np.array([0.4, q0, -0.4 * np.sqrt(body.c / body.a)])
+    down = solve(Problem(se.euler_middle, w0, (0, 80), M.euler_parameters()), rtol=1e-13, atol=1e-15, bound=1e12,
+                 record_steps=True)
+    assert down.status == "blow-up"
+    t_star = np.log((q0 - s) / (q0 + s)) / (2 * s * mu)    # where q = -infinity
+    assert down.t == pytest.approx(t_star, rel=1e-3)
+    pr, q = np.hypot(down.y_steps[:, 0], down.y_steps[:, 2]), np.abs(down.y_steps[:, 1])
+    late = (pr > 1e5) & (pr < 1e11)
+    assert np.polyfit(np.log(pr[late]), np.log(q[late]), 1)[0] == pytest.approx(body.b / (body.a + body.c), abs=1e-6)
+
+
+@pytest.mark.parametrize("m2,points", [(1.0, ["degenerate"]), (0.5, [])])
+def test_above_the_critical_drag_m2_at_and_below_one_every_motion_escapes(m2, points):
+    """Lee's Figures 3.10, 3.11: at m2 = 1 saddle and center merge at the origin, below it no point is left; either
+    way m2 - cosh(phi2) - nu q1^2 <= 0, so q1 falls for ever and every start (off the point) blows up."""
+    from classical_dynamics.studies.self_excited import middle_axis
+    M = se.MiddleAxis.with_plane_parameters(se.Body.from_moments([3.0, 2.2, 1.2]), m2, -0.45, 0.8, 0.3)
+    assert M.form == "cosh"
+    assert [pt["type"] for pt in middle_axis._singular_points(M.m1, M.form, M.eps1)] == points
+    for start in ([0.5, 0.0], [-2.0, 1.0], [2.0, 2.0], [0.0, -0.1]):
+        sol = solve(Problem(se.plane_middle, start, (0, 400), M.plane_parameters()), rtol=1e-12, atol=1e-14, bound=1e8)
+        assert sol.status == "blow-up"
+
+
+def test_unperturbed_plane_one_without_torque_levels_off():
+    """Lee's Figure 3.4 (d): no torque, omega in plane I: the energy q1^2/2 + e^phi2 is kept along Euler's
+    equations, and q1 tends to -sqrt(2E): omega goes to the -y axis with finite modulus."""
+    body = se.Body.from_moments([3.0, 2.2, 1.2])
+    M = se.MiddleAxis.with_plane_parameters(body, 0.0, 0.0, 0.6, 0.6)
+    assert M.form == "exp" and M.m == 0.0 and M.eps1 == -1.0
+    start = [0.5, 0.7]
+    E = 0.5 * 0.7**2 + np.exp(0.5)
+    tau = np.linspace(0.0, 30.0, 301)
+    full = solve(Problem(se.euler_middle, M.from_plane(*start), (0, 30 / M.time_scale), M.euler_parameters()),
+                 rtol=1e-13, atol=1e-15, t_eval=tau / M.time_scale)
+    mapped = M.to_plane(full.y_eval[:60])              # while omega is still clear of the y axis
+    assert np.ptp(se.middle_energy(mapped, 0.0, -1.0, "exp")) < 1e-10 * E
+    # by tau = 15, e^phi2 < 1e-11; later the plane's repulsion (e^{-phi2} against the in-plane part) shows in q
+    q1 = 2 * np.sqrt(body.a * body.c) * full.y_eval[150, 1] / M.time_scale
+    assert q1 == pytest.approx(-np.sqrt(2 * E), rel=1e-10)
+    assert np.hypot(full.y_eval[150, 0], full.y_eval[150, 2]) < 1e-5 * np.hypot(full.y_eval[0, 0], full.y_eval[0, 2])
+
+
+def test_huge_excursion_below_the_critical_drag_closes():
+    """Digest §7.5: below mu_c a fast spin about the torque axis swings |omega| out by hundreds and back; the orbit
+    closes on the closed form's period, turns where the closed form says, and stays on its cylinder."""
+    from classical_dynamics.studies.results import Results
+    from classical_dynamics.studies.self_excited import middle_axis
+    M = se.MiddleAxis.with_plane_parameters(se.Body.from_moments([3.0, 2.2, 1.2]), 0.5, -0.3, 0.8, 0.3)
+    results = Results("self_excited", "t", "t")
+    middle_axis._excursion(results, M, 10.0)
+    assert results.numbers["excursion_growth"]["value"] > 100
+    assert all(h["holds"] for h in results.stability)
+    assert {h["name"] for h in results.stability} == {"excursion_turning_points", "excursion_closes",
+                                                      "excursion_cylinder"}
+
+
+def test_inverse_map_keeps_its_digits_far_from_the_start():
+    """phi2 far below 0 on a hyperbolic cylinder: p/sqrt(a) + r/sqrt(c) is a difference of two numbers of size e^|X|;
+    the map then reads X from the other combination and keeps its digits."""
+    M = se.MiddleAxis.with_plane_parameters(BODY, 0.5, -0.2, 0.8, 0.3)
+    for phi2 in (-30.0, -5.0, 0.0, 5.0, 30.0):
+        assert M.to_plane(M.from_plane(phi2, 0.3))[0] == pytest.approx([phi2, 0.3], abs=1e-12)

@@ -336,9 +336,12 @@ class MiddleAxis:
     @property
     def form(self) -> str:
         """Which of Lee's reductions holds: 'sinh' (|k1| > |k2|, (3.12)), 'cosh' (|k2| > |k1|, (3.56)),
-        'exp' (k1 = k2: plane I or |mu| = mu_c, (3.24)/(3.58)) or 'exp-' (k1 = -k2: plane II, (3.25)/(3.59))."""
+        'exp' (k1 = k2: plane I or |mu| = mu_c, (3.24)/(3.58)), 'exp-' (k1 = -k2: plane II, (3.25)/(3.59)) or
+        'rare' (k1 = k2 = 0: plane II at nu = nu_c, (3.65), where no hyperbolic term is left)."""
         k1, k2 = self.k1, self.k2
         scale = max(abs(k1), abs(k2))
+        if scale <= 1e-12 * self.body.b * np.sqrt(self.body.a * self.body.c) * (self.alpha1**2 + self.alpha2**2):
+            return "rare"
         if abs(k1 - k2) <= 1e-12 * scale:
             return "exp"
         if abs(k1 + k2) <= 1e-12 * scale:
@@ -351,7 +354,11 @@ class MiddleAxis:
 
     @property
     def d1(self) -> float:
-        """d1 = sqrt(k1^2 - k2^2) (or d2 = sqrt(k2^2 - k1^2)); |k1| in the exponential forms."""
+        """d1 = sqrt(k1^2 - k2^2) (or d2 = sqrt(k2^2 - k1^2)); |k1| in the exponential forms; in the rare case
+        1/(2 sqrt(ac)), which makes tau = t, so that q1 = 2 sqrt(ac) q and phi2 = 2 sqrt(ac) phi are Lee's (q, phi)
+        scaled."""
+        if self.form == "rare":
+            return 0.5 / np.sqrt(self.body.a * self.body.c)
         if self.form in ("exp", "exp-"):
             return abs(self.k1)
         return np.sqrt(abs(self.k1**2 - self.k2**2))
@@ -359,7 +366,7 @@ class MiddleAxis:
     @property
     def sigma1(self) -> float:
         form = self.form
-        if form in ("exp", "exp-"):
+        if form in ("exp", "exp-", "rare"):
             return 0.0
         return np.arctanh(self.k1 / self.k2) if form == "cosh" else np.arctanh(self.k2 / self.k1)
 
@@ -368,6 +375,8 @@ class MiddleAxis:
         """The sign of the hyperbolic or exponential term: sgn k1 (sinh), sgn k2 (cosh), sgn k1 (exp: k1 e^Y),
         -sgn k1 (exp-: k1 sinh Y - k1 cosh Y = -k1 e^-Y)."""
         form = self.form
+        if form == "rare":
+            return 0.0
         if form == "cosh":
             return float(np.sign(self.k2))
         return -float(np.sign(self.k1)) if form == "exp-" else float(np.sign(self.k1))
@@ -378,7 +387,7 @@ class MiddleAxis:
 
     @property
     def m1(self) -> float:
-        """m1 (sinh form), m2 (cosh form) or m3 (exponential forms): m0/d."""
+        """m1 (sinh form), m2 (cosh form) or m3 (exponential forms and the rare case): m0/d."""
         return self.m0 / self.d1
 
     @property
@@ -412,15 +421,33 @@ class MiddleAxis:
         return np.array([self.body.a, self.body.b, self.body.c, self.m, self.mu])
 
     def to_plane(self, w: np.ndarray) -> np.ndarray:
-        """Rows (p, q, r) -> rows (phi2, q1): e^X = (p/sqrt a + r/sqrt c)/(alpha1 + alpha2), or, in plane II
-        (alpha1 = -alpha2), e^-X = (p/sqrt a - r/sqrt c)/(alpha1 - alpha2)."""
+        """Rows (p, q, r) -> rows (phi2, q1): e^X = (p/sqrt a + r/sqrt c)/(alpha1 + alpha2) and
+        e^-X = (p/sqrt a - r/sqrt c)/(alpha1 - alpha2). Each row takes the larger of the two: for X far below 0 the
+        sum is a difference of two numbers of size e^|X| and would lose |X|/ln 10 digits. In plane I or II only one
+        of them exists."""
         w = np.atleast_2d(w)
         a, c = self.body.a, self.body.c
-        if abs(self.alpha1 + self.alpha2) >= abs(self.alpha1 - self.alpha2):
-            X = np.log((w[:, 0] / np.sqrt(a) + w[:, 2] / np.sqrt(c)) / (self.alpha1 + self.alpha2))
-        else:
-            X = -np.log((w[:, 0] / np.sqrt(a) - w[:, 2] / np.sqrt(c)) / (self.alpha1 - self.alpha2))
+        u, v = w[:, 0] / np.sqrt(a), w[:, 2] / np.sqrt(c)
+        s_, d_ = self.alpha1 + self.alpha2, self.alpha1 - self.alpha2
+        with np.errstate(divide="ignore", invalid="ignore"):
+            up = (u + v) / s_ if s_ else np.full(len(w), np.nan)
+            down = (u - v) / d_ if d_ else np.full(len(w), np.nan)
+            X = np.where(np.isnan(down) | (up >= down), np.log(up), -np.log(down))
         return np.column_stack([2.0 * X + self.sigma1, 2.0 * np.sqrt(a * c) * w[:, 1] / self.time_scale])
+
+    def plane_departure(self, w: np.ndarray) -> np.ndarray:
+        """In plane I (alpha1 = alpha2) or II (alpha1 = -alpha2): the off-plane part of rows (p, q, r) against the
+        in-plane part, |p/sqrt a -+ r/sqrt c| / |p/sqrt a +- r/sqrt c|; zeros off the planes. The planes are
+        invariant, but the off-plane part grows like e^{|phi2 - phi2(0)|} relative to the in-plane part when phi2
+        runs away (to -infinity in plane I, +infinity in plane II): a rounding error leaves the plane for good."""
+        w = np.atleast_2d(w)
+        u, v = w[:, 0] / np.sqrt(self.body.a), w[:, 2] / np.sqrt(self.body.c)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            if self.alpha1 == self.alpha2:
+                return np.abs(u - v) / np.abs(u + v)
+            if self.alpha1 == -self.alpha2:
+                return np.abs(u + v) / np.abs(u - v)
+        return np.zeros(len(w))
 
     def from_plane(self, phi2: float, q1: float) -> np.ndarray:
         a, c = self.body.a, self.body.c
@@ -446,13 +473,14 @@ def euler_middle(t, w, p, out):
     out[2] = p[2] * w[0] * w[1]
 
 
-FORMS = ("sinh", "cosh", "exp", "exp-")
+FORMS = ("sinh", "cosh", "exp", "exp-", "rare")
 
 
 @rhs_function
 def plane_middle(t, y, p, out):
     """Lee (3.12), (3.56), (3.24)/(3.58) or (3.25)/(3.59) in y = (phi2, q1): dq1/dtau = m + eps f(phi2) + mu1 q1^2,
-    f = sinh, cosh, exp or exp(-.); p = (m, mu1, eps, direction, form code: index in FORMS)."""
+    f = sinh, cosh, exp, exp(-.) or, in the rare case (3.65), 0; p = (m, mu1, eps, direction, form code: index in
+    FORMS)."""
     out[0] = p[3] * y[1]
     if p[4] == 0.0:
         f = np.sinh(y[0])
@@ -460,8 +488,10 @@ def plane_middle(t, y, p, out):
         f = np.cosh(y[0])
     elif p[4] == 2.0:
         f = np.exp(y[0])
-    else:
+    elif p[4] == 3.0:
         f = np.exp(-y[0])
+    else:
+        f = 0.0
     out[1] = p[3] * (p[0] + p[2] * f)
     if p[1] != 0.0:
         out[1] += p[3] * p[1] * y[1] * y[1]
@@ -470,7 +500,10 @@ def plane_middle(t, y, p, out):
 def middle_g(phi, m: float, mu1: float, eps: float, form: str):
     """The solution of Lee's middle-axis planes, q1^2 = C e^{2 mu1 phi2} + g(phi2), for
     dq1/dtau = m + eps f(phi2) + mu1 q1^2 (mu1 != 0): (3.14) sinh, (3.19) cosh (4 mu1^2 != 1),
-    (3.27)/(3.28), (3.60), (3.62), (3.63) for f = e^{s phi2}, s = +1 ('exp') or -1 ('exp-') (2 mu1 != s)."""
+    (3.27)/(3.28), (3.60), (3.62), (3.63) for f = e^{s phi2}, s = +1 ('exp') or -1 ('exp-') (2 mu1 != s);
+    (3.66) in the rare case (f = 0)."""
+    if form == "rare":
+        return -m / mu1 + 0.0 * phi
     if form == "sinh":
         return -m / mu1 + 2 * eps * (2 * mu1 * np.sinh(phi) + np.cosh(phi)) / (1 - 4 * mu1**2)
     if form == "cosh":
@@ -485,10 +518,22 @@ def middle_c1(y: np.ndarray, m: float, mu1: float, eps: float, form: str) -> np.
     return np.exp(-2 * mu1 * y[:, 0]) * (y[:, 1] ** 2 - middle_g(y[:, 0], m, mu1, eps, form))
 
 
-def middle_energy(y: np.ndarray, m1: float, eps1: float) -> np.ndarray:
-    """E = q1^2/2 - m1 phi2 - eps1 cosh(phi2), constant when mu1 = 0."""
+def middle_potential(phi, m: float, eps: float, form: str):
+    """V(phi2) = -m phi2 - eps F(phi2), F' = f: the potential of the unperturbed planes (mu1 = 0), (3.42)-(3.48)."""
+    F = {"sinh": np.cosh, "cosh": np.sinh, "exp": np.exp, "exp-": lambda x: -np.exp(-x),
+         "rare": lambda x: 0.0 * x}[form](phi)
+    return -m * phi - eps * F
+
+
+def middle_energy(y: np.ndarray, m: float, eps: float, form: str = "sinh") -> np.ndarray:
+    """E = q1^2/2 + V(phi2), constant when mu1 = 0."""
     y = np.atleast_2d(y)
-    return 0.5 * y[:, 1] ** 2 - m1 * y[:, 0] - eps1 * np.cosh(y[:, 0])
+    return 0.5 * y[:, 1] ** 2 + middle_potential(y[:, 0], m, eps, form)
+
+
+def middle_invariant(y: np.ndarray, m: float, mu1: float, eps: float, form: str) -> np.ndarray:
+    """The plane's first integral: C of middle_c1, or the energy when mu1 = 0."""
+    return middle_c1(y, m, mu1, eps, form) if mu1 != 0.0 else middle_energy(y, m, eps, form)
 
 
 def middle_series_period(m1: float, nu: float, eta: float, cosh_form: bool = False) -> float:

@@ -48,6 +48,9 @@ def check(path: Path, data: dict) -> None:
     if "viscous" in data:
         _check_viscous(path, data)
         return
+    if "excursion" in data and data.get("torque_axis") != "middle":
+        raise SceneError(path, "excursion", "torque_axis: middle (the huge excursions are Lee §3's)",
+                         data.get("torque_axis"))
     for field in ("torque_axis", "plane"):
         if field not in data:
             raise SceneError(path, field, "torque_axis and plane (a phase-plane scene), or viscous (Lee §5)", None)
@@ -63,7 +66,7 @@ def check(path: Path, data: dict) -> None:
                          "smallest axis)" if shape == "delta" else "alpha: [alpha1, alpha2], the hyperbolic cylinder "
                          "(middle axis)", None)
     if axis == "middle":
-        _check_middle(path, Body(A, B, C), plane, effects)
+        _check_middle(path, Body(A, B, C), data, effects)
         return
     if isinstance(plane["nu"], str):
         raise SceneError(path, "plane.nu", "a number (nu_c is the middle axis' critical drag)", plane["nu"])
@@ -89,9 +92,10 @@ def _check_range(path, data):
         raise SceneError(path, "portrait.phi2_range", "[low, high] with low < high", [lo, hi])
 
 
-def _check_middle(path, body, plane, effects):
+def _check_middle(path, body, data, effects):
     from ...models.self_excited import MiddleAxis
 
+    plane = data["plane"]
     alpha1, alpha2 = plane["alpha"]
     if alpha1 == alpha2 == 0.0:
         raise SceneError(path, "plane.alpha", "a hyperbolic cylinder, not both alpha zero", plane["alpha"])
@@ -103,19 +107,26 @@ def _check_middle(path, body, plane, effects):
                          plane["alpha"])
     nu = MiddleAxis.plane_nu(plane["nu"], body)
     M = MiddleAxis.with_plane_parameters(body, plane["m1"], -nu, alpha1, alpha2)
-    if max(abs(M.k1), abs(M.k2)) <= 1e-12 * body.b * (alpha1**2 + alpha2**2):
-        raise SceneError(path, "plane.nu", "nu != nu_c in plane II (there k1 = k2 = 0: Lee's rare case (3.65), not "
-                         "built)", plane["nu"])
+    if M.form == "rare" and M.m1 == 0.0:
+        raise SceneError(path, "plane.m1", "m1 != 0 in Lee's rare case (nu = nu_c in plane II: with no torque every "
+                         "point q = 0 is at rest)", plane["m1"])
     if M.form == "cosh" and (abs(2 * nu - 1.0) < 1e-9 or M.eps1 > 0):
         raise SceneError(path, "plane.nu", "nu != 1/2 with k2 < 0 above mu_c (the other forms are not built yet)",
                          plane["nu"])
     if M.form == "exp-" and abs(2 * nu - 1.0) < 1e-9:
         raise SceneError(path, "plane.nu", "nu != 1/2 in plane II (2 mu1 = -1 changes the form of (3.62))",
                          plane["nu"])
-    if nu != 0.0 and "quadratic_torque" not in effects:
-        raise SceneError(path, "effects", "quadratic_torque listed (nu != 0)", sorted(effects))
-    if M.m != 0.0 and "body_torque" not in effects:
-        raise SceneError(path, "effects", f"body_torque listed (this plane needs M/B = {M.m:.4g})", sorted(effects))
+    if (nu != 0.0) != ("quadratic_torque" in effects):
+        raise SceneError(path, "effects", "quadratic_torque listed exactly when nu != 0", sorted(effects))
+    if (M.m != 0.0) != ("body_torque" in effects):
+        raise SceneError(path, "effects", f"body_torque listed exactly when the plane needs a torque (here M/B = "
+                         f"{M.m:.4g})", sorted(effects))
+    if "excursion" in data:
+        if M.form != "sinh":
+            raise SceneError(path, "excursion", "a plane below the critical drag and off the planes of the "
+                             "separating polhodes (Lee's (3.52): every orbit closed)", M.form)
+        if data["excursion"]["q0"] == 0.0:
+            raise SceneError(path, "excursion.q0", "a spin q0 != 0 (q0 = 0 starts at a turning point)", 0.0)
 
 
 def _check_viscous(path, data):

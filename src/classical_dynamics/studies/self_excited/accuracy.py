@@ -8,6 +8,9 @@ adaptive Runge-Kutta, compiled and through solve_ivp.
 
 On F (mu1 = -nu): ten periods from a point of F. The reference is the closed form: after ten of Jacobi's
 periods phi2 has advanced 20 pi and p1 is back where it started.
+
+A huge excursion just below mu_c (torque along the middle axis): Euler's equations themselves, ten periods of
+an orbit on which |omega| grows a hundredfold; the reference is the start, after ten periods of the closed form.
 """
 
 from __future__ import annotations
@@ -90,6 +93,20 @@ def limit_cycle(results, m1, nu, quick):
     publish(results, frame, "limit_cycle", "error", f"{PERIODS} periods on the limit cycle F (m1 = {m1:g}, "
             f"ν = {nu:g}): distance at the end from the closed form (φ2 advanced by 20π, p1 back at its start).",
             "error at the end against the closed form")
+
+
+def huge_excursion(results, M, q0, quick):
+    from .middle_axis import EXCURSION_PERIODS, excursion_start
+    w0, T, _, scale = excursion_start(M, q0)
+
+    def error_of(y):
+        return {"error": float(np.linalg.norm(np.asarray(y) - w0)) / scale}
+
+    problem = Problem(se.euler_middle, w0, (0.0, EXCURSION_PERIODS * T), M.euler_parameters())
+    frame = pd.DataFrame(_adaptive_rows(problem, error_of, quick))
+    publish(results, frame, "excursion", "error", f"Euler's equations over {EXCURSION_PERIODS} periods of a huge "
+            f"excursion (q0 = {q0:g}, ν = {-M.mu1:.4g} against ν_c = {M.body.b / (2 * (M.body.a + M.body.c)):.4g}): "
+            "distance at the end from the start, relative to the largest |ω| on the orbit.", "relative error at the end")
 
 
 def publish(results, frame, name, error, caption, xlabel):

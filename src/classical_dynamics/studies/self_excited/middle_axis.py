@@ -3,8 +3,10 @@ and the motion reduces to one of four plane systems, by the signs of k1 -+ k2:
   sinh (|k1| > |k2|, |mu| below mu_c): one center, every motion periodic (3.12), series (4.13);
   cosh (|k2| > |k1|, above mu_c): a saddle and a center for m2 > 1, motions of the third kind (3.56), (4.14);
   exp  (k1 = k2: plane I, alpha1 = alpha2, or |mu| = mu_c): dq1/dtau = m3 - e^phi2 - nu q1^2 (3.58), (4.15);
-  exp- (k1 = -k2: plane II, alpha1 = -alpha2): dq1/dtau = m3 - sgn(k1) e^-phi2 - nu q1^2 (3.59), (4.16).
-Each portrait is checked against Euler's equations mapped into the plane, with its period series.
+  exp- (k1 = -k2: plane II, alpha1 = -alpha2): dq1/dtau = m3 - sgn(k1) e^-phi2 - nu q1^2 (3.59), (4.16);
+  rare (k1 = k2 = 0: plane II at nu = nu_c): dq1/dtau = m - nu q1^2 (3.65), with tau = t.
+Each portrait is checked against Euler's equations mapped into the plane, with its period series; each fate Lee
+names (closed orbits, blow-up, escape at a linear rate, a finite limit) is checked where the plane has it.
 """
 
 from __future__ import annotations
@@ -20,14 +22,19 @@ from .largest_axis import OVERLAY_BOUND
 AMPLITUDES = (0.4, 0.2, 0.1, 0.05)
 
 
-LABELS = {"sinh": "m1", "cosh": "m2", "exp": "m3", "exp-": "m3"}
-EQUATIONS = {"sinh": "(3.12)", "cosh": "(3.56)", "exp": "(3.24)/(3.58)", "exp-": "(3.25)/(3.59)"}
+LABELS = {"sinh": "m1", "cosh": "m2", "exp": "m3", "exp-": "m3", "rare": "2√(ac) m0"}
+EQUATIONS = {"sinh": "(3.12)", "cosh": "(3.56)", "exp": "(3.24)/(3.58)", "exp-": "(3.25)/(3.59)", "rare": "(3.65)"}
 SHAPES = {"sinh": "one center, every trajectory closed",
           "cosh": "a saddle whose loop holds the periodic motions, and outside it motions of the third kind that "
                   "leave every bound in finite time",
           "exp": "a center whose orbits inside the separatrix F close; outside F, ω runs to the −y axis and leaves "
                  "every bound in finite time",
-          "exp-": "the plane of the other separating polhode"}
+          "exp-": "the plane of the other separating polhode",
+          "rare": "no singular point; above the line q1 = −√(m/ν) the motion tends to q1 = √(m/ν), the permanent "
+                  "rotation about +y, and below it ω leaves every bound in finite time"}
+ESCAPE_EXPONENT_BOUND = 1e-3      # hard case: the rare case's escape, ln|q| against ln|(p, r)|, slope b/(a + c)
+RUNAWAY_BOUND = 1e-8              # hard case: the unperturbed escape, dq1/dtau -> m3
+PLANE_DEPARTURE = 1e-10           # the overlay in plane I or II stops where Euler's state has left the plane by this
 
 
 def run(scene, results, quick):
@@ -59,7 +66,7 @@ def run(scene, results, quick):
 
     fig, ax = new_figure(6.4, 4.2)
     centers = [pt["phi2"] for pt in points if pt["type"] == "center"]
-    saddles = [pt["phi2"] for pt in points if pt["type"] == "saddle"]
+    saddles = [pt["phi2"] for pt in points if pt["type"] != "center"]       # a degenerate point has a separatrix too
     if centers and saddles:                         # inside the saddle's loop: between the saddle and the center
         span = centers[0] - saddles[0]
         starts = [(centers[0] - f * span, 0.0) for f in (0.2, 0.5, 0.8)]
@@ -84,24 +91,76 @@ def run(scene, results, quick):
         results.hard_case("orbits_about_the_center_closed", "Starts about the center whose orbit does not close "
                           "(count; Lee: every motion periodic for |μ| < μ_c; inside the saddle's loop or F otherwise)",
                           len(starts) - closed, 0)
-    _separatrix(ax, M, saddles, lo, hi)
-    escape = _escaping_start(M, centers, saddles, hi)
+    _separatrix(ax, M, saddles, centers, lo, hi)
+    if M.mu1 < 0 and _turns_nowhere(M):
+        _every_start_escapes(results, M, others)
+    escape = _escaping_start(M, centers, saddles)
     if escape is not None:
         _third_kind(results, M, escape)
-    deviation, hyp = _overlay(ax, M, (starts[:3] + others[:1]) or others[-3:-1])
+    if form == "rare" and M.m1 > 0:
+        _rare_escape(results, M)
+    if M.mu1 == 0.0 and not points:
+        _runaway(results, M)
+    if M.mu1 < 0 and not points and not _turns_nowhere(M):
+        _settles(results, M)
+    deviation, hyp, share = _overlay(ax, M, starts[:3] + others[:1] if starts else others[2:6])
     results.number("overlay_deviation", deviation, "1", note="Euler's equations in the plane against the plane, max")
+    results.number("overlay_share", share, "1", note="share of the overlay's samples compared: those before the "
+                   f"motion leaves the window (|q1| < 100), every bound, or, in plane I or II, the plane itself (by "
+                   f"{PLANE_DEPARTURE:g}; the plane repels as φ2 runs away)")
     results.hard_case("overlay", "Full integrations of Euler's equations, mapped into the plane, on the plane's "
                       "trajectories (max deviation in (φ2, q1))", deviation, OVERLAY_BOUND)
     results.hard_case("hyperbolic_cylinder", "The end of ω stays on its hyperbolic cylinder (relative spread of "
                       "p²/a − r²/c, against p²/a + r²/c at the start in the planes, where it is 0)", hyp, 1e-10)
     portrait.finish(ax, points, (lo, hi), q1_max, "q1")
     regime = f"{name} = {m1:g}" + (f", ν = {nu:.6g}" if nu else ", unperturbed")
-    where = {"exp": "plane I (α1 = α2)" if alpha1 == alpha2 else "|μ| = μ_c", "exp-": "plane II (α1 = −α2)"}
+    where = {"exp": "plane I (α1 = α2)" if alpha1 == alpha2 else "|μ| = μ_c", "exp-": "plane II (α1 = −α2)",
+             "rare": "plane II at ν = ν_c, Lee's rare case (k1 = k2 = 0; here τ = t, φ2 = 2√(ac)φ)"}
     results.figure("portrait", fig, f"Phase plane of Lee's {EQUATIONS[form]} for the torque along the middle axis"
-                   f"{', ' + where[form] if form in where else ''}, {regime}: {SHAPES[form]} (grey), and Euler's "
+                   f"{', ' + where[form] if form in where else ''}, {regime}: {_shape(M, points)} (grey), and Euler's "
                    "equations mapped into the plane (dots).")
     if centers:
         _series(results, M, centers[0], nu)
+    if "excursion" in data:
+        from . import accuracy
+        q0 = float(data["excursion"]["q0"])
+        _excursion(results, M, q0)
+        accuracy.huge_excursion(results, M, q0, quick)
+
+
+def _shape(M, points):
+    """What the portrait shows, in words."""
+    if M.form == "cosh" and not any(pt["type"] == "center" for pt in points):
+        return ("a degenerate point where saddle and center have merged: motions of the second kind into it, and "
+                "of the third kind, leaving every bound in finite time" if points else
+                "no singular point: every motion is of the third kind and leaves every bound in finite time")
+    if M.form in ("exp", "exp-") and not points:
+        if M.mu1 == 0.0:
+            return ("no singular point: ω runs to the y axis, with finite modulus (the force-free separatrix motion)"
+                    if M.m1 == 0.0 else "no singular point: ω runs to the y axis, |q1| growing like |m3| τ")
+        if _turns_nowhere(M):
+            return "no singular point: ω runs to the −y axis and leaves every bound in finite time"
+        return "no singular point: q1 tends to √(m3/ν), the permanent rotation about the +y axis"
+    if M.form in ("exp", "exp-") and M.mu1 == 0.0:
+        return "a center, every orbit closed (the energy (3.47)/(3.48) is conserved)"
+    return SHAPES[M.form]
+
+
+def _turns_nowhere(M):
+    """sup over phi2 of m + eps f(phi2) <= 0: with the drag, q1 then falls for ever and every motion escapes."""
+    top = {"sinh": np.inf, "cosh": M.m1 + M.eps1 if M.eps1 < 0 else np.inf,
+           "exp": M.m1 if M.eps1 < 0 else np.inf, "exp-": M.m1 if M.eps1 < 0 else np.inf, "rare": M.m1}[M.form]
+    return top <= 0.0
+
+
+def _every_start_escapes(results, M, starts):
+    stayed = 0
+    for start in starts:
+        sol = solve(Problem(se.plane_middle, list(start), (0.0, 400.0), M.plane_parameters()), "dop853", rtol=1e-12,
+                    atol=1e-14, bound=portrait.BLOW_UP_BOUND)
+        stayed += sol.status != "blow-up"
+    results.hard_case("every_start_escapes", "Starts of the portrait that do not leave every bound in finite time "
+                      "(count; Lee: m + ε f(φ2) < 0 everywhere, so none can turn back)", stayed, 0)
 
 
 def _derivatives(m, form, eps, phi):
@@ -112,23 +171,27 @@ def _derivatives(m, form, eps, phi):
         f = (np.cosh(phi), np.sinh(phi), np.cosh(phi), np.sinh(phi))
     elif form == "exp":
         f = (np.exp(phi),) * 4
-    else:
+    elif form == "exp-":
         e = np.exp(-phi)
         f = (e, -e, e, -e)
+    else:
+        f = (0.0,) * 4
     return (m + eps * f[0], eps * f[1], eps * f[2], eps * f[3])
 
 
 def _singular_points(m, form, eps):
     """q1 = 0 and m + eps f(phi2) = 0; center where F' < 0, saddle where F' > 0, degenerate where F' = 0."""
-    target = -m / eps
+    target = -m / eps if eps else np.inf
     if form == "sinh":
         phis = [float(np.arcsinh(target))]
     elif form == "cosh":
         phis = [] if target < 1.0 else sorted({-float(np.arccosh(target)), float(np.arccosh(target))})
     elif form == "exp":
         phis = [float(np.log(target))] if target > 0 else []
-    else:
+    elif form == "exp-":
         phis = [-float(np.log(target))] if target > 0 else []
+    else:                                           # the rare case: m = 0 (a line of rest points) is refused
+        phis = []
     out = []
     for phi in phis:
         slope = _derivatives(m, form, eps, phi)[1]
@@ -137,27 +200,32 @@ def _singular_points(m, form, eps):
     return out
 
 
-def _separatrix(ax, M, saddles, lo, hi):
-    """Through the saddle; in the exponential form without a saddle, Lee's F (C = 0)."""
-    if M.mu1 == 0.0 or (not saddles and M.form != "exp"):
+def _separatrix(ax, M, saddles, centers, lo, hi):
+    """Through the saddle or degenerate point; without one, Lee's F (C = 0) about the center of the exponential
+    form, or the lines q1 = +-sqrt(m/nu) of the rare case."""
+    bounding = M.form == "exp" and centers or M.form == "rare" and M.m1 > 0
+    if M.mu1 == 0.0 or not (saddles or bounding):
         return
     C = -se.middle_g(saddles[0], M.m1, M.mu1, M.eps1, M.form) * np.exp(-2 * M.mu1 * saddles[0]) if saddles else 0.0
     phi = np.linspace(lo, hi, 3001)
     sq = C * np.exp(2 * M.mu1 * phi) + se.middle_g(phi, M.m1, M.mu1, M.eps1, M.form)
     for sign in (1, -1):
         ax.plot(phi, np.where(sq >= 0, sign * np.sqrt(np.maximum(sq, 0.0)), np.nan), "k-", lw=1.1,
-                label=("separatrix (closed form)" if saddles else "F, C = 0 (closed form)") if sign == 1 else None)
+                label=("separatrix (closed form)" if saddles else "C = 0 (closed form)") if sign == 1 else None)
 
 
-def _escaping_start(M, centers, saddles, hi):
-    """A start that must leave every bound: just left of the saddle (with mu1 <= 0 a saddle occurs only in the
-    cosh form and in plane II, and beyond it to the left the motion runs away), or right of F's turning point."""
+def _escaping_start(M, centers, saddles):
+    """A start that must leave every bound: just left of the saddle or degenerate point (with mu1 <= 0 these occur
+    only in the cosh form and in plane II, and beyond them to the left the motion runs away), right of F's turning
+    point, or anywhere when nothing can turn the motion back."""
+    if M.mu1 >= 0:
+        return None
     if saddles:
         return [saddles[0] - 0.3, 0.0]
-    if M.form == "exp" and M.mu1 < 0 and centers:
+    if M.form == "exp" and centers:
         turn = np.log(M.m1 * (1 - 2 * M.mu1) / (-2 * M.mu1))      # C = 0 at q1 = 0
         return [turn + 0.3, 0.0]
-    return None
+    return [0.0, 0.0] if _turns_nowhere(M) else None
 
 
 def _third_kind(results, M, start):
@@ -171,7 +239,7 @@ def _third_kind(results, M, start):
 
 
 def _overlay(ax, M, starts):
-    worst, hyp_worst = 0.0, 0.0
+    worst, hyp_worst, compared = 0.0, 0.0, 0
     for k, (phi, q1) in enumerate(starts):
         tau = np.linspace(0.0, 12.0, 241)
         full = solve(Problem(se.euler_middle, M.from_plane(phi, q1), (0.0, tau[-1] / M.time_scale),
@@ -181,14 +249,17 @@ def _overlay(ax, M, starts):
                      rtol=1e-13, atol=1e-15, t_eval=tau, bound=portrait.BLOW_UP_BOUND)
         good = np.all(np.isfinite(full.y_eval), axis=1) & np.all(np.isfinite(flat.y_eval), axis=1)
         good &= np.cumprod(np.abs(np.nan_to_num(flat.y_eval[:, 1], nan=np.inf)) < 100.0).astype(bool)
+        # in plane I or II, only while Euler's state is still in the plane to PLANE_DEPARTURE (see plane_departure)
+        good &= np.cumprod(np.nan_to_num(M.plane_departure(full.y_eval), nan=np.inf) < PLANE_DEPARTURE).astype(bool)
         mapped = M.to_plane(full.y_eval[good])
+        compared += int(good.sum())
         worst = max(worst, float(np.max(np.abs(mapped - flat.y_eval[good]) / np.maximum(1.0, np.abs(flat.y_eval[good])))))
         h = se.hyperbola(M.body, full.y_eval[good])
         w0 = full.y_eval[0]
         hyp_worst = max(hyp_worst, float(np.ptp(h) / max(abs(h[0]), w0[0]**2 / M.body.a + w0[2]**2 / M.body.c)))
         ax.plot(mapped[::5, 0], mapped[::5, 1], ".", color="C2", ms=3,
                 label="Euler's equations, mapped" if k == 0 else None)
-    return worst, hyp_worst
+    return worst, hyp_worst, compared / (len(starts) * 241)
 
 
 def _series(results, M, center, nu):
@@ -201,3 +272,174 @@ def _series(results, M, center, nu):
         lambda eta: se.lyapunov_period(k_sq, beta2, beta3, -nu, eta), AMPLITUDES,
         f"Lee {which}: the period (in τ) about the center started at φ2c + η, measured and from the series "
         "(2π/k)(1 + h2η² + h3η³).")
+
+
+def _rare_escape(results, M):
+    """Lee (3.65)-(3.66): below the line q1 = -sqrt(m/nu) the Riccati equation dq1/dtau = m - nu q1^2 blows up at a
+    time known in closed form; Euler's equations then run to an axis of plane II perpendicular to y, because p and
+    r grow like e^{sqrt(ac)|phi|}, faster than q: ln|q| against ln|(p, r)| has slope |mu|/sqrt(ac) = b/(a + c)."""
+    s, nu, bound = np.sqrt(M.m1 / -M.mu1), -M.mu1, portrait.BLOW_UP_BOUND
+    q0 = -1.5 * s
+    flat = solve(Problem(se.plane_middle, [0.0, q0], (0.0, 100.0), M.plane_parameters()), "dop853", rtol=1e-12,
+                 atol=1e-14, bound=bound)
+    closed = (np.log((bound - s) / (bound + s)) - np.log((q0 + s) / (q0 - s))) / (2 * s * nu)
+    results.number("blow_up_time", flat.t, "τ", note=f"from φ2 = 0, q1 = {q0:.4g} (below −√(m/ν)): q1 passes "
+                   f"−{bound:g}")
+    results.number("blow_up_time_closed_form", closed, "τ", note="(1/(2sν)) ln((q1 − s)/(q1 + s)) between the start "
+                   "and the bound, s = √(m/ν)")
+    results.hard_case("rare_blow_up_time", "The blow-up time of the rare case against its closed form (relative)",
+                      abs(flat.t / closed - 1.0) if flat.status == "blow-up" else np.inf, 1e-9)
+    full = solve(Problem(se.euler_middle, M.from_plane(0.0, q0), (0.0, 100.0), M.euler_parameters()), "dop853",
+                 rtol=1e-13, atol=1e-15, bound=1e12, record_steps=True)
+    w = full.y_steps
+    pr, q = np.hypot(w[:, 0], w[:, 2]), np.abs(w[:, 1])
+    late = (pr > 1e4) & (pr < 1e11)
+    slope = float(np.polyfit(np.log(pr[late]), np.log(q[late]), 1)[0])
+    expected = M.body.b / (M.body.a + M.body.c)
+    results.number("escape_exponent", slope, "1", note="slope of ln|q| against ln|(p, r)| as ω leaves every bound "
+                   "(Euler's equations, |(p, r)| from 1e4 to 1e11)")
+    results.number("escape_exponent_expected", expected, "1", note="b/(a + c) = |μ|/√(ac) at |μ| = μ_c: below 1, so "
+                   "ω turns towards plane II's axis perpendicular to y")
+    results.number("escape_q_share", float(q[-1] / np.linalg.norm(w[-1])), "1", note=f"|q|/|ω| when |ω| passes 1e12")
+    results.hard_case("rare_escape_direction", "Lee: below the line ω runs to an axis of plane II perpendicular to y "
+                      "(|slope of ln|q| against ln|(p, r)| − b/(a + c)|)", abs(slope - expected), ESCAPE_EXPONENT_BOUND)
+
+
+def _runaway(results, M):
+    """Unperturbed, no singular point (Lee's Figures 3.4 (d), (e), 3.5 (e)): the exponential term dies away and
+    q1 changes at the constant rate m3; with m3 = 0 (no torque: the force-free separatrix motion) it tends to the
+    finite limit -+sqrt(2E)."""
+    start = np.array([0.0, 0.0])
+    tau = np.array([40.0, 60.0])
+    sol = solve(Problem(se.plane_middle, start, (0.0, tau[-1]), M.plane_parameters()), "dop853", rtol=1e-12,
+                atol=1e-14, t_eval=tau, bound=portrait.BLOW_UP_BOUND)
+    rate = float(np.diff(sol.y_eval[:, 1])[0] / np.diff(tau)[0])
+    results.number("runaway_rate", rate, "1/τ", note="dq1/dτ between τ = 40 and 60, from φ2 = 0, q1 = 0")
+    results.hard_case("runaway_rate", f"Unperturbed, no singular point: q1 changes at the rate {LABELS[M.form]} "
+                      "(|dq1/dτ − m3| late in the motion)", abs(rate - M.m1), RUNAWAY_BOUND)
+    if M.m1 == 0.0:
+        E = float(se.middle_energy(start, 0.0, M.eps1, M.form)[0])
+        limit = float(np.sign(sol.y_eval[-1, 1])) * np.sqrt(2 * E)
+        results.number("limit_q1", float(sol.y_eval[-1, 1]), "1", note="q1 at τ = 60")
+        results.number("limit_q1_closed_form", limit, "1", note="±√(2E): all of the energy in q1 once e^{±φ2} → 0")
+        results.number("limit_q_over_start", float(M.from_plane(0.0, limit)[1] / np.linalg.norm(M.from_plane(0.0, 0.0))),
+                       "1", note="the limiting |q| against |ω0|: ω tends to the y axis with finite modulus")
+        results.hard_case("force_free_limit", "No torque in a plane of the separating polhodes: q1 tends to the "
+                          "finite limit ±√(2E) (|q1(60) − limit|)", abs(float(sol.y_eval[-1, 1]) - limit), RUNAWAY_BOUND)
+
+
+EXCURSION_PERIODS = 10
+
+
+def turning_points(M, y0):
+    """The orbit's turning points (q1 = 0) from the closed form: the roots of C e^{2 mu1 phi2} + g(phi2) on either
+    side of the start, which lies inside the orbit's range of phi2."""
+    from scipy.optimize import brentq
+    C = float(se.middle_invariant(y0, M.m1, M.mu1, M.eps1, M.form)[0])
+
+    def h(phi):
+        if M.mu1 == 0.0:
+            return 2.0 * (C - se.middle_potential(phi, M.m1, M.eps1, M.form))
+        return C * np.exp(2 * M.mu1 * phi) + se.middle_g(phi, M.m1, M.mu1, M.eps1, M.form)
+
+    roots = []
+    for side in (-1.0, 1.0):
+        step = 0.25
+        while h(y0[0] + side * step) > 0:
+            step *= 2.0
+        roots.append(brentq(h, y0[0] + side * step / 2, y0[0] + side * step, xtol=1e-15, rtol=1e-15))
+    return roots, h
+
+
+def closed_form_period(M, y0):
+    """The tau-period 2 int dphi2/|q1| between the turning points, q1^2 from the closed form, by quadrature with
+    phi2 = mid + half sin(theta), which removes the inverse square roots at the ends."""
+    from scipy.integrate import quad
+    (left, right), h = turning_points(M, y0)
+    mid, half = 0.5 * (left + right), 0.5 * (right - left)
+    value, _ = quad(lambda th: half * np.cos(th) / np.sqrt(max(h(mid + half * np.sin(th)), 1e-300)),
+                    -np.pi / 2, np.pi / 2, epsabs=0.0, epsrel=1e-13, limit=200)
+    return 2.0 * value, (left, right)
+
+
+def excursion_start(M, q0):
+    """phi = 0 on the cylinder (p, r) = (alpha1 sqrt a, alpha2 sqrt c), spin q0 about the torque axis; and the
+    largest |omega| of its orbit, at the far turning point of the closed form."""
+    w0 = np.array([M.alpha1 * np.sqrt(M.body.a), q0, M.alpha2 * np.sqrt(M.body.c)])
+    T_tau, turns = closed_form_period(M, M.to_plane(w0)[0])
+    return w0, T_tau / M.time_scale, turns, max(float(np.linalg.norm(M.from_plane(phi, 0.0))) for phi in turns)
+
+
+def _excursion(results, M, q0):
+    """The huge excursions just below mu_c (digest §7.5): from phi = 0 on the cylinder with a large spin q0 about
+    the torque axis, the orbit closes, but p and r swing out like cosh(sqrt(ac) phi) on the way. The turning points
+    and the period come from the closed form; Euler's equations must reach the same points, close after every
+    period and stay on their cylinder. Rounding errors in omega are relative to the largest |omega| the orbit
+    reaches, so the errors are measured against it."""
+    w0, T, (left, right), scale = excursion_start(M, q0)
+    full = solve(Problem(se.euler_middle, w0, (0.0, EXCURSION_PERIODS * T), M.euler_parameters()), "dop853",
+                 rtol=1e-13, atol=1e-15, events=Events(portrait.velocity_zero, 1), record_steps=True)
+    w = full.y_steps
+    sizes = np.linalg.norm(w, axis=1)
+    predicted = np.array([np.linalg.norm(M.from_plane(phi, 0.0)) for phi in (left, right)])
+    reached = np.linalg.norm(full.event_y, axis=1)
+    turning = float(np.max(np.min(np.abs(reached[:, None] - predicted[None, :]), axis=1)) / scale)
+    closure = float(np.linalg.norm(full.y - w0) / scale)
+    hyp = se.hyperbola(M.body, w)
+    hyp_spread = float(np.ptp(hyp) / np.max(w[:, 0] ** 2 / M.body.a + w[:, 2] ** 2 / M.body.c))
+    c1 = se.middle_invariant(M.to_plane(w), M.m1, M.mu1, M.eps1, M.form)
+    fig, ax = new_figure(6.0, 3.2)
+    first = full.t_steps <= 2 * T
+    ax.semilogy(full.t_steps[first], sizes[first], "C2.-", ms=2, lw=0.6, label="|ω|, Euler's equations (steps)")
+    for k, value in enumerate(predicted):
+        ax.axhline(value, color="k", ls="--", lw=0.8, label="turning points, closed form" if k == 0 else None)
+    ax.set_xlabel("t")
+    ax.set_ylabel("|ω|")
+    ax.legend(fontsize=7)
+    results.figure("excursion", fig, f"A huge excursion below the critical drag (ν = {-M.mu1:.3g}, ν_c = "
+                   f"{M.body.b / (2 * (M.body.a + M.body.c)):.3g}): from q0 = {q0:g}, |ω| swings out by a factor "
+                   f"{sizes.max() / sizes[0]:.0f} and back; the first two of the {EXCURSION_PERIODS} periods integrated. "
+                   "Dashed: |ω| at the turning points of the closed form.")
+    results.number("excursion_q0", q0, "1/time", note="the start: φ = 0 on the cylinder, q = q0")
+    results.number("excursion_max_omega", float(sizes.max()), "1/time", note="max |ω| over the orbit (Euler)")
+    results.number("excursion_max_omega_closed_form", scale, "1/time", note="|ω| at the far turning point of the "
+                   "closed form")
+    results.number("excursion_growth", float(sizes.max() / sizes[0]), "1", note="max |ω| against |ω0|")
+    results.number("excursion_period", T, "time", note="2∫dφ2/|q1| between the turning points of the closed form, "
+                   "by quadrature, in t")
+    results.number("excursion_turning_phi2", [float(left), float(right)], "1", note="the turning points of the "
+                   "closed form (q1 = 0)")
+    results.number("excursion_c1_spread", float(np.ptp(c1) / np.max(np.abs(c1))), "1", note="relative spread of C1 "
+                   "from Euler's state: q is known to rounding relative to the largest |ω|, and near its turning "
+                   "points q1 is small")
+    results.hard_case("excursion_turning_points", "Huge excursions below μ_c: |ω| where Euler's equations turn "
+                      "(q = 0) against the closed form's turning points (worst, relative to the largest |ω|)",
+                      turning, 1e-10)
+    results.hard_case("excursion_closes", f"Huge excursions below μ_c: ω back at its start after "
+                      f"{EXCURSION_PERIODS} periods of the closed form (relative to the largest |ω|)", closure, 1e-8)
+    results.hard_case("excursion_cylinder", "Huge excursions below μ_c: spread of p²/a − r²/c along Euler's "
+                      "equations, relative to the largest p²/a + r²/c", hyp_spread, 1e-12)
+
+
+def _settles(results, M):
+    """With the drag and nothing to stop it but the drag (Lee's Figure 3.15; the rare case above its line): from
+    phi2 = 0, q1 = 0 the motion runs off along the axis and q1 tends to sqrt(m/nu), the permanent rotation about +y
+    (p and r -> 0)."""
+    sol = solve(Problem(se.plane_middle, [0.0, 0.0], (0.0, 80.0), M.plane_parameters()), "dop853", rtol=1e-12,
+                atol=1e-14, bound=portrait.BLOW_UP_BOUND)
+    limit = np.sqrt(M.m1 / -M.mu1)
+    results.number("limit_q1", float(sol.y[1]), "1", note="q1 at τ = 80 from φ2 = 0, q1 = 0")
+    results.number("limit_q1_closed_form", float(limit), "1", note="√(m/ν): the rotation about +y, q = √(m/|μ|)")
+    results.hard_case("settles_on_the_axis", "The drag stops the growth: q1 tends to √(m/ν) (|q1(80) − √(m/ν)|)",
+                      abs(float(sol.y[1]) - limit) if sol.status == "success" else np.inf, RUNAWAY_BOUND)
+    # Euler's equations: the rotation about +y is a saddle, and plane II its stable manifold. A rounding error
+    # off the plane grows like e^{phi2} against the in-plane part, so Euler's solution leaves the plane.
+    full = solve(Problem(se.euler_middle, M.from_plane(0.0, 0.0), (0.0, 80.0 / M.time_scale), M.euler_parameters()),
+                 "dop853", rtol=1e-13, atol=1e-15, record_steps=True, bound=portrait.BLOW_UP_BOUND)
+    departure = M.plane_departure(full.y_steps)
+    grown = np.cumprod(departure < 1e-4).astype(bool) & (departure > 1e-11)      # before it has left the plane
+    slope = float(np.polyfit(M.to_plane(full.y_steps[grown])[:, 0], np.log(departure[grown]), 1)[0])
+    results.number("plane_departure_rate", slope, "1", note="d ln(departure)/dφ2 along Euler's equations (departure "
+                   "from 1e-11 to 1e-4): the plane repels like e^{φ2}")
+    results.hard_case("plane_repels", "Plane II repels as ω runs to +y: the departure of Euler's solution from the "
+                      "plane grows like e^{φ2} (|d ln(departure)/dφ2 − 1|)", abs(slope - 1.0), 0.01)
