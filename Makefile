@@ -43,6 +43,7 @@ bench: venv
 	$(BIN)/python benchmarks/solver_speed.py
 	$(BIN)/python benchmarks/chandler_wobble.py
 	$(BIN)/python benchmarks/precession_cycle.py
+	$(BIN)/python benchmarks/sine_cosine_integrals.py
 	$(BIN)/python benchmarks/pipeline_build.py
 
 dist: venv

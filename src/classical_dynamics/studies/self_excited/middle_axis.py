@@ -407,8 +407,10 @@ def _excursion(results, M, q0):
     results.number("excursion_growth", float(sizes.max() / sizes[0]), "1", note="max |ω| against |ω0|")
     results.number("excursion_period", T, "time", note="2∫dφ2/|q1| between the turning points of the closed form, "
                    "by quadrature, in t")
-    results.number("excursion_turning_phi2", [float(left), float(right)], "1", note="the turning points of the "
-                   "closed form (q1 = 0)")
+    results.number("excursion_phi2_left", float(left), "1", note="the left turning point of the closed form (q1 = 0)")
+    results.number("excursion_phi2_right", float(right), "1", note="the right turning point of the closed form")
+    results.number("excursion_closure", closure, "1", note=f"|ω − ω0| after {EXCURSION_PERIODS} periods, relative "
+                   "to the largest |ω|")
     results.number("excursion_c1_spread", float(np.ptp(c1) / np.max(np.abs(c1))), "1", note="relative spread of C1 "
                    "from Euler's state: q is known to rounding relative to the largest |ω|, and near its turning "
                    "points q1 is small")
