@@ -93,6 +93,8 @@ def run(scene, results, quick):
     if cycles:
         _blow_up(results, m1, nu)
         _limit_cycle_period(results, m1, nu)
+        if centers and nu > 0:
+            _cylinder(results, m1, nu, points)
     if data.get("analysis", {}).get("accuracy_cost"):
         from . import accuracy
         if nu == 0.0 and centers:
@@ -362,3 +364,39 @@ def _limit_cycle_bifurcation(results, m1_scene, nu_scene):
                    f"integrated to τ = 300 ({M.size} integrations in one batch call), and the curve ν* from the "
                    "closed form; for m1 ≥ 1 the cycles exist at every ν.")
 
+
+
+def _cylinder(results, m1, nu, points):
+    """Lee's Figure 2.13: phi2 taken mod 2 pi, the plane rolled onto a cylinder (cos phi2, sin phi2, p1). The
+    saddles merge into one S and the centers into one C; F and F1 close on themselves; a closed orbit about C, a
+    start above F1 winding onto F, and one below F1 running away to p1 -> -infinity."""
+    import matplotlib.pyplot as plt
+    fig = plt.figure(figsize=(6.0, 4.6), layout="constrained")
+    ax = fig.add_subplot(projection="3d")
+    theta = np.linspace(0.0, 2 * np.pi, 721)
+    F = se.limit_cycle_p1(theta, m1, nu)
+    ax.plot(np.cos(theta), np.sin(theta), F, color="C3", lw=1.6, label="F (stable)")
+    ax.plot(np.cos(theta), np.sin(theta), -F, color="C3", lw=1.6, ls="--", label="F1 (unstable)")
+    center = next(pt["phi2"] for pt in points if pt["type"] == "center")
+    F1_at_0 = -float(se.limit_cycle_p1(np.zeros(1), m1, nu)[0])
+    starts = {"closed orbit about C": ([center + 0.7, 0.0], 30.0, "C0"),
+              "above F1: winds onto F": ([0.0, F1_at_0 + 0.05], 60.0, "C2"),
+              "below F1: runs away": ([0.0, F1_at_0 - 0.05], 20.0, "0.4")}
+    for label, (start, span, color) in starts.items():
+        tau = np.linspace(0.0, span, 3000)
+        sol = solve(Problem(se.plane_largest, start, (0.0, span), [m1, -nu, 1.0]), "dop853", rtol=1e-10, atol=1e-12,
+                    t_eval=tau, bound=BLOW_UP_BOUND)
+        y = sol.y_eval[np.all(np.isfinite(sol.y_eval), axis=1) & (np.abs(sol.y_eval[:, 1]) < 4.0)]
+        ax.plot(np.cos(y[:, 0]), np.sin(y[:, 0]), y[:, 1], color=color, lw=0.7, label=label)
+    for pt in points[:1] + [q for q in points if q["type"] != points[0]["type"]][:1]:
+        ax.scatter([np.cos(pt["phi2"])], [np.sin(pt["phi2"])], [0.0], color="k", marker="x" if pt["type"] == "saddle"
+                   else "o", s=24, label="S (saddle)" if pt["type"] == "saddle" else "C (center)")
+    ax.set_xlabel("cos φ2")
+    ax.set_ylabel("sin φ2")
+    ax.set_zlabel("p1")
+    ax.set_zlim(-4.0, 4.0)
+    ax.view_init(elev=18, azim=-60)
+    ax.legend(fontsize=6, loc="upper left")
+    results.figure("cylinder", fig, f"Lee's Figure 2.13: the plane (2.10) for m1 = {m1:g}, ν = {nu:g} rolled onto the "
+                   "cylinder φ2 mod 2π. The saddles become one saddle S and the centers one center C; F (stable) and "
+                   "F1 (unstable) close on themselves; above F1 the motion winds onto F, below it p1 runs to −∞.")
