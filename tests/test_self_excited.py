@@ -384,7 +384,7 @@ def test_huge_excursion_below_the_critical_drag_closes():
     from classical_dynamics.studies.self_excited import middle_axis
     M = se.MiddleAxis.with_plane_parameters(se.Body.from_moments([3.0, 2.2, 1.2]), 0.5, -0.3, 0.8, 0.3)
     results = Results("self_excited", "t", "t")
-    middle_axis._excursion(results, M, 10.0)
+    middle_axis._excursion(results, M, middle_axis.excursion_start(M, 10.0))
     assert results.numbers["excursion_growth"]["value"] > 100
     assert all(h["holds"] for h in results.stability)
     assert {h["name"] for h in results.stability} == {"excursion_turning_points", "excursion_closes",

@@ -520,8 +520,7 @@ def middle_c1(y: np.ndarray, m: float, mu1: float, eps: float, form: str) -> np.
 
 def middle_potential(phi, m: float, eps: float, form: str):
     """V(phi2) = -m phi2 - eps F(phi2), F' = f: the potential of the unperturbed planes (mu1 = 0), (3.42)-(3.48)."""
-    F = {"sinh": np.cosh, "cosh": np.sinh, "exp": np.exp, "exp-": lambda x: -np.exp(-x),
-         "rare": lambda x: 0.0 * x}[form](phi)
+    F = {"sinh": np.cosh, "cosh": np.sinh, "exp": np.exp, "exp-": lambda x: -np.exp(-x)}[form](phi)
     return -m * phi - eps * F
 
 

@@ -10,7 +10,7 @@ On F (mu1 = -nu): ten periods from a point of F. The reference is the closed for
 periods phi2 has advanced 20 pi and p1 is back where it started.
 
 A huge excursion just below mu_c (torque along the middle axis): Euler's equations themselves, ten periods of
-an orbit on which |omega| grows a hundredfold; the reference is the start, after ten periods of the closed form.
+an orbit on which |omega| grows by hundreds; the reference is the start, after ten periods of the closed form.
 """
 
 from __future__ import annotations
@@ -95,9 +95,11 @@ def limit_cycle(results, m1, nu, quick):
             "error at the end against the closed form")
 
 
-def huge_excursion(results, M, q0, quick):
-    from .middle_axis import EXCURSION_PERIODS, excursion_start
-    w0, T, _, scale = excursion_start(M, q0)
+def huge_excursion(results, M, start, quick):
+    """start: middle_axis.excursion_start."""
+    from .middle_axis import EXCURSION_PERIODS
+    w0, T, _, sizes = start
+    scale = float(sizes.max())
 
     def error_of(y):
         return {"error": float(np.linalg.norm(np.asarray(y) - w0)) / scale}
@@ -105,7 +107,7 @@ def huge_excursion(results, M, q0, quick):
     problem = Problem(se.euler_middle, w0, (0.0, EXCURSION_PERIODS * T), M.euler_parameters())
     frame = pd.DataFrame(_adaptive_rows(problem, error_of, quick))
     publish(results, frame, "excursion", "error", f"Euler's equations over {EXCURSION_PERIODS} periods of a huge "
-            f"excursion (q0 = {q0:g}, ν = {-M.mu1:.4g} against ν_c = {M.body.b / (2 * (M.body.a + M.body.c)):.4g}): "
+            f"excursion (q0 = {w0[1]:g}, ν = {-M.mu1:.4g} against ν_c = {se.MiddleAxis.plane_nu('nu_c', M.body):.4g}): "
             "distance at the end from the start, relative to the largest |ω| on the orbit.", "relative error at the end")
 
 

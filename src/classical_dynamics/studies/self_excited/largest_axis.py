@@ -365,7 +365,6 @@ def _limit_cycle_bifurcation(results, m1_scene, nu_scene):
                    "closed form; for m1 ≥ 1 the cycles exist at every ν.")
 
 
-
 def _cylinder(results, m1, nu, points):
     """Lee's Figure 2.13: phi2 taken mod 2 pi, the plane rolled onto a cylinder (cos phi2, sin phi2, p1). The
     saddles merge into one S and the centers into one C; F and F1 close on themselves; a closed orbit about C, a
@@ -388,9 +387,9 @@ def _cylinder(results, m1, nu, points):
                     t_eval=tau, bound=BLOW_UP_BOUND)
         y = sol.y_eval[np.all(np.isfinite(sol.y_eval), axis=1) & (np.abs(sol.y_eval[:, 1]) < 4.0)]
         ax.plot(np.cos(y[:, 0]), np.sin(y[:, 0]), y[:, 1], color=color, lw=0.7, label=label)
-    for pt in points[:1] + [q for q in points if q["type"] != points[0]["type"]][:1]:
-        ax.scatter([np.cos(pt["phi2"])], [np.sin(pt["phi2"])], [0.0], color="k", marker="x" if pt["type"] == "saddle"
-                   else "o", s=24, label="S (saddle)" if pt["type"] == "saddle" else "C (center)")
+    for kind, marker, label in (("saddle", "x", "S (saddle)"), ("center", "o", "C (center)")):
+        phi = next(pt["phi2"] for pt in points if pt["type"] == kind)      # one of each: the cylinder merges them
+        ax.scatter([np.cos(phi)], [np.sin(phi)], [0.0], color="k", marker=marker, s=24, label=label)
     ax.set_xlabel("cos φ2")
     ax.set_ylabel("sin φ2")
     ax.set_zlabel("p1")

@@ -123,9 +123,9 @@ def run(scene, results, quick):
         _series(results, M, centers[0], nu)
     if "excursion" in data:
         from . import accuracy
-        q0 = float(data["excursion"]["q0"])
-        _excursion(results, M, q0)
-        accuracy.huge_excursion(results, M, q0, quick)
+        start = excursion_start(M, float(data["excursion"]["q0"]))
+        _excursion(results, M, start)
+        accuracy.huge_excursion(results, M, start, quick)
 
 
 def _shape(M, points):
@@ -259,7 +259,7 @@ def _overlay(ax, M, starts):
         hyp_worst = max(hyp_worst, float(np.ptp(h) / max(abs(h[0]), w0[0]**2 / M.body.a + w0[2]**2 / M.body.c)))
         ax.plot(mapped[::5, 0], mapped[::5, 1], ".", color="C2", ms=3,
                 label="Euler's equations, mapped" if k == 0 else None)
-    return worst, hyp_worst, compared / (len(starts) * 241)
+    return worst, hyp_worst, compared / (len(starts) * tau.size)
 
 
 def _series(results, M, center, nu):
@@ -300,7 +300,7 @@ def _rare_escape(results, M):
                    "(Euler's equations, |(p, r)| from 1e4 to 1e11)")
     results.number("escape_exponent_expected", expected, "1", note="b/(a + c) = |μ|/√(ac) at |μ| = μ_c: below 1, so "
                    "ω turns towards plane II's axis perpendicular to y")
-    results.number("escape_q_share", float(q[-1] / np.linalg.norm(w[-1])), "1", note=f"|q|/|ω| when |ω| passes 1e12")
+    results.number("escape_q_share", float(q[-1] / np.linalg.norm(w[-1])), "1", note="|q|/|ω| when |ω| passes 1e12")
     results.hard_case("rare_escape_direction", "Lee: below the line ω runs to an axis of plane II perpendicular to y "
                       "(|slope of ln|q| against ln|(p, r)| − b/(a + c)|)", abs(slope - expected), ESCAPE_EXPONENT_BOUND)
 
@@ -322,7 +322,7 @@ def _runaway(results, M):
         limit = float(np.sign(sol.y_eval[-1, 1])) * np.sqrt(2 * E)
         results.number("limit_q1", float(sol.y_eval[-1, 1]), "1", note="q1 at τ = 60")
         results.number("limit_q1_closed_form", limit, "1", note="±√(2E): all of the energy in q1 once e^{±φ2} → 0")
-        results.number("limit_q_over_start", float(M.from_plane(0.0, limit)[1] / np.linalg.norm(M.from_plane(0.0, 0.0))),
+        results.number("limit_q_over_start", abs(M.from_plane(0.0, limit)[1]) / np.linalg.norm(M.from_plane(0.0, 0.0)),
                        "1", note="the limiting |q| against |ω0|: ω tends to the y axis with finite modulus")
         results.hard_case("force_free_limit", "No torque in a plane of the separating polhodes: q1 tends to the "
                           "finite limit ±√(2E) (|q1(60) − limit|)", abs(float(sol.y_eval[-1, 1]) - limit), RUNAWAY_BOUND)
@@ -363,25 +363,26 @@ def closed_form_period(M, y0):
 
 
 def excursion_start(M, q0):
-    """phi = 0 on the cylinder (p, r) = (alpha1 sqrt a, alpha2 sqrt c), spin q0 about the torque axis; and the
-    largest |omega| of its orbit, at the far turning point of the closed form."""
+    """phi = 0 on the cylinder (p, r) = (alpha1 sqrt a, alpha2 sqrt c), spin q0 about the torque axis: the start w0,
+    the period T in t, the turning points (phi2) of the closed form and |omega| at each of them."""
     w0 = np.array([M.alpha1 * np.sqrt(M.body.a), q0, M.alpha2 * np.sqrt(M.body.c)])
     T_tau, turns = closed_form_period(M, M.to_plane(w0)[0])
-    return w0, T_tau / M.time_scale, turns, max(float(np.linalg.norm(M.from_plane(phi, 0.0))) for phi in turns)
+    sizes = np.array([np.linalg.norm(M.from_plane(phi, 0.0)) for phi in turns])
+    return w0, T_tau / M.time_scale, turns, sizes
 
 
-def _excursion(results, M, q0):
+def _excursion(results, M, start):
     """The huge excursions just below mu_c (digest §7.5): from phi = 0 on the cylinder with a large spin q0 about
     the torque axis, the orbit closes, but p and r swing out like cosh(sqrt(ac) phi) on the way. The turning points
     and the period come from the closed form; Euler's equations must reach the same points, close after every
     period and stay on their cylinder. Rounding errors in omega are relative to the largest |omega| the orbit
     reaches, so the errors are measured against it."""
-    w0, T, (left, right), scale = excursion_start(M, q0)
+    w0, T, (left, right), predicted = start
+    q0, scale = w0[1], float(predicted.max())      # the largest |omega|, at the far turning point
     full = solve(Problem(se.euler_middle, w0, (0.0, EXCURSION_PERIODS * T), M.euler_parameters()), "dop853",
                  rtol=1e-13, atol=1e-15, events=Events(portrait.velocity_zero, 1), record_steps=True)
     w = full.y_steps
     sizes = np.linalg.norm(w, axis=1)
-    predicted = np.array([np.linalg.norm(M.from_plane(phi, 0.0)) for phi in (left, right)])
     reached = np.linalg.norm(full.event_y, axis=1)
     turning = float(np.max(np.min(np.abs(reached[:, None] - predicted[None, :]), axis=1)) / scale)
     closure = float(np.linalg.norm(full.y - w0) / scale)
@@ -397,7 +398,7 @@ def _excursion(results, M, q0):
     ax.set_ylabel("|ω|")
     ax.legend(fontsize=7)
     results.figure("excursion", fig, f"A huge excursion below the critical drag (ν = {-M.mu1:.3g}, ν_c = "
-                   f"{M.body.b / (2 * (M.body.a + M.body.c)):.3g}): from q0 = {q0:g}, |ω| swings out by a factor "
+                   f"{se.MiddleAxis.plane_nu('nu_c', M.body):.3g}): from q0 = {q0:g}, |ω| swings out by a factor "
                    f"{sizes.max() / sizes[0]:.0f} and back; the first two of the {EXCURSION_PERIODS} periods integrated. "
                    "Dashed: |ω| at the turning points of the closed form.")
     results.number("excursion_q0", q0, "1/time", note="the start: φ = 0 on the cylinder, q = q0")
