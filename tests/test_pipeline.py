@@ -82,6 +82,18 @@ def test_build_writes_the_results_contract(built_repo):
                                                         .read_text())["chain"]["n"])
 
 
+def test_every_hard_case_holds_in_the_quick_build(built_repo):
+    """Each study's named hard cases (results' stability entries) hold in the quick build, scene by scene."""
+    failing, count = [], 0
+    for path in sorted((built_repo / "results").glob("*/*/summary.json")):
+        for case in json.loads(path.read_text()).get("stability", []):
+            count += 1
+            if not case["holds"]:
+                failing.append(f"{path.parent.relative_to(built_repo)}: {case['name']} {case['measured']} > "
+                               f"{case['bound']}")
+    assert count > 100 and not failing, failing
+
+
 def test_nothing_to_do_after_a_build(built_repo):
     out = snakemake(built_repo, "-n", "--config", "quick=1")
     assert "Nothing to be done" in out.stdout + out.stderr

@@ -143,16 +143,13 @@ GOOD = {"title": "x", "body": {"moments": [3.0, 2.2, 1.2]}, "torque_axis": "larg
     (lambda d: (d.update(torque_axis="smallest"), d["plane"].pop("delta")), "plane.delta"),
     (lambda d: d.update(torque_axis="middle"), "plane.alpha"),
     (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[-0.5, -0.5])), "plane.alpha"),
-    (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.5, -0.5], nu="nu_c", m1=0.0)), "plane.m1"),
     (lambda d: (d.update(torque_axis="middle", excursion={"q0": 10.0}), d["plane"].update(alpha=[0.5, 0.5])),
      "excursion"),                                                                  # plane I: not every orbit closes
     (lambda d: (d.update(torque_axis="middle", excursion={"q0": 0.0}), d["plane"].update(alpha=[0.8, 0.3])),
      "excursion.q0"),
     (lambda d: d.update(excursion={"q0": 10.0}), "excursion"),                      # the largest axis has none
     (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.8, 0.3], nu=0.0)), "effects"),
-    (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.5, -0.5], nu=0.5)), "plane.nu"),
     (lambda d: d["plane"].update(nu="nu_c"), "plane.nu"),
-    (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.8, 0.3], nu=0.5)), "plane.nu"),
     (lambda d: d["plane"].update(m1=float("nan")), "plane.m1"),
     (lambda d: d["plane"].update(delta=float("inf")), "plane.delta"),
     (lambda d: d["effects"].pop("quadratic_torque"), "effects"),
@@ -343,6 +340,52 @@ def test_rare_case_riccati_and_escape_to_plane_two():
     pr, q = np.hypot(down.y_steps[:, 0], down.y_steps[:, 2]), np.abs(down.y_steps[:, 1])
     late = (pr > 1e5) & (pr < 1e11)
     assert np.polyfit(np.log(pr[late]), np.log(q[late]), 1)[0] == pytest.approx(body.b / (body.a + body.c), abs=1e-6)
+
+
+def test_rare_case_without_torque_line_of_rest_points():
+    """Lee's Figure 3.18(b), m0 = 0: every point of q1 = 0 is a permanent rotation, above it q1 = q10/(1 + nu q10 tau)
+    and omega -> 0 along +y (slope of ln|q| against ln|(p, r)| exactly b/(a + c) < 1), below it the blow-up time
+    is 1/(nu |q10|) up to the bound. The scene's check no longer refuses it."""
+    from classical_dynamics.studies.results import Results
+    from classical_dynamics.studies.self_excited import middle_axis
+    import matplotlib.pyplot as plt
+    body = se.Body.from_moments([3.0, 2.2, 1.2])
+    M = se.MiddleAxis.with_plane_parameters(body, 0.0, -se.MiddleAxis.plane_nu("nu_c", body), 0.6, -0.6)
+    assert M.form == "rare" and M.m == 0.0 and not middle_axis._turns_nowhere(M)
+    results = Results("self_excited", "t", "t")
+    fig, ax = plt.subplots()
+    middle_axis._rare_rest(ax, results, M)
+    middle_axis._rare_escape(results, M)
+    plt.close(fig)
+    cases = {h["name"]: h for h in results.stability}
+    assert {"rest_line_at_rest", "rare_rest_decay", "rare_rest_direction", "rare_blow_up_time",
+            "rare_escape_direction"} <= set(cases)
+    assert all(h["holds"] for h in cases.values()), cases
+    assert results.numbers["rest_decay_exponent"]["value"] == pytest.approx(body.b / (body.a + body.c), abs=1e-9)
+    nu = -M.mu1                                             # from q1 = -1 to -1e8: 1/nu - 1/(1e8 nu)
+    assert results.numbers["blow_up_time"]["value"] == pytest.approx((1.0 - 1e-8) / nu, rel=1e-10)
+
+
+@pytest.mark.parametrize("alpha,m,form", [((0.8, 0.3), 1.5, "cosh"), ((0.6, -0.6), 2.0, "exp-")])
+def test_resonant_forms_at_nu_one_half(alpha, m, form):
+    """Digest §7 item 8: at nu = 1/2 Lee's (3.19) and (3.63) divide by zero. The resonant closed form (phi2 e^{-phi2}
+    in place of e^{-phi2}/(1 - 2 nu)) is (a) the limit of Lee's as nu -> 1/2 once the homogeneous part
+    c e^{-2 nu phi2}/(2 nu - 1) that blows up with it is taken out, and (b) constant along Euler's equations."""
+    body = se.Body.from_moments([3.0, 2.2, 1.2])
+    M = se.MiddleAxis.with_plane_parameters(body, m, -0.5, *alpha)
+    assert M.form == form and M.eps1 == -1.0
+    phi = np.linspace(-3.0, 3.0, 25)
+    c = -1.0 if form == "cosh" else -2.0                     # the coefficient of e^{-phi2} in 2 eps f
+    for delta in (1e-4, 1e-5):
+        mu1 = -0.5 + delta
+        lee = se.middle_g(phi, m, mu1, -1.0, form) - c * np.exp(2 * mu1 * phi) / (-1.0 - 2 * mu1)
+        resonant = se.middle_g(phi, m, -0.5, -1.0, form) + (m / mu1 - m / -0.5)
+        assert np.max(np.abs(lee - resonant) / (1 + np.abs(resonant))) < 50 * delta
+    start = [0.3, 0.2]
+    tau = np.linspace(0.0, 4.0, 81)
+    full = solve(Problem(se.euler_middle, M.from_plane(*start), (0, 4.0 / M.time_scale), M.euler_parameters()),
+                 rtol=1e-13, atol=1e-15, t_eval=tau / M.time_scale)
+    assert se.middle_invariant_spread(M.to_plane(full.y_eval), M.m1, M.mu1, M.eps1, M.form) < 1e-11
 
 
 @pytest.mark.parametrize("m2,points", [(1.0, ["degenerate"]), (0.5, [])])

@@ -497,19 +497,30 @@ def plane_middle(t, y, p, out):
         out[1] += p[3] * p[1] * y[1] * y[1]
 
 
+# |s - 2 mu1| below which middle_g takes the resonant form. At a distance delta the resonant form misses the equation
+# by about delta phi2^2 e^{s phi2}, and the other form's 1/delta cancels against C with a loss of log10(1/delta) digits.
+RESONANCE = 1e-8
+
+
+def middle_g_terms(phi, m: float, mu1: float, eps: float, form: str) -> list:
+    """The terms of g in q1^2 = C e^{2 mu1 phi2} + g(phi2), the solution of Lee's middle-axis planes
+    dq1/dtau = m + eps f(phi2) + mu1 q1^2 (mu1 != 0), that is (q1^2)' - 2 mu1 q1^2 = 2m + 2 eps f: (3.14) sinh,
+    (3.19) cosh, (3.27)/(3.28), (3.60), (3.62), (3.63) for f = e^{phi2} ('exp') or e^{-phi2} ('exp-'); (3.66) in
+    the rare case (f = 0). Each exponential c e^{s phi2} of 2 eps f contributes c e^{s phi2}/(s - 2 mu1), or, at the
+    resonance 2 mu1 = s (nu = 1/2 in the cosh form or in plane II, where Lee's 1/(1 - 4 mu1^2) and 2/(1 - 2 nu)
+    diverge), c phi2 e^{s phi2}."""
+    exponentials = {"sinh": ((eps, 1.0), (-eps, -1.0)), "cosh": ((eps, 1.0), (eps, -1.0)), "exp": ((2 * eps, 1.0),),
+                    "exp-": ((2 * eps, -1.0),), "rare": ()}[form]
+    terms = [-m / mu1 + 0.0 * phi]
+    for c, s in exponentials:
+        resonant = abs(s - 2 * mu1) < RESONANCE
+        terms.append(c * phi * np.exp(s * phi) if resonant else c * np.exp(s * phi) / (s - 2 * mu1))
+    return terms
+
+
 def middle_g(phi, m: float, mu1: float, eps: float, form: str):
-    """The solution of Lee's middle-axis planes, q1^2 = C e^{2 mu1 phi2} + g(phi2), for
-    dq1/dtau = m + eps f(phi2) + mu1 q1^2 (mu1 != 0): (3.14) sinh, (3.19) cosh (4 mu1^2 != 1),
-    (3.27)/(3.28), (3.60), (3.62), (3.63) for f = e^{s phi2}, s = +1 ('exp') or -1 ('exp-') (2 mu1 != s);
-    (3.66) in the rare case (f = 0)."""
-    if form == "rare":
-        return -m / mu1 + 0.0 * phi
-    if form == "sinh":
-        return -m / mu1 + 2 * eps * (2 * mu1 * np.sinh(phi) + np.cosh(phi)) / (1 - 4 * mu1**2)
-    if form == "cosh":
-        return -m / mu1 + 2 * eps * (np.sinh(phi) + 2 * mu1 * np.cosh(phi)) / (1 - 4 * mu1**2)
-    s = 1.0 if form == "exp" else -1.0
-    return -m / mu1 + 2 * eps * np.exp(s * phi) / (s - 2 * mu1)
+    """g of middle_g_terms, summed."""
+    return sum(middle_g_terms(phi, m, mu1, eps, form))
 
 
 def middle_c1(y: np.ndarray, m: float, mu1: float, eps: float, form: str) -> np.ndarray:
@@ -533,6 +544,18 @@ def middle_energy(y: np.ndarray, m: float, eps: float, form: str = "sinh") -> np
 def middle_invariant(y: np.ndarray, m: float, mu1: float, eps: float, form: str) -> np.ndarray:
     """The plane's first integral: C of middle_c1, or the energy when mu1 = 0."""
     return middle_c1(y, m, mu1, eps, form) if mu1 != 0.0 else middle_energy(y, m, eps, form)
+
+
+def middle_invariant_spread(y: np.ndarray, m: float, mu1: float, eps: float, form: str) -> float:
+    """Spread of middle_invariant along rows y, relative to the size of the terms that make it up."""
+    y = np.atleast_2d(y)
+    phi, q1 = y[:, 0], y[:, 1]
+    values = middle_invariant(y, m, mu1, eps, form)
+    if mu1 != 0.0:
+        size = np.exp(-2 * mu1 * phi) * (q1**2 + sum(np.abs(t) for t in middle_g_terms(phi, m, mu1, eps, form)))
+    else:
+        size = 0.5 * q1**2 + np.abs(m * phi) + np.abs(middle_potential(phi, 0.0, eps, form))
+    return float(np.ptp(values) / np.max(size))
 
 
 def middle_series_period(m1: float, nu: float, eta: float, cosh_form: bool = False) -> float:

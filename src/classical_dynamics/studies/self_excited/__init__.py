@@ -107,15 +107,6 @@ def _check_middle(path, body, data, effects):
                          plane["alpha"])
     nu = MiddleAxis.plane_nu(plane["nu"], body)
     M = MiddleAxis.with_plane_parameters(body, plane["m1"], -nu, alpha1, alpha2)
-    if M.form == "rare" and M.m1 == 0.0:
-        raise SceneError(path, "plane.m1", "m1 != 0 in Lee's rare case (nu = nu_c in plane II: with no torque every "
-                         "point q = 0 is at rest)", plane["m1"])
-    if M.form == "cosh" and (abs(2 * nu - 1.0) < 1e-9 or M.eps1 > 0):
-        raise SceneError(path, "plane.nu", "nu != 1/2 with k2 < 0 above mu_c (the other forms are not built yet)",
-                         plane["nu"])
-    if M.form == "exp-" and abs(2 * nu - 1.0) < 1e-9:
-        raise SceneError(path, "plane.nu", "nu != 1/2 in plane II (2 mu1 = -1 changes the form of (3.62))",
-                         plane["nu"])
     if (nu != 0.0) != ("quadratic_torque" in effects):
         raise SceneError(path, "effects", "quadratic_torque listed exactly when nu != 0", sorted(effects))
     if (M.m != 0.0) != ("body_torque" in effects):

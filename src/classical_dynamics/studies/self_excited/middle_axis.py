@@ -4,7 +4,9 @@ and the motion reduces to one of four plane systems, by the signs of k1 -+ k2:
   cosh (|k2| > |k1|, above mu_c): a saddle and a center for m2 > 1, motions of the third kind (3.56), (4.14);
   exp  (k1 = k2: plane I, alpha1 = alpha2, or |mu| = mu_c): dq1/dtau = m3 - e^phi2 - nu q1^2 (3.58), (4.15);
   exp- (k1 = -k2: plane II, alpha1 = -alpha2): dq1/dtau = m3 - sgn(k1) e^-phi2 - nu q1^2 (3.59), (4.16);
-  rare (k1 = k2 = 0: plane II at nu = nu_c): dq1/dtau = m - nu q1^2 (3.65), with tau = t.
+  rare (k1 = k2 = 0: plane II at nu = nu_c): dq1/dtau = m - nu q1^2 (3.65), with tau = t; with m = 0 a line of rest
+    points.
+At nu = 1/2 (cosh form and plane II) the closed forms take their resonant terms phi2 e^{-phi2} (se.middle_g_terms).
 Each portrait is checked against Euler's equations mapped into the plane, with its period series; each fate Lee
 names (closed orbits, blow-up, escape at a linear rate, a finite limit) is checked where the plane has it.
 """
@@ -17,7 +19,7 @@ from ...models import self_excited as se
 from ...solvers.ode import Events, Problem, solve
 from ..results import new_figure
 from . import portrait
-from .largest_axis import OVERLAY_BOUND
+from .largest_axis import INVARIANT_BOUND, OVERLAY_BOUND
 
 AMPLITUDES = (0.4, 0.2, 0.1, 0.05)
 
@@ -32,6 +34,8 @@ SHAPES = {"sinh": "one center, every trajectory closed",
           "exp-": "the plane of the other separating polhode",
           "rare": "no singular point; above the line q1 = −√(m/ν) the motion tends to q1 = √(m/ν), the permanent "
                   "rotation about +y, and below it ω leaves every bound in finite time"}
+RARE_REST = ("a line of rest points q1 = 0, permanent rotations about axes of plane II; above it q1 falls like "
+             "1/(ντ) and ω → 0 along +y, below it ω leaves every bound in finite time")
 ESCAPE_EXPONENT_BOUND = 1e-3      # hard case: the rare case's escape, ln|q| against ln|(p, r)|, slope b/(a + c)
 RUNAWAY_BOUND = 1e-8              # hard case: the unperturbed escape, dq1/dtau -> m3
 PLANE_DEPARTURE = 1e-10           # the overlay in plane I or II stops where Euler's state has left the plane by this
@@ -54,7 +58,7 @@ def run(scene, results, quick):
                    note="b/(2(a + c)): above it the cosh form (3.56) takes over")
     results.number("cosh_form", int(form == "cosh"), "1", note="1: |k2| > |k1|, Lee (3.56); 0 otherwise")
     results.number("form", form, "", note="Lee's reduction: sinh (3.12), cosh (3.56), exp (k1 = k2: plane I or "
-                   "|μ| = μ_c), exp- (k1 = −k2: plane II)")
+                   "|μ| = μ_c), exp- (k1 = −k2: plane II), rare (k1 = k2 = 0: plane II at ν_c)")
     results.number("M_over_B", M.m, "1/time²", note=f"the constant torque per unit B that gives {name} here")
     results.number("mu0_over_B", M.mu, "1")
     results.number("hyperbola", alpha1**2 - alpha2**2, "1", note="p²/a − r²/c = α1² − α2²")
@@ -94,22 +98,31 @@ def run(scene, results, quick):
     _separatrix(ax, M, saddles, centers, lo, hi)
     if M.mu1 < 0 and _turns_nowhere(M):
         _every_start_escapes(results, M, others)
-    escape = _escaping_start(M, centers, saddles)
-    if escape is not None:
-        _third_kind(results, M, escape)
-    if form == "rare" and M.m1 > 0:
+    if form == "rare":
         _rare_escape(results, M)
+        if M.m1 == 0.0:
+            _rare_rest(ax, results, M)
+    else:
+        escape = _escaping_start(M, centers, saddles)
+        if escape is not None:
+            _third_kind(results, M, escape)
     if M.mu1 == 0.0 and not points:
         _runaway(results, M)
-    if M.mu1 < 0 and not points and not _turns_nowhere(M):
+    if M.mu1 < 0 and not points and M.m1 > 0 and not _turns_nowhere(M):
         _settles(results, M)
-    deviation, hyp, share = _overlay(ax, M, starts[:3] + others[:1] if starts else others[2:6])
+    deviation, hyp, invariant, share = _overlay(ax, M, starts[:3] + others[:1] if starts else others[2:6])
     results.number("overlay_deviation", deviation, "1", note="Euler's equations in the plane against the plane, max")
     results.number("overlay_share", share, "1", note="share of the overlay's samples compared: those before the "
                    f"motion leaves the window (|q1| < 100), every bound, or, in plane I or II, the plane itself (by "
                    f"{PLANE_DEPARTURE:g}; the plane repels as φ2 runs away)")
     results.hard_case("overlay", "Full integrations of Euler's equations, mapped into the plane, on the plane's "
                       "trajectories (max deviation in (φ2, q1))", deviation, OVERLAY_BOUND)
+    integral = "C" if M.mu1 else "E"
+    results.number("invariant_spread", invariant, "1", note=f"{integral}: largest spread along one of Euler's "
+                   "integrations mapped into the plane, relative to the size of its terms")
+    results.hard_case("plane_invariant", f"The plane's first integral ({integral}, Lee's closed form"
+                      f"{', resonant at ν = 1/2' if _resonant(M) else ''}) along Euler's equations mapped into the "
+                      "plane (largest relative spread)", invariant, INVARIANT_BOUND)
     results.hard_case("hyperbolic_cylinder", "The end of ω stays on its hyperbolic cylinder (relative spread of "
                       "p²/a − r²/c, against p²/a + r²/c at the start in the planes, where it is 0)", hyp, 1e-10)
     portrait.finish(ax, points, (lo, hi), q1_max, "q1")
@@ -141,15 +154,25 @@ def _shape(M, points):
         if _turns_nowhere(M):
             return "no singular point: ω runs to the −y axis and leaves every bound in finite time"
         return "no singular point: q1 tends to √(m3/ν), the permanent rotation about the +y axis"
+    if M.form == "rare" and M.m1 <= 0:
+        return (RARE_REST if M.m1 == 0 else "no singular point: from every start ω leaves every bound in finite "
+                "time, towards an axis of plane II perpendicular to y")
     if M.form in ("exp", "exp-") and M.mu1 == 0.0:
         return "a center, every orbit closed (the energy (3.47)/(3.48) is conserved)"
     return SHAPES[M.form]
 
 
+def _resonant(M):
+    """nu = 1/2 in the cosh form or plane II: Lee's closed forms take the resonant terms phi2 e^{-phi2}."""
+    return M.form in ("cosh", "exp-") and abs(1.0 + 2.0 * M.mu1) < se.RESONANCE
+
+
 def _turns_nowhere(M):
-    """sup over phi2 of m + eps f(phi2) <= 0: with the drag, q1 then falls for ever and every motion escapes."""
+    """sup over phi2 of m + eps f(phi2) <= 0: with the drag, q1 then falls for ever and every motion escapes (in the
+    rare case with m = 0, q1 > 0 falls for ever towards the line of rest points q1 = 0 but never crosses it)."""
     top = {"sinh": np.inf, "cosh": M.m1 + M.eps1 if M.eps1 < 0 else np.inf,
-           "exp": M.m1 if M.eps1 < 0 else np.inf, "exp-": M.m1 if M.eps1 < 0 else np.inf, "rare": M.m1}[M.form]
+           "exp": M.m1 if M.eps1 < 0 else np.inf, "exp-": M.m1 if M.eps1 < 0 else np.inf,
+           "rare": M.m1 if M.m1 != 0.0 else np.inf}[M.form]
     return top <= 0.0
 
 
@@ -189,8 +212,8 @@ def _singular_points(m, form, eps):
     elif form == "exp":
         phis = [float(np.log(target))] if target > 0 else []
     elif form == "exp-":
-        phis = [-float(np.log(target))] if target > 0 else []
-    else:                                           # the rare case: m = 0 (a line of rest points) is refused
+        phis = [0.0 - float(np.log(target))] if target > 0 else []
+    else:                                           # the rare case: none, or with m = 0 a whole line (_rare_rest)
         phis = []
     out = []
     for phi in phis:
@@ -239,7 +262,10 @@ def _third_kind(results, M, start):
 
 
 def _overlay(ax, M, starts):
-    worst, hyp_worst, compared = 0.0, 0.0, 0
+    """Euler's equations from each start mapped into the plane against the plane's solution; returns the worst
+    deviation, the spreads of the hyperbola and of the plane's first integral along Euler's rows, and the share of
+    samples compared."""
+    worst, hyp_worst, inv_worst, compared = 0.0, 0.0, 0.0, 0
     for k, (phi, q1) in enumerate(starts):
         tau = np.linspace(0.0, 12.0, 241)
         full = solve(Problem(se.euler_middle, M.from_plane(phi, q1), (0.0, tau[-1] / M.time_scale),
@@ -257,9 +283,10 @@ def _overlay(ax, M, starts):
         h = se.hyperbola(M.body, full.y_eval[good])
         w0 = full.y_eval[0]
         hyp_worst = max(hyp_worst, float(np.ptp(h) / max(abs(h[0]), w0[0]**2 / M.body.a + w0[2]**2 / M.body.c)))
+        inv_worst = max(inv_worst, se.middle_invariant_spread(mapped, M.m1, M.mu1, M.eps1, M.form))
         ax.plot(mapped[::5, 0], mapped[::5, 1], ".", color="C2", ms=3,
                 label="Euler's equations, mapped" if k == 0 else None)
-    return worst, hyp_worst, compared / (len(starts) * tau.size)
+    return worst, hyp_worst, inv_worst, compared / (len(starts) * tau.size)
 
 
 def _series(results, M, center, nu):
@@ -275,18 +302,18 @@ def _series(results, M, center, nu):
 
 
 def _rare_escape(results, M):
-    """Lee (3.65)-(3.66): below the line q1 = -sqrt(m/nu) the Riccati equation dq1/dtau = m - nu q1^2 blows up at a
-    time known in closed form; Euler's equations then run to an axis of plane II perpendicular to y, because p and
-    r grow like e^{sqrt(ac)|phi|}, faster than q: ln|q| against ln|(p, r)| has slope |mu|/sqrt(ac) = b/(a + c)."""
-    s, nu, bound = np.sqrt(M.m1 / -M.mu1), -M.mu1, portrait.BLOW_UP_BOUND
-    q0 = -1.5 * s
+    """Lee (3.65)-(3.66): below the line q1 = -sqrt(m/nu) (m > 0), below q1 = 0 (m = 0) or from anywhere (m < 0) the
+    Riccati equation dq1/dtau = m - nu q1^2 blows up at a time known in closed form; Euler's equations then run to an
+    axis of plane II perpendicular to y, because p and r grow like e^{sqrt(ac)|phi|}, faster than q: ln|q| against
+    ln|(p, r)| has slope |mu|/sqrt(ac) = b/(a + c)."""
+    m, nu, bound = M.m1, -M.mu1, portrait.BLOW_UP_BOUND
+    q0 = -1.5 * np.sqrt(m / nu) if m > 0 else -1.0
     flat = solve(Problem(se.plane_middle, [0.0, q0], (0.0, 100.0), M.plane_parameters()), "dop853", rtol=1e-12,
                  atol=1e-14, bound=bound)
-    closed = (np.log((bound - s) / (bound + s)) - np.log((q0 + s) / (q0 - s))) / (2 * s * nu)
-    results.number("blow_up_time", flat.t, "τ", note=f"from φ2 = 0, q1 = {q0:.4g} (below −√(m/ν)): q1 passes "
-                   f"−{bound:g}")
-    results.number("blow_up_time_closed_form", closed, "τ", note="(1/(2sν)) ln((q1 − s)/(q1 + s)) between the start "
-                   "and the bound, s = √(m/ν)")
+    closed = _riccati_time(m, nu, q0, -bound)
+    results.number("blow_up_time", flat.t, "τ", note=f"from φ2 = 0, q1 = {q0:.4g}: q1 passes −{bound:g}")
+    results.number("blow_up_time_closed_form", closed, "τ", note="dq1/dτ = m − νq1² integrated in closed form "
+                   "between the start and the bound")
     results.hard_case("rare_blow_up_time", "The blow-up time of the rare case against its closed form (relative)",
                       abs(flat.t / closed - 1.0) if flat.status == "blow-up" else np.inf, 1e-9)
     full = solve(Problem(se.euler_middle, M.from_plane(0.0, q0), (0.0, 100.0), M.euler_parameters()), "dop853",
@@ -303,6 +330,55 @@ def _rare_escape(results, M):
     results.number("escape_q_share", float(q[-1] / np.linalg.norm(w[-1])), "1", note="|q|/|ω| when |ω| passes 1e12")
     results.hard_case("rare_escape_direction", "Lee: below the line ω runs to an axis of plane II perpendicular to y "
                       "(|slope of ln|q| against ln|(p, r)| − b/(a + c)|)", abs(slope - expected), ESCAPE_EXPONENT_BOUND)
+
+
+def _riccati_time(m, nu, q_from, q_to):
+    """The time dq/dtau = m - nu q^2 takes from q_from to q_to, both below every rest point: with s^2 = |m|/nu the
+    difference between the ends of -ln((q - s)/(q + s))/(2 s nu) (m > 0), 1/(nu q) (m = 0) or -arctan(q/s)/(s nu)
+    (m < 0)."""
+    s = np.sqrt(abs(m) / nu)
+    if m > 0:
+        F = lambda q: -np.log((q - s) / (q + s)) / (2 * s * nu)            # noqa: E731
+    elif m == 0:
+        F = lambda q: 1.0 / (nu * q)                                       # noqa: E731
+    else:
+        F = lambda q: -np.arctan(q / s) / (s * nu)                         # noqa: E731
+    return float(F(q_to) - F(q_from))
+
+
+def _rare_rest(ax, results, M):
+    """Lee's Figure 3.18(b), the rare case without torque (m0 = 0): dq1/dtau = -nu q1^2, so every point of q1 = 0
+    is at rest (a permanent rotation about an axis of plane II: -b r p + mu |omega|^2 = 0 there at |mu| = mu_c).
+    Above the line q1 = q10/(1 + nu q10 tau) falls to 0 while phi2 runs to +infinity, so p and r decay like
+    e^{-phi2/2} = (1 + nu q10 tau)^{-1/(2 nu)}, faster than q: omega -> 0 along +y. Along Euler's equations ln|q|
+    against ln|(p, r)| has slope 2 nu_c = b/(a + c) exactly."""
+    ax.axhline(0.0, color="C3", lw=1.6, label="line of rest points")
+    drift = 0.0
+    for phi in (-2.0, 0.0, 2.0):
+        w0 = M.from_plane(phi, 0.0)
+        rest = solve(Problem(se.euler_middle, w0, (0.0, 100.0), M.euler_parameters()), "dop853", rtol=1e-13,
+                     atol=1e-15, record_steps=True)
+        drift = max(drift, float(np.max(np.linalg.norm(rest.y_steps - w0, axis=1)) / np.linalg.norm(w0)))
+    results.number("rest_line_drift", drift, "1", note="largest |ω(t) − ω0|/|ω0| over t ≤ 100 from three points of "
+                   "q1 = 0 (φ2 = −2, 0, 2), Euler's equations")
+    results.hard_case("rest_line_at_rest", "Every point of q1 = 0 is a permanent rotation (Euler's equations from "
+                      "three of them: largest relative drift over t ≤ 100)", drift, 1e-12)
+    q10, nu = 1.0, -M.mu1
+    tau = np.linspace(0.0, 200.0, 401)
+    full = solve(Problem(se.euler_middle, M.from_plane(0.0, q10), (0.0, tau[-1]), M.euler_parameters()), "dop853",
+                 rtol=1e-13, atol=1e-15, t_eval=tau)                  # tau = t in the rare case
+    inside = np.cumprod(M.plane_departure(full.y_eval) < PLANE_DEPARTURE).astype(bool)
+    w, t = full.y_eval[inside], tau[inside]
+    decay = float(np.max(np.abs(M.to_plane(w)[:, 1] / (q10 / (1.0 + nu * q10 * t)) - 1.0)))
+    slope = float(np.polyfit(np.log(np.hypot(w[:, 0], w[:, 2])), np.log(np.abs(w[:, 1])), 1)[0])
+    results.number("rest_decay_error", decay, "1", note=f"Euler's q1 against q10/(1 + νq10τ) from φ2 = 0, q10 = "
+                   f"{q10:g}, while the state is in plane II (to τ = {t[-1]:g}; largest relative error)")
+    results.number("rest_decay_exponent", slope, "1", note="slope of ln|q| against ln|(p, r)| along that motion: "
+                   "below 1, so q outlasts p and r and ω → 0 along +y")
+    results.hard_case("rare_rest_decay", "Without torque, above the line of rest points q1 falls like q10/(1 + νq10τ) "
+                      "(Euler's equations against the closed form, largest relative error)", decay, 1e-9)
+    results.hard_case("rare_rest_direction", "Lee: ω → 0 along +y (|slope of ln|q| against ln|(p, r)| − b/(a + c)|)",
+                      abs(slope - M.body.b / (M.body.a + M.body.c)), ESCAPE_EXPONENT_BOUND)
 
 
 def _runaway(results, M):
