@@ -67,11 +67,15 @@ def run(scene, results, quick):
     results.hard_case("plane_invariant", f"The plane's first integral ({'E' if nu == 0 else 'C1'}) along its "
                       "trajectories (largest relative spread)", spreads, INVARIANT_BOUND)
     _draw_separatrices(ax, m1, nu, lo, hi, p1_max, points)
-    deviation, cyl = _overlay(ax, L, body, smallest, m1, nu, lo, hi, points)
+    deviation, cyl, along_euler = _overlay(ax, L, body, smallest, m1, nu, lo, hi, points)
     results.number("overlay_deviation", deviation, "1", note="Euler's equations in the plane against (2.10), max")
     results.number("cylinder_spread", cyl, "1", note="relative spread of q²/b + r²/c along Euler's equations")
     results.hard_case("overlay", "Full integrations of Euler's equations, mapped into the plane, on the plane's "
                       "trajectories (max deviation in (φ2, p1))", deviation, OVERLAY_BOUND)
+    results.number("invariant_spread_euler", along_euler, "1", note=("E" if nu == 0 else "C1") + ": largest "
+                   "spread along one of Euler's integrations mapped into the plane, relative to the size of its terms")
+    results.hard_case("plane_invariant_euler", f"The plane's first integral ({'E' if nu == 0 else 'C1'}) along "
+                      "Euler's equations mapped into the plane (largest relative spread)", along_euler, INVARIANT_BOUND)
     results.hard_case("elliptic_cylinder", "The end of ω stays on its elliptic cylinder (relative spread of "
                       "q²/b + r²/c)", cyl, CYLINDER_BOUND)
     portrait.finish(ax, points, (lo, hi), p1_max, "p1")
@@ -173,15 +177,16 @@ def _draw_separatrices(ax, m1, nu, lo, hi, p1_max, points):
 
 
 def _overlay(ax, L, body, smallest, m1, nu, lo, hi, points):
-    """Three starts integrated in (p, q, r) and in the plane: their largest disagreement after mapping.
-    For the smallest axis the physical equations are integrated and their state read as (r, q, p)."""
+    """Three starts integrated in (p, q, r) and in the plane: their largest disagreement after mapping, and along
+    Euler's integrations the spreads of q^2/b + r^2/c and of the plane's first integral. For the smallest axis the
+    physical equations are integrated and their state read as (r, q, p)."""
     order = [2, 1, 0] if smallest else [0, 1, 2]
     rhs = se.euler_smallest if smallest else se.euler_largest
     physical = np.array([body.a, body.b, body.c, L.m, L.mu])
     centers = [pt["phi2"] for pt in points if pt["type"] == "center"]
     starts = [(centers[0] + 0.7, 0.0)] if centers else []
     starts += [(0.5 * (lo + hi), 1.2), (lo + 0.3 * (hi - lo), -0.6)]
-    worst, cyl_worst = 0.0, 0.0
+    worst, cyl_worst, inv_worst = 0.0, 0.0, 0.0
     tau_span = 6.0
     for k, (phi, p1) in enumerate(starts):
         tau = np.linspace(0.0, tau_span, 121)
@@ -198,9 +203,10 @@ def _overlay(ax, L, body, smallest, m1, nu, lo, hi, points):
         worst = max(worst, float(np.max(np.abs(mapped - flat.y_eval[good]) / scale)))
         cyl = se.cylinder(L.body, reduced)
         cyl_worst = max(cyl_worst, float(np.ptp(cyl) / cyl[0]))
+        inv_worst = max(inv_worst, se.invariant_spread(mapped, m1, -nu))
         ax.plot(mapped[::4, 0], mapped[::4, 1], ".", color="C2", ms=3,
                 label="Euler's equations, mapped" if k == 0 else None)
-    return worst, cyl_worst
+    return worst, cyl_worst, inv_worst
 
 
 def _period(m1, nu, phi_c, eta):
