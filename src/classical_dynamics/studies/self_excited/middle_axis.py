@@ -212,7 +212,7 @@ def _singular_points(m, form, eps):
     elif form == "exp":
         phis = [float(np.log(target))] if target > 0 else []
     elif form == "exp-":
-        phis = [0.0 - float(np.log(target))] if target > 0 else []
+        phis = [0.0 - float(np.log(target))] if target > 0 else []     # 0.0 - : no -0.0 at m3 = 1
     else:                                           # the rare case: none, or with m = 0 a whole line (_rare_rest)
         phis = []
     out = []
