@@ -377,8 +377,10 @@ def test_resonant_forms_at_nu_one_half(alpha, m, form):
     phi = np.linspace(-3.0, 3.0, 25)
     c = -1.0 if form == "cosh" else -2.0                     # the coefficient of e^{-phi2} in 2 eps f
     for delta in (1e-4, 1e-5):
-        mu1 = -0.5 + delta
-        lee = se.middle_g(phi, m, mu1, -1.0, form) - c * np.exp(2 * mu1 * phi) / (-1.0 - 2 * mu1)
+        mu1 = -0.5 + delta                                   # Lee's (3.19) and (3.63) with eps = -1, as printed
+        lee = (-m / mu1 - 2 * (np.sinh(phi) + 2 * mu1 * np.cosh(phi)) / (1 - 4 * mu1**2) if form == "cosh" else
+               -m / mu1 + 2 * np.exp(-phi) / (1 + 2 * mu1))
+        lee -= c * np.exp(2 * mu1 * phi) / (-1.0 - 2 * mu1)
         resonant = se.middle_g(phi, m, -0.5, -1.0, form) + (m / mu1 - m / -0.5)
         assert np.max(np.abs(lee - resonant) / (1 + np.abs(resonant))) < 50 * delta
     start = [0.3, 0.2]
