@@ -502,6 +502,11 @@ def plane_middle(t, y, p, out):
 RESONANCE = 1e-8
 
 
+def resonant(mu1: float, s: float) -> bool:
+    """Whether the exponential e^{s phi2} of the torque resonates with the homogeneous solution e^{2 mu1 phi2}."""
+    return abs(s - 2 * mu1) < RESONANCE
+
+
 def middle_g_terms(phi, m: float, mu1: float, eps: float, form: str) -> list:
     """The terms of g in q1^2 = C e^{2 mu1 phi2} + g(phi2), the solution of Lee's middle-axis planes
     dq1/dtau = m + eps f(phi2) + mu1 q1^2 (mu1 != 0), that is (q1^2)' - 2 mu1 q1^2 = 2m + 2 eps f: (3.14) sinh,
@@ -513,8 +518,7 @@ def middle_g_terms(phi, m: float, mu1: float, eps: float, form: str) -> list:
                     "exp-": ((2 * eps, -1.0),), "rare": ()}[form]
     terms = [-m / mu1 + 0.0 * phi]
     for c, s in exponentials:
-        resonant = abs(s - 2 * mu1) < RESONANCE
-        terms.append(c * phi * np.exp(s * phi) if resonant else c * np.exp(s * phi) / (s - 2 * mu1))
+        terms.append(c * phi * np.exp(s * phi) if resonant(mu1, s) else c * np.exp(s * phi) / (s - 2 * mu1))
     return terms
 
 

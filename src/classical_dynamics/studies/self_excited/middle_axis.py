@@ -164,7 +164,7 @@ def _shape(M, points):
 
 def _resonant(M):
     """nu = 1/2 in the cosh form or plane II: Lee's closed forms take the resonant terms phi2 e^{-phi2}."""
-    return M.form in ("cosh", "exp-") and abs(1.0 + 2.0 * M.mu1) < se.RESONANCE
+    return M.form in ("cosh", "exp-") and se.resonant(M.mu1, -1.0)
 
 
 def _turns_nowhere(M):
