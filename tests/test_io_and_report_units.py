@@ -10,7 +10,7 @@ from classical_dynamics import io  # noqa: E402
 from classical_dynamics.report import claims  # noqa: E402
 from classical_dynamics.report.bib import read_bib  # noqa: E402
 from classical_dynamics.report.numbering import Numbering  # noqa: E402
-from classical_dynamics.report.numbers import format_number  # noqa: E402
+from classical_dynamics.formatting import format_number, shortest, sig_for_tolerance  # noqa: E402
 
 from .conftest import ROOT  # noqa: E402
 
@@ -43,9 +43,35 @@ def test_svg_is_deterministic():
 @pytest.mark.parametrize("value,sig,text", [
     (5.22548114733106, 4, "5.225"), (0.189791, 3, "0.190"), (1.5, 4, "1.500"), (9.99996, 4, "10.00"),
     (2.2e-16, 2, "2.2 × 10⁻¹⁶"), (-0.0237, 3, "−0.0237"), (123456.0, 3, "1.23 × 10⁵"), (True, 4, "yes"),
-    (None, 4, "—"), (0, 4, "0"), (100000, 4, "100 000"), (12, 4, "12")])
+    (None, 4, "—"), (0, 4, "0"), (100000, 4, "100\u202f000"), (12, 4, "12"),
+    # rounding decides the notation: five figures of 99 999.6 are 1.0000 × 10⁵, never 100000
+    (99999.6, 5, "1.0000 × 10⁵"), (99999.4, 5, "99\u202f999"), (0.00099996, 4, "0.001000"),
+    (0.00099994, 4, "9.999 × 10⁻⁴"), (-0.0, 4, "0"), (-1e-300, 2, "−1.0 × 10⁻³⁰⁰"), (12345.67, 6, "12\u202f345.7"),
+    (-9.99999, 3, "−10.0"), (float("inf"), 3, "∞"), (-7, 4, "−7")])
 def test_number_format(value, sig, text):
     assert format_number(value, sig) == text
+
+
+@pytest.mark.parametrize("value,text", [(50.5, "50.5"), (306.0, "306"), (0.00327, "0.00327"), (2.18, "2.18"),
+                                        (433.1, "433.1"), (-46.84, "−46.84"), (1.6e-10, "1.6 × 10⁻¹⁰")])
+def test_source_values_keep_their_printed_digits(value, text):
+    assert shortest(value) == text
+
+
+@pytest.mark.parametrize("check,value,figures", [({"relative": 0.01}, 306.0, 3), ({"relative": 1e-12}, 1.0, 12),
+                                                 ({"absolute": 0.05}, 50.4, 4), ({"absolute": 1.0}, 433.0, 3)])
+def test_claim_digits_follow_the_check(check, value, figures):
+    assert sig_for_tolerance(value, **check) == figures
+
+
+def test_plural_and_units():
+    from classical_dynamics.units import UnknownUnit, unit_text
+    assert unit_text("periods", 1) == "\u2009period" and unit_text("periods", 2) == "\u2009periods"
+    assert unit_text("d", 1) == "\u2009d"                     # a symbol is never pluralized
+    assert unit_text("″/yr", 50.4) == "″/yr"                 # closes up: 50.4″/yr
+    assert unit_text("1") == "" and unit_text(None) == ""
+    with pytest.raises(UnknownUnit):
+        unit_text("furlongs/fortnight")
 
 
 def test_failing_must_hold_claim_names_itself(tmp_path):

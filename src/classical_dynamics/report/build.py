@@ -12,18 +12,23 @@ from collections import defaultdict
 from datetime import datetime, timezone
 from pathlib import Path
 
+import re
+
 import jinja2
 import pandas as pd
+from jinja2.ext import Extension
 from markupsafe import Markup
 
 from .. import io
+from ..formatting import format_number, shortest, sig_for_tolerance
 from ..provenance import git_state, machine, package_versions
 from ..studies import STUDIES
 from . import claims as claims_mod
 from .bib import Citations, format_entry, read_bib
+from .inline_math import plain_text, render_markup, render_text
 from .math import latex_data_uri
 from .numbering import NAMES, Numbering
-from .numbers import format_number, format_unit
+from ..units import unit_text
 
 STUDY_ORDER = ["precession", "chandler", "chains", "self_excited", "solvers"]
 
@@ -69,6 +74,26 @@ class ResultsIndex:
         return "data:image/svg+xml;base64," + base64.b64encode(data).decode("ascii")
 
 
+def unit_html(key, value=None) -> Markup:
+    """A unit from the registry, typeset, with its leading (thin) space: "&#8239;d", "″/yr"."""
+    return Markup(render_text(unit_text(key, value)))
+
+
+class InlineMath(Extension):
+    """$...$ in a template's text becomes typeset HTML once, when the template is compiled."""
+
+    def preprocess(self, source, name, filename=None):
+        return render_markup(source)
+
+
+_CODE = re.compile(r"<code>(.*?)</code>", re.S)
+
+
+def break_points(page: str) -> str:
+    """Identifiers and commands may break only after '/', '_' or '-' (a <wbr> there), never mid-word."""
+    return _CODE.sub(lambda m: "<code>" + re.sub(r"(?<=[/_-])(?=[^<>\s])", "<wbr>", m.group(1)) + "</code>", page)
+
+
 class Report:
     def __init__(self, index: ResultsIndex, root: Path, quick: bool):
         self.index, self.root, self.quick = index, Path(root), quick
@@ -78,10 +103,11 @@ class Report:
         self.env = jinja2.Environment(
             loader=jinja2.FileSystemLoader(str(self.root / "report")),
             autoescape=jinja2.select_autoescape(["html", "j2"]),
-            undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True)
+            undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True, extensions=[InlineMath])
         self.env.filters["fmt"] = lambda v, sig=4: format_number(v, sig)
+        self.env.filters["math"] = lambda text: Markup(render_text(str(text)))
         self.env.globals.update(
-            num=self.num, value=self.value, label_number=self.numbering.label, fig=self.fig, table=self.table, eq=self.eq, ref=self.ref, cite=self.cite,
+            num=self.num, value=self.value, shortest=shortest, claim_digits=self.claim_digits, unit=unit_html, label_number=self.numbering.label, fig=self.fig, table=self.table, eq=self.eq, ref=self.ref, cite=self.cite,
             claims=self.claims, stability=self.stability, scenes=self.scenes_table,
             summary=self.index.summary, rebuild=self.rebuild, study_scenes=self.index.scenes)
 
@@ -102,11 +128,10 @@ class Report:
         if scale != 1.0 and value is not None:
             value = value * scale
         text = format_number(value, sig)
-        unit_text = format_unit(entry.get("unit")) if unit else ""
         title = html.escape(self._provenance_title(study, scene, name), quote=True)
         out = f'<a class="num" href="#prov-{study}-{scene}" title="{title}">{text}</a>'
-        if unit_text:
-            out += f"&#8239;{html.escape(unit_text)}"
+        if unit:
+            out += str(unit_html(entry.get("unit"), value))
         return Markup(out)
 
     def value(self, where: str, name: str, value, sig: int = 4):
@@ -118,9 +143,11 @@ class Report:
 
     # --- numbered things -------------------------------------------------------------------
     def ref(self, label: str) -> Markup:
+        """Figure 3, Table 2, Eq. (12): the report's own numbers; a source's are cited as Lee (3.19)."""
         kind = label.split(":", 1)[0]
-        return Markup(f'<a class="xref" href="#{html.escape(label)}">{NAMES[kind]}&nbsp;'
-                      f'{self.numbering.ref(label)}</a>')
+        number = self.numbering.ref(label)
+        text = f"Eq.&nbsp;({number})" if kind == "eq" else f"{NAMES[kind]}&nbsp;{number}"
+        return Markup(f'<a class="xref" href="#{html.escape(label)}">{text}</a>')
 
     def rebuild(self, study, scene=None):
         return f"snakemake -c all results/{study}/{scene}" if scene else f"snakemake -c all {study}"
@@ -131,18 +158,21 @@ class Report:
         meta = (summary["timings"]["figures"] if timing else summary["figures"])[name]
         number = self.numbering.label(label)
         uri = self.index.svg_uri(study, scene, name, timing)
-        caption = html.escape(meta["caption"])
+        caption = render_text(meta["caption"])
         if extra:
             caption += " " + str(extra)
         note = " Measured times: they vary from run to run." if timing else ""
+        alt = html.escape(plain_text(meta["caption"]), quote=True)
         return Markup(
-            f'<figure id="{label}" class="figure"><img src="{uri}" alt="{html.escape(meta["caption"])}">'
+            f'<figure id="{label}" class="figure"><img src="{uri}" alt="{alt}">'
             f'<figcaption><span class="label">Figure {number}.</span> {caption}{note} '
             f'<span class="source">Scene <code>{study}/{scene}</code>; rebuild: '
             f'<code>{self.rebuild(study, scene)}</code>.</span></figcaption></figure>')
 
     def table(self, where: str, name: str, label: str, columns=None, timing: bool = False, sig: int = 4,
-              rename=None, rows=None):
+              rename=None, rows=None, sigs=None):
+        """A results table: headers as the study declared them ("quantity (unit)", with math), numbers
+        right-aligned to `sig` figures (per column in `sigs`), columns of whole numbers printed as such."""
         study, scene = where.split("/")
         summary = self.index.summary(study, scene)
         meta = (summary["timings"]["tables"] if timing else summary["tables"])[name]
@@ -152,7 +182,14 @@ class Report:
         if columns:
             frame = frame[columns]
         number = self.numbering.label(label)
-        head = "".join(f"<th>{html.escape((rename or {}).get(c, c))}</th>" for c in frame.columns)
+        headers = {**meta.get("headers", {}), **(rename or {})}
+        head, numeric = [], {}
+        for c in frame.columns:
+            numeric[c] = pd.api.types.is_numeric_dtype(frame[c]) and not pd.api.types.is_bool_dtype(frame[c])
+            cls = ' class="n"' if numeric[c] else ""
+            head.append(f"<th{cls}>{render_text(headers.get(c, c.replace('_', ' ')))}</th>")
+        whole = {c: numeric[c] and frame[c].dropna().map(float.is_integer).all() for c in frame.columns
+                 if pd.api.types.is_float_dtype(frame[c])}
         body = []
         for _, row in frame.iterrows():
             cells = []
@@ -162,16 +199,20 @@ class Report:
                     v = None
                 elif hasattr(v, "item"):
                     v = v.item()
-                if isinstance(v, float) and v.is_integer() and c in ("n", "k", "mode", "runs", "cycles"):
+                if isinstance(v, float) and whole.get(c):
                     v = int(v)
-                cells.append(f"<td>{html.escape(format_number(v, sig))}</td>")
+                text = format_number(v, (sigs or {}).get(c, sig))
+                cells.append(f'<td class="n">{html.escape(text)}</td>' if numeric[c]
+                             else f"<td>{render_text(text)}</td>")
             body.append("<tr>" + "".join(cells) + "</tr>")
         note = " Measured times: they vary from run to run." if timing else ""
+        csv = f'results/{study}/{"timings/" if timing else ""}{scene}/{name}.csv'
         return Markup(
             f'<figure id="{label}" class="table"><figcaption><span class="label">Table {number}.</span> '
-            f'{html.escape(meta["caption"])}{note} <span class="source">Scene <code>{study}/{scene}</code>, '
-            f'<code>results/{study}/{"timings/" if timing else ""}{scene}/{name}.csv</code>.</span></figcaption>'
-            f'<table><thead><tr>{head}</tr></thead><tbody>{"".join(body)}</tbody></table></figure>')
+            f'{render_text(meta["caption"])}{note} <span class="source">Scene <code>{study}/{scene}</code>, '
+            f'<code>{csv}</code>.</span></figcaption>'
+            f'<div class="scroll"><table><thead><tr>{"".join(head)}</tr></thead><tbody>{"".join(body)}</tbody>'
+            f'</table></div></figure>')
 
     def eq(self, label: str | None = None, caller=None):
         """{% call eq("eq:name") %}LaTeX{% endcall %}: a displayed, numbered equation."""
@@ -187,6 +228,18 @@ class Report:
         return Markup("[" + ", ".join(links) + "]")
 
     # --- per-study blocks ------------------------------------------------------------------
+    def claim_digits(self, claim) -> int:
+        """The figures a claim's computed value is shown to: what its check supports."""
+        check = claim.check
+        reference = claim.source.get("value")
+        if "relative" in check:
+            return sig_for_tolerance(claim.computed, relative=check["relative"])
+        if "absolute" in check:
+            return sig_for_tolerance(reference if reference else claim.computed, absolute=check["absolute"])
+        if "factor" in check:
+            return 2
+        return 3
+
     def claims(self, study):
         if study not in self.claim_results:
             path = self.root / "report" / "claims" / f"{study}.yaml"
@@ -197,7 +250,9 @@ class Report:
         rows = []
         for scene in self.index.scenes(study):
             for case in self.index.summary(study, scene).get("stability", []):
-                rows.append({"scene": scene, **case})
+                bound, measured = case.get("bound"), case.get("measured")
+                margin = abs(measured) / bound if bound and measured is not None else 0.0
+                rows.append({"scene": scene, **case, "margin": margin})
         return rows
 
     def scenes_table(self, study):
@@ -238,7 +293,7 @@ class Report:
         if self.numbering.missing:
             raise ValueError("unresolved cross-references: " + ", ".join(sorted(self.numbering.missing)))
         claims_mod.require([r for rs in self.claim_results.values() for r in rs])
-        return text
+        return break_points(text)
 
 
 def build_report(results_dir: Path, html_path: Path, pdf_path: Path | None = None, *, quick=False,

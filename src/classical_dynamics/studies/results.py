@@ -17,6 +17,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from .. import io  # noqa: E402
+from .figure_style import STYLE, TEXT_WIDTH_IN  # noqa: E402
+
+# One style for every figure of the report: applied once, when a study first imports this module.
+plt.rcParams.update(STYLE)
 
 
 @dataclass
@@ -42,14 +46,15 @@ class Results:
             entry["note"] = note
         self.numbers[name] = entry
 
-    def table(self, name, frame, caption):
-        self.tables[name] = (frame, caption)
+    def table(self, name, frame, caption, headers=None):
+        """headers: column -> what the reader sees, "quantity (unit)" with $inline math$."""
+        self.tables[name] = (frame, caption, headers or {})
 
     def figure(self, name, fig, caption):
         self.figures[name] = (fig, caption)
 
-    def timing_table(self, name, frame, caption):
-        self.timing_tables[name] = (frame, caption)
+    def timing_table(self, name, frame, caption, headers=None):
+        self.timing_tables[name] = (frame, caption, headers or {})
 
     def timing_figure(self, name, fig, caption):
         self.timing_figures[name] = (fig, caption)
@@ -63,11 +68,12 @@ class Results:
         return {
             "study": self.study, "scene": self.scene, "title": self.title,
             "numbers": self.numbers,
-            "tables": {k: {"file": f"{k}.csv", "caption": c, "columns": list(f.columns)}
-                       for k, (f, c) in self.tables.items()},
+            "tables": {k: {"file": f"{k}.csv", "caption": c, "columns": list(f.columns), "headers": h}
+                       for k, (f, c, h) in self.tables.items()},
             "figures": {k: {"file": f"{k}.svg", "caption": c} for k, (_, c) in self.figures.items()},
             "timings": {
-                "tables": {k: {"file": f"{k}.csv", "caption": c} for k, (_, c) in self.timing_tables.items()},
+                "tables": {k: {"file": f"{k}.csv", "caption": c, "headers": h}
+                           for k, (_, c, h) in self.timing_tables.items()},
                 "figures": {k: {"file": f"{k}.svg", "caption": c} for k, (_, c) in self.timing_figures.items()},
             },
             "stability": self.stability,
@@ -96,25 +102,25 @@ class Results:
     def _result_files(self, provenance):
         files = {"summary.json": io.dumps_json(self.summary()).encode(),
                  "provenance.json": io.dumps_json(provenance).encode()}
-        files.update({f"{k}.csv": io.csv_text(f).encode() for k, (f, _) in self.tables.items()})
+        files.update({f"{k}.csv": io.csv_text(f).encode() for k, (f, _, _) in self.tables.items()})
         files.update({f"{k}.svg": io.svg_bytes(f) for k, (f, _) in self.figures.items()})
         return files
 
     def _timing_files(self, timing_rows):
         import pandas as pd
-        files = {f"{k}.csv": io.csv_text(f).encode() for k, (f, _) in self.timing_tables.items()}
+        files = {f"{k}.csv": io.csv_text(f).encode() for k, (f, _, _) in self.timing_tables.items()}
         files.update({f"{k}.svg": io.svg_bytes(f) for k, (f, _) in self.timing_figures.items()})
         files["run.csv"] = io.csv_text(pd.DataFrame([timing_rows])).encode()
         return files
 
 
-def new_figure(width=6.0, height=3.8):
+def new_figure(width=TEXT_WIDTH_IN * 0.85, height=3.4):
     fig, ax = plt.subplots(figsize=(width, height), layout="constrained")
     ax.grid(True, which="both", alpha=0.25, linewidth=0.6)
     return fig, ax
 
 
-def new_figures(ncols, width=7.2, height=3.4):
+def new_figures(ncols, width=TEXT_WIDTH_IN, height=3.0):
     """A row of ncols panels, styled as new_figure."""
     fig, axes = plt.subplots(1, ncols, figsize=(width, height), layout="constrained")
     for ax in axes:

@@ -1,0 +1,98 @@
+"""The one rule for writing a number as text: significant figures, × 10ⁿ, real minus, grouped digits.
+
+Used by the report (prose, tables, claims) and by the studies' captions, so a number reads the same
+wherever it appears. Plain text out (Unicode), no markup: the report escapes and wraps it.
+"""
+
+from __future__ import annotations
+
+import math
+
+MINUS = "\u2212"           # −
+GROUP = "\u202f"           # narrow no-break space between groups of three digits
+SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+FIXED_RANGE = (-3, 5)      # decimal notation for 10⁻³ <= |x| < 10⁵, powers of ten outside
+
+
+def _group(digits: str) -> str:
+    """12345.678 -> 12 345.678; 9999 stays 9999 (groups only above 9 999)."""
+    whole, _, frac = digits.partition(".")
+    if len(whole) > 4:
+        whole = f"{int(whole):,}".replace(",", GROUP)
+    return whole + ("." + frac if frac else "")
+
+
+def power_of_ten(exponent: int) -> str:
+    return "10" + str(int(exponent)).translate(SUPERSCRIPT)
+
+
+def format_number(value, sig: int = 4, *, fixed_range=FIXED_RANGE) -> str:
+    """value to `sig` significant figures.
+
+    The value is rounded first and its notation chosen from the rounded value, so 99 999.6 at five
+    figures is 1.0000 × 10⁵, never 100000, and 9.9996 at four is 10.00. Integers (counts) print
+    exactly. None prints as an em dash, booleans as yes/no, strings unchanged.
+    """
+    if value is None:
+        return "—"
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, int):
+        text = _group(str(abs(value)))
+        return (MINUS if value < 0 else "") + text
+    if isinstance(value, str):
+        return value
+    value = float(value)
+    if math.isnan(value):
+        return "NaN"
+    if math.isinf(value):
+        return "∞" if value > 0 else MINUS + "∞"
+    if value == 0:
+        return "0"
+    sig = max(int(sig), 1)
+    mantissa, exp = f"{abs(value):.{sig - 1}e}".split("e")
+    exponent = int(exp)                      # exponent of the rounded value
+    sign = MINUS if value < 0 else ""
+    low, high = fixed_range
+    if low <= exponent < high:
+        decimals = max(sig - 1 - exponent, 0)
+        return sign + _group(f"{abs(value):.{decimals}f}")
+    return f"{sign}{mantissa} × {power_of_ten(exponent)}"
+
+
+def format_decimals(value, decimals: int) -> str:
+    """A fixed number of decimals (a tolerance's place), with the same minus and grouping; −0 is 0."""
+    text = f"{float(value):.{max(decimals, 0)}f}"
+    if float(text) == 0:
+        text = text.lstrip("-")
+    return (MINUS if text.startswith("-") else "") + _group(text.lstrip("-"))
+
+
+def shortest(value) -> str:
+    """A value as printed in a source: the shortest decimal that reads back as the same float,
+    so 50.5 stays 50.5 and 306 stays 306 (no digits the source never had)."""
+    if isinstance(value, (bool, str)) or value is None:
+        return format_number(value)
+    if isinstance(value, int) or float(value).is_integer() and abs(value) < 1e15:
+        return format_number(int(value))
+    text = repr(float(value))
+    mantissa, _, exp = text.partition("e")
+    digits = len(mantissa.lstrip("-").replace(".", "").lstrip("0"))
+    return format_number(float(value), digits)
+
+
+def sig_for_tolerance(value, *, relative=None, absolute=None, cap: int = 12, floor: int = 2) -> int:
+    """Significant figures a check supports: a relative tolerance r supports about -log10(r) + 1
+    figures (1 % -> 3), an absolute tolerance a the digits down to a's place."""
+    if relative:
+        figures = math.floor(-math.log10(abs(relative))) + 1
+    elif absolute and value:
+        figures = math.floor(math.log10(abs(value))) - math.floor(math.log10(abs(absolute))) + 1
+    else:
+        return 4
+    return int(min(max(figures, floor), cap))
+
+
+def plural(count, singular: str, plural_form: str | None = None) -> str:
+    """1 year, 2 years, 1.5 years: only exactly one takes the singular."""
+    return singular if count == 1 else (plural_form or singular + "s")

@@ -1,0 +1,179 @@
+"""The report typeset as a reader meets it: no raw markup, nothing past the margin, legible figures.
+
+Real renders only: the HTML's visible text as headless Chromium lays it out (laptop and phone widths),
+the PDF's text from pdftotext and its pages as pixels from pdftoppm, the figures' SVG as printed.
+"""
+
+import base64
+import hashlib
+import html as html_lib
+import re
+import subprocess
+
+import numpy as np
+import pytest
+from PIL import Image
+
+from classical_dynamics.report.inline_math import MathError, render_text
+from classical_dynamics.studies.figure_style import MAX_HEIGHT_IN, MIN_FONT_PT, TEXT_WIDTH_IN
+
+CHROMIUM = "/usr/bin/chromium"
+FLAGS = ["--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
+         "--disable-component-update", "--disable-sync"]
+
+# What must never reach a reader: TeX and the pseudo-markup that stands in for it.
+RAW = {
+    "TeX superscript": r"\^\{", "TeX subscript": r"_\{", "backslash command": r"\\[A-Za-z]+",
+    "dollar": r"\$", "TeX quotes": r"``|''", "TeX accent": r"\\['`\"^~]",
+}
+# In running text (not code): x_c-style subscripts and 1e-10-style numbers.
+PROSE_ONLY = {
+    "pseudo-subscript": r"(?<![\w/.-])[A-Za-zα-ωΑ-Ω]{1,3}_[A-Za-z0-9]{1,3}(?![\w/.-])",
+    "e-notation": r"(?<![\w.])\d+(\.\d+)?e[-+]?\d{1,3}(?!\w)",
+}
+
+VISIBLE_PROSE = """() => {
+  const body = document.body.cloneNode(true);
+  body.querySelectorAll('code, pre, script, style').forEach(e => e.remove());
+  document.documentElement.appendChild(body); const text = body.innerText; body.remove(); return text; }"""
+
+
+def findings(text, patterns):
+    return {name: sorted(set(re.findall(f"(?:{p})", text)))[:5] for name, p in patterns.items()
+            if re.search(p, text)}
+
+
+# --- inline math, unit level ----------------------------------------------------------------------
+@pytest.mark.parametrize("source,html", [
+    (r"$\nu_\mathrm{c}$", '<span class="math"><i>ν</i><sub>c</sub></span>'),
+    (r"$m_1$", '<span class="math"><i>m</i><sub>1</sub></span>'),
+    (r"$(1 - e^2)^{-3/2}$", '<span class="math">(1 − <i>e</i><sup>2</sup>)<sup>−3/2</sup></span>'),
+    (r"$\dot\psi$", '<span class="math"><i>ψ̇</i></span>'),
+    (r"$\tfrac12 p_1^2$", '<span class="math">½ <i>p</i><sub>1</sub><sup>2</sup></span>'),
+    ("a < b & $x$", 'a &lt; b &amp; <span class="math"><i>x</i></span>'),
+])
+def test_inline_math(source, html):
+    assert render_text(source) == html
+
+
+@pytest.mark.parametrize("source", [r"$\nosuchcommand$", r"$x^{2$", r"$x}$"])
+def test_inline_math_refuses_what_it_cannot_typeset(source):
+    with pytest.raises(MathError):
+        render_text(source)
+
+
+# --- the built report -----------------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def browser_texts(built_repo):
+    """Visible text and layout facts of the HTML in Chromium at a laptop's and a phone's width."""
+    from playwright.sync_api import sync_playwright
+    out = {}
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        for name, width in (("laptop", 1280), ("phone", 390)):
+            page = browser.new_page(viewport={"width": width, "height": 900})
+            page.goto((built_repo / "results/report.html").as_uri(), wait_until="load")
+            out[name] = {
+                "text": page.inner_text("body"),
+                "prose": page.evaluate(VISIBLE_PROSE),
+                "scroll_width": page.evaluate("document.documentElement.scrollWidth"),
+                "width": width,
+                # boxes wider than the page that are not inside a box that scrolls on its own
+                "loose": page.evaluate("""() => Array.from(document.querySelectorAll(
+                      'table, figure, img, .equation, pre, p')).filter(e => {
+                      const r = e.getBoundingClientRect();
+                      if (r.right <= window.innerWidth + 1) return false;
+                      for (let a = e.parentElement; a; a = a.parentElement) {
+                        const o = getComputedStyle(a).overflowX; if (o === 'auto' || o === 'scroll') return false; }
+                      return true; }).map(e => e.tagName + '#' + (e.id || e.className))"""),
+            }
+            page.close()
+        browser.close()
+    return out
+
+
+@pytest.fixture(scope="module")
+def pdf_text(built_repo):
+    pdf = built_repo / "results/report.pdf"
+    return subprocess.run(["pdftotext", str(pdf), "-"], capture_output=True, text=True, check=True).stdout
+
+
+@pytest.mark.slow
+def test_html_shows_no_raw_markup(browser_texts):
+    laptop = browser_texts["laptop"]
+    assert findings(laptop["text"], RAW) == {}
+    assert findings(laptop["prose"], PROSE_ONLY) == {}
+
+
+@pytest.mark.slow
+def test_pdf_shows_no_raw_markup(pdf_text):
+    assert findings(pdf_text, RAW) == {}
+    assert findings(pdf_text, {"e-notation": PROSE_ONLY["e-notation"]}) == {}
+
+
+@pytest.mark.slow
+def test_nothing_wider_than_a_phone_without_its_own_scroll_box(browser_texts):
+    phone = browser_texts["phone"]
+    assert phone["loose"] == []
+    assert phone["scroll_width"] <= phone["width"] + 1
+
+
+@pytest.mark.slow
+def test_nothing_past_the_pdf_text_block(built_repo, tmp_path):
+    """No ink in the left or right margin (A4, 18 mm margins) between the running head and the folio."""
+    dpi = 60
+    subprocess.run(["pdftoppm", "-r", str(dpi), "-gray", str(built_repo / "results/report.pdf"),
+                    str(tmp_path / "p")], check=True)
+    mm = dpi / 25.4
+    offenders = []
+    for page in sorted(tmp_path.glob("p-*.pgm")):
+        ink = np.asarray(Image.open(page)) < 180
+        top, bottom = int(22 * mm), int((297 - 24) * mm)
+        left, right = int((18 - 1.5) * mm), int((210 - 18 + 1.5) * mm)
+        band = ink[top:bottom]
+        if band[:, :left].any() or band[:, right:].any():
+            offenders.append(page.name)
+    assert offenders == []
+
+
+@pytest.mark.slow
+def test_identifiers_and_commands_break_only_at_separators(built_repo, pdf_text):
+    """Every piece of a <code> between /, _, - and spaces appears unbroken in the PDF's text
+    ("snakemake", never "sn" and "akemake" on two lines)."""
+    page = (built_repo / "results/report.html").read_text(encoding="utf-8")
+    pieces = set()
+    for code in re.findall(r"<code>(.*?)</code>", page, re.S):
+        text = html_lib.unescape(re.sub(r"<[^>]+>", "", code))
+        pieces.update(p for p in re.split(r"[/_\-\s.,:;()<>\[\]]+", text) if len(p) >= 5)
+    assert len(pieces) > 20
+    assert [p for p in sorted(pieces) if p not in pdf_text] == []
+
+
+def _figures(page_html):
+    for uri in re.findall(r'<figure id="[^"]+" class="figure"><img src="data:image/svg\+xml;base64,([^"]+)"',
+                          page_html):
+        yield base64.b64decode(uri).decode("utf-8")
+
+
+@pytest.mark.slow
+def test_no_two_figures_are_the_same(built_repo):
+    page = (built_repo / "results/report.html").read_text(encoding="utf-8")
+    hashes = [hashlib.sha256(svg.encode()).hexdigest() for svg in _figures(page)]
+    assert len(hashes) >= 10 and len(hashes) == len(set(hashes))
+
+
+@pytest.mark.slow
+def test_figure_text_is_legible_at_print_size(built_repo):
+    """Every text of every figure at least 7 pt as the PDF prints it (scaled into the text block)."""
+    page = (built_repo / "results/report.html").read_text(encoding="utf-8")
+    small = []
+    for svg in _figures(page):
+        width, height = (float(v) for v in re.search(r'width="([\d.]+)pt" height="([\d.]+)pt"', svg).groups())
+        scale = min(1.0, TEXT_WIDTH_IN * 72 / width, MAX_HEIGHT_IN * 72 / height)
+        for group in re.findall(r'<g id="text_\d+">(.*?)</g>\s*</g>', svg, re.S):
+            label = re.search(r"<!-- (.*?) -->", group)
+            sizes = [100 * float(s) for s in re.findall(r"scale\(([\d.]+) -[\d.]+\)", group)]
+            if sizes and max(sizes) * scale < MIN_FONT_PT - 0.05:
+                small.append((label.group(1) if label else "?", round(max(sizes) * scale, 1)))
+    assert small == []
