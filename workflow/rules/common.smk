@@ -30,8 +30,8 @@ def code(*parts):
     return files
 
 
-SHARED_CODE = code("solvers", "models", "scenes", "io.py", "provenance.py", "cli.py",
-                   "studies/__init__.py", "studies/results.py")
+SHARED_CODE = code("solvers", "models", "scenes", "io.py", "provenance.py", "cli.py", "formatting.py",
+                   "units.py", "studies/__init__.py", "studies/results.py", "studies/figure_style.py")
 
 
 # Validate every scene of every study before any job is scheduled: a bad scene stops the

@@ -5,7 +5,7 @@ rule report_html:
     input:
         results=[out for study in STUDIES for out in scene_outputs(study)],
         templates=sorted(str(p) for p in Path("report").rglob("*") if p.is_file()),
-        code=code("report"),
+        code=code("report", "formatting.py", "units.py"),
     output:
         "results/report.html",
     params:
