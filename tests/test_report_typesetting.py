@@ -45,12 +45,12 @@ def findings(text, patterns):
 
 # --- inline math, unit level ----------------------------------------------------------------------
 @pytest.mark.parametrize("source,html", [
-    (r"$\nu_\mathrm{c}$", '<span class="math"><i>ν</i><sub>c</sub></span>'),
-    (r"$m_1$", '<span class="math"><i>m</i><sub>1</sub></span>'),
-    (r"$(1 - e^2)^{-3/2}$", '<span class="math">(1 − <i>e</i><sup>2</sup>)<sup>−3/2</sup></span>'),
-    (r"$\dot\psi$", '<span class="math"><i>ψ̇</i></span>'),
-    (r"$\tfrac12 p_1^2$", '<span class="math">½ <i>p</i><sub>1</sub><sup>2</sup></span>'),
-    ("a < b & $x$", 'a &lt; b &amp; <span class="math"><i>x</i></span>'),
+    (r"$\nu_\mathrm{c}$", '<span class=math><i>ν</i><sub>c</sub></span>'),
+    (r"$m_1$", '<span class=math><i>m</i><sub>1</sub></span>'),
+    (r"$(1 - e^2)^{-3/2}$", '<span class=math>(1 − <i>e</i><sup>2</sup>)<sup>−3/2</sup></span>'),
+    (r"$\dot\psi$", '<span class=math><i>ψ̇</i></span>'),
+    (r"$\tfrac12 p_1^2$", '<span class=math>½ <i>p</i><sub>1</sub><sup>2</sup></span>'),
+    ("a < b & $x$", 'a &lt; b &amp; <span class=math><i>x</i></span>'),
 ])
 def test_inline_math(source, html):
     assert render_text(source) == html

@@ -159,7 +159,7 @@ class _Parser:
         if command in SPACES:
             return SPACES[command]
         if command in FUNCTIONS:
-            return f'<span class="fn">{command}</span>\u2009'
+            return f'<span class=fn>{command}</span>\u2009'
         if command in IGNORED:
             return ""
         if command in UPRIGHT:
@@ -177,7 +177,7 @@ class _Parser:
             return f"{inner}{mark}"
         if command == "sqrt":
             inner = self.argument(mode)
-            return f'√<span class="radicand">{inner}</span>'
+            return f'√<span class=radicand>{inner}</span>'
         if command in ("frac", "tfrac", "dfrac"):
             num_source, den_source = self._peek_group(), None
             numerator = self.argument(mode)
@@ -210,9 +210,10 @@ class _Parser:
 
 
 def math_html(source: str) -> str:
-    """One $...$ body as HTML."""
+    """One $...$ body as HTML. Attributes go unquoted, so the HTML can stand inside a quoted string
+    of a template (a caption in a Jinja list) without ending it."""
     parser = _Parser(source.strip())
-    return f'<span class="math">{parser.sequence("math")}</span>'
+    return f'<span class=math>{parser.sequence("math")}</span>'
 
 
 def render_text(text: str) -> str:
