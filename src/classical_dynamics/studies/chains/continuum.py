@@ -6,6 +6,7 @@ import numpy as np
 import pandas as pd
 from scipy import special
 
+from ...formatting import format_number
 from ...models.chains import continuum_frequencies, frequency_unit
 from ...solvers.special import bessel_j0_zeros
 from ...solvers.spectral import hanging_chain_sigma
@@ -38,7 +39,7 @@ def run(scene, results, quick):
         intervals = analysis["spectral_check"]["intervals"]
         sigma = hanging_chain_sigma(intervals, k)          # sigma tau_1 with tau_1 = 1
         computed = sigma / 2 * np.sqrt(effects["gravity"]["g_m_per_s2"] / length)
-        method = f"Chebyshev collocation in tau = 2 sqrt(x/g), {intervals} intervals"
+        method = f"Chebyshev collocation in $\\tau = 2\\sqrt{{x/g}}$, {intervals} intervals"
     else:
         computed = exact
         method = "closed form"
@@ -51,18 +52,22 @@ def run(scene, results, quick):
         return
     j = bessel_j0_zeros(k)
     results.number("gravest_period_sqrt_l_over_g", 4 * np.pi / j[0], "√(l/g)",
-                   note="2 pi / omega_1 = 4 pi / j_01")
+                   note="$2\\pi/\\omega_1 = 4\\pi/j_{01}$")
     results.number("gravest_period_s", 4 * np.pi / j[0] * np.sqrt(length / effects["gravity"]["g_m_per_s2"]), "s")
-    results.number("lamb_roots_over_pi", j / np.pi, "1", note="sigma tau_1 / pi, Lamb Art. 90 (23)")
+    results.number("lamb_roots_over_pi", j / np.pi, "1", note="$\\sigma\\tau_1/\\pi$, Lamb Art. 90 (23)")
     results.number("frequency_ratio_2_to_1", j[1] / j[0], "1")
     results.number("second_mode_node_x_over_l", (j[0] / j[1]) ** 2, "x/l from the free end",
-                   note="J0(j_02 sqrt(x/l)) = 0 where j_02 sqrt(x/l) = j_01")
+                   note="$J_0(j_{02}\\sqrt{x/l}) = 0$ where $j_{02}\\sqrt{x/l} = j_{01}$")
     table = pd.DataFrame({
         "k": np.arange(1, k + 1), "j0k": j, "j0k_over_pi": j / np.pi,
         "sigma2_l_over_g": (j / 2) ** 2, "period_sqrt_l_over_g": 4 * np.pi / j,
         "spectral_relative_error": rel})
-    results.table("continuum_modes", table, "Modes of the continuous hanging chain: zeros of J0, "
-                  "frequencies σ²l/g = (j/2)², periods, and the collocation solution's relative error.")
+    results.table("continuum_modes", table, "Modes of the continuous hanging chain: the zeros $j_{0k}$ of $J_0$, "
+                  "the frequencies $\\sigma^2 l/g = (j_{0k}/2)^2$, the periods, and the relative error of the "
+                  "collocation solution's frequencies.",
+                  headers={"k": "$k$", "j0k": "$j_{0k}$", "j0k_over_pi": "$j_{0k}/\\pi$",
+                           "sigma2_l_over_g": "$\\sigma^2 l/g$", "period_sqrt_l_over_g": "period ($\\sqrt{l/g}$)",
+                           "spectral_relative_error": "collocation, relative error"})
     _mode_shape_figure(results, j)
     if "rayleigh" in analysis:
         _rayleigh(results, analysis["rayleigh"], (j[0] / 2) ** 2, quick)
@@ -71,21 +76,23 @@ def run(scene, results, quick):
 
 
 def _mode_shape_figure(results, j):
-    fig, ax = new_figure(4.8, 4.6)
+    fig, ax = new_figure(4.4, 4.0)
     x = np.linspace(0, 1, 801)
     for idx, style in zip(range(3), ("-", "--", "-.")):
         y = special.j0(j[idx] * np.sqrt(x))
-        ax.plot(y / np.max(np.abs(y)), x, style, label=f"mode {idx + 1}: σ²l/g = {(j[idx] / 2) ** 2:.4f}")
+        ax.plot(y / np.max(np.abs(y)), x, style, label=f"mode {idx + 1}: $\\sigma^2 l/g$ = "
+                f"{format_number((j[idx] / 2) ** 2, 4)}")
     node = (j[0] / j[1]) ** 2
     ax.axhline(node, color="0.4", lw=0.8)
-    ax.annotate(f"node of mode 2, x/l = {node:.4f}", (0.02, node), xytext=(0.05, node + 0.06), fontsize=8)
+    ax.annotate(f"node of mode 2, $x/l$ = {format_number(node, 4)}", (0.02, node), xytext=(0.05, node + 0.06))
     ax.axvline(0, color="0.2", lw=0.6)
-    ax.set_xlabel("horizontal displacement (normalized)")
-    ax.set_ylabel("height above the free end, x / l")
+    ax.set_xlabel("horizontal displacement (largest = 1)")
+    ax.set_ylabel("height above the free end, $x/l$")
     ax.set_ylim(0, 1)
-    ax.legend(fontsize=8, loc="lower left")
-    results.figure("mode_shapes", fig, "The first three modes of the hanging chain, y ∝ J0(2σ√(x/g)), "
-                   "drawn as in Lamb's Fig. 58 (suspension at the top); the node of mode 2 is marked.")
+    ax.legend(loc="upper right")
+    results.figure("mode_shapes", fig, "The first three modes of the hanging chain, $y \\propto J_0(2\\sigma"
+                   "\\sqrt{x/g})$ with $x$ the height above the free end, drawn as in Lamb's Fig. 58 (suspension at "
+                   "the top). Mode $k$ has $k - 1$ nodes; the node of mode 2 is marked.")
 
 
 def _rayleigh(results, spec, exact1, quick):
@@ -96,31 +103,37 @@ def _rayleigh(results, spec, exact1, quick):
     results.number("rayleigh_rigid_bar_sigma2_l_over_g", rayleigh_quotient(0.0), "g/l", note="beta = 0")
     results.number("rayleigh_rigid_bar_period_sqrt_l_over_g", 2 * np.pi / np.sqrt(rayleigh_quotient(0.0)),
                    "√(l/g)")
-    results.number("rayleigh_best_beta", beta_star, "1", note="stationary point, 6β² + 4β − 5 = 0")
+    results.number("rayleigh_best_beta", beta_star, "1", note="stationary point, $6\\beta^2 + 4\\beta - 5 = 0$")
     results.number("rayleigh_best_sigma2_l_over_g", rayleigh_quotient(beta_star), "g/l")
     results.number("rayleigh_best_period_sqrt_l_over_g", 2 * np.pi / np.sqrt(rayleigh_quotient(beta_star)),
                    "√(l/g)")
     results.number("rayleigh_best_relative_excess", rayleigh_quotient(beta_star) / exact1 - 1, "1",
-                   note="over the exact (j_01/2)^2")
+                   note="over the exact $(j_{01}/2)^2$")
     results.number("rayleigh_min_excess_over_scan", float(np.min(f - exact1)), "g/l",
-                   note=f"min over {beta.size} values of beta in [{spec['beta_min']}, {spec['beta_max']}]")
-    results.number("ritz_2x2_sigma2_l_over_g", ritz, "g/l", note="basis {s, s^2}")
-    results.hard_case("rayleigh_upper_bound", "Rayleigh's quotient never falls below the exact gravest σ² "
-                      "(minimum of exact − quotient over the β scan; must be ≤ 0)",
+                   note=f"smallest over {beta.size} values of $\\beta$ from "
+                        f"{format_number(float(spec['beta_min']), 3)} to {format_number(float(spec['beta_max']), 3)}")
+    results.number("ritz_2x2_sigma2_l_over_g", ritz, "g/l", note="basis $s$, $s^2$")
+    results.hard_case("rayleigh_upper_bound", "Rayleigh's quotient never falls below the exact gravest "
+                      "$\\sigma^2$ (largest excess of the exact value over the quotient on the $\\beta$ scan, "
+                      "floored at 0)",
                       float(max(0.0, np.max(exact1 - f))), 0.0, "g/l")
     results.table("rayleigh_scan", pd.DataFrame({"beta": beta, "sigma2_l_over_g": f}),
-                  "Rayleigh's quotient for y = s + βs²/l over a range of β.")
-    fig, ax = new_figure(5.6, 3.6)
-    ax.plot(beta, f, label="Rayleigh quotient, y = s + βs²/l")
-    ax.axhline(exact1, color="k", lw=0.9, ls="--", label=f"exact (j₀₁/2)² = {exact1:.6f}")
-    ax.plot([0], [rayleigh_quotient(0.0)], "o", label="β = 0: rigid bar, 3/2")
-    ax.plot([beta_star], [rayleigh_quotient(beta_star)], "s", label=f"best β = {beta_star:.5f}")
-    ax.set_xlabel("β")
-    ax.set_ylabel("σ² l / g")
+                  "Rayleigh's quotient for the assumed type $y = s + \\beta s^2/l$ over a range of $\\beta$.",
+                  headers={"beta": "$\\beta$", "sigma2_l_over_g": "$\\sigma^2 l/g$"})
+    fig, ax = new_figure(5.2, 3.2)
+    ax.plot(beta, f, color="C4", label=r"Rayleigh quotient, $y = s + \beta s^2/l$")
+    ax.axhline(exact1, color="k", lw=0.9, ls="--", label=f"exact $(j_{{01}}/2)^2$ = {format_number(exact1, 6)}")
+    ax.plot([0], [rayleigh_quotient(0.0)], "o", color="C5", label=r"$\beta = 0$: rigid bar, 3/2")
+    ax.plot([beta_star], [rayleigh_quotient(beta_star)], "s", color="C3",
+            label=f"stationary $\\beta$ = {format_number(beta_star, 5)}")
+    ax.set_xlabel(r"$\beta$")
+    ax.set_ylabel(r"$\sigma^2 l/g$")
     ax.set_ylim(exact1 - 0.05, 2.0)
-    ax.legend(fontsize=8)
-    results.figure("rayleigh", fig, "Rayleigh's estimate of the gravest frequency as a function of the "
-                   "assumed type's β: always above the exact value, touching it closest at the stationary β.")
+    ax.legend(loc="upper right")
+    results.figure("rayleigh", fig, "Rayleigh's estimate $\\sigma^2 l/g$ of the gravest frequency for the assumed "
+                   "type $y = s + \\beta s^2/l$ ($s$ from the top) as a function of $\\beta$: always above the exact "
+                   "value (dashed), closest to it at the stationary $\\beta$, "
+                   f"{format_number(rayleigh_quotient(beta_star) / exact1 - 1, 2)} above it in relative terms.")
 
 
 def _high_index_zeros(results, k_max):
@@ -132,6 +145,6 @@ def _high_index_zeros(results, k_max):
     gap = np.abs(zeros - mcmahon_j0_zero(k)) / zeros
     tail = k >= 50
     bound = float(np.max(0.3 / (b[tail] ** 5 * zeros[tail]))) + 1e-15   # next term 3779/(15360 b^5)
-    results.hard_case("high_index_j0_zeros", f"J0 zeros k = 50..{k_max}: scipy against McMahon's expansion "
-                      "(relative gap; McMahon's own error there is below the bound)",
+    results.hard_case("high_index_j0_zeros", f"$J_0$ zeros $k$ = 50 to {format_number(int(k_max))}: SciPy's "
+                      "against McMahon's expansion (relative gap; McMahon's own error there is below the bound)",
                       float(np.max(gap[tail])), bound)

@@ -6,15 +6,47 @@ import numpy as np
 import pandas as pd
 import scipy.linalg as sla
 
+from ...formatting import format_number
 from ...models.chains import (continuum_frequencies, exact_discrete_frequencies, frequency_unit,
                               particle_chain, rigid_links_matrices)
 from ...provenance import software_stamp
 from ...solvers import chain_eigen
 from ...solvers.special import bessel_j0_zeros, laguerre_lowest_zero_asymptotic, laguerre_zero_mp
 from ...solvers.timing import min_time
-from ..results import new_figure
+from ..figure_style import TEXT_WIDTH_IN
+from ..results import new_figure, plt
+
+WIDE = TEXT_WIDTH_IN - 0.2      # the saved SVG's tight bounding box adds about 0.12 in
 
 SOLVER_LIMITS = {"dense": 2048, "tridiagonal": 8192, "tridiagonal_select": 131072, "pliability": 131072}
+
+# What the reader sees: each frequency unit typeset, each solver and scheme by name and in one colour in
+# every figure (Okabe-Ito).
+UNIT_MATH = {"sqrt_g_over_l": "$\\sqrt{g/l}$", "over_omega": "$\\omega$",
+             "over_fundamental": "$(\\pi/l)\\sqrt{P/\\rho}$", "sqrt_k_over_m": "$\\sqrt{k/m}$"}
+SOLVERS = {"dense": ("dense (LAPACK)", "#56B4E9", "^"), "tridiagonal": ("tridiagonal (LAPACK)", "#CC79A7", "s"),
+           "tridiagonal_select": ("tridiagonal, lowest only (LAPACK)", "#D55E00", "o"),
+           "pliability": ("pliability (factored)", "#0072B2", "D")}
+# scheme -> (legend label, colour, the order it should converge at: its reference slope)
+SCHEMES = {"plain": (r"$l = na$", "#E69F00", 1), "end": (r"$l = (n + \frac{1}{2})a$", "#009E73", 2),
+           "richardson": (r"Richardson, $n/2$ and $n$", "#000000", 4),
+           "links": (r"rigid links, $l = na$", "#CC79A7", 2)}
+
+
+def _solver_line(ax, method, n, y):
+    """One solver's line: its colour and marker in every figure; open markers show lines that coincide."""
+    label, colour, marker = SOLVERS.get(method, (method, None, "o"))
+    ax.loglog(n, y, marker=marker, ms=4.5 if marker == "^" else 3.5, mfc="none" if marker in "^s" else colour,
+              color=colour, lw=1.0, label=label)
+
+
+def _scheme(name: str) -> str:
+    """The scheme a row or route belongs to, from its name."""
+    lowered = name.lower()
+    for key, words in (("richardson", "richardson"), ("links", "links"), ("end", "+ 1/2"), ("end", "end-corrected")):
+        if words in lowered:
+            return key
+    return "plain"
 
 
 def _masses(chain, n):
@@ -70,7 +102,7 @@ def run(scene, results, quick):
         if np.any(np.abs(lam) <= zero_floor):
             # the neutral motion: a translation of a free chain, a rigid turn (y ~ r) of a whirling one
             rigid = built.geometry.positions_m if "rotation" in effects else np.ones(n)
-            _zero_modes(results, lam, shapes, rigid, "rigid rotation (y ∝ r)" if "rotation" in effects
+            _zero_modes(results, lam, shapes, rigid, "rigid rotation ($y \\propto r$)" if "rotation" in effects
                         else "rigid translation")
     cont = continuum_frequencies(effects, ends, length, total, len(values), n=n)
     results.number(f"frequencies_{unit_name}", values / unit, unit_label)
@@ -81,14 +113,20 @@ def run(scene, results, quick):
         results.number("relative_error_vs_exact_discrete", _relative(values, exact), "1",
                        note="against the closed form of the discrete chain")
     table = {"mode": np.arange(1, len(values) + 1), f"omega_{unit_name}": values / unit}
+    unit_math = UNIT_MATH.get(unit_name, unit_label)
+    symbol = "$\\sigma$" if unit_name == "over_omega" else "$\\omega$"     # a whirling chain: sigma in units of omega
+    headers = {"mode": "mode", f"omega_{unit_name}": f"{symbol} ({unit_math})"}
     if cont is not None:
         table[f"continuum_{unit_name}"] = cont / unit
+        headers[f"continuum_{unit_name}"] = f"continuum ({unit_math})"
     if exact is not None:
         table[f"exact_discrete_{unit_name}"] = exact / unit
+        headers[f"exact_discrete_{unit_name}"] = f"closed form ({unit_math})"
+    beside = [what for what, there in (("the continuum's", cont is not None),
+                                       ("the discrete chain's closed form", exact is not None)) if there]
     results.table("frequencies", pd.DataFrame(table),
-                  f"Frequencies of the {n}-{'link' if model == 'links' else 'particle'} chain in units of "
-                  f"{unit_label}, beside the continuum" + (" and the discrete closed form." if exact is not None
-                                                          else "."))
+                  f"Frequencies {symbol} of the {n}-{'link' if model == 'links' else 'particle'} chain in units of "
+                  f"{unit_math}" + (f", beside {' and '.join(beside)}." if beside else "."), headers=headers)
     if shapes is not None and analysis.get("mode_shapes") and "gravity" in effects:
         _mode_shapes(results, shapes, n, k)
     if "convergence" in analysis:
@@ -98,7 +136,7 @@ def run(scene, results, quick):
     if "large_n" in analysis:
         _large_n(results, analysis["large_n"]["n"], quick)
     if analysis.get("dispersion"):
-        _dispersion(results, built, values, unit, unit_label)
+        _dispersion(results, built, values, unit, unit_name, unit_label)
 
 
 def _zero_modes(results, lam, shapes, rigid, rigid_name):
@@ -106,11 +144,11 @@ def _zero_modes(results, lam, shapes, rigid, rigid_name):
     v = shapes[:, zero] / np.linalg.norm(shapes[:, zero])
     rigid = rigid / np.linalg.norm(rigid)
     results.number("zero_mode_eigenvalue_relative", abs(lam[zero]) / np.max(np.abs(lam)), "1",
-                   note="|lambda_0| / lambda_max before clipping")
-    results.hard_case("zero_mode", f"The zero mode is a {rigid_name}: 1 − |cos| of the angle between "
+                   note="$|\\lambda_0|/\\lambda_\\mathrm{max}$ before clipping")
+    results.hard_case("zero_mode", f"The zero mode is a {rigid_name}: $1 - |\\cos|$ of the angle between "
                       "them; its eigenvalue is round-off, clipped to 0, not reported as an instability",
                       float(1 - abs(v @ rigid)), 1e-12)
-    results.hard_case("zero_mode_eigenvalue", "|λ₀| / λmax of the free chain's zero mode",
+    results.hard_case("zero_mode_eigenvalue", "$|\\lambda_0|/\\lambda_\\mathrm{max}$ of the free chain's zero mode",
                       float(abs(lam[zero]) / np.max(np.abs(lam))), 1e-12)
 
 
@@ -118,18 +156,21 @@ def _mode_shapes(results, shapes, n, k):
     from scipy import special
     j = bessel_j0_zeros(3)
     height = 1 - np.arange(1, n + 1) / n                    # particle heights above the free end, x/l
-    fig, ax = new_figure(4.8, 4.6)
+    fig, ax = new_figure(4.4, 4.0)
     x = np.linspace(0, 1, 400)
     for idx in range(min(3, k, n)):
         y = shapes[:, idx] / shapes[-1, idx]
         cont = special.j0(j[idx] * np.sqrt(x))
         line = ax.plot(cont, x, lw=1, alpha=0.7)[0]
         ax.plot(y, height, "o", ms=3.5, color=line.get_color(), label=f"mode {idx + 1}")
+    ax.axvline(0, color="0.2", lw=0.6)
     ax.set_xlabel("displacement (free end = 1)")
-    ax.set_ylabel("height above the free end, x / l")
-    ax.legend(fontsize=8)
-    results.figure("mode_shapes", fig, f"Mode shapes of the {n}-particle chain (points) over the continuum's "
-                   "J0 modes (lines).")
+    ax.set_ylabel("height above the free end, $x/l$")
+    ax.legend(loc="upper right")
+    results.figure("mode_shapes", fig, f"The first three mode shapes of the {n}-particle chain (points) over the "
+                   "continuum's modes $J_0(j_{0k}\\sqrt{x/l})$ (lines in the same colours), both scaled so that the "
+                   "free end, at height 0, moves 1. Mode 1 lies on the continuum's curve; modes 2 and 3 have the "
+                   f"continuum's nodes, one and two, but with {n} particles follow its shape only roughly.")
     if n >= 3 and k >= 2:
         y2 = shapes[:, 1]
         sign = np.nonzero(np.sign(y2[:-1]) != np.sign(y2[1:]))[0]
@@ -158,8 +199,9 @@ def _convergence(results, model, n_values, quick):
             rows.append({"n": n, "scheme": "rigid links, l = n a", "omega1_sqrt_g_over_l": w,
                          "relative_error": w / exact - 1})
         order = _fit_order(n_values, [r["relative_error"] for r in rows])
-        results.number("links_convergence_order", order, "1", note="fitted over n = "
-                       f"{n_values[0]}..{n_values[-1]}")
+        results.number("links_convergence_order", order, "1", note=f"fitted over $n$ = {n_values[0]} to "
+                       f"{n_values[-1]}")
+        fitted = {"links": (order, n_values[0], n_values[-1])}
         results.number("links_all_above_continuum", all(r["relative_error"] > 0 for r in rows), "bool")
     else:
         previous = None
@@ -177,32 +219,84 @@ def _convergence(results, model, n_values, quick):
                              "relative_error": rich / exact - 1})
             previous = (n, lam)
         frame = pd.DataFrame(rows)
+        fitted = {}
         for scheme, name in (("particles, l = n a", "plain"), ("particles, l = (n + 1/2) a", "end_corrected"),
                              ("Richardson, from n/2 and n", "richardson")):
             part = frame[frame.scheme == scheme]
             tail = part[part.n >= 16] if name != "richardson" else part[(part.n >= 16) & (part.n <= 256)]
-            results.number(f"{name}_convergence_order", _fit_order(tail.n, tail.relative_error), "1",
-                           note=f"least-squares slope of log|error| against log n, n = {int(tail.n.min())}.."
-                                f"{int(tail.n.max())}")
+            order = _fit_order(tail.n, tail.relative_error)
+            results.number(f"{name}_convergence_order", order, "1",
+                           note=f"least-squares slope of $\\log|\\text{{error}}|$ against $\\log n$, $n$ = "
+                                f"{int(tail.n.min())} to {int(tail.n.max())}")
+            fitted[_scheme(scheme)] = (order, int(tail.n.min()), int(tail.n.max()))
         rich = frame[frame.scheme == "Richardson, from n/2 and n"]
         reach = rich[np.abs(rich.relative_error) <= 1e-10]
         results.number("richardson_n_for_1e-10", int(reach.n.min()) if len(reach) else None, "particles",
-                       note="smallest n (with n/2) whose Richardson value of omega_1 is within 1e-10")
+                       note="smallest $n$ (with $n/2$) whose Richardson value of $\\omega_1$ is within $10^{-10}$")
         results.number("plain_all_below_continuum",
                        bool((frame[frame.scheme == "particles, l = n a"].relative_error < 0).all()), "bool")
     frame = pd.DataFrame(rows)
-    results.table("convergence", frame, "Gravest frequency of the discrete chain against n, with its "
-                  "relative error against the continuum (j₀₁/2)√(g/l).")
-    fig, ax = new_figure(5.8, 4.0)
+    results.table("convergence", frame, "Gravest frequency $\\omega_1$ of the discrete chain against $n$, with its "
+                  "relative error against the continuum's $(j_{01}/2)\\sqrt{g/l}$.",
+                  headers={"n": "$n$", "scheme": "scheme", "omega1_sqrt_g_over_l": "$\\omega_1$ ($\\sqrt{g/l}$)",
+                           "relative_error": "relative error"})
+    _convergence_figure(results, model, frame, exact, fitted)
+
+
+def _convergence_figure(results, model, frame, exact, fitted):
+    """omega_1 against n (left) and its relative error with reference slopes and fitted orders (right)."""
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(WIDE, 3.3), layout="constrained")
     for scheme, part in frame.groupby("scheme", sort=False):
-        ax.loglog(part.n, np.abs(part.relative_error), "o-", ms=3.5, label=scheme)
-    ax.set_xlabel("n")
-    ax.set_ylabel("|relative error of ω₁|")
-    ax.legend(fontsize=8)
-    caption = ("Convergence of the gravest frequency of n uniform rigid links to the continuum's: second order, "
-               "from above." if model == "links" else
-               "Convergence of the gravest frequency of n particles to the continuum's: first order with l = na, "
-               "second with the end correction l = (n + ½)a, fourth after Richardson extrapolation.")
+        key = _scheme(scheme)
+        label, colour, _ = SCHEMES[key]
+        ax.semilogx(part.n, part.omega1_sqrt_g_over_l, "o-", ms=3, lw=0.9, color=colour, label=label)
+        error = np.abs(part.relative_error.to_numpy())
+        shown = error > 0                                    # an exact zero has no place on a log axis
+        order, n_lo, n_hi = fitted[key]
+        bx.loglog(part.n[shown], error[shown], "o-", ms=3, lw=0.9, color=colour,
+                  label=f"{label}: fitted order {format_number(order, 3)}")
+    ax.axhline(exact, color="0.3", ls="--", lw=0.8, label=r"continuum, $j_{01}/2$")
+    ax.set_xlabel("$n$")
+    ax.set_ylabel(r"$\omega_1$ ($\sqrt{g/l}$)")
+    ax.legend(loc="best")
+    # reference slopes over each scheme's fitted range, through its error at the range's middle, a third below
+    for key, (order, n_lo, n_hi) in fitted.items():
+        _, _, slope = SCHEMES[key]
+        part = frame[frame.scheme.map(_scheme) == key]
+        inside = part[(part.n >= n_lo) & (part.n <= n_hi)]
+        if inside.empty:
+            continue
+        middle = inside.iloc[len(inside) // 2]
+        ns = np.geomspace(n_lo, n_hi, 50)
+        ref = abs(float(middle.relative_error)) / 3.0 * (ns / float(middle.n)) ** -slope
+        bx.loglog(ns, ref, ls=(0, (4, 3)), lw=0.8, color="0.45")
+        bx.annotate(f"$n^{{-{slope}}}$", (ns[25], ref[25]), xytext=(-4, -4), textcoords="offset points",
+                    ha="right", va="top", color="0.3")
+    bx.set_xlabel("$n$")
+    bx.set_ylabel(r"|relative error| of $\omega_1$")
+    low, high = bx.get_ylim()
+    bx.set_ylim(low / 10 ** (0.3 * np.log10(high / low)), high)     # room below the data for the legend
+    bx.legend(loc="lower left")
+    for axis in (ax, bx):
+        axis.grid(True, which="both", alpha=0.25, linewidth=0.6)
+    if model == "links":
+        order, n_lo, n_hi = fitted["links"]
+        caption = ("The gravest frequency $\\omega_1$ of $n$ uniform rigid links hanging from the top, against $n$ "
+                   "(left; dashed: the continuum's $j_{01}/2$), and its relative error against the continuum (right; "
+                   "dashed: the reference slope $n^{-2}$). The links converge from above at second order: fitted "
+                   f"order {format_number(order, 3)} over $n$ = {n_lo} to {n_hi}.")
+    else:
+        orders = {key: format_number(value[0], 3) for key, value in fitted.items()}
+        caption = ("The gravest frequency $\\omega_1$ of $n$ particles hanging on a light string, against $n$ "
+                   "(left; dashed: the continuum's $j_{01}/2$), with the length taken as $l = na$, with the end "
+                   "correction $l = (n + \\tfrac12)a$, and after Richardson extrapolation from $n/2$ and $n$; "
+                   "right: the relative error against the continuum, with reference slopes $n^{-1}$, $n^{-2}$ and "
+                   "$n^{-4}$ (dashed). The fitted orders are first ("
+                   f"{orders['plain']}), second ({orders['end']}) and fourth ({orders['richardson']})")
+        rich = frame[frame.scheme.map(_scheme) == "richardson"]
+        zero = rich[rich.relative_error == 0]
+        caption += (f"; at $n$ = {format_number(int(zero.n.min()))} Richardson's error is exactly 0, at round-off, "
+                    "and is not drawn." if len(zero) else ".")
     results.figure("convergence", fig, caption)
 
 
@@ -236,31 +330,42 @@ def _accuracy_cost(results, spec, quick):
                          "algebraic_relative_error": abs(lam / lam_exact - 1),
                          "discretization_relative_error": abs(np.sqrt((n + 0.5) * lam) / j1 - 1)})
     frame = pd.DataFrame(rows)
-    results.timing_table("solver_cost", frame, "Lowest five eigenvalues of the n-particle hanging chain: "
-                         "wall time (min over repeats) and the relative error of λ₁ against the exact "
-                         f"Laguerre zero, by solver. {software_stamp()}.")
-    fig, ax = new_figure(5.8, 4.0)
+    results.timing_table("solver_cost", frame, "Lowest five eigenvalues of the hanging chain of $n$ particles, by "
+                         "solver: wall time (minimum over repeats), the relative error of $\\lambda_1$ against the "
+                         "exact Laguerre zero, and the relative error of $\\omega_1$ (end-corrected) against the "
+                         f"continuum. {software_stamp()}.",
+                         headers={"n": "$n$", "solver": "solver", "seconds": "wall time (s)", "runs": "runs",
+                                  "algebraic_relative_error": "error of $\\lambda_1$",
+                                  "discretization_relative_error": "error of $\\omega_1$"})
+    fig, ax = new_figure(5.4, 3.4)
     for method, part in frame.groupby("solver", sort=False):
-        ax.loglog(part.n, part.seconds, "o-", ms=3.5, label=method)
-    ax.set_xlabel("n")
+        _solver_line(ax, method, part.n, part.seconds)
+    ax.set_xlabel("$n$")
     ax.set_ylabel("wall time (s)")
-    ax.legend(fontsize=8)
-    results.timing_figure("solver_cost", fig, "Time for the lowest five modes against n, by solver.")
-    fig, ax = new_figure(5.8, 4.0)
+    ax.legend(loc="upper left")
+    results.timing_figure("solver_cost", fig, "Wall time for the lowest five modes of the chain of $n$ particles "
+                          "against $n$, by solver (minimum over repeats). The dense solver's cost grows fastest, the "
+                          "full tridiagonal solver's next; the tridiagonal solver that computes only the lowest modes "
+                          "and the pliability solver grow about linearly and are the only ones run up to the "
+                          "largest $n$.")
+    fig, ax = new_figure(5.4, 3.4)
     for method, part in frame.groupby("solver", sort=False):
-        ax.loglog(part.n, np.maximum(part.algebraic_relative_error, 1e-17), "o-", ms=3.5, label=method)
-    ax.loglog(frame.n.unique(), 2.8 * frame.n.unique() ** 2 * np.finfo(float).eps, "k:", lw=1,
-              label="κ·eps ≈ 2.8 n²·eps")
-    ax.set_xlabel("n")
-    ax.set_ylabel("relative error of λ₁ (floored at 1e-17)")
-    ax.legend(fontsize=8)
-    results.figure("solver_accuracy", fig, "Relative error of the lowest eigenvalue against the exact "
-                   "Laguerre zero: the standard solvers lose accuracy like the condition number n²·eps; the "
-                   "pliability solver keeps it.")
+        _solver_line(ax, method, part.n, np.maximum(part.algebraic_relative_error, 1e-17))
+    ns = np.array(sorted(frame.n.unique()), float)
+    ax.loglog(ns, 2.8 * ns ** 2 * np.finfo(float).eps, ls=(0, (4, 3)), color="0.45", lw=0.9,
+              label=r"$2.8\,n^2\epsilon$: condition number × $\epsilon$")
+    ax.set_xlabel("$n$")
+    ax.set_ylabel(r"relative error of $\lambda_1$")
+    ax.legend(loc="upper left")
+    results.figure("solver_accuracy", fig, "Relative error of the lowest eigenvalue $\\lambda_1$ of the chain of "
+                   "$n$ particles against the exact Laguerre zero, by solver (errors below "
+                   f"{format_number(1e-17, 1)} drawn at that floor); dashed: the condition number $2.8n^2$ times the "
+                   "machine $\\epsilon$. The standard solvers lose accuracy like $n^2\\epsilon$; the pliability "
+                   "solver keeps it.")
     for method in chain_eigen.METHODS:
         part = frame[frame.solver == method]
         results.number(f"{method}_worst_relative_error_lambda1", float(part.algebraic_relative_error.max()), "1",
-                       note=f"n up to {int(part.n.max())}")
+                       note=f"$n$ up to {format_number(int(part.n.max()))}")
     _cost_to_target(results, spec["targets"], quick)
 
 
@@ -297,20 +402,23 @@ def _cost_to_target(results, targets, quick):
                              "seconds": None, "measured": False})
     _work_precision_figure(results, errors, cost, ns)
     frame = pd.DataFrame(rows)
-    results.timing_table("cost_to_target", frame, "What it costs to reach a given relative error of ω₁ "
-                         "against the continuum, with the pliability solver: smallest n = 2^p that reaches it "
-                         "and its time; where no n up to 2^" + str(top) + " reaches it, the n the error law "
-                         f"predicts (not run). {software_stamp()}.")
+    results.timing_table("cost_to_target", frame, "What it costs to reach a given relative error of $\\omega_1$ "
+                         "against the continuum, with the pliability solver: the smallest $n = 2^p$ that reaches it "
+                         f"and its time; where no $n$ up to $2^{{{top}}}$ reaches it, the $n$ the error law predicts "
+                         f"(not run, no time). {software_stamp()}.",
+                         headers={"scheme": "scheme", "target": "target error", "n": "$n$", "error": "error reached",
+                                  "seconds": "wall time (s)", "measured": "run"})
 
 
 def _work_precision_figure(results, errors, cost, ns):
     """Error of omega_1 against the time it took, one line per route (and LAPACK's floor)."""
     j1 = bessel_j0_zeros(1)[0] / 2
-    fig, ax = new_figure(5.8, 4.0)
+    fig, ax = new_figure(5.6, 3.6)
     for scheme, err in errors.items():
         n_sorted = sorted(err)
+        label, colour, _ = SCHEMES[_scheme(scheme)]
         ax.loglog([max(err[n], 1e-17) for n in n_sorted], [cost[scheme](n) for n in n_sorted], "o-", ms=3,
-                  label=f"{scheme}, pliability")
+                  color=colour, label=f"{label}, pliability")
     lapack = [n for n in ns if n <= SOLVER_LIMITS["tridiagonal_select"]]
     lapack_err, lapack_time = [], []
     for n in lapack:
@@ -318,15 +426,18 @@ def _work_precision_figure(results, errors, cost, ns):
                                    repeats=3, budget_s=0.5)
         lapack_err.append(max(abs(np.sqrt((n + 0.5) * lam) / j1 - 1), 1e-17))
         lapack_time.append(seconds)
-    ax.loglog(lapack_err, lapack_time, "s--", ms=3, color="0.4", label="end-corrected, LAPACK select")
-    ax.set_xlabel("relative error of ω₁ against the continuum")
+    ax.loglog(lapack_err, lapack_time, "o--", ms=3, color=SOLVERS["tridiagonal_select"][1],
+              label=f"{SCHEMES['end'][0]}, LAPACK (lowest only)")
+    ax.set_xlabel(r"relative error of $\omega_1$ against the continuum")
     ax.set_ylabel("wall time (s)")
     ax.invert_xaxis()
-    ax.legend(fontsize=7)
-    results.timing_figure("work_precision", fig, "What accuracy costs: error of the gravest frequency against "
-                          "the time it took, n = 2, 4, 8, … along each line. Richardson extrapolation buys six orders "
-                          "of magnitude over the end correction at equal time; with LAPACK's solver the end-corrected "
-                          "chain stalls where its n²·eps error overtakes the discretization error.")
+    ax.legend(loc="lower right")
+    results.timing_figure("work_precision", fig, "Wall time against the relative error of the gravest frequency, "
+                          "$n$ = 2, 4, 8, … along each line (errors below "
+                          f"{format_number(1e-17, 1)} drawn at that floor; accuracy grows to the right). Richardson "
+                          "extrapolation buys six orders of magnitude over the end correction at equal time; with "
+                          "LAPACK's solver the end-corrected chain stalls where its $n^2\\epsilon$ error overtakes the "
+                          "discretization error.")
 
 
 def _large_n(results, n, quick):
@@ -337,16 +448,16 @@ def _large_n(results, n, quick):
     for method in ("tridiagonal_select", "pliability"):
         lam = hanging_particles_scaled(n, 1, method)[0]
         measured[method] = abs(lam / reference - 1)
-        results.number(f"large_n_{method}_relative_error", measured[method], "1", note=f"n = {n}")
-    results.hard_case("large_n_lowest_mode", f"Lowest mode of an n = {n} chain to 1e-12 relative "
-                      "(pliability solver against Tricomi's expansion of the Laguerre zero)",
+        results.number(f"large_n_{method}_relative_error", measured[method], "1", note=f"$n$ = {format_number(n)}")
+    results.hard_case("large_n_lowest_mode", f"Lowest mode of a chain of $n$ = {format_number(n)} particles to "
+                      "$10^{-12}$ relative (pliability solver against Tricomi's expansion of the Laguerre zero)",
                       measured["pliability"], 1e-12)
-    results.notes.append(f"At n = {n} LAPACK's tridiagonal solver gives λ₁ to "
-                         f"{measured['tridiagonal_select']:.1e} relative: the n²·eps loss the pliability "
-                         "form avoids.")
+    results.notes.append(f"At $n$ = {format_number(n)} LAPACK's tridiagonal solver gives $\\lambda_1$ to "
+                         f"{format_number(measured['tridiagonal_select'], 2)} relative: the $n^2\\epsilon$ loss the "
+                         "pliability form avoids.")
 
 
-def _dispersion(results, built, values, unit, unit_label):
+def _dispersion(results, built, values, unit, unit_name, unit_label):
     g = built.geometry
     if g.ends != "fixed-fixed":
         return
@@ -355,15 +466,20 @@ def _dispersion(results, built, values, unit, unit_label):
     q = np.arange(1, n + 1) * np.pi / ((n + 1) * a)
     law = 2 * np.sqrt(stiffness / m) * np.abs(np.sin(q * a / 2))
     qq = np.linspace(0, np.pi / a, 300)
-    fig, ax = new_figure(5.6, 3.6)
-    ax.plot(qq * a / np.pi, 2 * np.sqrt(stiffness / m) * np.sin(qq * a / 2) / unit, label="ω = 2√(k/m)|sin(qa/2)|")
-    ax.plot(qq * a / np.pi, qq * a * np.sqrt(stiffness / m) / unit, "--", lw=0.9, label="continuum, ω = qa√(k/m)")
-    ax.plot(q[: len(values)] * a / np.pi, values / unit, "o", ms=4, label="computed modes (lowest)")
-    ax.set_xlabel("wavenumber qa / π")
-    ax.set_ylabel(f"ω / {unit_label}")
-    ax.legend(fontsize=8)
-    results.figure("dispersion", fig, "Dispersion of the discrete chain: the computed frequencies lie on "
-                   "ω = 2√(k/m)|sin(qa/2)|, below the continuum line, up to the cut-off 2√(k/m).")
+    fig, ax = new_figure(5.2, 3.2)
+    ax.plot(qq * a / np.pi, 2 * np.sqrt(stiffness / m) * np.sin(qq * a / 2) / unit, color="C4",
+            label=r"$\omega = 2\sqrt{k/m}\,|\sin(qa/2)|$")
+    ax.plot(qq * a / np.pi, qq * a * np.sqrt(stiffness / m) / unit, "--", lw=0.9, color="0.4",
+            label=r"continuum, $\omega = qa\sqrt{k/m}$")
+    ax.plot(q[: len(values)] * a / np.pi, values / unit, "o", ms=4, color="C5", label="computed modes")
+    ax.set_xlabel(r"wavenumber $qa/\pi$")
+    ax.set_ylabel(f"$\\omega$ ({UNIT_MATH.get(unit_name, unit_label)})")
+    ax.set_xlim(0, 1)
+    ax.set_ylim(bottom=0)
+    ax.legend(loc="upper left")
+    results.figure("dispersion", fig, "Dispersion of the discrete chain of springs: frequency against wavenumber. "
+                   "The computed frequencies lie on $\\omega = 2\\sqrt{k/m}\\,|\\sin(qa/2)|$, below the "
+                   "continuum's line, up to the cut-off $2\\sqrt{k/m}$ at $qa = \\pi$.")
     results.number("dispersion_max_relative_deviation",
                    float(np.max(np.abs(values - law[: len(values)]) / law[: len(values)])), "1")
     results.number("cutoff_over_unit", 2 * np.sqrt(stiffness / m) / unit, unit_label)

@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from ...formatting import format_number, shortest
 from ...solvers import rattle
 from ...solvers.special import laguerre_zeros
 from ..results import new_figure
@@ -50,12 +51,16 @@ def run(scene, results, quick):
                      "measured_omega_sqrt_g_over_l": measured / unit, "cycles": cycles,
                      "relative_difference": measured / omega[mode - 1] - 1})
     frame = pd.DataFrame(rows)
-    results.table("time_domain_small_amplitude", frame, f"Frequencies read from zero crossings of the "
-                  f"free end in RATTLE runs started in each linear mode at {spec['small_amplitude_deg']}°, "
-                  f"against the eigenvalues ({steps} steps per period of the fastest mode).")
+    results.table("time_domain_small_amplitude", frame, "Frequencies read from the zero crossings of the free end "
+                  f"in RATTLE runs started in each linear mode at {shortest(spec['small_amplitude_deg'])}°, against "
+                  f"the eigenvalues ({steps} steps per period of the fastest mode), in units of $\\sqrt{{g/l}}$; "
+                  "they differ by the method's small phase error.",
+                  headers={"mode": "mode", "eigenvalue_omega_sqrt_g_over_l": "eigenvalue $\\omega$ ($\\sqrt{g/l}$)",
+                           "measured_omega_sqrt_g_over_l": "measured $\\omega$ ($\\sqrt{g/l}$)",
+                           "cycles": "cycles", "relative_difference": "relative difference"})
     results.number("time_domain_max_relative_frequency_difference",
                    float(frame.relative_difference.abs().max()), "1",
-                   note=f"modes 1-{len(rows)}, amplitude {spec['small_amplitude_deg']} deg")
+                   note=f"modes 1 to {len(rows)}, amplitude {shortest(spec['small_amplitude_deg'])}°")
     # 2. energy over a long run
     periods = min(spec["long_run_periods"], 1000) if quick else spec["long_run_periods"]
     amp = np.radians(spec["long_run_amplitude_deg"])
@@ -67,24 +72,24 @@ def run(scene, results, quick):
     tenth = max(2, energies.size // 10)
     results.number("time_domain_periods", periods, "gravest periods")
     results.number("time_domain_energy_error_max", float(np.max(np.abs(drift))), "1",
-                   note="max |E - E0| / (E0 - E_rest) over the run")
+                   note="largest $|E - E_0|/(E_0 - E_\\mathrm{rest})$ over the run")
     results.number("time_domain_energy_error_first_tenth", float(np.max(np.abs(drift[:tenth]))), "1")
     results.number("time_domain_energy_error_last_tenth", float(np.max(np.abs(drift[-tenth:]))), "1")
-    results.number("time_domain_constraint_error_m", constraint, "m", note="max | |q_j - q_j-1| - a |")
-    results.hard_case("energy_bounded", f"Energy error over {periods:g} gravest periods does not grow: "
-                      "max over the last tenth / max over the first tenth (≤ 2)",
+    results.number("time_domain_constraint_error_m", constraint, "m", note="largest $||q_j - q_{j-1}| - a|$")
+    results.hard_case("energy_bounded", f"Energy error over {format_number(periods)} gravest periods does not "
+                      "grow: its largest value in the last tenth of the run over its largest in the first tenth",
                       float(np.max(np.abs(drift[-tenth:])) / max(np.max(np.abs(drift[:tenth])), 1e-300)), 2.0)
-    fig, ax = new_figure(5.8, 3.6)
+    fig, ax = new_figure(5.2, 3.0)
     running = np.maximum.accumulate(np.abs(drift))
     keep = t_periods > 0
-    ax.loglog(t_periods[keep], running[keep], lw=1.2, label="running max |E − E₀| / (E₀ − E_rest)")
+    ax.loglog(t_periods[keep], running[keep], lw=1.2, color="C4")
     ax.set_xlabel("time (gravest periods)")
-    ax.set_ylabel("relative energy error")
+    ax.set_ylabel(r"running max of $|E - E_0|/(E_0 - E_\mathrm{rest})$")
     ax.set_ylim(running[keep].max() / 100, running[keep].max() * 10)
-    ax.legend(fontsize=8)
-    results.figure("energy_error", fig, f"Energy error of RATTLE over {periods:g} gravest periods "
-                   f"({n} particles, amplitude {spec['long_run_amplitude_deg']}°): its running maximum reaches its "
-                   "level within the first period and stays there (bounded, no drift).")
+    results.figure("energy_error", fig, f"Energy error of RATTLE over {format_number(periods)} gravest periods "
+                   f"({n} particles, amplitude {shortest(spec['long_run_amplitude_deg'])}°): the running maximum of "
+                   "$|E - E_0|$ relative to the oscillation's energy $E_0 - E_\\mathrm{rest}$, sampled four times a "
+                   "period. It reaches its level within the first period and stays there (bounded, no drift).")
     # 3. large amplitude: the frequency shift
     rows = []
     for deg in spec["large_amplitudes_deg"]:
@@ -92,11 +97,13 @@ def run(scene, results, quick):
         measured, _ = rattle.crossing_frequency(tip, h)
         rows.append({"amplitude_deg": deg, "omega_over_linear": measured / omega[0]})
     shift = pd.DataFrame(rows)
-    results.table("amplitude_shift", shift, "Mean frequency of the free end against the initial amplitude "
-                  "(largest link angle) of a mode-1 start, relative to the linear ω₁.")
-    fig, ax = new_figure(5.2, 3.4)
-    ax.plot(shift.amplitude_deg, shift.omega_over_linear, "o-")
-    ax.set_xlabel("initial amplitude (largest link angle, degrees)")
-    ax.set_ylabel("ω / ω₁ (linear)")
-    results.figure("amplitude_shift", fig, "At large amplitude the chain swings more slowly: the frequency "
-                   "read from the motion against the initial amplitude.")
+    results.table("amplitude_shift", shift, "Mean frequency $\\omega$ of the free end against the initial amplitude "
+                  "(largest link angle) of a mode-1 start, relative to the linear $\\omega_1$.",
+                  headers={"amplitude_deg": "amplitude (°)", "omega_over_linear": "$\\omega/\\omega_1$"})
+    fig, ax = new_figure(4.6, 3.0)
+    ax.plot(shift.amplitude_deg, shift.omega_over_linear, "o-", color="C4")
+    ax.set_xlabel("initial amplitude, largest link angle (°)")
+    ax.set_ylabel(r"$\omega/\omega_1$")
+    results.figure("amplitude_shift", fig, "The frequency read from the motion of a mode-1 start, relative to the "
+                   "linear $\\omega_1$, against the initial amplitude (largest link angle): at large amplitude the "
+                   "chain swings more slowly.")

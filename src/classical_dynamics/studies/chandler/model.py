@@ -4,20 +4,31 @@ from __future__ import annotations
 
 import numpy as np
 import pandas as pd
+from matplotlib.ticker import LogLocator, NullFormatter, ScalarFormatter
 
+from ...formatting import format_number, plural, shortest
 from ...models import earth, wobble
 from ...solvers import references as ref
 from ...solvers import rigid_body
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
-from ..results import new_figure
+from ..figure_style import TEXT_WIDTH_IN
+from ..results import new_figure, plt
 from . import polar_motion
+
+WIDE = TEXT_WIDTH_IN - 0.2      # the saved SVG's tight bounding box adds about 0.12 in
 
 DEFAULT_SPAN_YEARS = 100.0
 DEFAULT_RTOL = 1e-12
 SAMPLE_DAYS = 2.0
 PERIOD_BOUND = 1e-6           # the hard case: the wobble's period to 1e-6 relative over 100 years
 Q_BOUND = 0.05                # the hard case: Q recovered from a damped series to 5 %
+PATH_YEARS = 13.0             # the model's polar path: the last two beats of the wobble with the year
+
+
+def arcsec_text(angle_rad) -> str:
+    """An angle given in arcseconds, as given: 0.1″, not the float round trip's 0.10000000000000002."""
+    return shortest(float(f"{angle_rad / earth.ARCSEC:.12g}"))
 
 
 def setup(scene):
@@ -66,7 +77,9 @@ def run(scene, results, quick):
     results.timing_table("cost", pd.DataFrame([{
         "effects": ", ".join(effects) or "none (rigid symmetric)", "span_years": span_years, "rtol": rtol,
         "steps": sol.n_steps, "evaluations": sol.nfev, "seconds": seconds}]),
-        f"Cost of one {span_years:g}-year integration with this scene's effects (DOP853, minimum of repeats).")
+        f"Cost of one {shortest(span_years)}-year integration with these effects (DOP853, minimum of repeats).",
+        headers={"effects": "effects", "span_years": "span (yr)", "rtol": "rtol", "steps": "steps",
+                 "evaluations": "evaluations", "seconds": "wall time (s)"})
     y = sol.y_eval
     m = (y[:, 0] + 1j * y[:, 1]) / earth.MAS          # the pole about the figure axis, mas
 
@@ -75,12 +88,13 @@ def run(scene, results, quick):
     else:
         rate = phase_rate(t, y)
         measured = 2.0 * np.pi / rate
-        results.hard_case("period_to_1e-6", f"A {amplitude / earth.ARCSEC:g}″ wobble on a daily spin followed for "
-                          f"{span_years:g} years: its period against the closed form (relative)",
+        results.hard_case("period_to_1e-6", f"A {arcsec_text(amplitude)}″ wobble on a daily spin followed "
+                          f"for {shortest(span_years)} {plural(span_years, 'year')}: its period against the closed "
+                          "form (relative)",
                           measured / closed - 1.0, PERIOD_BOUND)
         _sense(results, rate, y)
         _invariants(results, y, model)
-        _polhode(results, t, m, measured, "dissipation" in effects)
+        _polhode(results, t, m, measured, "dissipation" in effects, "triaxiality" in effects)
     results.number("wobble_period_solar_days", measured, "d",
                    note="measured from the integration" + (" (fit to the simulated series)" if "excitation" in effects
                                                            else " (mean rate of the pole's phase)"))
@@ -114,8 +128,9 @@ def _invariants(results, y, model):
     double can resolve, so the dissipation's structure is shown on a large wobble: _dissipation_structure.)"""
     L, _ = wobble.invariants(y, model.parameters())
     drift = float(np.max(np.abs(L / L[0] - 1.0)))
-    results.number("angular_momentum_drift", drift, "1", note="max |Δ|L|| / |L| over the run")
-    results.hard_case("angular_momentum_kept", "|L| kept over the run (relative)", drift, 1e-12)
+    results.number("angular_momentum_drift", drift, "1",
+                   note="largest $|\\Delta|\\mathbf{L}||/|\\mathbf{L}|$ over the run")
+    results.hard_case("angular_momentum_kept", "$|\\mathbf{L}|$ kept over the run (relative)", drift, 1e-12)
 
 
 def _dissipation_structure(results, model, tilt_deg=10.0, periods=20):
@@ -130,28 +145,51 @@ def _dissipation_structure(results, model, tilt_deg=10.0, periods=20):
     rise = float(max(np.max(np.diff(E)), 0.0))
     results.number("large_wobble_tilt_deg", tilt_deg, "°")
     results.number("large_wobble_L_drift", float(np.max(np.abs(L / L[0] - 1.0))), "1",
-                   note=f"{tilt_deg:g}° wobble, {periods} periods")
+                   note=f"{shortest(tilt_deg)}° wobble, {periods} periods")
     results.number("large_wobble_energy_fall", float(fall / E[0]), "1", note="relative fall of the energy")
     results.number("large_wobble_energy_largest_rise", rise / fall, "1",
                    note="largest rise between samples / total fall (0: the energy only falls)")
-    results.hard_case("dissipation_keeps_L", f"Internal dissipation on a {tilt_deg:g}° wobble: |L| kept (relative) "
-                      "while the energy falls", float(np.max(np.abs(L / L[0] - 1.0))), 1e-12)
+    results.hard_case("dissipation_keeps_L", f"Internal dissipation on a {shortest(tilt_deg)}° wobble: "
+                      "$|\\mathbf{L}|$ kept (relative) while the energy falls", float(np.max(np.abs(L / L[0] - 1.0))),
+                      1e-12)
     results.hard_case("dissipation_energy_falls", "… and the energy never rises (largest rise / total fall)",
                       rise / fall, 1e-6)
 
 
-def _polhode(results, t, m, period, damped):
-    fig, ax = new_figure(4.2, 4.0)
+def _polhode(results, t, m, period, damped, triaxial=False):
     one = t <= (t[-1] if damped else period)
-    ax.plot(m.real[one], m.imag[one], lw=0.8)
+    if triaxial:
+        fig, (ax, bx) = plt.subplots(1, 2, figsize=(WIDE, 3.2), layout="constrained",
+                                     gridspec_kw={"width_ratios": [1, 1.3]})
+    else:
+        fig, ax = new_figure(3.6, 3.4)
+    ax.plot(m.real[one], m.imag[one], lw=0.35 if damped else 0.8, color="C4")
+    ax.plot(m.real[0], m.imag[0], "o", ms=3.5, color="C4")
     ax.plot([0], [0], "k+", ms=8)
-    ax.set_aspect("equal")
-    ax.set_xlabel("p/n toward Greenwich (mas)")
-    ax.set_ylabel("q/n toward 90° E (mas)")
-    what = "spirals in over the whole run" if damped else "over one period"
-    results.figure("polhode", fig, f"The polhode: the rotation axis about the figure axis in the body, {what}. "
-                   f"Period {period:.2f} d; the motion is counterclockwise seen from above the North Pole "
-                   "(prograde).")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(r"$p/n$, toward Greenwich (mas)")
+    ax.set_ylabel(r"$q/n$, toward 90° E (mas)")
+    what = "spiralling in over the whole run" if damped else "over one period"
+    caption = (f"The polhode: the rotation axis about the figure axis (+) in the body frame, {what}, from the "
+               f"start (dot). Period {format_number(period, 4)} d; the motion is counterclockwise seen from above the "
+               "North Pole (prograde).")
+    if triaxial:
+        # the ellipse is too near a circle to see: its radius against the angle shows it
+        angle = np.degrees(np.angle(m[one])) % 360.0
+        radius = np.abs(m[one])
+        order = np.argsort(angle)
+        bx.plot(angle[order], radius[order] - np.mean(radius), lw=0.9, color="C4")
+        bx.set_xlim(0, 360)
+        bx.set_xticks(np.arange(0, 361, 90))
+        bx.set_xlabel("angle from the $p$ axis (°)")
+        bx.set_ylabel(r"$|m| - \overline{|m|}$ (mas)")
+        bx.grid(True, alpha=0.25, linewidth=0.6)
+        ax.set_title("polhode")
+        bx.set_title("its radius less the mean radius")
+        caption += (" Right: the polhode's radius against the angle about the figure axis, less its mean: the "
+                    "triaxial Earth's polhode is an ellipse, longer along $q$ (the axis of the middle moment $B$) "
+                    "by the ratio $\\sqrt{A(C - A)/(B(C - B))}$, too near a circle to see on the left.")
+    results.figure("polhode", fig, caption)
 
 
 def _triaxial(results, model, amplitude, sol, t, rigid_solar):
@@ -162,29 +200,31 @@ def _triaxial(results, model, amplitude, sol, t, rigid_solar):
     exact = ref.free_rigid_body(I, I * w0, t) / model.n
     err = float(np.max(np.abs(sol.y_eval - exact)[:, :2])) / amplitude
     period = ref.free_rigid_body_period(I, I * w0)
-    results.number("B_minus_A_over_C", model.b_minus_a_over_c, "1", note="4 C22 H / J2 (EGM2008, IERS 2010)")
-    results.number("elliptic_period_solar_days", period, "d", note="4K(k)/λ of the exact motion")
+    results.number("B_minus_A_over_C", model.b_minus_a_over_c, "1", note="$4C_{22}H/J_2$ (EGM2008, IERS 2010)")
+    results.number("elliptic_period_solar_days", period, "d", note="$4K(k)/\\lambda$ of the exact motion")
     results.number("elliptic_modulus_squared", float(ref.free_rigid_body_rate_and_parameter(I, I * w0)[1]), "1")
     results.number("triaxial_period_change_days", period - rigid_solar, "d",
-                   note="against the symmetric Earth with the same (C − (A+B)/2)/C")
+                   note="against the symmetric Earth with the same $(C - (A + B)/2)/C$")
     results.number("triaxial_period_change_hours", 24.0 * (period - rigid_solar), "h")
     axis_ratio = np.sqrt(a * (1.0 - a) / (b * (1.0 - b)))
     results.number("polhode_axis_ratio", axis_ratio, "1",
-                   note="q_max/p_max = √(A(C − A)/(B(C − B))): the polhode is an ellipse")
+                   note="$q_\\mathrm{max}/p_\\mathrm{max} = \\sqrt{A(C - A)/(B(C - B))}$: the polhode is an "
+                        "ellipse")
     y = sol.y_eval
     results.number("polhode_axis_ratio_measured", float(np.max(np.abs(y[:, 1])) / np.max(np.abs(y[:, 0]))), "1")
     results.number("exact_solution_error", err, "1",
-                   note="max over the run of |ω − ω_exact| in p, q, relative to the wobble")
+                   note="largest $|\\omega - \\omega_\\mathrm{exact}|$ in $p$, $q$ over the run, relative to "
+                        "the wobble")
     results.hard_case("triaxial_exact", "Triaxial wobble against the elliptic-function solution over the run "
                       "(relative to the wobble)", err, 1e-6)
 
 
 def _elastic(results, model, H, params):
     k_s = earth.secular_love_number()
-    results.number("secular_love_number", k_s, "1", note="k_s = 3 J2 / q (IERS 2010 constants)")
-    results.number("beta_n2_over_C", model.beta_n2, "1", note="Lamb's βn² in units of C")
+    results.number("secular_love_number", k_s, "1", note="$k_\\mathrm{s} = 3J_2/q$ (IERS 2010 constants)")
+    results.number("beta_n2_over_C", model.beta_n2, "1", note="Lamb's $\\beta n^2$ in units of $C$")
     results.number("beta_n2_over_A", model.beta_n2 / (1.0 - H), "1")
-    results.number("beta_n2_over_C_minus_A", model.beta_n2 / H, "1", note="= k2/k_s")
+    results.number("beta_n2_over_C_minus_A", model.beta_n2 / H, "1", note="$= k_2/k_\\mathrm{s}$")
     results.number("excess_over_observed", model.wobble_period_solar_days() / 433.1 - 1.0, "1",
                    note="closed-form period / 433.1 d (Vicente & Wilson 1997) − 1")
     k2 = params.get("k2", model.beta_n2 / H * k_s)
@@ -192,7 +232,7 @@ def _elastic(results, model, H, params):
     for target, name in ((433.1, "433"), (427.0, "427")):
         needed = earth.beta_n2_for_period(H, target)
         results.number(f"k2_for_{name}_days", needed / H * k_s, "1",
-                       note=f"the Love number Lamb's model needs for a {target:g}-day wobble")
+                       note=f"the Love number Lamb's model needs for a {shortest(target)}-day wobble")
 
 
 def _damped(results, t, m, model, period):
@@ -203,22 +243,29 @@ def _damped(results, t, m, model, period):
     Q_fit = -sigma / (2.0 * slope)
     e_fold_years = -1.0 / slope / earth.JULIAN_YEAR_DAYS
     results.number("Q", model.Q, "1")
-    results.number("Q_recovered", Q_fit, "1", note="σ / (2 × decay rate) from the simulated amplitude")
+    results.number("Q_recovered", Q_fit, "1",
+                   note="$\\sigma/2\\gamma$, $\\gamma$ the decay rate of the simulated amplitude")
     results.number("Q_relative_error", Q_fit / model.Q - 1.0, "1")
     results.number("amplitude_e_folding_years", e_fold_years, "yr", note="measured")
     results.number("amplitude_e_folding_years_closed_form", model.Q * period / np.pi / earth.JULIAN_YEAR_DAYS, "yr",
-                   note="Q P / π")
-    results.hard_case("Q_recovered", "Q recovered from the damped series (relative)", Q_fit / model.Q - 1.0, Q_BOUND)
-    fig, ax = new_figure(5.6, 3.4)
+                   note="$QP/\\pi$")
+    results.hard_case("Q_recovered", "$Q$ recovered from the damped series (relative)", Q_fit / model.Q - 1.0, Q_BOUND)
+    fig, ax = new_figure(5.2, 3.0)
     years = t / earth.JULIAN_YEAR_DAYS
-    ax.semilogy(years, amp, lw=0.9, label="simulated |m|")
-    ax.semilogy(years, amp[0] * np.exp(-sigma * t / (2 * model.Q)), "k--", lw=0.8,
-                label=f"exp(−σt/2Q), Q = {model.Q:g}")
-    ax.set_xlabel("years")
-    ax.set_ylabel("wobble amplitude (mas)")
-    ax.legend(fontsize=8)
-    results.figure("decay", fig, f"A damped free wobble: the amplitude falls by e in {e_fold_years:.1f} years "
-                   f"(Q recovered: {Q_fit:.1f}); |L| is kept, the energy falls.")
+    ax.semilogy(years, amp, lw=1.6, color="C4", label="simulated $|m|$")
+    ax.semilogy(years, amp[0] * np.exp(-sigma * t / (2 * model.Q)), "k--", lw=0.9,
+                label=f"$|m_0|\\,e^{{-\\sigma t/2Q}}$, $Q$ = {shortest(model.Q)}")
+    ax.set_xlabel("time (yr)")
+    ax.set_ylabel("wobble amplitude $|m|$ (mas)")
+    # less than a decade: ticks at 1, 2, 5 times powers of ten, written out (30, 50, 100)
+    ax.yaxis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 3.0, 5.0)))
+    ax.yaxis.set_major_formatter(ScalarFormatter())
+    ax.yaxis.set_minor_formatter(NullFormatter())
+    ax.legend(loc="upper right")
+    results.figure("decay", fig, f"The amplitude of a damped free wobble ($Q$ = {shortest(model.Q)}) on a "
+                   "logarithmic scale: simulated, and the closed form $e^{-\\sigma t/2Q}$ (dashed). The two lie on "
+                   f"one straight line: the amplitude falls by a factor $e$ in {format_number(e_fold_years, 3)} "
+                   f"years, and the fit recovers $Q$ = {format_number(Q_fit, 4)}.")
 
 
 def _excited(results, t, m, model, closed):
@@ -231,38 +278,43 @@ def _excited(results, t, m, model, closed):
     results.number("fitted_annual_retrograde_mas", fit.annual_retrograde_mas, "mas")
     annual_period = earth.TROPICAL_YEAR_DAYS
     beat = 1.0 / abs(1.0 / annual_period - 1.0 / fit.chandler_period_days) / earth.JULIAN_YEAR_DAYS
-    results.number("beat_period_years", beat, "yr", note="1 / (f_annual − f_Chandler), fitted periods")
+    results.number("beat_period_years", beat, "yr",
+                   note="$1/(f_\\mathrm{annual} - f_\\mathrm{Chandler})$, fitted periods")
     results.number("beat_period_closed_form_years",
                    1.0 / abs(1.0 / annual_period - 1.0 / closed) / earth.JULIAN_YEAR_DAYS, "yr",
                    note="from the model's closed-form period")
     # a finite, randomly excited record fixes the period only to within the resonance's width, 1/Q relative
     bound = 1.0 / model.Q if model.Q else 1e-3
     results.hard_case("fitter_on_known_truth", "Fitting the simulated series recovers the model's period "
-                      "(relative; within the resonance width 1/Q)", fit.chandler_period_days / closed - 1.0, bound)
-    figure_path(results, "polar_path", t, m, "Model: the pole excited by an annual term and a random process "
-                f"(seeded); the beat of the {fit.chandler_period_days:.1f}-day wobble with the year, "
-                f"{beat:.2f} years, swells and shrinks the path.")
+                      "(relative; within the resonance width $1/Q$)", fit.chandler_period_days / closed - 1.0, bound)
+    shown = min(PATH_YEARS, float(years[-1] - years[0]))
+    figure_path(results, "polar_path", years, m, "The model pole excited by an annual term and a seeded random "
+                f"process: its path over the last {shortest(shown)} {plural(shown, 'year')} with the trend removed "
+                "(left) and its two coordinates "
+                f"against time (right). The {format_number(fit.chandler_period_days, 4)}-day wobble beats with the "
+                f"year every {format_number(beat, 3)} years, swelling and shrinking the path.",
+                last_years=PATH_YEARS, time_label="time from the start (yr)")
     return fit.chandler_period_days
 
 
-def figure_path(results, name, t, m, caption, last_years=13.0):
-    """The pole's path in the right-handed frame (x toward Greenwich, y toward 90° E) and x, y against time."""
-    import matplotlib.pyplot as plt
+def figure_path(results, name, years, m, caption, last_years=13.0, time_label="year"):
+    """The pole's path in the right-handed frame (x toward Greenwich, y toward 90° E) and x, y against time.
 
-    years = t / earth.JULIAN_YEAR_DAYS if t[-1] > 1000 else t
+    years: the samples' times in years (calendar years or years from the start: time_label says which)."""
     keep = years >= years[-1] - last_years
-    fig, (ax, bx) = plt.subplots(1, 2, figsize=(7.4, 3.4), layout="constrained",
-                                 gridspec_kw={"width_ratios": [1, 1.5]})
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(WIDE, 3.0), layout="constrained",
+                                 gridspec_kw={"width_ratios": [1, 1.45]})
     centre = m[keep] - np.polyval(np.polyfit(years[keep], m[keep], 1), years[keep])
-    ax.plot(centre.real, centre.imag, lw=0.5)
-    ax.set_aspect("equal")
-    ax.set_xlabel("x (mas), toward Greenwich")
-    ax.set_ylabel("−y (mas), toward 90° E")
-    bx.plot(years[keep], centre.real, lw=0.6, label="x")
-    bx.plot(years[keep], centre.imag, lw=0.6, label="−y")
-    bx.set_xlabel("year")
-    bx.set_ylabel("mas (trend removed)")
-    bx.legend(fontsize=8)
+    ax.plot(centre.real, centre.imag, lw=0.5, color="C4")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(r"$x$, toward Greenwich (mas)")
+    ax.set_ylabel(r"$-y$, toward 90° E (mas)")
+    bx.plot(years[keep], centre.real, lw=0.6, color="C4", label=r"$x$")
+    bx.plot(years[keep], centre.imag, lw=0.6, color="C5", label=r"$-y$")
+    bx.set_xlabel(time_label)
+    bx.set_ylabel("pole, trend removed (mas)")
+    bx.margins(y=0.2)
+    bx.legend(loc="upper right", ncol=2)
     for axis in (ax, bx):
         axis.grid(True, alpha=0.25, linewidth=0.6)
     results.figure(name, fig, caption)
@@ -270,15 +322,13 @@ def figure_path(results, name, t, m, caption, last_years=13.0):
 
 def _cones(results, model, amplitude):
     """Body and space cones (Lamb Art. 47): tan β = (C/A) tan α; the herpolhode is H times the polhode."""
-    import matplotlib.pyplot as plt
-
     a = model.parameters()[wobble.A_C]
     I = np.array([a, a, 1.0])
     w0 = model.n * np.array([amplitude, 0.0, 1.0])
     m0 = I * w0
     alpha = np.arctan2(np.hypot(m0[0], m0[1]), m0[2])        # figure axis to L
     beta = np.arctan2(np.hypot(w0[0], w0[1]), w0[2])         # figure axis to omega
-    results.number("tan_beta_over_tan_alpha", np.tan(beta) / np.tan(alpha), "1", note="Lamb: C/A")
+    results.number("tan_beta_over_tan_alpha", np.tan(beta) / np.tan(alpha), "1", note="Lamb: $C/A$")
     results.number("C_over_A", 1.0 / a, "1")
     # two days of attitude by the splitting (fourth order, exact rotations), the herpolhode in space
     h, days = 1e-3, 2.0
@@ -298,21 +348,41 @@ def _cones(results, model, amplitude):
     results.number("herpolhode_radius_mas", float(np.mean(herpolhode)) / earth.MAS, "mas")
     space_rate = np.linalg.norm(m0) / I[0]
     results.number("space_cone_period_sidereal_days", 2 * np.pi / space_rate * earth.SIDEREAL_PER_SOLAR_DAY,
-                   "sidereal days", note="ψ̇ = |L|/A: the plane of ω and the figure axis turns about L once a day")
-    fig, (ax, bx) = plt.subplots(1, 2, figsize=(7.0, 3.4), layout="constrained")
-    ax.plot(ms[:, 0] / I[0] / model.n / earth.MAS, ms[:, 1] / I[1] / model.n / earth.MAS, ".", ms=1.5)
-    ax.set_title("polhode (body), two days", fontsize=9)
+                   "sidereal days", note="$\\dot\\psi = |\\mathbf{L}|/A$: the plane of $\\omega$ and the "
+                   "figure axis turns about $\\mathbf{L}$ once a day")
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(WIDE, 3.2), layout="constrained")
+    # the body: two days are a short arc of the polhode, drawn on the whole circle (the closed form: a circle
+    # of the wobble's radius about the figure axis) so that the arc's size can be judged
+    p_body, q_body = ms[:, 0] / I[0] / model.n / earth.MAS, ms[:, 1] / I[1] / model.n / earth.MAS
+    radius = float(np.mean(np.hypot(p_body, q_body)))
+    turn = np.linspace(0.0, 2.0 * np.pi, 361)
+    ax.plot(radius * np.cos(turn), radius * np.sin(turn), ls="--", lw=0.7, color="0.55")
+    ax.plot(p_body, q_body, lw=2.6, color="C5", solid_capstyle="butt")
+    middle = len(p_body) // 2
+    ax.annotate("two days", (p_body[middle], q_body[middle]), xytext=(0.45 * radius, 0.45 * radius),
+                color="C5", ha="center", arrowprops={"arrowstyle": "->", "color": "C5", "lw": 0.8})
+    ax.annotate("one period", (-radius / np.sqrt(2), -radius / np.sqrt(2)), xytext=(-0.35 * radius, -0.45 * radius),
+                color="0.4", ha="center", arrowprops={"arrowstyle": "->", "color": "0.4", "lw": 0.8})
+    ax.plot([0], [0], "k+", ms=8)
+    ax.set_title("body: polhode about the figure axis")
+    ax.set_xlabel(r"$p/n$ (mas)")
+    ax.set_ylabel(r"$q/n$ (mas)")
     e1 = np.cross(L_hat, [0.0, 1.0, 0.0])
     e1 /= np.linalg.norm(e1)
     e2 = np.cross(L_hat, e1)
     space = omega_space / model.n
     ax_space = (space @ e1, space @ e2)
-    bx.plot(ax_space[0] / earth.MAS, ax_space[1] / earth.MAS, lw=0.8)
-    bx.set_title("herpolhode (space), two days", fontsize=9)
+    bx.plot(ax_space[0] / earth.MAS, ax_space[1] / earth.MAS, lw=0.9, color="C4")
+    bx.plot([0], [0], "k+", ms=8)
+    bx.set_title(r"space: herpolhode about $\mathbf{L}$")
+    bx.set_xlabel(r"$\omega_\xi/n$ (mas)")
+    bx.set_ylabel(r"$\omega_\eta/n$ (mas)")
     for axis in (ax, bx):
-        axis.set_aspect("equal")
-        axis.set_xlabel("mas")
+        axis.set_aspect("equal", adjustable="datalim")
         axis.grid(True, alpha=0.25, linewidth=0.6)
-    results.figure("cones", fig, f"Body and space cones over two days: the rotation axis barely moves in the body "
-                   f"(left, a short arc of the {amplitude / earth.ARCSEC:g}″ polhode) while in space it runs "
-                   f"once a day round a circle {1 / ratio:.0f} times smaller (right).")
+    results.figure("cones", fig, "The rotation axis over two days, in the body (left: $p$, $q$ about the figure "
+                   "axis, +) and in space (right: components normal to the invariable line $\\mathbf{L}$, +), in "
+                   "units of the spin $n$. In the body it moves along a short arc of the "
+                   f"{arcsec_text(amplitude)}″ polhode (dashed: the whole circle, one period); in space it "
+                   f"runs round the herpolhode twice, once a day, a circle {format_number(1 / ratio, 3)} times "
+                   "smaller. Both panels have equal scales on their two axes, not the same scale as each other.")

@@ -5,13 +5,17 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from ...formatting import format_number, plural, shortest
 from ...models import earth
 from ...models import precession as prec
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
+from ..figure_style import TEXT_WIDTH_IN
 from ..results import plt
 from . import fitting
 from .secular import ARCSEC_PER_TURN
+
+WIDE = TEXT_WIDTH_IN - 0.2      # the saved SVG's tight bounding box adds about 0.12 in
 
 RTOL = 1e-12
 SAMPLE_DAYS = 0.25 * earth.JULIAN_YEAR_DAYS
@@ -34,11 +38,15 @@ def run(scene, model, results, quick):
     results.timing_table("cost", pd.DataFrame([{"rung": "averaged", "effects": ", ".join(model.listed),
                                                 "span_years": span_years, "steps": sol.n_steps,
                                                 "evaluations": sol.nfev, "seconds": seconds}]),
-                         f"Cost of the averaged equations over {span_years:g} years (DOP853, rtol {RTOL:g}).")
+                         f"Cost of the averaged equations over {shortest(span_years)} {plural(span_years, 'year')} "
+                         f"(DOP853, rtol {shortest(RTOL)}; minimum of repeats).",
+                         headers={"rung": "rung", "effects": "effects", "span_years": "span (yr)", "steps": "steps",
+                                  "evaluations": "evaluations", "seconds": "wall time (s)"})
     psi, eps = prec.precession_angles(sol.y_eval)
     results.number("span_years", span_years, "yr")
     norm_drift = float(np.max(np.abs(np.linalg.norm(sol.y_eval, axis=1) - 1.0)))
-    results.hard_case("unit_axis", "|s| = 1 kept by the averaged equations over the span", norm_drift, 1e-9)
+    results.hard_case("unit_axis", "$|\\mathbf{s}| = 1$ kept by the averaged equations over the span "
+                      "(largest departure)", norm_drift, 1e-9)
 
     # A fixed lunar orbit tilted to the ecliptic: the axis precesses about the orbits' mean pole, not the
     # ecliptic's, and the obliquity swings; with the node regressing it averages to the ecliptic's.
@@ -50,9 +58,9 @@ def run(scene, model, results, quick):
         rate = fitting.fit(t, psi, args).rate
         mean_eps = fitting.fit(t, eps, args).offset
         results.number("mean_obliquity_offset_arcsec", (mean_eps - model.obliquity) / earth.ARCSEC, "″",
-                       note="fitted mean obliquity − the scene's (mean) obliquity")
+                       note="fitted mean obliquity − the model's (mean) obliquity")
         results.hard_case("start_on_forced_state", "The axis starts on the mean pole moved by the first-order "
-                          "nutation, so the mean obliquity is the scene's (″)",
+                          "nutation, so the mean obliquity is the model's (″)",
                           (mean_eps - model.obliquity) / earth.ARCSEC, MEAN_OBLIQUITY_BOUND_ARCSEC, "″")
     if not nodal:
         results.hard_case("averaged_rate_matches_formula", "The averaged equations' rate against the secular "
@@ -63,7 +71,7 @@ def run(scene, model, results, quick):
                        "mas/cy", note="averaged − secular: the node's regression couples to the nutation at second "
                        "order")
     rate_y = fitting.per_year_arcsec(rate)
-    results.number("precession_rate_arcsec_per_year", rate_y, "″/yr", note="fitted to the integrated ψ")
+    results.number("precession_rate_arcsec_per_year", rate_y, "″/yr", note="fitted to the integrated $\\psi$")
     results.number("precession_period_years", ARCSEC_PER_TURN / rate_y, "yr", note="360° / fitted rate")
     results.number("averaged_minus_secular_relative", rate / model.secular_rate() - 1.0, "1")
     results.hard_case("retrograde", "The equinox moves westward (1 if it moves eastward)", 0.0 if rate > 0 else 1.0,
@@ -71,7 +79,7 @@ def run(scene, model, results, quick):
     turn = _period_by_crossing(t, psi)
     if turn is not None:
         results.number("precession_period_by_crossing_years", turn / earth.JULIAN_YEAR_DAYS, "yr",
-                       note="the time for ψ to reach 360°, read off the integration")
+                       note="the time for $\\psi$ to reach 360°, read off the integration")
     eps_arcsec = eps / earth.ARCSEC
     results.number("obliquity_range_arcsec", float(eps_arcsec.max() - eps_arcsec.min()), "″",
                    note="max − min of the obliquity over the span")
@@ -102,34 +110,51 @@ def _nutation(results, model, t, psi, eps):
     results.number("nutation_longitude_18p6yr_arcsec", d_psi / earth.ARCSEC, "″", note="fitted, averaged equations")
     results.number("nutation_obliquity_18p6yr_arcsec", d_eps / earth.ARCSEC, "″", note="fitted, averaged equations")
     results.number("nutation_longitude_18p6yr_first_order_arcsec", closed_psi / earth.ARCSEC, "″",
-                   note="first order in i (digest §1.1)")
+                   note="first order in the lunar inclination $i$")
     results.number("nutation_obliquity_18p6yr_first_order_arcsec", closed_eps / earth.ARCSEC, "″")
-    results.number("nutation_ratio_18p6yr", d_psi / d_eps, "1", note="Δψ/Δε; first order: 2 cot 2ε")
+    results.number("nutation_ratio_18p6yr", d_psi / d_eps, "1",
+                   note="$\\Delta\\psi/\\Delta\\varepsilon$; first order: $2\\cot 2\\varepsilon$")
     results.number("two_cot_two_eps", 2.0 / np.tan(2.0 * model.obliquity), "1")
 
 
 def _cone_figure(results, model, s, t, eps_arcsec, span_years):
     years = t / earth.JULIAN_YEAR_DAYS
-    fig, (ax, bx) = plt.subplots(1, 2, figsize=(9.0, 3.8), layout="constrained")
-    ax.plot(s[:, 0], s[:, 1], lw=0.6)
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(WIDE, 3.1), layout="constrained",
+                                 gridspec_kw={"width_ratios": [1, 1.35]})
+    ax.plot(s[:, 0], s[:, 1], lw=0.6, color="C4")
     ax.plot([0], [0], "k+", ms=8)
-    ax.set_aspect("equal")
-    ax.set_xlabel("toward the J2000 equinox")
-    ax.set_ylabel("pole, ecliptic coordinates")
-    ax.set_title("the pole on the ecliptic plane", fontsize=9)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(r"$s_x$, toward the J2000 equinox")
+    ax.set_ylabel(r"$s_y$")
+    ax.set_title("spin axis seen from the ecliptic pole")
     # the 18.6-year nutation is far too fast to draw over a cycle: its band, and the mean through it
     bins = np.array_split(np.arange(len(years)), min(300, len(years)))
     mid = [years[b].mean() for b in bins]
-    deg = eps_arcsec / 3600.0
-    bx.fill_between(mid, [deg[b].min() for b in bins], [deg[b].max() for b in bins], color="C0", alpha=0.3, lw=0,
-                    label="range")
-    bx.plot(mid, [deg[b].mean() for b in bins], lw=0.8, color="C0", label="mean")
-    bx.legend(fontsize=7)
-    bx.ticklabel_format(axis="y", useOffset=False)
-    bx.set_xlabel("years from J2000")
-    bx.set_ylabel("obliquity (°)")
+    eps0_deg = np.degrees(model.obliquity)
+    small = float(np.ptp(eps_arcsec)) < 360.0                # a swing below 0.1°: in ″ about the start
+    shown = eps_arcsec - eps0_deg * 3600.0 if small else eps_arcsec / 3600.0
+    bx.fill_between(mid, [shown[b].min() for b in bins], [shown[b].max() for b in bins], color="C4", alpha=0.3, lw=0,
+                    label="range in each bin")
+    bx.plot(mid, [shown[b].mean() for b in bins], lw=0.8, color="C4", label="mean in each bin")
+    bx.margins(y=0.3)
+    bx.legend(loc="upper center", ncol=2)
+    if not small:
+        bx.ticklabel_format(axis="y", useOffset=False)
+    bx.set_xlabel("time from J2000 (yr)")
+    bx.set_ylabel(r"$\varepsilon - \varepsilon_0$ (″)" if small else r"obliquity $\varepsilon$ (°)")
+    bx.set_title("obliquity against the fixed ecliptic")
     bx.grid(True, alpha=0.25)
     ax.grid(True, alpha=0.25)
-    results.figure("cone", fig, f"The cone traced by the pole over {span_years:g} years of the averaged equations "
-                   f"({', '.join(model.listed)}), and the obliquity against the fixed ecliptic (its range and mean in "
-                   f"{span_years / 300:.0f}-year bins).")
+    bin_years = span_years / min(300, len(years))
+    nodal = model.moon and model.inclined
+    notice = ("the axis circles the mean pole of the ecliptic and the fixed, tilted lunar orbit, not the "
+              "ecliptic's pole, so the obliquity swings by degrees" if nodal and not model.regressing
+              else "the axis moves on a circle about the ecliptic pole and the obliquity keeps its mean")
+    effects = ", ".join(e.replace("_", " ") for e in model.listed)
+    offset = (f" (shown as $\\varepsilon - \\varepsilon_0$, $\\varepsilon_0$ = {format_number(eps0_deg, 6)}°; "
+              f"whole range {format_number(float(np.ptp(eps_arcsec)), 2)}″)" if small else "")
+    results.figure("cone", fig, f"Left: the spin axis $\\mathbf{{s}}$ projected on the ecliptic plane over "
+                   f"{shortest(span_years)} {plural(span_years, 'year')} of the averaged equations "
+                   f"({effects}), the ecliptic pole marked +; right: the obliquity against the fixed "
+                   f"ecliptic{offset}, its range and mean in bins of about {format_number(bin_years, 2)} "
+                   f"{plural(bin_years, 'year')}. Notice that {notice}.")

@@ -9,14 +9,19 @@ from __future__ import annotations
 
 import numpy as np
 import pandas as pd
+from matplotlib.ticker import MaxNLocator
 
+from ...formatting import format_number, plural, shortest
 from ...models import earth
 from ...models import precession as prec
 from ...solvers import rigid_body
 from ...solvers.timing import min_time
+from ..figure_style import TEXT_WIDTH_IN
 from ..results import plt
 from . import averaged, fitting
 from .secular import ARCSEC_PER_TURN
+
+WIDE = TEXT_WIDTH_IN - 0.2      # the saved SVG's tight bounding box adds about 0.12 in
 
 QUICK_SPAN_YEARS = 20.0
 FREE_NUTATION_YEARS = 3.0
@@ -62,7 +67,9 @@ def run(scene, model, results, quick):
     results.timing_table("cost", pd.DataFrame([{
         "rung": "full", "effects": ", ".join(model.listed), "span_years": span_years, "step_hours": step * 24,
         "order": order, "steps": steps, "seconds": seconds, "ns_per_step": seconds / steps * 1e9}]),
-        f"Cost of the spin-resolved run over {span_years:g} years (splitting of order {order}, minimum of repeats).")
+        f"Cost of the spin-resolved run over {_years(span_years)} (splitting of order {order}, minimum of repeats).",
+        headers={"rung": "rung", "effects": "effects", "span_years": "span (yr)", "step_hours": "step (h)",
+                 "order": "order", "steps": "steps", "seconds": "wall time (s)", "ns_per_step": "per step (ns)"})
     results.number("span_years", span_years, "yr")
     results.number("step_hours", step * 24.0, "h")
     results.number("steps", steps, "1")
@@ -72,7 +79,7 @@ def run(scene, model, results, quick):
     fp, fe, args = fit_series(model, t, psi, eps)
     rate_y = fitting.per_year_arcsec(fp.rate)
     results.number("precession_rate_arcsec_per_year", rate_y, "″/yr",
-                   note="fitted to ψ of L together with the periodic terms")
+                   note="fitted to $\\psi$ of $\\mathbf{L}$ together with the periodic terms")
     results.number("precession_period_years", ARCSEC_PER_TURN / rate_y, "yr", note="360° / fitted rate")
     results.number("full_minus_secular_relative", fp.rate / model.secular_rate() - 1.0, "1")
     avg = averaged.integrate(model, span, t)
@@ -86,21 +93,22 @@ def run(scene, model, results, quick):
     for term, key in NUTATION_TERMS.items():
         if term in args:
             results.number(f"nutation_longitude_{key}_arcsec", fitting.amplitude(fp, term) / earth.ARCSEC, "″",
-                           note=f"{term} term of Δψ, fitted")
+                           note=f"{term} term of $\\Delta\\psi$, fitted")
             results.number(f"nutation_obliquity_{key}_arcsec", fitting.amplitude(fe, term) / earth.ARCSEC, "″",
-                           note=f"{term} term of Δε, fitted")
+                           note=f"{term} term of $\\Delta\\varepsilon$, fitted")
     for name, (closed_psi, closed_eps) in (("18p6yr", model.nutation_18p6yr()), ("semiannual", model.semiannual())):
         if closed_psi:
             results.number(f"nutation_longitude_{name}_first_order_arcsec", closed_psi / earth.ARCSEC, "″")
             results.number(f"nutation_obliquity_{name}_first_order_arcsec", closed_eps / earth.ARCSEC, "″")
     results.number("fit_residual_longitude_mas", fp.residual_rms / earth.MAS, "mas",
-                   note="rms of ψ after the line and the fitted terms")
+                   note="rms of $\\psi$ after the line and the fitted terms")
 
     _invariants(results, ms, fe, span_years)
     e3 = rigid_body.rotate_to_space(qs, np.array([0.0, 0.0, 1.0]))
     cosang = np.clip(np.sum(L * e3, axis=1) / np.linalg.norm(L, axis=1), -1.0, 1.0)
     results.number("figure_axis_offset_mas", float(np.max(np.arccos(cosang))) / earth.MAS, "mas",
-                   note="largest angle between L and the figure axis (forced diurnal wobble, Oppolzer terms)")
+                   note="largest angle between $\\mathbf{L}$ and the figure axis (forced diurnal wobble, Oppolzer "
+                        "terms)")
     if analysis.get("compare_iau"):
         _iau_nutation(results, model, t, psi, eps, fp, fe, args)
     if analysis.get("aliasing_windows_years"):
@@ -114,14 +122,15 @@ def run(scene, model, results, quick):
 def _invariants(results, ms, fe, span_years):
     norms = np.linalg.norm(ms, axis=1)
     drift = float(np.max(np.abs(norms / norms[0] - 1.0)))
-    results.number("angular_momentum_drift", drift, "1", note="max |Δ|L|| / |L| over the run")
-    results.hard_case("angular_momentum_kept", f"|L| over {span_years:g} years of daily spin (relative; the couple "
-                      "is normal to the figure axis)", drift, L_BOUND)
+    results.number("angular_momentum_drift", drift, "1",
+                   note="largest $|\\Delta|\\mathbf{L}||/|\\mathbf{L}|$ over the run")
+    results.hard_case("angular_momentum_kept", f"$|\\mathbf{{L}}|$ over {_years(span_years)} of daily spin (relative; "
+                      "the couple is normal to the figure axis)", drift, L_BOUND)
     rate_cy = fe.rate * 36525.0 / earth.ARCSEC
     results.number("obliquity_rate_arcsec_per_century", rate_cy, "″/cy",
                    note="secular part of the fitted obliquity; IAU 2006's −46.8″/cy comes from the moving ecliptic")
-    results.hard_case("no_obliquity_drift", f"Secular obliquity change over {span_years:g} years against the fixed "
-                      "ecliptic (″ per century)", rate_cy, OBLIQUITY_RATE_BOUND, "″/cy")
+    results.hard_case("no_obliquity_drift", f"Secular obliquity change over {_years(span_years)} against the fixed "
+                      "ecliptic (″/cy)", rate_cy, OBLIQUITY_RATE_BOUND, "″/cy")
 
 
 def _iau_nutation(results, model, t, psi, eps, fp, fe, args):
@@ -139,35 +148,48 @@ def _iau_nutation(results, model, t, psi, eps, fp, fe, args):
                      "obliquity_arcsec": fitting.amplitude(fe, term) / earth.ARCSEC,
                      "obliquity_iau2000b_arcsec": fitting.amplitude(ie, term) / earth.ARCSEC})
     frame = pd.DataFrame(rows)
-    results.table("nutation", frame, "Amplitudes of the nutation terms: ours (the full model, fitted) and the "
-                  "IAU 2000B series (pyerfa nut00b on the same days, fitted the same way with the IAU arguments).")
+    results.table("nutation", frame, "Amplitudes of the nutation terms in longitude ($\\Delta\\psi$) and obliquity "
+                  "($\\Delta\\varepsilon$): the full model's, fitted, beside the IAU 2000B series evaluated on the "
+                  "same days and fitted the same way with the IAU arguments.",
+                  headers={"term": "term", "longitude_arcsec": "$\\Delta\\psi$ (″)",
+                           "longitude_iau2000b_arcsec": "$\\Delta\\psi$, IAU 2000B (″)",
+                           "obliquity_arcsec": "$\\Delta\\varepsilon$ (″)",
+                           "obliquity_iau2000b_arcsec": "$\\Delta\\varepsilon$, IAU 2000B (″)"})
     for row in rows:
         key = NUTATION_TERMS[row["term"]]
         results.number(f"iau2000b_longitude_{key}_arcsec", row["longitude_iau2000b_arcsec"], "″")
         results.number(f"iau2000b_obliquity_{key}_arcsec", row["obliquity_iau2000b_arcsec"], "″")
         results.number(f"longitude_{key}_over_iau_minus_one", row["longitude_arcsec"] / row["longitude_iau2000b_arcsec"]
-                       - 1.0, "1", note="ours / IAU 2000B − 1")
+                       - 1.0, "1", note="full model / IAU 2000B − 1")
         results.number(f"obliquity_{key}_over_iau_minus_one", row["obliquity_arcsec"] / row["obliquity_iau2000b_arcsec"]
-                       - 1.0, "1", note="ours / IAU 2000B − 1")
+                       - 1.0, "1", note="full model / IAU 2000B − 1")
     # the periodic parts, day by day
     ours_psi = psi - (fp.offset + fp.rate * t)
     ours_eps = eps - (fe.offset + fe.rate * t)
     results.number("nutation_difference_rms_longitude_arcsec", float(np.sqrt(np.mean((ours_psi - d_psi) ** 2)))
-                   / earth.ARCSEC, "″", note="ours − IAU 2000B, day by day (rms)")
+                   / earth.ARCSEC, "″", note="full model − IAU 2000B, day by day (rms)")
     results.number("nutation_difference_rms_obliquity_arcsec", float(np.sqrt(np.mean((ours_eps - d_eps) ** 2)))
                    / earth.ARCSEC, "″")
     show = t <= 20.0 * earth.JULIAN_YEAR_DAYS
     years = 2000.0 + t[show] / earth.JULIAN_YEAR_DAYS
-    fig, axes = plt.subplots(2, 1, figsize=(6.4, 4.6), sharex=True, layout="constrained")
-    for ax, ours, iau, name in ((axes[0], ours_psi, d_psi, "Δψ (″)"), (axes[1], ours_eps, d_eps, "Δε (″)")):
-        ax.plot(years, iau[show] / earth.ARCSEC, color="0.6", lw=1.6, label="IAU 2000B (pyerfa)")
-        ax.plot(years, ours[show] / earth.ARCSEC, lw=0.6, label="full model")
+    fig, axes = plt.subplots(2, 1, figsize=(WIDE, 4.0), sharex=True, layout="constrained")
+    for ax, ours, iau, name in ((axes[0], ours_psi, d_psi, r"$\Delta\psi$ (″)"),
+                                (axes[1], ours_eps, d_eps, r"$\Delta\varepsilon$ (″)")):
+        ax.plot(years, iau[show] / earth.ARCSEC, color="0.65", lw=1.8, label="IAU 2000B")
+        ax.plot(years, ours[show] / earth.ARCSEC, lw=0.5, color="C5", label="full model")
         ax.set_ylabel(name)
+        ax.margins(y=0.22)
         ax.grid(True, alpha=0.25)
-    axes[0].legend(fontsize=7, loc="upper right")
+    axes[0].legend(loc="upper center", ncol=2)
     axes[1].set_xlabel("year")
-    results.figure("nutation", fig, "Nutation in longitude and obliquity: the full model (ψ and ε of L less their "
-                   "fitted lines) and the IAU 2000B series over the first 20 years.")
+    axes[1].xaxis.set_major_locator(MaxNLocator(integer=True, steps=[1, 2, 5, 10]))   # calendar years
+    axes[1].xaxis.set_major_formatter("{x:.0f}")
+    shown = int(round(t[show][-1] / earth.JULIAN_YEAR_DAYS))
+    results.figure("nutation", fig, "Nutation in longitude ($\\Delta\\psi$, top) and obliquity "
+                   "($\\Delta\\varepsilon$, bottom) from J2000: the full model's $\\psi$ and $\\varepsilon$ of "
+                   "$\\mathbf{L}$ less their fitted lines (thin) over the IAU 2000B series (grey) for the first "
+                   f"{format_number(shown)} {plural(shown, 'year')}. The 18.6-year term dominates; the semi-annual "
+                   "and fortnightly terms ride on it.")
 
 
 def _aliasing(results, model, t, psi, windows_years, span_years, args):
@@ -183,10 +205,13 @@ def _aliasing(results, model, t, psi, windows_years, span_years, args):
                      "with_periodic_terms_arcsec_per_year": fitting.per_year_arcsec(with_terms)})
     frame = pd.DataFrame(rows)
     results.table("aliasing", frame, "The secular rate fitted over windows that are not whole periods of the "
-                  "nutations: a bare straight line, and a line fitted together with the periodic terms.")
+                  "nutations: a bare straight line, and a line fitted together with the periodic terms. The bare "
+                  "line's rate depends on the window; with the periodic terms it does not.",
+                  headers={"window_years": "window (yr)", "line_only_arcsec_per_year": "rate, line only (″/yr)",
+                           "with_periodic_terms_arcsec_per_year": "rate, line and periodic terms (″/yr)"})
     spread = lambda col: float((frame[col].max() - frame[col].min()) / frame[col].mean())     # noqa: E731
     results.number("aliasing_spread_line_only", spread("line_only_arcsec_per_year"), "1",
-                   note="(max − min)/mean of the bare line's rate over the windows")
+                   note="(largest − smallest)/mean of the bare line's rate over the windows")
     results.number("aliasing_spread_with_terms", spread("with_periodic_terms_arcsec_per_year"), "1")
     results.hard_case("aliasing", "The rate fitted with the periodic terms does not depend on the window (relative "
                       "spread over the windows)", spread("with_periodic_terms_arcsec_per_year"), ALIASING_BOUND)
@@ -215,14 +240,15 @@ def _free_nutation(results, model, order):
     _, q0 = prec.initial_state(model)
     expected = float(np.linalg.norm(prec.forced_offset(model, q0))) / model.n
     results.number("free_wobble_axis_start_mas", axis / earth.MAS, "mas",
-                   note="Euler free wobble excited by starting with ω along the figure axis")
+                   note="Euler free wobble excited by starting with $\\omega$ along the figure axis")
     results.number("free_wobble_expected_mas", expected / earth.MAS, "mas",
-                   note="|e3 × N|/(Cn²) at the start: the pole's velocity over n")
+                   note="$|\\mathbf{e}_3 \\times \\mathbf{N}|/(Cn^2)$ at the start: the pole's velocity "
+                        "over $n$")
     results.number("free_wobble_forced_start_mas", forced / earth.MAS, "mas",
                    note="starting on the steady forced precession")
     results.hard_case("forced_start", "The free wobble left by starting on the forced state, as a fraction of the "
-                      f"one left by starting on the figure axis (bound: the fastest couple's ν/n; step "
-                      f"{FREE_NUTATION_STEP_HOURS:g} h)", forced / axis, fastest / model.n)
+                      f"one left by starting on the figure axis (bound: the fastest couple's $\\nu/n$; step "
+                      f"{shortest(FREE_NUTATION_STEP_HOURS)} h)", forced / axis, fastest / model.n)
 
 
 LADDER = ("solar_torque", "lunar_torque", "orbit_eccentricity", "lunar_inclination", "node_regression")
@@ -249,9 +275,21 @@ def _effect_ladder(results, model, scene, step, order, years):
                       "ns_per_step": seconds / steps * 1e9})
     frame = pd.DataFrame(rows)
     frame["rate_change"] = frame.rate.diff().fillna(frame.rate)
-    results.table("effect_ladder", frame, f"The full model over {years:g} years with the effects switched on one "
-                  "at a time (each row adds one to those above): the rate (fitted) and the secular formula for the "
-                  "same effects (″/yr), the 18.6-year and semi-annual nutations in longitude (″), and the change in "
-                  "the rate each effect brings (″/yr).")
+    results.table("effect_ladder", frame, f"The full model over {_years(years)} with the effects switched on one "
+                  "at a time (each row adds one to those above): the fitted rate beside the secular formula for the "
+                  "same effects, the 18.6-year and semi-annual nutations in longitude, and the change in the rate "
+                  "each effect brings. A tilted lunar orbit with a fixed node changes the rate by several ″/yr; "
+                  "with the node regressing the rate returns to the secular formula's.",
+                  headers={"adds": "effect added", "rate": "rate (″/yr)", "secular_formula": "secular formula (″/yr)",
+                           "dpsi_18p6yr": "$\\Delta\\psi$, 18.6 yr (″)",
+                           "dpsi_semiannual": "$\\Delta\\psi$, semi-annual (″)",
+                           "rate_change": "rate change (″/yr)"})
     results.timing_table("effect_ladder", pd.DataFrame(times), "What each effect costs: the same runs, timed "
-                         "(minimum of repeats). An effect not listed is not evaluated.")
+                         "(minimum of repeats). An effect not listed is not evaluated.",
+                         headers={"adds": "effect added", "span_years": "span (yr)", "steps": "steps",
+                                  "seconds": "wall time (s)", "ns_per_step": "per step (ns)"})
+
+
+def _years(value) -> str:
+    """A span as a reader writes it: 1 year, 20 years, 0.1 years."""
+    return f"{shortest(value)} {plural(value, 'year')}"

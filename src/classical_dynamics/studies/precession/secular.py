@@ -11,6 +11,31 @@ from .fitting import per_year_arcsec
 ARCSEC_PER_TURN = 1296000.0
 
 
+CONSTANTS_NAMES = {"lamb1920": "Lamb 1920", "modern": "modern values"}
+
+# The constants' sources as the model states them, with their symbols typeset ($...$, the report's syntax).
+_SYMBOLS = (("S/(E+M)", "$S/(E + M)$"), ("GM_E", "$GM_\\mathrm{E}$"), ("M/E", "$M/E$"), ("E/M", "$E/M$"),
+            ("n1/n'", "$n_1/n'$"), ("n/n'", "$n/n'$"), ("e_Moon", "$e_\\mathrm{Moon}$"),
+            ("a_Moon", "$a_\\mathrm{Moon}$"), ("e' =", "$e'$ ="), ("i =", "$i$ ="),
+            ("(read from damaged OCR)", "(as far as the damaged scan can be read)"),
+            ("328900.5596", "328\u202f900.5596"))
+
+
+def typeset_source(line: str) -> str:
+    """A constants source line with its symbols in $...$, read left to right so that a replacement is never
+    replaced again."""
+    out, rest = [], line
+    while rest:
+        hits = [(rest.find(old), old, new) for old, new in _SYMBOLS if old in rest]
+        if not hits:
+            out.append(rest)
+            break
+        at, old, new = min(hits, key=lambda h: (h[0], -len(h[1])))
+        out.append(rest[:at] + new)
+        rest = rest[at + len(old):]
+    return "".join(out)
+
+
 def setup(scene) -> prec.PrecessionModel:
     e = scene.data["earth"]
     H = earth.h_over_c(e["H"], e["H_definition"])
@@ -35,17 +60,18 @@ def run(scene, results) -> prec.PrecessionModel:
     results.number("H_over_C", model.H, "1", note=data["earth"]["H_source"])
     results.number("obliquity_deg", np.degrees(model.obliquity), "°", note=data["earth"]["obliquity_source"])
     results.number("spin_turns_per_year", model.orbits.spin_turns_per_year, "1",
-                   note="n/n′: sidereal turns of the Earth in its orbital period")
+                   note="$n/n'$: sidereal turns of the Earth in its orbital period")
     for line in model.orbits.sources:
-        results.notes.append(f"Constants ({model.orbits.name}): {line}.")
+        results.notes.append(f"Constants ({CONSTANTS_NAMES.get(model.orbits.name, model.orbits.name)}): "
+                             f"{typeset_source(line)}.")
     solar, lunar = per_year_arcsec(model.solar_rate()), per_year_arcsec(model.lunar_rate())
     total = solar + lunar
     results.number("secular_solar_rate_arcsec_per_year", solar, "″/yr", note="Lamb Art. 61 (7), per Julian year")
     results.number("secular_lunar_rate_arcsec_per_year", lunar, "″/yr", note="Lamb Art. 61 (16)")
     results.number("secular_rate_arcsec_per_year", total, "″/yr", note="westward (retrograde), positive")
     if model.sun and model.moon:
-        results.number("lunar_to_solar_ratio", lunar / solar, "1", note="from the secular rates of this scene's "
-                       "effects")
+        results.number("lunar_to_solar_ratio", lunar / solar, "1", note="from the secular rates of the "
+                       "effects included")
     per_orbit = model.secular_rate() * model.orbits.year_days / earth.ARCSEC
     results.number("secular_per_orbit_arcsec", per_orbit, "″",
                    note="per revolution of the Earth round the Sun (Lamb's 'per annum')")
@@ -68,10 +94,10 @@ def _inverse(results, model, spec):
     computed = rate * model.orbits.year_days / earth.ARCSEC if model.orbits.name == "lamb1920" else per_year_arcsec(rate)
     H = model.H * observed / computed
     results.number("inverse_observed_rate_arcsec_per_year", observed, "″/yr", note=spec["source"])
-    results.number("H_from_observed_rate", H, "1", note="(C − A)/C that reproduces the observed rate")
+    results.number("H_from_observed_rate", H, "1", note="$(C - A)/C$ that reproduces the observed rate")
     results.number("computed_over_observed_minus_one", computed / observed - 1.0, "1",
                    note="the formula's rate against the observed one")
-    results.number("C_minus_A_over_A_from_observed_rate", H / (1.0 - H), "1", note="the same as (C − A)/A")
+    results.number("C_minus_A_over_A_from_observed_rate", H / (1.0 - H), "1", note="the same as $(C - A)/A$")
 
 
 def _iau(results, model, total):
@@ -85,4 +111,4 @@ def _iau(results, model, total):
     results.number("iau2006_eps0_arcsec", iau["eps0_arcsec"], "″", note="obliquity at J2000 (pyerfa p06e)")
     results.number("secular_minus_psi_A_relative", total / iau["psi_A"] - 1.0, "1",
                    note="the first-order formula against the IAU 2006 luni-solar precession")
-    results.number("iau2006_period_years", ARCSEC_PER_TURN / iau["p_A"], "yr", note="360° / p_A")
+    results.number("iau2006_period_years", ARCSEC_PER_TURN / iau["p_A"], "yr", note="360°/$p_A$")
