@@ -10,6 +10,7 @@ import math
 
 MINUS = "\u2212"           # −
 GROUP = "\u202f"           # narrow no-break space between groups of three digits
+TIMES = "\u202f×\u202f"    # 1.6 × 10⁻¹⁰ never breaks across a line
 SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 FIXED_RANGE = (-3, 5)      # decimal notation for 10⁻³ <= |x| < 10⁵, powers of ten outside
 
@@ -57,7 +58,7 @@ def format_number(value, sig: int = 4, *, fixed_range=FIXED_RANGE) -> str:
     if low <= exponent < high:
         decimals = max(sig - 1 - exponent, 0)
         return sign + _group(f"{abs(value):.{decimals}f}")
-    return f"{sign}{mantissa} × {power_of_ten(exponent)}"
+    return f"{sign}{mantissa}{TIMES}{power_of_ten(exponent)}"
 
 
 def format_decimals(value, decimals: int) -> str:

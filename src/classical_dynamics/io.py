@@ -95,7 +95,7 @@ def svg_bytes(figure) -> bytes:
 
     buffer = _io.BytesIO()
     with matplotlib.rc_context({"svg.hashsalt": "classical-dynamics", "svg.fonttype": "path"}):
-        figure.savefig(buffer, format="svg", metadata={"Date": None}, bbox_inches="tight")
+        figure.savefig(buffer, format="svg", metadata={"Date": None}, bbox_inches="tight", pad_inches=0.03)
     return buffer.getvalue()
 
 

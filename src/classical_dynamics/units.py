@@ -74,7 +74,7 @@ def unit_text(key: str | None, value=None) -> str:
     text = unit.symbol
     if unit.word and value is not None and value == 1 and unit.singular:
         text = unit.singular
-    return text if unit.close_up else "\u2009" + text
+    return text if unit.close_up else "\u202f" + text        # narrow no-break space: 303.6 d never splits
 
 
 def header(quantity: str, key: str | None) -> str:

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import base64
 import html
+import math
 from collections import defaultdict
 from datetime import datetime, timezone
 from pathlib import Path
@@ -191,14 +192,13 @@ class Report:
         whole = {c: numeric[c] and frame[c].dropna().map(float.is_integer).all() for c in frame.columns
                  if pd.api.types.is_float_dtype(frame[c])}
         body = []
-        for _, row in frame.iterrows():
+        values = {c: frame[c].tolist() for c in frame.columns}      # per column: ints stay ints
+        for i in range(len(frame)):
             cells = []
             for c in frame.columns:
-                v = row[c]
-                if pd.isna(v):
+                v = values[c][i]
+                if v is None or (isinstance(v, float) and math.isnan(v)):
                     v = None
-                elif hasattr(v, "item"):
-                    v = v.item()
                 if isinstance(v, float) and whole.get(c):
                     v = int(v)
                 text = format_number(v, (sigs or {}).get(c, sig))
@@ -232,10 +232,11 @@ class Report:
         """The figures a claim's computed value is shown to: what its check supports."""
         check = claim.check
         reference = claim.source.get("value")
+        # At most 8: a tighter agreement than that is read from the deviation column, not from digits.
         if "relative" in check:
-            return sig_for_tolerance(claim.computed, relative=check["relative"])
+            return sig_for_tolerance(claim.computed, relative=check["relative"], cap=8)
         if "absolute" in check:
-            return sig_for_tolerance(reference if reference else claim.computed, absolute=check["absolute"])
+            return sig_for_tolerance(reference if reference else claim.computed, absolute=check["absolute"], cap=8)
         if "factor" in check:
             return 2
         return 3

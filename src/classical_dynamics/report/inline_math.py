@@ -213,7 +213,10 @@ def math_html(source: str) -> str:
     """One $...$ body as HTML. Attributes go unquoted, so the HTML can stand inside a quoted string
     of a template (a caption in a Jinja list) without ending it."""
     parser = _Parser(source.strip())
-    return f'<span class=math>{parser.sequence("math")}</span>'
+    body = parser.sequence("math")
+    # a short formula never breaks across lines; a long one may, at its spaces
+    kind = "math" if len(re.sub(r"<[^>]+>", "", body)) <= 24 else "math-long"
+    return f'<span class={kind}>{body}</span>'
 
 
 def render_text(text: str) -> str:
