@@ -87,6 +87,11 @@ class InlineMath(Extension):
         return render_markup(source)
 
 
+def _header_html(text: str) -> str:
+    """A header as HTML: $math$ typeset; one typed in a template was typeset when it was compiled."""
+    return text if "<span class=math" in text else render_text(text)
+
+
 _CODE = re.compile(r"<code>(.*?)</code>", re.S)
 
 
@@ -188,7 +193,7 @@ class Report:
         for c in frame.columns:
             numeric[c] = pd.api.types.is_numeric_dtype(frame[c]) and not pd.api.types.is_bool_dtype(frame[c])
             cls = ' class="n"' if numeric[c] else ""
-            head.append(f"<th{cls}>{render_text(headers.get(c, c.replace('_', ' ')))}</th>")
+            head.append(f"<th{cls}>{_header_html(headers.get(c, c.replace('_', ' ')))}</th>")
         whole = {c: numeric[c] and frame[c].dropna().map(float.is_integer).all() for c in frame.columns
                  if pd.api.types.is_float_dtype(frame[c])}
         body = []
