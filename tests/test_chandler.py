@@ -296,3 +296,21 @@ def test_only_listed_effects_are_built(monkeypatch):
     assert called == ["elastic_yielding"]
     p = model.parameters()
     assert p[wobble.DISSIPATION] == 0 and p[wobble.N_TERMS] == 0 and p[wobble.A_C] == p[wobble.B_C]
+
+
+def test_polar_path_time_axis_reads_calendar_years():
+    """The observed path is drawn against calendar years as given (a time axis of 5.45-5.49 'year',
+    calendar years divided again by 365.25, must not return)."""
+    import numpy as np
+
+    from classical_dynamics.studies.chandler.model import figure_path
+    from classical_dynamics.studies.results import Results
+
+    years = np.linspace(1990.0, 2003.0, 2000)
+    m = 100 * np.exp(2j * np.pi * years / 1.19)
+    results = Results("chandler", "observed", "test")
+    figure_path(results, "polar_path", years, m, "caption")
+    low, high = results.figures["polar_path"][0].axes[1].get_xlim()
+    assert 1989 < low < 1991 and 2002 < high < 2004
+    polhode = results.figures["polar_path"][0].axes[0]
+    assert polhode.get_aspect() == 1.0                       # x and y in the same unit: equal aspect
