@@ -63,7 +63,7 @@ def test_pdf_pages(built_repo, tmp_path):
     for number in re.findall(r'<span class="label">Figure (\d+)\.</span>', html):
         assert f"Figure {number}." in text                                         # every figure, same number
     assert "Contents" in text and "References" in text and "Vibrations of chains" in text
-    assert "The Chandler wobble" in text and "Observed polar motion" in text
+    assert "The Chandler wobble" in text and "observed polar motion" in text
     assert "Precession of the equinoxes" in text and "The spin-resolved Earth" in text
     assert "The self-excited rigid body" in text and "Periodic motions as series" in text
     # page numbers: the contents page names the page of the chains chapter
