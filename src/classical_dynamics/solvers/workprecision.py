@@ -20,6 +20,7 @@ import pandas as pd
 from . import rigid_body
 from .ode import Problem, solve
 from .timing import min_time
+from ..formatting import format_number
 
 
 @dataclass
@@ -118,17 +119,108 @@ def fitted_orders(frame: pd.DataFrame) -> dict:
     return out
 
 
+# methods figure_style.METHOD_COLOURS has no colour for yet: fixed here, so they keep it from figure to figure
+EXTRA_COLOURS = {"scipy:bdf": "#7F7F7F"}
+
+
+def _colours(methods) -> dict:
+    """Each method's colour of every figure ('splitting, order 2' is splitting2); a method without one takes
+    the first palette colour no other method of the figure has (the palette's order otherwise)."""
+    from ..studies.figure_style import METHOD_COLOURS, OKABE_ITO, method_colour
+    known = {name.lower() for name in METHOD_COLOURS}
+    keys = {m: m.replace(", order ", "").lower() for m in methods}
+    out = {m: method_colour(k) for m, k in keys.items() if k in known}
+    out.update({m: EXTRA_COLOURS[k] for m, k in keys.items() if k in EXTRA_COLOURS})
+    free = [c for c in OKABE_ITO[:-1] if c not in out.values()] + ["#7F7F7F"]   # grey, not the faint yellow
+    for index, m in enumerate(m for m in methods if m not in out):
+        out[m] = free[index] if index < len(free) else method_colour(m, index)
+    return out
+
+
+def decade_ticks(axis, max_labels: int | None = None) -> None:
+    """Label a log axis at powers of ten only, at most max_labels of them (every second or third decade on a
+    long axis), so that no two labels run into each other. By default from the width of the axes' column."""
+    from matplotlib.ticker import LogLocator, NullFormatter
+    if max_labels is None:
+        fig, spec = axis.axes.figure, axis.axes.get_subplotspec()
+        columns = spec.get_gridspec().ncols if spec is not None else 1
+        size = fig.get_figwidth() / columns if axis.axis_name == "x" else fig.get_figheight()
+        max_labels = max(3, int(size / 0.55))
+    low, high = sorted(abs(v) for v in axis.get_view_interval())
+    decades = np.log10(high / low) if low > 0 else 0.0
+    axis.set_major_locator(LogLocator(base=10.0, numticks=max_labels))
+    # on a long axis the minor ticks mark the unlabelled decades only (2, 3, ... 9 would grey the grid)
+    subs = (1.0,) if decades > max_labels else np.arange(2, 10) * 0.1
+    axis.set_minor_locator(LogLocator(base=10.0, subs=subs, numticks=100))
+    axis.set_minor_formatter(NullFormatter())
+
+
 def plot(frame: pd.DataFrame, ax, orders: dict | None = None, error: str = "error_final", floor: float = 1e-17,
-         xlabel: str = "error at the final time (max over components)"):
-    """Log-log, error on x and time on y, one line per method (x inverted: accuracy grows to the right):
-    solid for this library's adaptive methods, dashed for scipy's, dotted squares for fixed-step splittings."""
+         xlabel: str = "error at the final time"):
+    """Log-log, error on x and wall time on y, one line per method (x inverted: accuracy grows to the right):
+    solid for this library's adaptive methods, dashed for SciPy's, dotted squares for fixed-step splittings.
+    Each line is labelled with its method's name and drawn in that method's colour of every figure; with
+    `orders` the fitted order of a fixed-step method joins its label. The caller places the legend."""
+    colours = _colours(list(dict.fromkeys(frame.method)))
     for method, part in frame.groupby("method", sort=False):
-        label = method + (f" (order {orders[method]:.2f})" if orders and method in orders else "")
+        label = method + (f" (fitted order {format_number(orders[method], 3)})"
+                          if orders and method in orders else "")
         style = "o--" if method.startswith("scipy:") else ("s:" if method.startswith("splitting") else "o-")
-        ax.loglog(np.maximum(part[error], floor), part.seconds, style, ms=3, label=label)
+        ax.loglog(np.maximum(part[error], floor), part.seconds, style, ms=3, color=colours[method],
+                  label=label)
     ax.set_xlabel(xlabel)
-    ax.set_ylabel("wall time (s), min over repeats")
+    ax.set_ylabel("wall time (s)")
     ax.invert_xaxis()
+    decade_ticks(ax.xaxis)
+    decade_ticks(ax.yaxis)
+
+
+def legend_below(fig, handles=None, labels=None, ncol: int = 4):
+    """A figure legend below the axes, in as many columns (at most ncol) as fit the figure's width."""
+    if handles is None:
+        handles, labels = fig.axes[0].get_legend_handles_labels()
+    renderer = fig.canvas.get_renderer()
+    for n in range(min(ncol, len(labels)), 0, -1):
+        legend = fig.legend(handles, labels, loc="outside lower center", ncol=n)
+        if n == 1 or legend.get_window_extent(renderer).width <= 0.93 * fig.bbox.width:   # SVG text runs wider
+            return legend
+        legend.remove()
+
+
+def nominal_order(method: str) -> int | None:
+    """The order a fixed-step method is built to have, read from its label ('splitting, order 4' -> 4)."""
+    match = re.search(r"order (\d+)", method)
+    return int(match.group(1)) if match else None
+
+
+def plot_convergence(frame: pd.DataFrame, ax, orders: dict | None = None, error: str = "error_final",
+                     nominal: dict | None = None, xlabel: str = "step $h$",
+                     ylabel: str = "error at the final time"):
+    """Observed convergence of the fixed-step methods: error against step h (log-log), each method in its colour
+    and style of plot() with its fitted order in the label, and dashed reference slopes h^p for the nominal
+    orders p, drawn through the centre of the method's points and moved down by a factor 4, so that the slopes
+    compare side by side."""
+    steps = frame[frame.kind == "step"]
+    colours = _colours(list(dict.fromkeys(steps.method)))
+    for method, part in steps.groupby("method", sort=False):
+        colour = colours[method]
+        fitted = (orders or {}).get(method)
+        label = method + (f" (fitted order {format_number(fitted, 3)})" if fitted is not None else "")
+        part = part.sort_values("setting")
+        ax.loglog(part.setting, part[error], "s:", ms=3, color=colour, label=label)
+        p = (nominal or {}).get(method, nominal_order(method))
+        good = part[part[error] > 1e-14]
+        if p is None or len(good) < 1:
+            continue
+        h = np.geomspace(part.setting.min(), part.setting.max(), 20)
+        centre_h = np.exp(np.mean(np.log(good.setting)))
+        centre_e = np.exp(np.mean(np.log(good[error])))
+        ax.loglog(h, centre_e / 4.0 * (h / centre_h) ** p, "--", lw=0.9, color=colour,
+                  label=f"reference slope $h^{{{p}}}$")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    decade_ticks(ax.xaxis)
+    decade_ticks(ax.yaxis)
 
 
 def method_key(method: str) -> str:

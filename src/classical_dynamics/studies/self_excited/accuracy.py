@@ -23,7 +23,9 @@ from ...solvers import symplectic
 from ...solvers import workprecision as wp
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
+from ...formatting import format_number, power_of_ten, shortest
 from ..results import new_figure
+from .portrait import param_text
 
 SEPARATRIX_OFFSET = 1e-6
 PERIODS = 10
@@ -74,9 +76,12 @@ def separatrix(results, m1, quick):
     results.number("separatrix_span_tau", span, "τ", note=f"{PERIODS} periods of the orbit")
     results.number("separatrix_runs_on_wrong_side", int(frame.wrong_side.sum()), "1",
                    note="settings whose energy error carried the motion across the separatrix")
-    publish(results, frame, "separatrix", "energy_error", f"{PERIODS} periods of a closed orbit a relative "
-            f"{SEPARATRIX_OFFSET:g} inside the separatrix (m1 = {m1:g}): energy error at the end, and whether it "
-            "crossed to the wrong side (the motion then runs away).", "energy error at the end")
+    publish(results, frame, "separatrix", "energy_error", f"{PERIODS} periods of a closed orbit of Lee (2.10) a "
+            f"relative {power_of_ten(round(np.log10(SEPARATRIX_OFFSET)))} inside the separatrix ($m_1$ = "
+            f"{shortest(m1)}, $\\nu = 0$), by method and relative tolerance or step $h$: the error of the energy "
+            "$E$ at the end, and whether it carried the motion across the separatrix, where it runs away.",
+            "error of the energy $E$ at the end",
+            {"energy_error": "energy error", "wrong_side": "crossed the separatrix"})
 
 
 def limit_cycle(results, m1, nu, quick):
@@ -90,9 +95,10 @@ def limit_cycle(results, m1, nu, quick):
 
     rows = _adaptive_rows(Problem(se.plane_largest, y0, (0.0, span), [m1, -nu, 1.0]), error_of, quick)
     frame = pd.DataFrame(rows)
-    publish(results, frame, "limit_cycle", "error", f"{PERIODS} periods on the limit cycle F (m1 = {m1:g}, "
-            f"ν = {nu:g}): distance at the end from the closed form (φ2 advanced by 20π, p1 back at its start).",
-            "error at the end against the closed form")
+    publish(results, frame, "limit_cycle", "error", f"{PERIODS} periods on the limit cycle $F$ of Lee (2.10) "
+            f"($m_1$ = {shortest(m1)}, $\\nu$ = {shortest(nu)}), by method and relative tolerance: the distance "
+            "in $(\\varphi_2, p_1)$ at the end from the closed form ($\\varphi_2$ advanced by $20\\pi$, $p_1$ back "
+            "at its start).", "error in $(\\varphi_2, p_1)$ at the end", {"error": "error", "setting": "rtol"})
 
 
 def huge_excursion(results, M, start, quick):
@@ -107,18 +113,35 @@ def huge_excursion(results, M, start, quick):
     problem = Problem(se.euler_middle, w0, (0.0, EXCURSION_PERIODS * T), M.euler_parameters())
     frame = pd.DataFrame(_adaptive_rows(problem, error_of, quick))
     publish(results, frame, "excursion", "error", f"Euler's equations over {EXCURSION_PERIODS} periods of a huge "
-            f"excursion (q0 = {w0[1]:g}, ν = {-M.mu1:.4g} against ν_c = {se.MiddleAxis.plane_nu('nu_c', M.body):.4g}): "
-            "distance at the end from the start, relative to the largest |ω| on the orbit.", "relative error at the end")
+            f"excursion ($q_0$ = {shortest(w0[1])}, $\\nu$ = {param_text(-M.mu1)} against $\\nu_\\mathrm{{c}}$ "
+            f"= {format_number(se.MiddleAxis.plane_nu('nu_c', M.body), 4)}), by method and relative tolerance: the "
+            "distance of $\\boldsymbol{\\omega}$ at the end from its start, relative to the largest "
+            "$|\\boldsymbol{\\omega}|$ on the orbit.", "error at the end, relative to the largest $|\\omega|$",
+            {"error": "relative error", "setting": "rtol"})
 
 
-def publish(results, frame, name, error, caption, xlabel):
-    """A work-precision frame as table, timing table, figure and best error per method."""
-    results.table(f"accuracy_{name}", frame.drop(columns=["seconds"]), caption)
-    results.timing_table(f"accuracy_{name}", frame, caption + " With wall times.")
-    fig, ax = new_figure(6.0, 3.8)
-    wp.plot(frame, ax, error=error, floor=1e-16, xlabel=xlabel)
-    ax.legend(fontsize=7)
-    results.timing_figure(f"work_precision_{name}", fig, "What accuracy costs: " + caption)
+HEADERS = {"method": "method", "kind": "control", "setting": "rtol or step $h$", "steps": "steps",
+           "seconds": "wall time (s)"}
+
+
+def publish(results, frame, name, error, caption, xlabel, headers=None, floor=1e-16):
+    """A work-precision frame as table, timing table, figure and best error per method. headers: those of the
+    columns particular to this frame (the error's); the common ones are HEADERS."""
+    headers = {**HEADERS, **(headers or {})}
+    results.table(f"accuracy_{name}", frame.drop(columns=["seconds"]), caption, headers=headers)
+    results.timing_table(f"accuracy_{name}", frame, caption + " With the wall time of each run, the minimum over "
+                         "repeated runs.", headers=headers)
+    fig, ax = new_figure(height=3.2)
+    wp.plot(frame, ax, error=error, floor=floor, xlabel=xlabel)
+    fig.legend(loc="outside right upper")
+    styles = ["solid: this library's methods"]
+    if frame.method.str.startswith("scipy:").any():
+        styles.append("dashed: SciPy's integrators")
+    if (frame.kind == "step").any():
+        styles.append("dotted squares: fixed steps")
+    results.timing_figure(f"work_precision_{name}", fig, caption + " Wall time against the error, one line per method "
+                          f"({'; '.join(styles)}); accuracy grows to the right, and errors below "
+                          f"{power_of_ten(round(np.log10(floor)))} are drawn at that floor.")
     for key, (best, setting) in wp.best_by_method(frame, error).items():
         results.number(f"best_{error}_{name}_{key}", best, "1", note=f"at {setting:g}")
 

@@ -14,7 +14,9 @@ import pandas as pd
 from ...models import self_excited as se
 from ...solvers.ode import Events, Problem, solve, solve_batch
 from ...solvers.timing import min_time
-from ..results import new_figure
+from ...formatting import format_number, shortest
+from ..figure_style import TEXT_WIDTH_IN
+from ..results import new_figure, plt
 from . import portrait
 
 OVERLAY_BOUND = 1e-8          # hard case: Euler's equations mapped into the plane against the plane system
@@ -58,35 +60,61 @@ def run(scene, results, quick):
         results.number(f"n_{kind}s", sum(pt["type"] == kind for pt in points), "1")
     _eigenvalue_check(results, m1, nu, points)
 
-    fig, ax = new_figure(7.0, 4.4)
+    if smallest:          # the plane, and beside it the motion in the body, seen along the torque axis z
+        fig, (ax, cx) = plt.subplots(1, 2, figsize=(TEXT_WIDTH_IN, 3.9), layout="constrained",
+                                     width_ratios=[2.6, 1.0])
+        for a in (ax, cx):
+            a.grid(True, which="both", alpha=0.25, linewidth=0.6)
+    else:
+        fig, ax = new_figure(TEXT_WIDTH_IN, 3.9)
     seconds, curves, _ = min_time(lambda: _trajectories(m1, nu, lo, hi, p1_max, tau_max, points), repeats=1,
                                   budget_s=0.1)
     spreads = _draw_trajectories(ax, curves, m1, nu, lo, hi, p1_max)
     results.number("invariant_spread", spreads, "1", note=("E" if nu == 0 else "C1") + ": largest spread along "
                    "one trajectory, relative to the size of its terms")
-    results.hard_case("plane_invariant", f"The plane's first integral ({'E' if nu == 0 else 'C1'}) along its "
-                      "trajectories (largest relative spread)", spreads, INVARIANT_BOUND)
+    integral = "$E$" if nu == 0 else "$C_1$"
+    results.hard_case("plane_invariant", f"The plane's first integral {integral} along its trajectories (largest "
+                      "relative spread)", spreads, INVARIANT_BOUND)
     _draw_separatrices(ax, m1, nu, lo, hi, p1_max, points)
-    deviation, cyl, along_euler = _overlay(ax, L, body, smallest, m1, nu, lo, hi, points)
+    paths = []
+    deviation, cyl, along_euler = _overlay(ax, L, body, smallest, m1, nu, lo, hi, points, keep=paths)
+    if smallest:
+        _seen_along_z(cx, paths, body, delta)
     results.number("overlay_deviation", deviation, "1", note="Euler's equations in the plane against (2.10), max")
     results.number("cylinder_spread", cyl, "1", note="relative spread of q²/b + r²/c along Euler's equations")
     results.hard_case("overlay", "Full integrations of Euler's equations, mapped into the plane, on the plane's "
-                      "trajectories (max deviation in (φ2, p1))", deviation, OVERLAY_BOUND)
+                      "trajectories (largest deviation in $(\\varphi_2, p_1)$)", deviation, OVERLAY_BOUND)
     results.number("invariant_spread_euler", along_euler, "1", note=("E" if nu == 0 else "C1") + ": largest "
                    "spread along one of Euler's integrations mapped into the plane, relative to the size of its terms")
-    results.hard_case("plane_invariant_euler", f"The plane's first integral ({'E' if nu == 0 else 'C1'}) along "
-                      "Euler's equations mapped into the plane (largest relative spread)", along_euler, INVARIANT_BOUND)
-    results.hard_case("elliptic_cylinder", "The end of ω stays on its elliptic cylinder (relative spread of "
-                      "q²/b + r²/c)", cyl, CYLINDER_BOUND)
-    portrait.finish(ax, points, (lo, hi), p1_max, "p1")
-    regime = f"m1 = {m1:g}" + (f", ν = {nu:g}" if nu else ", unperturbed")
-    results.figure("portrait", fig, f"Phase plane of Lee's (2.10) for the torque along the {data['torque_axis']} "
-                   f"axis, {regime}: "
-                   "trajectories (grey), separatrices from the closed forms (black), limit cycles F and F1 (red) "
-                   "where they exist, singular points by type, and Euler's equations integrated in three "
-                   "dimensions and mapped into the plane (dots).")
+    results.hard_case("plane_invariant_euler", f"The plane's first integral {integral} along Euler's equations "
+                      "mapped into the plane (largest relative spread)", along_euler, INVARIANT_BOUND)
+    results.hard_case("elliptic_cylinder", "The end of $\\boldsymbol{\\omega}$ stays on its elliptic cylinder "
+                      "(relative spread of $q^2/b + r^2/c$)", cyl, CYLINDER_BOUND)
+    F = se.limit_cycle_p1(np.linspace(lo, hi, 801), m1, nu)
+    view = p1_max if F is None else max(p1_max, 1.1 * float(np.max(np.abs(F))))     # F and F1 in the window
+    portrait.finish(ax, points, (lo, hi), view, "$p_1$", angle=True)
+    regime = f"$m_1$ = {portrait.param_text(m1)}" + (f", $\\nu$ = {portrait.param_text(nu)}" if nu
+                                                    else ", unperturbed ($\\nu = 0$)")
+    shown = ["trajectories of the plane (grey)"]
+    if any(pt["type"] != "center" for pt in points):
+        shown.append("the separatrices from the closed forms (black)")
+    if cycles:
+        shown.append("the limit cycles $F$ (stable, solid) and $F_1$ (unstable, dashed)")
+    if points:
+        shown.append("the singular points by type")
+    shown.append(f"{portrait.COUNTS[len(paths)]} integrations of Euler's equations in three dimensions, mapped "
+                 "into the plane (dots)")
+    axis_text = ("smallest axis $z$ ($p$ and $r$, $a$ and $c$ exchanged)" if smallest else "largest axis $x$")
+    caption = (f"Phase plane of Lee (2.10) for the torque along the {axis_text}, {regime}: "
+               + ", ".join(shown[:-1]) + ", and " + shown[-1] + ". The dots lie on the plane's trajectories.")
+    if smallest:
+        caption += (" Right: the same integrations in the body, seen along the torque axis $z$: the end of "
+                    "$\\boldsymbol{\\omega}$ runs on the ellipse $p^2/a + q^2/b = \\delta^2$ about $z$ (black), "
+                    "where for the torque along the largest axis it runs about $x$; the plane is the same.")
+    results.figure("portrait", fig, caption)
     results.timing_table("cost", pd.DataFrame([{"what": "plane trajectories of the portrait", "seconds": seconds}]),
-                         "Cost of the portrait's plane trajectories.")
+                         "What the portrait's plane trajectories cost to integrate.",
+                         headers={"what": "computation", "seconds": "wall time (s)"})
 
     centers = [pt for pt in points if pt["type"] == "center"]
     if centers:
@@ -128,7 +156,7 @@ def _eigenvalue_check(results, m1, nu, points):
         kind = "degenerate" if np.max(np.abs(lam)) < 1e-4 else ("saddle" if np.max(lam.real) > 1e-8 else "center")
         wrong += kind != pt["type"]
     results.hard_case("singular_point_types", "Singular points whose type from the numerical Jacobian differs from "
-                      "the closed form (count)", wrong, 0)
+                      "the closed form's (count)", wrong, 0)
 
 
 def _starts(m1, nu, lo, hi, p1_max, points):
@@ -172,14 +200,27 @@ def _draw_separatrices(ax, m1, nu, lo, hi, p1_max, points):
             first = False
     F = se.limit_cycle_p1(phi, m1, nu)
     if F is not None:
-        ax.plot(phi, F, color="C3", lw=1.4, label="F (stable limit cycle)")
-        ax.plot(phi, -F, color="C3", lw=1.4, ls="--", label="F1 (unstable)")
+        ax.plot(phi, F, color=portrait.LIMIT_CYCLE_COLOUR, lw=1.4, label="$F$ (stable limit cycle)")
+        ax.plot(phi, -F, color=portrait.LIMIT_CYCLE_COLOUR, lw=1.4, ls="--", label="$F_1$ (unstable limit cycle)")
 
 
-def _overlay(ax, L, body, smallest, m1, nu, lo, hi, points):
+def _seen_along_z(ax, paths, body, delta):
+    """The torque along z: Euler's integrations (p, q) and the ellipse p^2/a + q^2/b = delta^2 they run on."""
+    theta = np.linspace(0.0, 2 * np.pi, 361)
+    ax.plot(delta * np.sqrt(body.a) * np.cos(theta), delta * np.sqrt(body.b) * np.sin(theta), "k-", lw=1.0)
+    for w in paths:
+        ax.plot(w[::4, 0], w[::4, 1], ".", color=portrait.EULER_COLOUR, ms=3)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("$p$ (rad per time unit)")
+    ax.set_ylabel("$q$ (rad per time unit)")
+    ax.set_title("seen along $z$")
+
+
+def _overlay(ax, L, body, smallest, m1, nu, lo, hi, points, keep=None):
     """Three starts integrated in (p, q, r) and in the plane: their largest disagreement after mapping, and along
     Euler's integrations the spreads of q^2/b + r^2/c and of the plane's first integral. For the smallest axis the
-    physical equations are integrated and their state read as (r, q, p)."""
+    physical equations are integrated and their state read as (r, q, p). keep: a list that receives each
+    integration's physical states (p, q, r)."""
     order = [2, 1, 0] if smallest else [0, 1, 2]
     rhs = se.euler_smallest if smallest else se.euler_largest
     physical = np.array([body.a, body.b, body.c, L.m, L.mu])
@@ -198,13 +239,15 @@ def _overlay(ax, L, body, smallest, m1, nu, lo, hi, points):
         good = np.all(np.isfinite(full.y_eval), axis=1) & np.all(np.isfinite(flat.y_eval), axis=1)
         good &= np.cumprod(np.abs(np.nan_to_num(flat.y_eval[:, 1], nan=np.inf)) < OVERLAY_P1_MAX).astype(bool)
         reduced = full.y_eval[good][:, order]
+        if keep is not None:
+            keep.append(full.y_eval[good])
         mapped = L.to_plane(reduced, phi2_start=phi)
         scale = np.maximum(1.0, np.abs(flat.y_eval[good]))
         worst = max(worst, float(np.max(np.abs(mapped - flat.y_eval[good]) / scale)))
         cyl = se.cylinder(L.body, reduced)
         cyl_worst = max(cyl_worst, float(np.ptp(cyl) / cyl[0]))
         inv_worst = max(inv_worst, se.invariant_spread(mapped, m1, -nu))
-        ax.plot(mapped[::4, 0], mapped[::4, 1], ".", color="C2", ms=3,
+        ax.plot(mapped[::4, 0], mapped[::4, 1], ".", color=portrait.EULER_COLOUR, ms=3,
                 label="Euler's equations, mapped" if k == 0 else None)
     return worst, cyl_worst, inv_worst
 
@@ -217,18 +260,16 @@ def _series(results, m1, nu, phi_c, amplitudes):
     """Lee §4.2: the series period against the measured one; the error must shrink like eta^4."""
     frame = portrait.series_check(
         results, lambda eta: _period(m1, nu, phi_c, eta), lambda eta: se.series_period(m1, nu, eta), amplitudes,
-        "Lee §4.2: the period (in τ) of the oscillation about the center started at φ2c + η, measured from the "
-        "plane system and from the series 2π(1 − m1²)^(−1/4)(1 + h2η² + h3η³).")
+        "Lee §4.2: the period (in $\\tau$) of the oscillation about the center $\\varphi_{2\\mathrm{c}}$ started at "
+        "$\\varphi_{2\\mathrm{c}} + \\eta$, integrated from the plane system and from the series "
+        "$2\\pi(1 - m_1^2)^{-1/4}(1 + h_2\\eta^2 + h_3\\eta^3)$, and their relative difference.")
     results.number("period_tau_linear", 2 * np.pi / (1 - m1**2) ** 0.25, "τ", note="2π(1 − m1²)^(−1/4)")
-    fig, ax = new_figure(4.8, 3.4)
-    ax.loglog(frame.eta, frame.relative_error, "o-", ms=3, label="series against integration")
-    ax.loglog(frame.eta, frame.relative_error.iloc[-1] * (frame.eta / frame.eta.iloc[-1]) ** 4, "k:", lw=0.8,
-              label="η⁴")
-    ax.set_xlabel("amplitude η")
-    ax.set_ylabel("relative error of the period")
-    ax.legend(fontsize=7)
-    results.figure("series", fig, "The period series of Lee §4.2 against the integrated period: the error falls "
-                   "like η⁴, the first term the series leaves out.")
+    slope = results.numbers["series_error_slope"]["value"]
+    fig, ax = new_figure(TEXT_WIDTH_IN / 2, 3.0)
+    portrait.series_figure(ax, frame, slope)
+    results.figure("series", fig, "The relative error of Lee's period series (§4.2) against the integrated period, "
+                   "by amplitude $\\eta$ (log-log), with the dashed reference slope $\\eta^4$, the first power the "
+                   f"series leaves out: the fitted slope is {format_number(slope, 3)}.")
 
 
 def _blow_up(results, m1, nu):
@@ -240,7 +281,7 @@ def _blow_up(results, m1, nu):
     if sol.status == "blow-up":
         results.number("blow_up_time", sol.t, "τ", note=f"from φ2 = 0, p1 = {start:.4g} (below F1): |y| passes "
                        f"{BLOW_UP_BOUND:g}, within 1/(ν·{BLOW_UP_BOUND:g}) of the singularity")
-    results.hard_case("below_F1_blows_up", "A start below F1 leaves every bound in finite time (1 if it does not)",
+    results.hard_case("below_F1_blows_up", "A start below $F_1$ leaves every bound in finite time (1 if it does not)",
                       0.0 if sol.status == "blow-up" else 1.0, 0.0)
 
 
@@ -269,16 +310,20 @@ def _separatrix_sides(results, m1, nu):
         period = float(fates["inside"][1] - fates["inside"][0]) if len(fates["inside"]) >= 2 else np.nan
         rows.append({"offset": eps, "period_inside": period, "outside_turns_back": len(fates["outside"]) > 0})
     frame = pd.DataFrame(rows)
-    results.table("separatrix", frame, "Starts a relative offset inside and outside the separatrix loop: the "
-                  "period inside (τ), and whether the start outside ever turns back (it must not).")
+    results.table("separatrix", frame, "Starts a relative offset $\\varepsilon$ inside and outside the separatrix "
+                  "loop, heading for the saddle: the period inside (in $\\tau$), which grows like "
+                  "$\\ln(1/\\varepsilon)$, and whether the start outside ever turns back (it must not).",
+                  headers={"offset": "offset $\\varepsilon$", "period_inside": "period inside ($\\tau$)",
+                           "outside_turns_back": "outside turns back"})
     slope = float(np.polyfit(np.log(1.0 / frame.offset), frame.period_inside, 1)[0])
     rate = (1.0 - m1**2) ** 0.25 / passages
     results.number("separatrix_period_slope", slope, "τ", note="d(period)/d ln(1/ε) inside the loop")
     results.number("separatrix_slope_expected", 1.0 / rate, "τ", note="n/λ, λ = (1 − m1²)^(1/4), n saddles passed")
-    results.hard_case("separatrix_sides", "Starts 1e-2 ... 1e-10 either side of the separatrix that end on the "
-                      "wrong side (count)", wrong, 0)
-    results.hard_case("separatrix_period_growth", "Near the separatrix the period grows like n ln(1/ε)/λ "
-                      "(relative error of the slope)", slope * rate - 1.0, 0.01)
+    results.hard_case("separatrix_sides", "Starts a relative 10⁻² to 10⁻¹⁰ either side of the separatrix that end "
+                      "on the wrong side (count)", wrong, 0)
+    results.hard_case("separatrix_period_growth", "Near the separatrix the period grows like "
+                      "$n\\ln(1/\\varepsilon)/\\lambda$, $\\lambda = (1 - m_1^2)^{1/4}$ the saddle's rate and $n$ the "
+                      "saddles passed in a period (relative error of the slope)", slope * rate - 1.0, 0.01)
 
 
 def _limit_cycle_period(results, m1, nu):
@@ -291,10 +336,10 @@ def _limit_cycle_period(results, m1, nu):
     results.number("period_tau_F", float(sol.y[0]), "τ", note="p1 on F, one turn of φ2 (2π), integrated")
     results.number("period_tau_F_jacobi", closed, "τ", note="4K(k)/√(α + β), Jacobi's form")
     results.number("omega_period_tau_F", 2 * float(sol.y[0]), "τ", note="ω returns after two turns of φ2 (4π)")
-    results.hard_case("limit_cycle_period", "The period on F, integrated against Jacobi's closed form (relative)",
-                      float(sol.y[0]) / closed - 1.0, 1e-9)
-    results.hard_case("limit_cycle_closes", "p1 on F returns to its start after one turn of φ2 (absolute)",
-                      float(sol.y[1]) - start, 1e-9)
+    results.hard_case("limit_cycle_period", "The period on $F$, integrated, against Jacobi's closed form "
+                      "$4K(k)/\\sqrt{\\alpha + \\beta}$ (relative)", float(sol.y[0]) / closed - 1.0, 1e-9)
+    results.hard_case("limit_cycle_closes", "$p_1$ on $F$ returns to its start after one turn of $\\varphi_2$ "
+                      "(absolute)", float(sol.y[1]) - start, 1e-9)
 
 
 def _singular_point_bifurcation(results):
@@ -316,24 +361,30 @@ def _singular_point_bifurcation(results):
             match = [pt for pt in closed if abs(pt["phi2"] - x) < 1e-10 and pt["type"] == kind]
             wrong += len(match) != 1
             found.append((m1, x, kind))
-    results.hard_case("singular_point_bifurcation", "Singular points found numerically for m1 in [−1.5, 1.5] that "
-                      "the closed form misses, misplaces or mistypes (count)", wrong, 0)
-    fig, ax = new_figure(5.6, 3.6)
+    results.hard_case("singular_point_bifurcation", "Singular points found numerically for $m_1$ in [−1.5, 1.5] "
+                      "that the closed form misses, misplaces or mistypes (count)", wrong, 0)
+    fig, ax = new_figure(height=3.2)
     m = np.linspace(-1.0, 1.0, 401)
     ax.plot(m, -np.arcsin(m), "k-", lw=1.2, label="saddles, closed form")
     centre = np.pi + np.arcsin(m)
-    ax.plot(m, np.where(centre > np.pi, centre - 2 * np.pi, centre), "k--", lw=1.2, label="centers, closed form")
+    centre = np.where(centre > np.pi, centre - 2 * np.pi, centre)
+    centre[np.r_[False, np.abs(np.diff(centre)) > np.pi]] = np.nan      # the jump from π to −π is no curve
+    ax.plot(m, centre, "k--", lw=1.2, label="centers, closed form")
     for kind, marker in (("saddle", "x"), ("center", "o")):
         pts = np.array([(a, b) for a, b, k in found if k == kind])
-        ax.plot(pts[:, 0], pts[:, 1], marker, ms=3, color="C0", mfc="none", label=f"{kind}s, found numerically")
+        ax.plot(pts[:, 0], pts[:, 1], marker, ms=3.5, color="#0072B2", mfc="none",
+                label=f"{kind}s, found numerically")
     ax.axvline(-1, color="0.6", lw=0.6)
     ax.axvline(1, color="0.6", lw=0.6)
-    ax.set_xlabel("m1")
-    ax.set_ylabel("φ2 of the singular point (one period)")
-    ax.legend(fontsize=6)
-    results.figure("bifurcation_m1", fig, "Singular points of (2.10) against m1: each saddle–center pair merges "
-                   "into a degenerate point at m1 = ±1 and vanishes beyond; lines from the closed form, markers "
-                   "from numerical root finding.")
+    portrait.pi_ticks(ax.yaxis, -np.pi, np.pi)
+    ax.set_ylim(-1.1 * np.pi, 1.1 * np.pi)
+    ax.set_xlabel("$m_1$")
+    ax.set_ylabel("$\\varphi_2$ of the singular point (rad)")
+    fig.legend(loc="outside right upper")
+    results.figure("bifurcation_m1", fig, "The singular points of Lee (2.10) against $m_1$, $\\varphi_2$ taken in "
+                   "$(-\\pi, \\pi]$: lines from the closed form $\\sin\\varphi_2 = -m_1$, markers from numerical "
+                   "root finding with the type read from the Jacobian. Each saddle–center pair merges into a "
+                   "degenerate point at $m_1 = \\pm 1$ and vanishes beyond.")
 
 
 def _limit_cycle_bifurcation(results, m1_scene, nu_scene):
@@ -353,55 +404,67 @@ def _limit_cycle_bifurcation(results, m1_scene, nu_scene):
     clear = np.abs(N / star - 1.0) > 0.02                     # cells on the boundary itself are undecided
     wrong = int(np.sum((bounded != exists) & clear))
     results.number("limit_cycle_grid_cells", int(M.size), "1")
-    results.hard_case("limit_cycle_bifurcation", "Cells of the (m1, ν) grid where the integrated fate disagrees "
-                      "with ν* = m1/(2√(1 − m1²)) (count, cells within 2 % of the curve excluded)", wrong, 0)
-    fig, ax = new_figure(5.6, 3.8)
-    ax.plot(M[bounded], N[bounded], "s", ms=2.5, color="C2", label="bounded: tends to F (integrated)")
-    ax.plot(M[~bounded], N[~bounded], "s", ms=2.5, color="0.75", label="runs to −x in finite time")
+    results.hard_case("limit_cycle_bifurcation", "Cells of the $(m_1, \\nu)$ grid where the integrated fate "
+                      "disagrees with $\\nu^* = m_1/(2\\sqrt{1 - m_1^2})$ (count, cells within 2 % of the curve "
+                      "excluded)", wrong, 0)
+    fig, ax = new_figure(height=3.2)
+    ax.plot(M[bounded], N[bounded], "s", ms=2.5, color="#56B4E9", label="bounded: tends to $F$")
+    ax.plot(M[~bounded], N[~bounded], "s", ms=2.5, color="0.78", label="runs to $-x$ in finite time")
     m = np.linspace(0.01, 0.999, 400)
-    ax.plot(m, m / (2 * np.sqrt(1 - m**2)), "k-", lw=1.2, label="ν* = m1/(2√(1 − m1²))")
-    ax.plot([m1_scene], [nu_scene], "r*", ms=9, label="this scene")
+    ax.plot(m, m / (2 * np.sqrt(1 - m**2)), "k-", lw=1.2, label="$\\nu^* = m_1/(2\\sqrt{1 - m_1^2})$")
+    ax.plot([m1_scene], [nu_scene], "*", color="#D55E00", mec="k", mew=0.5, ms=10,
+            label=f"the portrait's plane\n($m_1$ = {shortest(m1_scene)}, $\\nu$ = {shortest(nu_scene)})")
     ax.set_xlim(0, 2)
     ax.set_ylim(0, 1.02)
-    ax.set_xlabel("m1")
-    ax.set_ylabel("ν")
-    ax.legend(fontsize=6, loc="upper left")
-    results.figure("bifurcation_nu", fig, "Where the limit cycles exist: each cell is the fate of a start above F "
-                   f"integrated to τ = 300 ({M.size} integrations in one batch call), and the curve ν* from the "
-                   "closed form; for m1 ≥ 1 the cycles exist at every ν.")
+    ax.set_xlabel("$m_1$")
+    ax.set_ylabel("$\\nu$")
+    ax.grid(False)
+    fig.legend(loc="outside right upper")
+    results.figure("bifurcation_nu", fig, "Where the limit cycles exist in the $(m_1, \\nu)$ plane: each cell is "
+                   "the fate of a start above $F$ ($\\varphi_2 = 0$, $p_1 = 4$) integrated to $\\tau = 300$, "
+                   f"{format_number(int(M.size))} integrations in one batch call, and the curve $\\nu^*$ from the "
+                   "closed form. The fates change exactly at $\\nu^*$; for $m_1 \\ge 1$ the cycles exist at every "
+                   "$\\nu$.")
 
 
 def _cylinder(results, m1, nu, points):
     """Lee's Figure 2.13: phi2 taken mod 2 pi, the plane rolled onto a cylinder (cos phi2, sin phi2, p1). The
     saddles merge into one S and the centers into one C; F and F1 close on themselves; a closed orbit about C, a
     start above F1 winding onto F, and one below F1 running away to p1 -> -infinity."""
-    import matplotlib.pyplot as plt
-    fig = plt.figure(figsize=(6.0, 4.6), layout="constrained")
+    fig = plt.figure(figsize=(5.6, 3.9), layout="constrained")
     ax = fig.add_subplot(projection="3d")
     theta = np.linspace(0.0, 2 * np.pi, 721)
     F = se.limit_cycle_p1(theta, m1, nu)
-    ax.plot(np.cos(theta), np.sin(theta), F, color="C3", lw=1.6, label="F (stable)")
-    ax.plot(np.cos(theta), np.sin(theta), -F, color="C3", lw=1.6, ls="--", label="F1 (unstable)")
+    ax.plot(np.cos(theta), np.sin(theta), F, color=portrait.LIMIT_CYCLE_COLOUR, lw=1.6, label="$F$ (stable)")
+    ax.plot(np.cos(theta), np.sin(theta), -F, color=portrait.LIMIT_CYCLE_COLOUR, lw=1.6, ls="--",
+            label="$F_1$ (unstable)")
     center = next(pt["phi2"] for pt in points if pt["type"] == "center")
     F1_at_0 = -float(se.limit_cycle_p1(np.zeros(1), m1, nu)[0])
-    starts = {"closed orbit about C": ([center + 0.7, 0.0], 30.0, "C0"),
-              "above F1: winds onto F": ([0.0, F1_at_0 + 0.05], 60.0, "C2"),
-              "below F1: runs away": ([0.0, F1_at_0 - 0.05], 20.0, "0.4")}
+    starts = {"closed orbit about $C$": ([center + 0.7, 0.0], 30.0, "k"),
+              "above $F_1$: winds onto $F$": ([0.0, F1_at_0 + 0.05], 60.0, "#0072B2"),
+              "below $F_1$: runs away": ([0.0, F1_at_0 - 0.05], 20.0, "0.55")}
     for label, (start, span, color) in starts.items():
         tau = np.linspace(0.0, span, 3000)
         sol = solve(Problem(se.plane_largest, start, (0.0, span), [m1, -nu, 1.0]), "dop853", rtol=1e-10, atol=1e-12,
                     t_eval=tau, bound=BLOW_UP_BOUND)
         y = sol.y_eval[np.all(np.isfinite(sol.y_eval), axis=1) & (np.abs(sol.y_eval[:, 1]) < 4.0)]
         ax.plot(np.cos(y[:, 0]), np.sin(y[:, 0]), y[:, 1], color=color, lw=0.7, label=label)
-    for kind, marker, label in (("saddle", "x", "S (saddle)"), ("center", "o", "C (center)")):
+    for kind, marker, label in (("saddle", "x", "$S$ (saddle)"), ("center", "o", "$C$ (center)")):
         phi = next(pt["phi2"] for pt in points if pt["type"] == kind)      # one of each: the cylinder merges them
         ax.scatter([np.cos(phi)], [np.sin(phi)], [0.0], color="k", marker=marker, s=24, label=label)
-    ax.set_xlabel("cos φ2")
-    ax.set_ylabel("sin φ2")
-    ax.set_zlabel("p1")
+    ax.set_xticks([-1.0, 0.0, 1.0])
+    ax.set_yticks([-1.0, 0.0, 1.0])
+    ax.set_zticks([-4.0, -2.0, 0.0, 2.0, 4.0])
+    ax.set_xlabel("$\\cos\\varphi_2$", labelpad=-4)
+    ax.set_ylabel("$\\sin\\varphi_2$", labelpad=-4)
+    ax.set_zlabel("$p_1$", labelpad=-2)
+    ax.tick_params(pad=0)
     ax.set_zlim(-4.0, 4.0)
+    ax.set_box_aspect((1.0, 1.0, 1.1))
     ax.view_init(elev=18, azim=-60)
-    ax.legend(fontsize=6, loc="upper left")
-    results.figure("cylinder", fig, f"Lee's Figure 2.13: the plane (2.10) for m1 = {m1:g}, ν = {nu:g} rolled onto the "
-                   "cylinder φ2 mod 2π. The saddles become one saddle S and the centers one center C; F (stable) and "
-                   "F1 (unstable) close on themselves; above F1 the motion winds onto F, below it p1 runs to −∞.")
+    fig.legend(loc="outside right upper")
+    results.figure("cylinder", fig, f"The plane of Lee (2.10) for $m_1$ = {shortest(m1)}, $\\nu$ = {shortest(nu)} "
+                   "rolled onto the cylinder $(\\cos\\varphi_2, \\sin\\varphi_2, p_1)$, $\\varphi_2$ taken modulo "
+                   "$2\\pi$, as in Lee's Figure 2.13. The saddles become one saddle $S$ and the centers one center "
+                   "$C$; $F$ (stable) and $F_1$ (unstable) close on themselves; a start just above $F_1$ winds onto "
+                   "$F$, one just below it runs away to $p_1 \\to -\\infty$.")

@@ -17,6 +17,9 @@ import numpy as np
 
 from ...models import self_excited as se
 from ...solvers.ode import Events, Problem, solve
+from ...formatting import format_number, shortest
+from ..figure_style import TEXT_WIDTH_IN
+from ...solvers.workprecision import legend_below
 from ..results import new_figure
 from . import portrait
 from .largest_axis import INVARIANT_BOUND, OVERLAY_BOUND
@@ -25,17 +28,21 @@ AMPLITUDES = (0.4, 0.2, 0.1, 0.05)
 
 
 LABELS = {"sinh": "m1", "cosh": "m2", "exp": "m3", "exp-": "m3", "rare": "2√(ac) m0"}
-EQUATIONS = {"sinh": "(3.12)", "cosh": "(3.56)", "exp": "(3.24)/(3.58)", "exp-": "(3.25)/(3.59)", "rare": "(3.65)"}
+SYMBOLS = {"sinh": "$m_1$", "cosh": "$m_2$", "exp": "$m_3$", "exp-": "$m_3$", "rare": "$m = 2\\sqrt{ac}\\,m_0$"}
+EQUATIONS = {"sinh": "Lee (3.12)", "cosh": "Lee (3.56)", "exp": "Lee (3.24), (3.58)", "exp-": "Lee (3.25), (3.59)",
+             "rare": "Lee (3.65)"}
 SHAPES = {"sinh": "one center, every trajectory closed",
           "cosh": "a saddle whose loop holds the periodic motions, and outside it motions of the third kind that "
                   "leave every bound in finite time",
-          "exp": "a center whose orbits inside the separatrix F close; outside F, ω runs to the −y axis and leaves "
-                 "every bound in finite time",
+          "exp": "a center whose orbits inside the separatrix $F$ close; outside $F$, $\\boldsymbol{\\omega}$ runs "
+                 "to the $-y$ axis and leaves every bound in finite time",
           "exp-": "the plane of the other separating polhode",
-          "rare": "no singular point; above the line q1 = −√(m/ν) the motion tends to q1 = √(m/ν), the permanent "
-                  "rotation about +y, and below it ω leaves every bound in finite time"}
-RARE_REST = ("a line of rest points q1 = 0, permanent rotations about axes of plane II; above it q1 falls like "
-             "1/(ντ) and ω → 0 along +y, below it ω leaves every bound in finite time")
+          "rare": "no singular point; above the line $q_1 = -\\sqrt{m/\\nu}$ the motion tends to "
+                  "$q_1 = \\sqrt{m/\\nu}$, the permanent rotation about $+y$, and below it $\\boldsymbol{\\omega}$ "
+                  "leaves every bound in finite time"}
+RARE_REST = ("a line of rest points $q_1 = 0$ (permanent rotations about axes of plane II); above it $q_1$ falls "
+             "like $1/(\\nu\\tau)$ and $\\boldsymbol{\\omega} \\to 0$ along $+y$, below it $\\boldsymbol{\\omega}$ "
+             "leaves every bound in finite time")
 ESCAPE_EXPONENT_BOUND = 1e-3      # hard case: the rare case's escape, ln|q| against ln|(p, r)|, slope b/(a + c)
 RUNAWAY_BOUND = 1e-8              # hard case: the unperturbed escape, dq1/dtau -> m3
 PLANE_DEPARTURE = 1e-10           # the overlay in plane I or II stops where Euler's state has left the plane by this
@@ -68,7 +75,7 @@ def run(scene, results, quick):
     for kind in ("saddle", "center", "degenerate"):
         results.number(f"n_{kind}s", sum(pt["type"] == kind for pt in points), "1")
 
-    fig, ax = new_figure(6.4, 4.2)
+    fig, ax = new_figure(TEXT_WIDTH_IN, 3.6)
     centers = [pt["phi2"] for pt in points if pt["type"] == "center"]
     saddles = [pt["phi2"] for pt in points if pt["type"] != "center"]       # a degenerate point has a separatrix too
     if centers and saddles:                         # inside the saddle's loop: between the saddle and the center
@@ -93,7 +100,8 @@ def run(scene, results, quick):
         closed += len(sol.event_t) >= 2
     if starts:
         results.hard_case("orbits_about_the_center_closed", "Starts about the center whose orbit does not close "
-                          "(count; Lee: every motion periodic for |μ| < μ_c; inside the saddle's loop or F otherwise)",
+                          "(count; Lee: every motion is periodic for $|\\mu| < \\mu_\\mathrm{c}$, and inside the "
+                          "saddle's loop or $F$ otherwise)",
                           len(starts) - closed, 0)
     _separatrix(ax, M, saddles, centers, lo, hi)
     if M.mu1 < 0 and _turns_nowhere(M):
@@ -110,28 +118,42 @@ def run(scene, results, quick):
         _runaway(results, M)
     if M.mu1 < 0 and not points and M.m1 > 0 and not _turns_nowhere(M):
         _settles(results, M)
-    deviation, hyp, invariant, share = _overlay(ax, M, starts[:3] + others[:1] if starts else others[2:6])
+    overlay_starts = starts[:3] + others[:1] if starts else others[2:6]
+    n_overlay = len(overlay_starts)
+    deviation, hyp, invariant, share = _overlay(ax, M, overlay_starts)
     results.number("overlay_deviation", deviation, "1", note="Euler's equations in the plane against the plane, max")
     results.number("overlay_share", share, "1", note="share of the overlay's samples compared: those before the "
                    f"motion leaves the window (|q1| < 100), every bound, or, in plane I or II, the plane itself (by "
                    f"{PLANE_DEPARTURE:g}; the plane repels as φ2 runs away)")
     results.hard_case("overlay", "Full integrations of Euler's equations, mapped into the plane, on the plane's "
-                      "trajectories (max deviation in (φ2, q1))", deviation, OVERLAY_BOUND)
+                      "trajectories (largest deviation in $(\\varphi_2, q_1)$)", deviation, OVERLAY_BOUND)
     integral = "C" if M.mu1 else "E"
     results.number("invariant_spread", invariant, "1", note=f"{integral}: largest spread along one of Euler's "
                    "integrations mapped into the plane, relative to the size of its terms")
-    results.hard_case("plane_invariant", f"The plane's first integral ({integral}, Lee's closed form"
-                      f"{', resonant at ν = 1/2' if _resonant(M) else ''}) along Euler's equations mapped into the "
-                      "plane (largest relative spread)", invariant, INVARIANT_BOUND)
-    results.hard_case("hyperbolic_cylinder", "The end of ω stays on its hyperbolic cylinder (relative spread of "
-                      "p²/a − r²/c, against p²/a + r²/c at the start in the planes, where it is 0)", hyp, 1e-10)
-    portrait.finish(ax, points, (lo, hi), q1_max, "q1")
-    regime = f"{name} = {m1:g}" + (f", ν = {nu:.6g}" if nu else ", unperturbed")
-    where = {"exp": "plane I (α1 = α2)" if alpha1 == alpha2 else "|μ| = μ_c", "exp-": "plane II (α1 = −α2)",
-             "rare": "plane II at ν = ν_c, Lee's rare case (k1 = k2 = 0; here τ = t, φ2 = 2√(ac)φ)"}
-    results.figure("portrait", fig, f"Phase plane of Lee's {EQUATIONS[form]} for the torque along the middle axis"
-                   f"{', ' + where[form] if form in where else ''}, {regime}: {_shape(M, points)} (grey), and Euler's "
-                   "equations mapped into the plane (dots).")
+    resonant = ", resonant at $\\nu = \\tfrac12$" if _resonant(M) else ""
+    results.hard_case("plane_invariant", f"The plane's first integral (${integral}$, Lee's closed form"
+                      f"{resonant}) along Euler's equations mapped "
+                      "into the plane (largest relative spread)", invariant, INVARIANT_BOUND)
+    results.hard_case("hyperbolic_cylinder", "The end of $\\boldsymbol{\\omega}$ stays on its hyperbolic cylinder "
+                      "(relative spread of $p^2/a - r^2/c$, against $p^2/a + r^2/c$ at the start in the planes, where "
+                      "it is 0)", hyp, 1e-10)
+    portrait.finish(ax, points, (lo, hi), q1_max, "$q_1$")
+    regime = f"{SYMBOLS[form] if form != 'rare' else '$m$'} = {portrait.param_text(m1)}"
+    regime += f", $\\nu$ = {portrait.param_text(nu)}" if nu else ", unperturbed ($\\nu = 0$)"
+    labels = ax.get_legend_handles_labels()[1]
+    black = ("; black: the separatrix from the closed form" if "separatrix (closed form)" in labels else
+             "; black: the curve $C = 0$ of the closed form" if "$C = 0$ (closed form)" in labels else "")
+    if "line of rest points" in labels:
+        black += "; the line of rest points in colour"
+    marked = "; markers: the singular points, by type" if points else ""
+    where = {"exp": "plane I ($\\alpha_1 = \\alpha_2$)" if alpha1 == alpha2 else "$|\\mu| = \\mu_\\mathrm{c}$",
+             "exp-": "plane II ($\\alpha_1 = -\\alpha_2$)",
+             "rare": "plane II at $\\nu = \\nu_\\mathrm{c}$, Lee's rare case ($k_1 = k_2 = 0$; here $\\tau = t$ and "
+                     "$\\varphi_2 = 2\\sqrt{ac}\\,\\varphi$)"}
+    results.figure("portrait", fig, f"Phase plane of {EQUATIONS[form]} for the torque along the middle axis $y$"
+                   f"{', ' + where[form] if form in where else ''}; {regime}: {_shape(M, points)}. Grey: trajectories "
+                   f"of the plane{black}{marked}; dots: {portrait.COUNTS[n_overlay]} integrations of Euler's "
+                   "equations in three dimensions, mapped into the plane, which lie on the plane's trajectories.")
     if centers:
         _series(results, M, centers[0], nu)
     if "excursion" in data:
@@ -143,22 +165,32 @@ def run(scene, results, quick):
 
 def _shape(M, points):
     """What the portrait shows, in words."""
+    w = "$\\boldsymbol{\\omega}$"
     if M.form == "cosh" and not any(pt["type"] == "center" for pt in points):
         return ("a degenerate point where saddle and center have merged: motions of the second kind into it, and "
                 "of the third kind, leaving every bound in finite time" if points else
                 "no singular point: every motion is of the third kind and leaves every bound in finite time")
     if M.form in ("exp", "exp-") and not points:
         if M.mu1 == 0.0:
-            return ("no singular point: ω runs to the y axis, with finite modulus (the force-free separatrix motion)"
-                    if M.m1 == 0.0 else "no singular point: ω runs to the y axis, |q1| growing like |m3| τ")
+            return (f"no singular point: {w} runs to the $y$ axis, with finite modulus (the force-free separatrix "
+                    "motion)" if M.m1 == 0.0 else
+                    f"no singular point: {w} runs to the $y$ axis, $|q_1|$ growing like $|m_3|\\tau$")
         if _turns_nowhere(M):
-            return "no singular point: ω runs to the −y axis and leaves every bound in finite time"
-        return "no singular point: q1 tends to √(m3/ν), the permanent rotation about the +y axis"
+            return f"no singular point: {w} runs to the $-y$ axis and leaves every bound in finite time"
+        return "no singular point: $q_1$ tends to $\\sqrt{m_3/\\nu}$, the permanent rotation about the $+y$ axis"
     if M.form == "rare" and M.m1 <= 0:
-        return (RARE_REST if M.m1 == 0 else "no singular point: from every start ω leaves every bound in finite "
-                "time, towards an axis of plane II perpendicular to y")
+        return (RARE_REST if M.m1 == 0 else f"no singular point: from every start {w} leaves every bound in finite "
+                "time, towards an axis of plane II perpendicular to $y$")
     if M.form in ("exp", "exp-") and M.mu1 == 0.0:
-        return "a center, every orbit closed (the energy (3.47)/(3.48) is conserved)"
+        return ("a center, every orbit closed (the energy of Lee (3.47) is conserved)" if M.form == "exp" else
+                "a center, every orbit closed (the energy of Lee (3.48) is conserved)")
+    if M.form == "exp-":
+        kinds = {pt["type"] for pt in points}
+        if kinds == {"center"}:
+            return "a center, every orbit about it closed"
+        if kinds == {"saddle"}:
+            return (f"one saddle, whose separatrices divide the plane into four regions: in two {w} runs to the "
+                    "$-y$ axis and leaves every bound in finite time, in the other two it tends to the $+y$ axis")
     return SHAPES[M.form]
 
 
@@ -183,7 +215,7 @@ def _every_start_escapes(results, M, starts):
                     atol=1e-14, bound=portrait.BLOW_UP_BOUND)
         stayed += sol.status != "blow-up"
     results.hard_case("every_start_escapes", "Starts of the portrait that do not leave every bound in finite time "
-                      "(count; Lee: m + ε f(φ2) < 0 everywhere, so none can turn back)", stayed, 0)
+                      "(count; Lee: $m + \\varepsilon f(\\varphi_2) < 0$ everywhere, so none can turn back)", stayed, 0)
 
 
 def _derivatives(m, form, eps, phi):
@@ -234,7 +266,7 @@ def _separatrix(ax, M, saddles, centers, lo, hi):
     sq = C * np.exp(2 * M.mu1 * phi) + se.middle_g(phi, M.m1, M.mu1, M.eps1, M.form)
     for sign in (1, -1):
         ax.plot(phi, np.where(sq >= 0, sign * np.sqrt(np.maximum(sq, 0.0)), np.nan), "k-", lw=1.1,
-                label=("separatrix (closed form)" if saddles else "C = 0 (closed form)") if sign == 1 else None)
+                label=("separatrix (closed form)" if saddles else "$C = 0$ (closed form)") if sign == 1 else None)
 
 
 def _escaping_start(M, centers, saddles):
@@ -284,7 +316,7 @@ def _overlay(ax, M, starts):
         w0 = full.y_eval[0]
         hyp_worst = max(hyp_worst, float(np.ptp(h) / max(abs(h[0]), w0[0]**2 / M.body.a + w0[2]**2 / M.body.c)))
         inv_worst = max(inv_worst, se.middle_invariant_spread(mapped, M.m1, M.mu1, M.eps1, M.form))
-        ax.plot(mapped[::5, 0], mapped[::5, 1], ".", color="C2", ms=3,
+        ax.plot(mapped[::5, 0], mapped[::5, 1], ".", color=portrait.EULER_COLOUR, ms=3,
                 label="Euler's equations, mapped" if k == 0 else None)
     return worst, hyp_worst, inv_worst, compared / (len(starts) * tau.size)
 
@@ -297,8 +329,9 @@ def _series(results, M, center, nu):
     portrait.series_check(
         results, lambda eta: portrait.period(se.plane_middle, M.plane_parameters(), [center + eta, 0.0]),
         lambda eta: se.lyapunov_period(k_sq, beta2, beta3, -nu, eta), AMPLITUDES,
-        f"Lee {which}: the period (in τ) about the center started at φ2c + η, measured and from the series "
-        "(2π/k)(1 + h2η² + h3η³).")
+        f"Lee {which}: the period (in $\\tau$) of the oscillation about the center $\\varphi_{{2\\mathrm{{c}}}}$ "
+        "started at $\\varphi_{2\\mathrm{c}} + \\eta$, integrated from the plane system and from the series "
+        "$(2\\pi/k)(1 + h_2\\eta^2 + h_3\\eta^3)$, and their relative difference.")
 
 
 def _rare_escape(results, M):
@@ -328,8 +361,9 @@ def _rare_escape(results, M):
     results.number("escape_exponent_expected", expected, "1", note="b/(a + c) = |μ|/√(ac) at |μ| = μ_c: below 1, so "
                    "ω turns towards plane II's axis perpendicular to y")
     results.number("escape_q_share", float(q[-1] / np.linalg.norm(w[-1])), "1", note="|q|/|ω| when |ω| passes 1e12")
-    results.hard_case("rare_escape_direction", "Lee: below the line ω runs to an axis of plane II perpendicular to y "
-                      "(|slope of ln|q| against ln|(p, r)| − b/(a + c)|)", abs(slope - expected), ESCAPE_EXPONENT_BOUND)
+    results.hard_case("rare_escape_direction", "Lee: below the line $\\boldsymbol{\\omega}$ runs to an axis of plane "
+                      "II perpendicular to $y$: $|s - b/(a + c)|$ for the slope $s$ of $\\ln|q|$ against "
+                      "$\\ln|(p, r)|$", abs(slope - expected), ESCAPE_EXPONENT_BOUND)
 
 
 def _riccati_time(m, nu, q_from, q_to):
@@ -352,7 +386,7 @@ def _rare_rest(ax, results, M):
     Above the line q1 = q10/(1 + nu q10 tau) falls to 0 while phi2 runs to +infinity, so p and r decay like
     e^{-phi2/2} = (1 + nu q10 tau)^{-1/(2 nu)}, faster than q: omega -> 0 along +y. Along Euler's equations ln|q|
     against ln|(p, r)| has slope 2 nu_c = b/(a + c) exactly."""
-    ax.axhline(0.0, color="C3", lw=1.6, label="line of rest points")
+    ax.axhline(0.0, color=portrait.LIMIT_CYCLE_COLOUR, lw=1.6, label="line of rest points")
     drift = 0.0
     for phi in (-2.0, 0.0, 2.0):
         w0 = M.from_plane(phi, 0.0)
@@ -361,8 +395,8 @@ def _rare_rest(ax, results, M):
         drift = max(drift, float(np.max(np.linalg.norm(rest.y_steps - w0, axis=1)) / np.linalg.norm(w0)))
     results.number("rest_line_drift", drift, "1", note="largest |ω(t) − ω0|/|ω0| over t ≤ 100 from three points of "
                    "q1 = 0 (φ2 = −2, 0, 2), Euler's equations")
-    results.hard_case("rest_line_at_rest", "Every point of q1 = 0 is a permanent rotation (Euler's equations from "
-                      "three of them: largest relative drift over t ≤ 100)", drift, 1e-12)
+    results.hard_case("rest_line_at_rest", "Every point of $q_1 = 0$ is a permanent rotation (Euler's equations "
+                      "from three of them: largest relative drift over $t \\le 100$)", drift, 1e-12)
     q10, nu = 1.0, -M.mu1
     tau = np.linspace(0.0, 200.0, 401)
     full = solve(Problem(se.euler_middle, M.from_plane(0.0, q10), (0.0, tau[-1]), M.euler_parameters()), "dop853",
@@ -375,9 +409,11 @@ def _rare_rest(ax, results, M):
                    f"{q10:g}, while the state is in plane II (to τ = {t[-1]:g}; largest relative error)")
     results.number("rest_decay_exponent", slope, "1", note="slope of ln|q| against ln|(p, r)| along that motion: "
                    "below 1, so q outlasts p and r and ω → 0 along +y")
-    results.hard_case("rare_rest_decay", "Without torque, above the line of rest points q1 falls like q10/(1 + νq10τ) "
-                      "(Euler's equations against the closed form, largest relative error)", decay, 1e-9)
-    results.hard_case("rare_rest_direction", "Lee: ω → 0 along +y (|slope of ln|q| against ln|(p, r)| − b/(a + c)|)",
+    results.hard_case("rare_rest_decay", "Without torque, above the line of rest points $q_1$ falls like "
+                      "$q_{10}/(1 + \\nu q_{10}\\tau)$ (Euler's equations against the closed form, largest relative "
+                      "error)", decay, 1e-9)
+    results.hard_case("rare_rest_direction", "Lee: $\\boldsymbol{\\omega} \\to 0$ along $+y$: $|s - b/(a + c)|$ for "
+                      "the slope $s$ of $\\ln|q|$ against $\\ln|(p, r)|$",
                       abs(slope - M.body.b / (M.body.a + M.body.c)), ESCAPE_EXPONENT_BOUND)
 
 
@@ -391,8 +427,8 @@ def _runaway(results, M):
                 atol=1e-14, t_eval=tau, bound=portrait.BLOW_UP_BOUND)
     rate = float(np.diff(sol.y_eval[:, 1])[0] / np.diff(tau)[0])
     results.number("runaway_rate", rate, "1/τ", note="dq1/dτ between τ = 40 and 60, from φ2 = 0, q1 = 0")
-    results.hard_case("runaway_rate", f"Unperturbed, no singular point: q1 changes at the rate {LABELS[M.form]} "
-                      "(|dq1/dτ − m3| late in the motion)", abs(rate - M.m1), RUNAWAY_BOUND)
+    results.hard_case("runaway_rate", f"Unperturbed, no singular point: $q_1$ changes at the rate {SYMBOLS[M.form]} "
+                      "($|dq_1/d\\tau - m_3|$ late in the motion)", abs(rate - M.m1), RUNAWAY_BOUND)
     if M.m1 == 0.0:
         E = float(se.middle_energy(start, 0.0, M.eps1, M.form)[0])
         limit = float(np.sign(sol.y_eval[-1, 1])) * np.sqrt(2 * E)
@@ -400,8 +436,9 @@ def _runaway(results, M):
         results.number("limit_q1_closed_form", limit, "1", note="±√(2E): all of the energy in q1 once e^{±φ2} → 0")
         results.number("limit_q_over_start", abs(M.from_plane(0.0, limit)[1]) / np.linalg.norm(M.from_plane(0.0, 0.0)),
                        "1", note="the limiting |q| against |ω0|: ω tends to the y axis with finite modulus")
-        results.hard_case("force_free_limit", "No torque in a plane of the separating polhodes: q1 tends to the "
-                          "finite limit ±√(2E) (|q1(60) − limit|)", abs(float(sol.y_eval[-1, 1]) - limit), RUNAWAY_BOUND)
+        results.hard_case("force_free_limit", "No torque in a plane of the separating polhodes: $q_1$ tends to the "
+                          "finite limit $\\pm\\sqrt{2E}$ ($|q_1 - \\text{limit}|$ at $\\tau = 60$)",
+                          abs(float(sol.y_eval[-1, 1]) - limit), RUNAWAY_BOUND)
 
 
 EXCURSION_PERIODS = 10
@@ -465,18 +502,24 @@ def _excursion(results, M, start):
     hyp = se.hyperbola(M.body, w)
     hyp_spread = float(np.ptp(hyp) / np.max(w[:, 0] ** 2 / M.body.a + w[:, 2] ** 2 / M.body.c))
     c1 = se.middle_invariant(M.to_plane(w), M.m1, M.mu1, M.eps1, M.form)
-    fig, ax = new_figure(6.0, 3.2)
+    fig, ax = new_figure(height=3.0)
     first = full.t_steps <= 2 * T
-    ax.semilogy(full.t_steps[first], sizes[first], "C2.-", ms=2, lw=0.6, label="|ω|, Euler's equations (steps)")
+    ax.semilogy(full.t_steps[first], sizes[first], ".-", color=portrait.EULER_COLOUR, ms=2, lw=0.6,
+                label="$|\\omega|$ along Euler's equations (at the steps)")
     for k, value in enumerate(predicted):
-        ax.axhline(value, color="k", ls="--", lw=0.8, label="turning points, closed form" if k == 0 else None)
-    ax.set_xlabel("t")
-    ax.set_ylabel("|ω|")
-    ax.legend(fontsize=7)
-    results.figure("excursion", fig, f"A huge excursion below the critical drag (ν = {-M.mu1:.3g}, ν_c = "
-                   f"{se.MiddleAxis.plane_nu('nu_c', M.body):.3g}): from q0 = {q0:g}, |ω| swings out by a factor "
-                   f"{sizes.max() / sizes[0]:.0f} and back; the first two of the {EXCURSION_PERIODS} periods integrated. "
-                   "Dashed: |ω| at the turning points of the closed form.")
+        ax.axhline(value, color="k", ls="--", lw=0.8,
+                   label="$|\\omega|$ at the turning points, closed form" if k == 0 else None)
+    ax.set_xlabel("$t$ (time units)")
+    ax.set_ylabel("$|\\omega|$ (rad per time unit)")
+    legend_below(fig, *ax.get_legend_handles_labels(), ncol=2)
+    nu_c = se.MiddleAxis.plane_nu('nu_c', M.body)
+    results.figure("excursion", fig, "A huge excursion below the critical drag "
+                   f"($\\nu$ = {portrait.param_text(-M.mu1)}, "
+                   f"$\\nu_\\mathrm{{c}}$ = {format_number(nu_c, 3)}): $|\\boldsymbol{{\\omega}}|$ against $t$ "
+                   f"(log scale) from a spin $q_0$ = {shortest(q0)} about the torque axis, over the first two of the "
+                   f"{EXCURSION_PERIODS} periods integrated. $|\\boldsymbol{{\\omega}}|$ swings out by a factor "
+                   f"{format_number(float(sizes.max() / sizes[0]), 3)} and back, and turns where the closed form "
+                   "says (dashed).")
     results.number("excursion_q0", q0, "1/time", note="the start: φ = 0 on the cylinder, q = q0")
     results.number("excursion_max_omega", float(sizes.max()), "1/time", note="max |ω| over the orbit (Euler)")
     results.number("excursion_max_omega_closed_form", scale, "1/time", note="|ω| at the far turning point of the "
@@ -491,13 +534,15 @@ def _excursion(results, M, start):
     results.number("excursion_c1_spread", float(np.ptp(c1) / np.max(np.abs(c1))), "1", note="relative spread of C1 "
                    "from Euler's state: q is known to rounding relative to the largest |ω|, and near its turning "
                    "points q1 is small")
-    results.hard_case("excursion_turning_points", "Huge excursions below μ_c: |ω| where Euler's equations turn "
-                      "(q = 0) against the closed form's turning points (worst, relative to the largest |ω|)",
+    results.hard_case("excursion_turning_points", "Huge excursions below $\\mu_\\mathrm{c}$: "
+                      "$|\\boldsymbol{\\omega}|$ where Euler's equations turn ($q = 0$) against the closed "
+                      "form's turning points (worst, relative to the largest $|\\boldsymbol{\\omega}|$)",
                       turning, 1e-10)
-    results.hard_case("excursion_closes", f"Huge excursions below μ_c: ω back at its start after "
-                      f"{EXCURSION_PERIODS} periods of the closed form (relative to the largest |ω|)", closure, 1e-8)
-    results.hard_case("excursion_cylinder", "Huge excursions below μ_c: spread of p²/a − r²/c along Euler's "
-                      "equations, relative to the largest p²/a + r²/c", hyp_spread, 1e-12)
+    results.hard_case("excursion_closes", f"Huge excursions below $\\mu_\\mathrm{{c}}$: $\\boldsymbol{{\\omega}}$ "
+                      f"back at its start after {EXCURSION_PERIODS} periods of the closed form (relative to the "
+                      "largest $|\\boldsymbol{\\omega}|$)", closure, 1e-8)
+    results.hard_case("excursion_cylinder", "Huge excursions below $\\mu_\\mathrm{c}$: spread of $p^2/a - r^2/c$ "
+                      "along Euler's equations, relative to the largest $p^2/a + r^2/c$", hyp_spread, 1e-12)
 
 
 def _settles(results, M):
@@ -509,7 +554,8 @@ def _settles(results, M):
     limit = np.sqrt(M.m1 / -M.mu1)
     results.number("limit_q1", float(sol.y[1]), "1", note="q1 at τ = 80 from φ2 = 0, q1 = 0")
     results.number("limit_q1_closed_form", float(limit), "1", note="√(m/ν): the rotation about +y, q = √(m/|μ|)")
-    results.hard_case("settles_on_the_axis", "The drag stops the growth: q1 tends to √(m/ν) (|q1(80) − √(m/ν)|)",
+    results.hard_case("settles_on_the_axis", "The drag stops the growth: $q_1$ tends to $\\sqrt{m/\\nu}$ "
+                      "($|q_1 - \\sqrt{m/\\nu}|$ at $\\tau = 80$)",
                       abs(float(sol.y[1]) - limit) if sol.status == "success" else np.inf, RUNAWAY_BOUND)
     # Euler's equations: the rotation about +y is a saddle, and plane II its stable manifold. A rounding error
     # off the plane grows like e^{phi2} against the in-plane part, so Euler's solution leaves the plane.
@@ -520,5 +566,6 @@ def _settles(results, M):
     slope = float(np.polyfit(M.to_plane(full.y_steps[grown])[:, 0], np.log(departure[grown]), 1)[0])
     results.number("plane_departure_rate", slope, "1", note="d ln(departure)/dφ2 along Euler's equations (departure "
                    "from 1e-11 to 1e-4): the plane repels like e^{φ2}")
-    results.hard_case("plane_repels", "Plane II repels as ω runs to +y: the departure of Euler's solution from the "
-                      "plane grows like e^{φ2} (|d ln(departure)/dφ2 − 1|)", abs(slope - 1.0), 0.01)
+    results.hard_case("plane_repels", "Plane II repels as $\\boldsymbol{\\omega}$ runs to $+y$: the departure $D$ "
+                      "of Euler's solution from the plane grows like $e^{\\varphi_2}$ "
+                      "($|d\\ln D/d\\varphi_2 - 1|$)", abs(slope - 1.0), 0.01)

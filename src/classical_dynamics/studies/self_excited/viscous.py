@@ -19,8 +19,16 @@ from ...solvers import sine_cosine_integrals as sc
 from ...solvers import workprecision as wp
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
+from ...formatting import format_number, shortest
 from ..results import new_figures
 from .accuracy import publish
+
+def _complex(w, sig=None) -> str:
+    """0.3 + 0.4i (the source's digits, or sig figures), with a real minus."""
+    text = (lambda v: shortest(v)) if sig is None else (lambda v: format_number(v, sig))
+    sign = " − " if w.imag < 0 else " + "
+    return f"{text(float(w.real))}{sign}{text(abs(float(w.imag)))}i"
+
 
 SAMPLES = 401
 REFERENCE_SAMPLES = 41
@@ -61,7 +69,8 @@ def run(scene, results, quick):
     results.number("closed_vs_ode", deviation, "1/time", note="Lee's quadratures against Euler's equations "
                    "(DOP853, rtol 1e-13), max over p, q, r and t")
     results.hard_case("closed_form_vs_euler", "Lee's quadrature solution against Euler's equations integrated, "
-                      f"t ≤ {t_max:g} (max |Δω|)", deviation, CLOSED_VS_ODE_BOUND)
+                      f"$t \\le$ {shortest(t_max)} (largest $|\\Delta\\boldsymbol{{\\omega}}|$)", deviation,
+                      CLOSED_VS_ODE_BOUND)
     every = (SAMPLES - 1) // (REFERENCE_SAMPLES - 1)
     exact, _ = V.closed_form(t[::every], integrals=sc.reference_value)
     error = np.hypot(*(closed[::every, :2] - exact[:, :2]).T)
@@ -69,8 +78,8 @@ def run(scene, results, quick):
                    "at 30 digits (mpmath), max over t")
     results.number("closed_form_bound", float(bound.max()), "1/time", note="the formula's own bound, from those "
                    "of the series and expansions, max over t")
-    results.hard_case("closed_form_within_bound", "The quadrature solution's error (against si, ci at 30 digits) "
-                      "over its own bound (1e-13 added for round-off), max over t",
+    results.hard_case("closed_form_within_bound", "The quadrature solution's error (against $\\si$, $\\ci$ at 30 "
+                      "digits) over its own bound (10⁻¹³ added for round-off), largest over $t$",
                       float(np.max(error / (bound[::every] + 1e-13))), 1.0)
     points = _asymptotics(results, V, ode, t_max)
     fig = _figure(V, t, closed, ode, points)
@@ -91,12 +100,13 @@ def _asymptotics(results, V, ode, t_max):
                            "(ν² + g1²), m3/μ")
         gap = float(np.max(np.abs(y[-1] - limit)))
         results.number("limit_gap", gap, "1/time", note=f"|ω(t = {t_max:g}) − Theorem 3's rotation|")
-        results.hard_case("limiting_rotation", f"Euler's equations at t = {t_max:g} against Theorem 3's uniform "
-                          "rotation", gap, LIMIT_BOUND)
+        results.hard_case("limiting_rotation", f"Euler's equations at $t$ = {shortest(t_max)} against Theorem 3's "
+                          "uniform rotation", gap, LIMIT_BOUND)
         pq_bound, r_bound = V.bounds()
         ratio = max(float(np.max(np.abs(y[:, :2]))) / pq_bound, float(np.max(np.abs(y[:, 2]))) / r_bound)
-        results.hard_case("theorem_1_bounds", "Theorem 1: max |p|, |q| over its bound δ + (|m1| + |m2|)/ν, and |r| "
-                          "over |r0| + |m3|/μ (the larger ratio)", ratio, 1.0)
+        results.hard_case("theorem_1_bounds", "Theorem 1: the largest $|p|$, $|q|$ over its bound "
+                          "$\\delta + (|m_1| + |m_2|)/\\nu$, and $|r|$ over $|r_0| + |m_3|/\\mu$ (the larger ratio)",
+                          ratio, 1.0)
         kind = "stable focus" if V.g1 != 0.0 else "stable node"
         results.number("singular_points", [{"p": float(limit[0]), "q": float(limit[1]), "r": float(limit[2]),
                                             "type": kind}], "1/time", note="the uniform rotation all motions tend to")
@@ -105,14 +115,15 @@ def _asymptotics(results, V, ode, t_max):
     if center is not None:
         radius = np.hypot(y[:, 0] - center[0], y[:, 1] - center[1])
         results.number("radius_spread", float(np.ptp(radius) / radius[0]), "1", note="relative, along the circle")
-        results.hard_case("circle_closed", "Without friction, m3 = 0: ω keeps its circle about Theorem 2's center "
-                          "(relative spread of the radius)", float(np.ptp(radius) / radius[0]), 1e-10)
+        results.hard_case("circle_closed", "Without friction, $m_3 = 0$: $\\boldsymbol{\\omega}$ keeps its circle "
+                          "about Theorem 2's center (relative spread of the radius)", float(np.ptp(radius) / radius[0]),
+                          1e-10)
         period = 2 * np.pi / abs(V.h * V.omega0[2])
         results.number("period_tau", float(period), "time", note="2π/|h r0| (Theorem 2); §5 has no reduced time: τ = t")
         angle = np.unwrap(np.arctan2(y[:, 1] - center[1], y[:, 0] - center[0]))
         measured = 2 * np.pi * (ode.t_eval[-1] - ode.t_eval[0]) / abs(angle[-1] - angle[0])
         results.number("period_measured", float(measured), "time", note="from the angle swept about the center")
-        results.hard_case("circle_period", "The circles' period against 2π/|h r0| (relative)",
+        results.hard_case("circle_period", "The circles' period against $2\\pi/|hr_0|$ (relative)",
                           abs(measured / period - 1.0), 1e-9)
         results.number("singular_points", [{"p": float(center[0]), "q": float(center[1]), "r": float(center[2]),
                                             "type": "center"}], "1/time", note="Theorem 2: a stable permanent rotation")
@@ -125,23 +136,24 @@ def _asymptotics(results, V, ode, t_max):
 
 
 def _figure(V, t, closed, ode, points):
-    fig, (ax, bx) = new_figures(2)
-    for k, (name, color) in enumerate(zip("pqr", ("C0", "C1", "C2"))):
-        ax.plot(t, closed[:, k], color=color, lw=1.0, label=f"{name}, Lee's quadratures")
+    fig, (ax, bx) = new_figures(2, height=3.0)
+    for k, (name, color) in enumerate(zip("pqr", ("#000000", "#E69F00", "#56B4E9"))):
+        ax.plot(t, closed[:, k], color=color, lw=1.0, label=f"${name}$, Lee's quadratures")
         ax.plot(ode.t_eval[::10], ode.y_eval[::10, k], ".", color=color, ms=3)
-    ax.plot([], [], "k.", ms=3, label="Euler's equations")
-    ax.set_xlabel("t")
-    ax.set_ylabel("body rates")
-    ax.legend(fontsize=6)
-    bx.plot(closed[:, 0], closed[:, 1], color="C0", lw=0.9)
+    ax.plot([], [], "k.", ms=3, label="Euler's equations, integrated")
+    ax.set_xlabel("$t$ (time units)")
+    ax.set_ylabel("$p$, $q$, $r$ (rad per time unit)")
+    fine, _ = V.closed_form(np.linspace(0.0, t[-1], 4 * SAMPLES - 3))     # the spiral drawn smooth
+    bx.plot(fine[:, 0], fine[:, 1], color="#000000", lw=0.9)
     for extra in _extra_starts(V)[0]:
         y, _ = extra.closed_form(np.linspace(0.0, t[-1], 800))
         bx.plot(y[:, 0], y[:, 1], color="0.6", lw=0.6)
     for pt in points:
-        bx.plot(pt[0], pt[1], "k+", ms=8)
-    bx.set_xlabel("p")
-    bx.set_ylabel("q")
+        bx.plot(pt[0], pt[1], "+", color="#D55E00", ms=9, mew=1.5)
+    bx.set_xlabel("$p$ (rad per time unit)")
+    bx.set_ylabel("$q$ (rad per time unit)")
     bx.set_aspect("equal", adjustable="datalim")
+    wp.legend_below(fig, *ax.get_legend_handles_labels(), ncol=4)
     return fig
 
 
@@ -150,22 +162,29 @@ def _extra_starts(V):
     spiral is elementary; and what the caption says of them."""
     if V.circle_center() is not None:
         return ([replace(V, omega0=(V.omega0[0] * f, V.omega0[1] * f, V.omega0[2])) for f in (0.4, 0.7, 1.4)],
-                ", with Theorem 2's center (+) and concentric circles from other starts (Figure 5.4)")
+                ", with Theorem 2's center (+) and, grey, the concentric circles of other starts (Lee's Figure 5.4)")
     if V.limit() is not None and V.m[2] != 0.0:
         return ([replace(V, omega0=(V.omega0[0], V.omega0[1], V.m[2] / V.mu))],
-                ", with the limiting rotation (+) and, grey, a start in the plane r = m3/μ that spirals into it "
-                "(Figure 5.5)")
+                ", with the limiting rotation (+) and, grey, a start in the plane $r = m_3/\\mu$ that spirals into it "
+                "(Lee's Figure 5.5)")
     return [], ""
 
 
+def _triple(values) -> str:
+    return "(" + ", ".join(shortest(float(v)) for v in values) + ")"
+
+
 def _caption(V, t_max):
-    what = {"I": "Case I: straight lines to (m1/ν, m2/ν, 0)", "II": "Case II: m3 = 0, r0 ≠ 0",
-            "III": "Case III: m3 ≠ 0", "III (g = 0)": "Case III with r0 = m3/μ, elementary", "IV": "Case IV: h = 0"}
-    friction = (f"with friction ν = {V.nu:g}, μ = {V.mu:g}" if V.friction else "without friction")
-    return (f"Lee §5, {what[V.case]}, {friction}, h = {V.h:g}, m = ({V.m[0]:g}, {V.m[1]:g}, {V.m[2]:g}), "
-            f"ω0 = ({V.omega0[0]:g}, {V.omega0[1]:g}, {V.omega0[2]:g}). Left: p, q, r against t from Lee's "
-            "quadrature solution (lines) and from Euler's equations (dots). Right: the end of ω projected on the "
-            f"equatorial plane{_extra_starts(V)[1]}; t ≤ {t_max:g}.")
+    what = {"I": "Case I: straight lines to $(m_1/\\nu, m_2/\\nu, 0)$", "II": "Case II: $m_3 = 0$, $r_0 \\ne 0$",
+            "III": "Case III: $m_3 \\ne 0$", "III (g = 0)": "Case III with $r_0 = m_3/\\mu$, elementary",
+            "IV": "Case IV: $h = 0$"}
+    friction = (f"with friction $\\nu$ = {shortest(V.nu)}, $\\mu$ = {shortest(V.mu)}" if V.friction
+                else "without friction")
+    return (f"Lee §5, {what[V.case]}; {friction}, $h$ = {shortest(V.h)}, $(m_1, m_2, m_3)$ = {_triple(V.m)}, "
+            f"$\\boldsymbol{{\\omega}}_0$ = {_triple(V.omega0)}, $t \\le$ {shortest(t_max)}. Left: $p$, $q$, $r$ "
+            "against $t$ from Lee's quadrature solution (lines) and from Euler's equations integrated (dots). Right: "
+            "the end of $\\boldsymbol{\\omega}$ projected on the equatorial plane, $(p, q)$ on equal axes"
+            f"{_extra_starts(V)[1]}.")
 
 
 X_POINTS = (0.5, 2.0, 10.0, 30.0)
@@ -179,22 +198,27 @@ def special_function_costs(results, quick):
     for w in W_POINTS:
         for x in X_POINTS:
             ref_si, ref_ci = (complex(v) for v in sc.reference(x, w))
-            row = {"w": f"{w.real:g}{w.imag:+g}i", "x": x, "si_real": ref_si.real, "si_imag": ref_si.imag}
+            row = {"w": _complex(w), "x": x, "si_real": ref_si.real, "si_imag": ref_si.imag}
             for name, f in (("series", sc.series), ("asymptotic", sc.asymptotic), ("quadrature", sc.quadrature)):
                 v = f(x, w)
                 row[f"{name}_error"] = max(abs(v.si - ref_si), abs(v.ci - ref_ci))
                 row[f"{name}_bound"] = v.bound
             rows.append(row)
     frame = pd.DataFrame(rows)
-    results.table("si_ci_values", frame, "Lee's generalized sine integral si(x, w) at 30 digits (incomplete gamma, "
-                  "mpmath), and the error (max over si and ci) and error bound of each way to compute it in double "
-                  "precision: series (5.38)/(5.39) with the reduction (5.32)/(5.33) (terms until the Lagrange bound "
-                  "(5.40)/(5.41) is below 1e-16 of the sum, plus a round-off estimate); the asymptotic expansion "
-                  "(5.42)–(5.48) cut at its smallest remainder bound (5.45); quadrature (scipy's QAWO over [x, 40], "
-                  "the expansion beyond; its own estimate).")
+    results.table("si_ci_values", frame, "Lee's generalized sine integral $\\si(x, w)$ at 30 digits (the incomplete "
+                  "gamma function of mpmath), and the error (the larger over $\\si$ and $\\ci$) and error bound of "
+                  "each way to compute it in double precision: the series, Lee (5.38) and (5.39), with the reduction, "
+                  "Lee (5.32) and (5.33), summed until the Lagrange bound, Lee (5.40) and (5.41), is below 10⁻¹⁶ of "
+                  "the sum, plus a round-off estimate; the asymptotic expansion, Lee (5.42)–(5.48), cut at its "
+                  "smallest remainder bound, Lee (5.45); and quadrature (SciPy's QAWO over $[x, 40]$, the expansion "
+                  "beyond, with its own error estimate).",
+                  headers={"w": "$w$", "x": "$x$", "si_real": "$\\Re\\,\\si(x, w)$", "si_imag": "$\\Im\\,\\si(x, w)$",
+                           "series_error": "series error", "series_bound": "series bound",
+                           "asymptotic_error": "expansion error", "asymptotic_bound": "expansion bound",
+                           "quadrature_error": "quadrature error", "quadrature_bound": "quadrature estimate"})
     held = (frame.series_error <= frame.series_bound + 1e-16) & (frame.asymptotic_error <= frame.asymptotic_bound)
-    results.hard_case("si_ci_bounds_hold", "Cases where the series' or the expansion's error exceeds its bound "
-                      "(count)", int((~held).sum()), 0)
+    results.hard_case("si_ci_bounds_hold", "Values of $\\si$, $\\ci$ where the series' or the expansion's error "
+                      "exceeds its bound (count)", int((~held).sum()), 0)
     results.number("si_ci_digest_check_x2", float(frame.series_error[(frame.x == 2.0)].iloc[0]), "1",
                    note="series error at x = 2, w = 0.3 + 0.4i")
     for method in ("series", "asymptotic"):
@@ -219,17 +243,29 @@ def special_function_costs(results, quick):
             timing_rows.append({"x": x, "method": method, "kind": "setting", "setting": setting, "error": err(value),
                                 "bound": value.bound, "seconds": seconds})
     timing = pd.DataFrame(timing_rows)
-    caption = (f"What si and ci cost: error (against 40 digits) of si(x, w) and ci(x, w), w = {w.real:g}{w.imag:+g}i, "
-               "for each method and setting (series: terms; expansion: terms; quadrature: requested absolute "
-               "error; mpmath: digits), at x = 2 (left) and x = 30 (right).")
-    results.table("si_ci_costs", timing.drop(columns=["seconds"]), caption)
-    results.timing_table("si_ci_costs", timing, caption + " With wall times.")
-    fig, axes = new_figures(2)
+    caption = (f"What $\\si$ and $\\ci$ cost: the error (against 40 digits, the larger over the two) of "
+               f"$\\si(x, w)$ and $\\ci(x, w)$ for $w$ = {_complex(w)}, by method and setting (series and expansion: "
+               "terms; quadrature: the absolute error requested; mpmath: digits), at $x = 2$ and $x = 30$.")
+    headers = {"x": "$x$", "method": "method", "kind": "control", "setting": "terms, tolerance or digits",
+               "error": "error", "bound": "error bound", "seconds": "wall time (s)"}
+    results.table("si_ci_costs", timing.drop(columns=["seconds"]), caption, headers=headers)
+    results.timing_table("si_ci_costs", timing, caption + " With the wall time of each, the minimum over repeated "
+                         "runs.", headers=headers)
+    fig, axes = new_figures(2, height=3.0)
+    axes[1].sharey(axes[0])
     drawn = timing.assign(error=np.minimum(timing.error, 1.0))     # the expansion diverges: cut at 1
     for ax, x in zip(axes, (2.0, 30.0)):
-        wp.plot(drawn[drawn.x == x], ax, error="error", floor=1e-18, xlabel=f"error at x = {x:g} (above 1 drawn at 1)")
-        ax.legend(fontsize=5)
-    results.timing_figure("si_ci_costs", fig, caption)
+        wp.plot(drawn[drawn.x == x], ax, error="error", floor=1e-18, xlabel="error of $\\mathrm{si}$, $\\mathrm{ci}$")
+        ax.set_xlim(3.0, 1e-19)
+        ax.set_title(f"$x = {x:g}$")
+    axes[1].set_ylabel("")
+    wp.legend_below(fig, *axes[0].get_legend_handles_labels(), ncol=4)
+    results.timing_figure("si_ci_costs", fig, f"What $\\si$ and $\\ci$ cost: wall time against the error (against 40 "
+                          f"digits, the larger over the two) of $\\si(x, w)$ and $\\ci(x, w)$ for $w$ = {_complex(w)}, "
+                          "one line per method through its settings (series and expansion: terms; quadrature: the "
+                          "absolute error requested; mpmath: digits), at $x = 2$ (left) and $x = 30$ (right). Errors "
+                          "above 1 (the expansion diverges at $x = 2$) are drawn at 1, errors below 10⁻¹⁸ at 10⁻¹⁸. "
+                          "The series serves small $x$, the expansion large $x$.")
     for x in (2.0, 30.0):
         part = timing[(timing.x == x) & (timing.method != "mpmath incomplete gamma")]
         for method, rows_ in part.groupby("method"):
@@ -258,11 +294,13 @@ def solution_costs(results, V, quick, t_end=4.0):
         for rtol in ((1e-6, 1e-9, 1e-12) if quick or method.startswith("scipy") else (1e-6, 1e-8, 1e-10, 1e-12, 1e-13)):
             add(method, "tolerance", rtol, lambda m=method, r=rtol: solve(problem, m, rtol=r, atol=r * 1e-2).y,
                 1 if method.startswith("scipy") else 5)
-    caption = (f"What the solution costs: ω at t = {t_end:g} (Case {V.case}) by Lee's quadrature formula, si and ci "
-               "by the series with a given number of terms, and by integrating Euler's equations; error against the "
-               "formula with si, ci at 30 digits.")
+    caption = (f"What the solution costs: $\\boldsymbol{{\\omega}}$ at $t$ = {shortest(t_end)} (Case {V.case}) by "
+               "Lee's quadrature formula, with $\\si$ and $\\ci$ from the series cut at a given number of terms, and "
+               "by integrating Euler's equations at a given relative tolerance; the error of $(p, q)$ against the "
+               "formula with $\\si$, $\\ci$ at 30 digits.")
     results.number("solution_t_end", t_end, "time", note="the time at which the costs are measured")
-    publish(results, pd.DataFrame(rows), "solution", "error", caption, f"error of (p, q) at t = {t_end:g}")
+    publish(results, pd.DataFrame(rows), "solution", "error", caption, f"error of $(p, q)$ at $t$ = {shortest(t_end)}",
+            {"setting": "terms or rtol", "error": "error of $(p, q)$"})
 
 
 def large_order(results, V, nu=0.32, mu=0.05, times=(5.0, 20.0, 40.0)):
@@ -277,6 +315,6 @@ def large_order(results, V, nu=0.32, mu=0.05, times=(5.0, 20.0, 40.0)):
     results.number("large_order_factor", abs(W.g) ** (nu / mu) / mu, "1", note="|g|^(ν/μ)/μ, which multiplies si, ci")
     results.number("large_order_error", float(error.max()), "1/time", note=f"against 30 digits, t in {list(times)}")
     results.number("large_order_bound", float(bound.max()), "1/time", note="the formula's own bound")
-    results.hard_case("large_order_bound_holds", f"Large order w = {W.w.real:.3g}{W.w.imag:+.3g}i: the formula's error "
-                      "over its own bound (1e-13 added for round-off), max over t", float(np.max(error / (bound + 1e-13))),
+    results.hard_case("large_order_bound_holds", f"Large order $w$ = {_complex(W.w, 3)}: the formula's error over its "
+                      "own bound (10⁻¹³ added for round-off), largest over $t$", float(np.max(error / (bound + 1e-13))),
                       1.0)

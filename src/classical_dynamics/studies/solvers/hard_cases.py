@@ -11,7 +11,13 @@ from ...models import rigid_body as rhs
 from ...solvers import references as ref
 from ...solvers import rigid_body, symplectic
 from ...solvers.ode import Problem, solve
+from ...formatting import format_number, power_of_ten, shortest
 from ..results import new_figure
+
+
+def tenth_power(value) -> str:
+    """1e-9 as 10⁻⁹ (a tolerance is a power of ten)."""
+    return power_of_ten(round(np.log10(value)))
 
 
 def run(scene, results, quick):
@@ -38,8 +44,10 @@ def _separatrix(results, one_minus_m, quick):
     results.number("separatrix_one_minus_m", one_minus_m, "1")
     results.number("separatrix_ellipj_error_ours", err_ours, "1", note="max over [0, 4K] against mpmath, 30 digits")
     results.number("separatrix_ellipj_error_scipy", err_raw, "1", note="scipy.special.ellipj as it is (#8480)")
-    results.hard_case("separatrix_reference", f"Jacobi functions at m = 1 − {one_minus_m:g} against mpmath "
-                      f"(scipy's own ellipj is off by {err_raw:.1e} there)", err_ours, 1e-13)
+    distance = shortest(one_minus_m).removeprefix("1 × ")          # 10⁻¹⁰, not 1 × 10⁻¹⁰
+    results.hard_case("separatrix_reference", f"Jacobi's elliptic functions at $m$ = 1 − {distance} "
+                      f"against mpmath at 30 digits, largest error over a period (SciPy's own ellipj is off by "
+                      f"{format_number(err_raw, 2)} there)", err_ours, 1e-13)
     # the body on the separatrix side: integrators stay on the energy surface over a few periods
     rate = np.sqrt((I[2] - I[1]) * (np.sum((I * w0) ** 2) - np.sum(I * w0 * w0) * I[0]) / np.prod(I))
     period = 4 * K / rate
@@ -56,11 +64,12 @@ def _separatrix(results, one_minus_m, quick):
     results.number("separatrix_dop853_energy_error", dH, "1", note="rtol 1e-12")
     results.number("separatrix_splitting_energy_error", dHs, "1", note="order 4, h = 0.005")
     results.number("separatrix_splitting_casimir_error", dC, "1")
-    results.hard_case("separatrix_energy_surface", "Near the separatrix DOP853 (rtol 1e-12) stays on the energy "
-                      "surface (relative energy error)", dH, 1e-10)
+    results.hard_case("separatrix_energy_surface", "Near the separatrix DOP853 (relative tolerance "
+                      f"{tenth_power(1e-12)}) stays on the energy surface (relative energy error)", dH, 1e-10)
     rotations = 15 * int(T / 0.005)
-    results.hard_case("separatrix_casimir", "Near the separatrix the splitting keeps |m|² to round-off: its error "
-                      "over 10·√N·eps (N exact rotations)", dC / (10 * np.sqrt(rotations) * np.finfo(float).eps), 1.0)
+    results.hard_case("separatrix_casimir", "Near the separatrix the splitting keeps the Casimir $|\\mathbf{m}|^2$ "
+                      "to round-off: its relative error over $10\\sqrt{N}\\,\\varepsilon$ ($N$ exact rotations, "
+                      "$\\varepsilon$ the machine epsilon)", dC / (10 * np.sqrt(rotations) * np.finfo(float).eps), 1.0)
     # the reference itself against an independent integration, half a period (errors grow like e^{rate t})
     t = np.linspace(0, period / 2, 9)
     check = solve(Problem(rhs.euler_free, w0, (0.0, t[-1]), rhs.euler_coefficients(I)), "dop853", rtol=1e-13,
@@ -85,8 +94,9 @@ def _intermediate_axis(results):
     results.number("intermediate_axis_growth_rate", measured, "1/time",
                    note="fit of log|(w1, w3)| in the linear regime")
     results.number("intermediate_axis_growth_theory", theory, "1/time", note="q0 sqrt((A-B)(B-C)/(AC))")
-    results.hard_case("intermediate_axis", "Spin about the middle axis: measured growth rate against "
-                      "q0·√((A−B)(B−C)/(AC)) (relative difference)", abs(measured / theory - 1), 1e-3)
+    results.hard_case("intermediate_axis", "Spin about the middle axis: the measured growth rate of a "
+                      "perturbation against $q_0\\sqrt{(A - B)(B - C)/(AC)}$ (relative difference)",
+                      abs(measured / theory - 1), 1e-3)
 
 
 def _blow_up(results):
@@ -97,14 +107,18 @@ def _blow_up(results):
         rows.append({"m": m, "mu": mu, "p0": p0, "t_star_closed_form": exact, "t_star_measured": sol.t,
                      "status": sol.status, "relative_difference": sol.t / exact - 1})
     frame = pd.DataFrame(rows)
-    results.table("blow_up", frame, "Finite-time blow-up of p' = m + μp² (Lee 1964, eq. 2.4): the time at which "
-                  "the run stops (|p| passes 10¹²) against the closed form.")
+    results.table("blow_up", frame, "Finite-time blow-up of $\\dot p = m + \\mu p^2$ (Lee (2.4)): the time at "
+                  "which the run stops ($|p|$ passes 10¹²) against the closed form $t^*$, DOP853 at relative "
+                  f"tolerance {tenth_power(1e-10)}.",
+                  headers={"m": "$m$", "mu": "$\\mu$", "p0": "$p_0$", "t_star_closed_form": "$t^*$, closed form",
+                           "t_star_measured": "$t^*$, measured", "status": "status",
+                           "relative_difference": "relative difference"})
     worst = float(frame.relative_difference.abs().max())
     results.number("blow_up_worst_relative_difference", worst, "1")
     results.number("blow_up_lee_case_t_star", float(frame.t_star_measured.iloc[1]), "time units",
                    note="m = 0.5, mu = -0.2, p0 = -2")
-    results.hard_case("blow_up", "Blow-up reported with its time (status 'blow-up', not NaN, not a hang): "
-                      "relative difference to the closed-form t*", worst, 1e-9)
+    results.hard_case("blow_up", "Blow-up reported with its time (status “blow-up”, not NaN, not a hang): "
+                      "relative difference to the closed-form blow-up time $t^*$", worst, 1e-9)
 
 
 def _numerical_damping(results):
@@ -124,24 +138,36 @@ def _numerical_damping(results):
         qs, vs = symplectic.integrate(symplectic.harmonic, np.array([1.0]), np.array([1.0]), np.array([0.0]), h, n,
                                       2, n)
         change = 0.5 * (qs[-1, 0] ** 2 + vs[-1, 0] ** 2) / 0.5 - 1
-        rows.append({"method": "Stormer-Verlet", "rtol": h, "energy_change": change,
+        rows.append({"method": "Störmer–Verlet", "rtol": h, "energy_change": change,
                      "spurious_Q": 2 * np.pi * periods / abs(change) if change else np.inf})
     frame = pd.DataFrame(rows)
-    results.table("numerical_damping", frame, "An undamped oscillator over 100 periods: relative energy change "
-                  "and the quality factor it would be mistaken for, Q = 2π·(periods)/|ΔE/E| (for Störmer–Verlet "
-                  "the 'rtol' column is the step).")
+    results.table("numerical_damping", frame, "An undamped oscillator over 100 periods: the relative change of its "
+                  "energy, and the quality factor it would be mistaken for, $Q = 2\\pi n/|\\Delta E/E|$ after $n$ "
+                  "periods (negative change: energy lost). The adaptive methods at two relative tolerances, "
+                  "Störmer–Verlet at two steps $h$.",
+                  headers={"method": "method", "rtol": "rtol or step $h$", "energy_change": "$\\Delta E/E$",
+                           "spurious_Q": "apparent $Q$"})
     bdf = frame[(frame.method == "scipy:BDF") & (frame.rtol == 1e-6)].iloc[0]
     results.number("bdf_spurious_Q_rtol_1e-6", bdf.spurious_Q, "1")
     results.number("bdf_energy_change_rtol_1e-6", bdf.energy_change, "1")
-    verlet = frame[frame.method == "Stormer-Verlet"]
+    verlet = frame[frame.method == "Störmer–Verlet"]
     results.number("verlet_worst_energy_change", float(verlet.energy_change.abs().max()), "1",
                    note="bounded, oscillating; sampled at the end of the run")
-    fig, ax = new_figure(6.0, 3.6)
-    for rtol, part in frame[frame.method != "Stormer-Verlet"].groupby("rtol"):
-        ax.semilogy(part.method.str.replace("scipy:", "scipy\n"), np.abs(part.energy_change), "o",
-                    label=f"rtol = {rtol:g}")
-    ax.set_ylabel("|ΔE / E| after 100 periods")
-    ax.tick_params(axis="x", labelsize=7)
-    ax.legend(fontsize=8)
-    results.figure("numerical_damping", fig, "Energy an undamped oscillator loses in 100 periods, by method: "
-                   "BDF damps it most. A physical Q must be compared against this floor.")
+    fig, ax = new_figure(height=3.0)
+    adaptive = frame[frame.method != "Störmer–Verlet"]
+    methods = list(dict.fromkeys(adaptive.method))
+    x = np.arange(len(methods))
+    for (rtol, part), marker in zip(sorted(adaptive.groupby("rtol"), key=lambda g: -g[0]), ("s", "o")):
+        ax.semilogy([methods.index(m) for m in part.method], np.abs(part.energy_change), marker, ms=4,
+                    color="0.15" if marker == "s" else "#E69F00",
+                    label=f"relative tolerance {tenth_power(rtol)}")
+    ax.set_xticks(x, [m.replace("scipy:", "SciPy\n").replace("dop853", "DOP853").replace("dopri5", "DOPRI5")
+                      for m in methods])
+    ax.set_xlim(-0.5, len(methods) - 0.5)
+    ax.set_ylabel("$|\\Delta E/E|$ after 100 periods")
+    ax.grid(False, axis="x", which="both")
+    ax.legend(loc="upper left")
+    results.figure("numerical_damping", fig, "The relative energy change $|\\Delta E/E|$ of an undamped oscillator "
+                   "after 100 periods, by adaptive method, at two relative tolerances. Every method changes the "
+                   "energy, most of them by losing it; BDF loses the most. A physical quality factor $Q$ must be "
+                   "measured well above this numerical floor.")
