@@ -31,7 +31,7 @@ def code(*parts):
 
 
 SHARED_CODE = code("solvers", "models", "scenes", "io.py", "provenance.py", "cli.py", "formatting.py",
-                   "units.py", "studies/__init__.py", "studies/results.py", "studies/figure_style.py")
+                   "units.py", "studies/__init__.py", "studies/results.py", "figure_style.py")
 
 
 # Validate every scene of every study before any job is scheduled: a bad scene stops the

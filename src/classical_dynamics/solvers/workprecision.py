@@ -119,18 +119,13 @@ def fitted_orders(frame: pd.DataFrame) -> dict:
     return out
 
 
-# methods figure_style.METHOD_COLOURS has no colour for yet: fixed here, so they keep it from figure to figure
-EXTRA_COLOURS = {"scipy:bdf": "#7F7F7F"}
-
-
 def _colours(methods) -> dict:
     """Each method's colour of every figure ('splitting, order 2' is splitting2); a method without one takes
     the first palette colour no other method of the figure has (the palette's order otherwise)."""
-    from ..studies.figure_style import METHOD_COLOURS, OKABE_ITO, method_colour
+    from ..figure_style import METHOD_COLOURS, OKABE_ITO, method_colour
     known = {name.lower() for name in METHOD_COLOURS}
     keys = {m: m.replace(", order ", "").lower() for m in methods}
     out = {m: method_colour(k) for m, k in keys.items() if k in known}
-    out.update({m: EXTRA_COLOURS[k] for m, k in keys.items() if k in EXTRA_COLOURS})
     free = [c for c in OKABE_ITO[:-1] if c not in out.values()] + ["#7F7F7F"]   # grey, not the faint yellow
     for index, m in enumerate(m for m in methods if m not in out):
         out[m] = free[index] if index < len(free) else method_colour(m, index)

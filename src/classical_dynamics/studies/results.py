@@ -17,7 +17,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from .. import io  # noqa: E402
-from .figure_style import STYLE, TEXT_WIDTH_IN  # noqa: E402
+from ..figure_style import STYLE, TEXT_WIDTH_IN  # noqa: E402
 
 # One style for every figure of the report: applied once, when a study first imports this module.
 plt.rcParams.update(STYLE)

@@ -13,7 +13,7 @@ from ...provenance import software_stamp
 from ...solvers import chain_eigen
 from ...solvers.special import bessel_j0_zeros, laguerre_lowest_zero_asymptotic, laguerre_zero_mp
 from ...solvers.timing import min_time
-from ..figure_style import TEXT_WIDTH_IN
+from ...figure_style import TEXT_WIDTH_IN
 from ..results import new_figure, plt
 
 WIDE = TEXT_WIDTH_IN - 0.2      # the saved SVG's tight bounding box adds about 0.12 in

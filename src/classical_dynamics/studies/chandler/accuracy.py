@@ -16,7 +16,7 @@ from ...solvers import references as ref
 from ...solvers import rigid_body
 from ...solvers import workprecision as wp
 from ...solvers.timing import min_time
-from ..figure_style import method_colour
+from ...figure_style import method_colour
 from ..results import new_figure
 from . import model as wobble_model
 from .model import arcsec_text

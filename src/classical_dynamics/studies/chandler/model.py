@@ -12,7 +12,7 @@ from ...solvers import references as ref
 from ...solvers import rigid_body
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
-from ..figure_style import TEXT_WIDTH_IN
+from ...figure_style import TEXT_WIDTH_IN
 from ..results import new_figure, plt
 from . import polar_motion
 

@@ -18,7 +18,7 @@ from ...solvers import workprecision as wp
 from ...solvers.ode import Problem, solve
 from ...formatting import format_number, plural, shortest
 from ...solvers.timing import min_time
-from ..figure_style import method_colour
+from ...figure_style import method_colour
 from ..results import new_figure
 from . import full
 

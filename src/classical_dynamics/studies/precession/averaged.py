@@ -10,7 +10,7 @@ from ...models import earth
 from ...models import precession as prec
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
-from ..figure_style import TEXT_WIDTH_IN
+from ...figure_style import TEXT_WIDTH_IN
 from ..results import plt
 from . import fitting
 from .secular import ARCSEC_PER_TURN

@@ -16,7 +16,7 @@ from ...models import earth
 from ...models import precession as prec
 from ...solvers import rigid_body
 from ...solvers.timing import min_time
-from ..figure_style import TEXT_WIDTH_IN
+from ...figure_style import TEXT_WIDTH_IN
 from ..results import plt
 from . import averaged, fitting
 from .secular import ARCSEC_PER_TURN

@@ -15,7 +15,7 @@ from ...models import self_excited as se
 from ...solvers.ode import Events, Problem, solve, solve_batch
 from ...solvers.timing import min_time
 from ...formatting import format_number, shortest
-from ..figure_style import TEXT_WIDTH_IN
+from ...figure_style import TEXT_WIDTH_IN
 from ..results import new_figure, plt
 from . import portrait
 

@@ -18,7 +18,7 @@ import numpy as np
 from ...models import self_excited as se
 from ...solvers.ode import Events, Problem, solve
 from ...formatting import format_number, shortest
-from ..figure_style import TEXT_WIDTH_IN
+from ...figure_style import TEXT_WIDTH_IN
 from ...solvers.workprecision import legend_below
 from ..results import new_figure
 from . import portrait

@@ -11,7 +11,7 @@ from ...solvers import rigid_body
 from ...solvers.ode import Problem, solve
 from ...formatting import format_number, shortest
 from ...solvers import workprecision as wp
-from ..figure_style import method_colour
+from ...figure_style import method_colour
 from ..results import new_figure
 
 EPS = np.finfo(float).eps
