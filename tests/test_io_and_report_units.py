@@ -53,7 +53,8 @@ def test_number_format(value, sig, text):
 
 
 @pytest.mark.parametrize("value,text", [(50.5, "50.5"), (306.0, "306"), (0.00327, "0.00327"), (2.18, "2.18"),
-                                        (433.1, "433.1"), (-46.84, "−46.84"), (1.6e-10, "1.6 × 10⁻¹⁰")])
+                                        (433.1, "433.1"), (-46.84, "−46.84"), (1.6e-10, "1.6 × 10⁻¹⁰"),
+                                        (6.7575599248, "6.7575599")])
 def test_source_values_keep_their_printed_digits(value, text):
     assert shortest(value) == text.replace(" × ", "\u202f×\u202f")
 

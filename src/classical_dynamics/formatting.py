@@ -69,9 +69,10 @@ def format_decimals(value, decimals: int) -> str:
     return (MINUS if text.startswith("-") else "") + _group(text.lstrip("-"))
 
 
-def shortest(value) -> str:
+def shortest(value, max_figures: int = 8) -> str:
     """A value as printed in a source: the shortest decimal that reads back as the same float,
-    so 50.5 stays 50.5 and 306 stays 306 (no digits the source never had)."""
+    so 50.5 stays 50.5 and 306 stays 306 (no digits the source never had). A reference computed
+    to more figures than a reader can use shows `max_figures`."""
     if isinstance(value, (bool, str)) or value is None:
         return format_number(value)
     if isinstance(value, int) or float(value).is_integer() and abs(value) < 1e15:
@@ -79,7 +80,7 @@ def shortest(value) -> str:
     text = repr(float(value))
     mantissa, _, exp = text.partition("e")
     digits = len(mantissa.lstrip("-").replace(".", "").lstrip("0"))
-    return format_number(float(value), digits)
+    return format_number(float(value), min(digits, max_figures))
 
 
 def sig_for_tolerance(value, *, relative=None, absolute=None, cap: int = 12, floor: int = 2) -> int:
