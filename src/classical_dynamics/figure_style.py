@@ -21,7 +21,7 @@ METHOD_COLOURS = {
     "dop853": "#0072B2", "rk45": "#56B4E9", "dopri5": "#56B4E9",
     "scipy:DOP853": "#D55E00", "scipy:RK45": "#E69F00", "scipy:LSODA": "#CC79A7", "scipy:Radau": "#009E73",
     "scipy:BDF": "#7F7F7F",
-    "splitting2": "#000000", "splitting4": "#009E73", "splitting": "#000000",
+    "splitting2": "#000000", "splitting4": "#999933", "splitting": "#000000",   # olive: Radau has the green
 }
 
 

@@ -61,6 +61,32 @@ def format_number(value, sig: int = 4, *, fixed_range=FIXED_RANGE) -> str:
     return f"{sign}{mantissa}{TIMES}{power_of_ten(exponent)}"
 
 
+def needs_power_of_ten(value, sig: int = 4) -> bool:
+    """Whether format_number writes this value with a power of ten."""
+    if isinstance(value, (bool, int, str)) or value is None:
+        return False
+    value = float(value)
+    if not math.isfinite(value) or value == 0:
+        return False
+    exponent = int(f"{abs(value):.{max(int(sig), 1) - 1}e}".split("e")[1])
+    return not FIXED_RANGE[0] <= exponent < FIXED_RANGE[1]
+
+
+def format_column(values, sig: int = 4) -> list[str]:
+    """A table column in one notation: if any value needs a power of ten, every value is written as
+    mantissa × 10ⁿ (10⁰ left out), so a column never mixes 0.0044 with 2.3 × 10⁻⁶."""
+    if not any(needs_power_of_ten(v, sig) for v in values):
+        return [format_number(v, sig) for v in values]
+    out = []
+    for v in values:
+        if isinstance(v, (bool, int, str)) or v is None or not math.isfinite(float(v)) or float(v) == 0:
+            out.append(format_number(v, sig))
+        else:
+            text = format_number(v, sig, fixed_range=(0, 0))
+            out.append(text.replace(TIMES + "10⁰", ""))
+    return out
+
+
 def format_decimals(value, decimals: int) -> str:
     """A fixed number of decimals (a tolerance's place), with the same minus and grouping; −0 is 0."""
     text = f"{float(value):.{max(decimals, 0)}f}"

@@ -14,7 +14,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-DIMENSIONLESS = ("", "1", "bool", None)
+# Lee's τ is a dimensionless time: a value of τ carries no unit (the header names the variable).
+DIMENSIONLESS = ("", "1", "bool", None, "τ", "1/τ")
 
 
 @dataclass(frozen=True)
@@ -36,7 +37,7 @@ REGISTRY: dict[str, Unit] = {
     # lengths
     "m": Unit("m"), "km": Unit("km"), "cm": Unit("cm"),
     # natural units of scaled problems
-    "τ": Unit("$\\tau$"), "1/τ": Unit("$\\tau^{-1}$"), "σ": Unit("$\\sigma$"),
+    "σ": Unit("$\\sigma$"),
     "time": Unit("time units"), "time units": Unit("time units"), "1/time": Unit("per time unit"), "1/time²": Unit("per time unit squared"),
     "g/l": Unit("$g/l$"), "√(g/l)": Unit("$\\sqrt{g/l}$"), "√(l/g)": Unit("$\\sqrt{l/g}$"), "√(k/m)": Unit("$\\sqrt{k/m}$"),
     "x/l from the free end": Unit("of the length from the free end"),

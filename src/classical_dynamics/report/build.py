@@ -21,7 +21,7 @@ from jinja2.ext import Extension
 from markupsafe import Markup
 
 from .. import io
-from ..formatting import format_number, shortest, sig_for_tolerance
+from ..formatting import format_column, format_number, shortest, sig_for_tolerance
 from ..provenance import git_state, machine, package_versions
 from ..studies import STUDIES
 from . import claims as claims_mod
@@ -87,9 +87,20 @@ class InlineMath(Extension):
         return render_markup(source)
 
 
+_UNIT = re.compile(r" (\([^()]*\))$")
+_IDENTIFIER = re.compile(r"^[a-z][a-z0-9]*(_[a-z0-9]+)+$")
+
+
 def _header_html(text: str) -> str:
-    """A header as HTML: $math$ typeset; one typed in a template was typeset when it was compiled."""
-    return text if "<span class=math" in text else render_text(text)
+    """A header as HTML: $math$ typeset (one typed in a template was typeset when it was compiled),
+    its "(unit)" kept on one line."""
+    html_text = text if "<span class=math" in text else render_text(text)
+    return _UNIT.sub(r' <span class="unit">\1</span>', html_text)
+
+
+def _cell_html(text: str) -> str:
+    """A text cell: an identifier such as node_regression reads as words."""
+    return render_text(text.replace("_", " ") if _IDENTIFIER.match(text) else text)
 
 
 _CODE = re.compile(r"<code>(.*?)</code>", re.S)
@@ -197,18 +208,17 @@ class Report:
         whole = {c: numeric[c] and frame[c].dropna().map(float.is_integer).all() for c in frame.columns
                  if pd.api.types.is_float_dtype(frame[c])}
         body = []
-        values = {c: frame[c].tolist() for c in frame.columns}      # per column: ints stay ints
+        texts = {}
+        for c in frame.columns:                                    # per column: ints stay ints
+            column = [None if v is None or (isinstance(v, float) and math.isnan(v)) else
+                      (int(v) if isinstance(v, float) and whole.get(c) else v) for v in frame[c].tolist()]
+            texts[c] = format_column(column, (sigs or {}).get(c, sig))
         for i in range(len(frame)):
             cells = []
             for c in frame.columns:
-                v = values[c][i]
-                if v is None or (isinstance(v, float) and math.isnan(v)):
-                    v = None
-                if isinstance(v, float) and whole.get(c):
-                    v = int(v)
-                text = format_number(v, (sigs or {}).get(c, sig))
+                text = texts[c][i]
                 cells.append(f'<td class="n">{html.escape(text)}</td>' if numeric[c]
-                             else f"<td>{render_text(text)}</td>")
+                             else f"<td>{_cell_html(text)}</td>")
             body.append("<tr>" + "".join(cells) + "</tr>")
         note = " Measured times: they vary from run to run." if timing else ""
         csv = f'results/{study}/{"timings/" if timing else ""}{scene}/{name}.csv'

@@ -46,6 +46,7 @@ FRACTIONS = {("1", "2"): "½", ("1", "3"): "⅓", ("2", "3"): "⅔", ("1", "4"):
 IGNORED = {"left", "right", "big", "Big", "bigl", "bigr", "Bigl", "Bigr", "displaystyle", "textstyle"}
 
 _TOKEN = re.compile(r"\\([A-Za-z]+|.)|(\s+)|(.)", re.S)
+_GLUE = re.compile(r"(</span>) (=|&lt;|&gt;|≤|≥|≈) ")      # "ν = 0.5" never breaks at the "="
 _INLINE = re.compile(r"(?<!\\)\$(.+?)(?<!\\)\$", re.S)
 
 
@@ -159,7 +160,10 @@ class _Parser:
         if command in SPACES:
             return SPACES[command]
         if command in FUNCTIONS:
-            return f'<span class=fn>{command}</span>\u2009'
+            while (following := self.peek()) is not None and following[1]:
+                self.i += 1                                   # the source's space becomes the thin one
+            spaced = following is not None and not (following[2] and following[2] in ",.;:)]}(_^")
+            return f'<span class=fn>{command}</span>' + ("\u2009" if spaced else "")
         if command in IGNORED:
             return ""
         if command in UPRIGHT:
@@ -171,10 +175,9 @@ class _Parser:
         if command in ACCENTS:
             inner = self.argument(mode)
             mark = ACCENTS[command]
-            match = re.fullmatch(r"(<i>)?(.)(</i>)?", inner)
-            if match:                                     # the mark on the letter itself
-                return f"{match.group(1) or ''}{match.group(2)}{mark}{match.group(3) or ''}"
-            return f"{inner}{mark}"
+            # the mark right after the first letter, inside its tags: in another text run the
+            # shaper cannot attach it and prints a dotted circle
+            return re.sub(r"^((?:<[^>]+>)*)([^<])", lambda m: m.group(1) + m.group(2) + mark, inner, count=1)
         if command == "sqrt":
             inner = self.argument(mode)
             return f'√<span class=radicand>{inner}</span>'
@@ -227,7 +230,7 @@ def render_text(text: str) -> str:
         out.append(math_html(match.group(1)))
         last = match.end()
     out.append(html.escape(text[last:], quote=False))
-    return "".join(out).replace("\\$", "$")
+    return _GLUE.sub("\\1\u00a0\\2\u00a0", "".join(out)).replace("\\$", "$")
 
 
 def render_markup(markup: str) -> str:

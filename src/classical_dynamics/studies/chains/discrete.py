@@ -145,7 +145,7 @@ def _zero_modes(results, lam, shapes, rigid, rigid_name):
     rigid = rigid / np.linalg.norm(rigid)
     results.number("zero_mode_eigenvalue_relative", abs(lam[zero]) / np.max(np.abs(lam)), "1",
                    note="$|\\lambda_0|/\\lambda_\\mathrm{max}$ before clipping")
-    results.hard_case("zero_mode", f"The zero mode is a {rigid_name}: $1 - |\\cos|$ of the angle between "
+    results.hard_case("zero_mode", f"The zero mode is a {rigid_name}: $1 - |\\cos\\theta|$, $\\theta$ the angle between "
                       "them; its eigenvalue is round-off, clipped to 0, not reported as an instability",
                       float(1 - abs(v @ rigid)), 1e-12)
     results.hard_case("zero_mode_eigenvalue", "$|\\lambda_0|/\\lambda_\\mathrm{max}$ of the free chain's zero mode",
