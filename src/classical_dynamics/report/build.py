@@ -187,15 +187,21 @@ class Report:
             f'<code>{self.rebuild(study, scene)}</code>.</span></figcaption></figure>')
 
     def table(self, where: str, name: str, label: str, columns=None, timing: bool = False, sig: int = 4,
-              rename=None, rows=None, sigs=None):
+              rename=None, keep=None, sigs=None):
         """A results table: headers as the study declared them ("quantity (unit)", with math), numbers
-        right-aligned to `sig` figures (per column in `sigs`), columns of whole numbers printed as such."""
+        right-aligned to `sig` figures (per column in `sigs`), columns of whole numbers printed as such.
+        keep = {column: [values]} shows the rows whose values are listed (by value, not position, so a
+        reduced build that has fewer rows shows fewer)."""
         study, scene = where.split("/")
         summary = self.index.summary(study, scene)
         meta = (summary["timings"]["tables"] if timing else summary["tables"])[name]
         frame = self.index.csv(study, scene, name, timing)
-        if rows is not None:
-            frame = frame.iloc[rows]
+        for column, allowed in (keep or {}).items():
+            if pd.api.types.is_numeric_dtype(frame[column]):
+                mask = frame[column].map(lambda v: any(math.isclose(v, a, rel_tol=1e-9) for a in allowed))
+            else:
+                mask = frame[column].isin(allowed)
+            frame = frame[mask]
         if columns:
             frame = frame[columns]
         number = self.numbering.label(label)
