@@ -88,7 +88,7 @@ class InlineMath(Extension):
 
 
 _UNIT = re.compile(r" (\([^()]*\))$")
-_IDENTIFIER = re.compile(r"^[a-z][a-z0-9]*(_[a-z0-9]+)+$")
+_IDENTIFIER = re.compile(r"^(\+ )?[a-z][a-z0-9]*(_[a-z0-9]+)+$")
 
 
 def _header_html(text: str) -> str:

@@ -84,7 +84,8 @@ def _mode_shape_figure(results, j):
                 f"{format_number((j[idx] / 2) ** 2, 4)}")
     node = (j[0] / j[1]) ** 2
     ax.axhline(node, color="0.4", lw=0.8)
-    ax.annotate(f"node of mode 2, $x/l$ = {format_number(node, 4)}", (0.02, node), xytext=(0.05, node + 0.06))
+    ax.annotate(f"node of mode 2, $x/l$ = {format_number(node, 4)}", (0.02, node), xytext=(0.05, node + 0.06),
+                bbox={"fc": "white", "ec": "none", "pad": 1.5}, zorder=5)      # no curve runs through the text
     ax.axvline(0, color="0.2", lw=0.6)
     ax.set_xlabel("horizontal displacement (largest = 1)")
     ax.set_ylabel("height above the free end, $x/l$")

@@ -86,7 +86,7 @@ def run(scene, results, quick):
     wp.plot(frame, ax, floor=1e-16, xlabel="error at the final time / wobble amplitude")
     for line in ax.get_lines():          # each method in its colour of every figure
         line.set_color(method_colour(line.get_label().replace(", order ", "")))
-    ax.legend(loc="best")
+    wp.legend_below(fig)                 # below the axes: no line hidden under it
     results.timing_figure("work_precision", fig, f"Wall time against the error at the end of {span_text} of wobble "
                           "(relative to the amplitude; errors below "
                           f"{format_number(1e-16, 1)} drawn at that floor), one line per method: adaptive Runge–Kutta "

@@ -172,7 +172,8 @@ def _iau_nutation(results, model, t, psi, eps, fp, fe, args):
                    / earth.ARCSEC, "″")
     show = t <= 20.0 * earth.JULIAN_YEAR_DAYS
     years = 2000.0 + t[show] / earth.JULIAN_YEAR_DAYS
-    fig, axes = plt.subplots(2, 1, figsize=(WIDE, 4.0), sharex=True, layout="constrained")
+    fig, axes = plt.subplots(3, 1, figsize=(WIDE, 4.3), sharex=True, layout="constrained",
+                             gridspec_kw={"height_ratios": [1, 1, 0.8]})
     for ax, ours, iau, name in ((axes[0], ours_psi, d_psi, r"$\Delta\psi$ (″)"),
                                 (axes[1], ours_eps, d_eps, r"$\Delta\varepsilon$ (″)")):
         ax.plot(years, iau[show] / earth.ARCSEC, color="0.65", lw=1.8, label="IAU 2000B")
@@ -180,16 +181,23 @@ def _iau_nutation(results, model, t, psi, eps, fp, fe, args):
         ax.set_ylabel(name)
         ax.margins(y=0.22)
         ax.grid(True, alpha=0.25)
+    # the two curves agree to a fraction of an arcsecond: the difference is what shows the rigid Earth
+    axes[2].plot(years, (ours_psi - d_psi)[show] / earth.ARCSEC, lw=0.5, color="C4", label=r"$\Delta\psi$")
+    axes[2].plot(years, (ours_eps - d_eps)[show] / earth.ARCSEC, lw=0.5, color="C1", label=r"$\Delta\varepsilon$")
+    axes[2].set_ylabel("model − IAU (″)")
+    axes[2].legend(loc="upper right", ncol=2)
+    axes[2].grid(True, alpha=0.25)
     axes[0].legend(loc="upper center", ncol=2)
-    axes[1].set_xlabel("year")
-    axes[1].xaxis.set_major_locator(MaxNLocator(integer=True, steps=[1, 2, 5, 10]))   # calendar years
-    axes[1].xaxis.set_major_formatter("{x:.0f}")
+    axes[2].set_xlabel("year")
+    axes[2].xaxis.set_major_locator(MaxNLocator(integer=True, steps=[1, 2, 5, 10]))   # calendar years
+    axes[2].xaxis.set_major_formatter("{x:.0f}")
     shown = int(round(t[show][-1] / earth.JULIAN_YEAR_DAYS))
     results.figure("nutation", fig, "Nutation in longitude ($\\Delta\\psi$, top) and obliquity "
                    "($\\Delta\\varepsilon$, bottom) from J2000: the full model's $\\psi$ and $\\varepsilon$ of "
                    "$\\mathbf{L}$ less their fitted lines (thin) over the IAU 2000B series (grey) for the first "
-                   f"{format_number(shown)} {plural(shown, 'year')}. The 18.6-year term dominates; the semi-annual "
-                   "and fortnightly terms ride on it.")
+                   f"{format_number(shown)} {plural(shown, 'year')}, and below, their difference. The 18.6-year term "
+                   "dominates and the two curves lie on each other; the difference is what the rigid Earth lacks, "
+                   "mostly the semi-annual and fortnightly terms that the real Earth's non-rigid response amplifies.")
 
 
 def _aliasing(results, model, t, psi, windows_years, span_years, args):

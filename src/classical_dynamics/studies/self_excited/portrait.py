@@ -103,7 +103,7 @@ def mark_points(ax, points):
     for pt in points:
         marker, label = style[pt["type"]]
         ax.plot(pt["phi2"], 0.0, marker, color="k", ms=6, mew=1.2, mfc="white" if marker == "o" else None,
-                label=None if label in seen else label, zorder=5)
+                label=None if label in seen else label, zorder=5, clip_on=False)   # whole at the window's edge
         seen.add(label)
 
 
