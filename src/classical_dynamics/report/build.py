@@ -9,11 +9,10 @@ from __future__ import annotations
 import base64
 import html
 import math
+import re
 from collections import defaultdict
 from datetime import datetime, timezone
 from pathlib import Path
-
-import re
 
 import jinja2
 import pandas as pd
@@ -24,12 +23,12 @@ from .. import io
 from ..formatting import format_column, format_number, shortest, sig_for_tolerance
 from ..provenance import git_state, machine, package_versions
 from ..studies import STUDIES
+from ..units import unit_text
 from . import claims as claims_mod
 from .bib import Citations, format_entry, read_bib
 from .inline_math import plain_text, render_markup, render_text
 from .math import latex_data_uri
 from .numbering import NAMES, Numbering
-from ..units import unit_text
 
 STUDY_ORDER = ["precession", "chandler", "chains", "self_excited", "solvers"]
 

@@ -182,7 +182,7 @@ class _Parser:
             inner = self.argument(mode)
             return f'√<span class=radicand>{inner}</span>'
         if command in ("frac", "tfrac", "dfrac"):
-            num_source, den_source = self._peek_group(), None
+            num_source = self._peek_group()
             numerator = self.argument(mode)
             den_source = self._peek_group()
             denominator = self.argument(mode)

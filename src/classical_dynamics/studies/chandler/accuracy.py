@@ -16,7 +16,6 @@ from ...solvers import references as ref
 from ...solvers import rigid_body
 from ...solvers import workprecision as wp
 from ...solvers.timing import min_time
-from ...figure_style import method_colour
 from ..results import new_figure
 from . import model as wobble_model
 from .model import arcsec_text
@@ -84,8 +83,6 @@ def run(scene, results, quick):
                          headers={**HEADERS, "seconds": "wall time (s)"})
     fig, ax = new_figure(6.2, 4.0)
     wp.plot(frame, ax, floor=1e-16, xlabel="error at the final time / wobble amplitude")
-    for line in ax.get_lines():          # each method in its colour of every figure
-        line.set_color(method_colour(line.get_label().replace(", order ", "")))
     wp.legend_below(fig)                 # below the axes: no line hidden under it
     results.timing_figure("work_precision", fig, f"Wall time against the error at the end of {span_text} of wobble "
                           "(relative to the amplitude; errors below "

@@ -18,7 +18,6 @@ from ...solvers import workprecision as wp
 from ...solvers.ode import Problem, solve
 from ...formatting import format_number, plural, shortest
 from ...solvers.timing import min_time
-from ...figure_style import method_colour
 from ..results import new_figure
 from . import full
 
@@ -92,7 +91,6 @@ def run(scene, model, results, quick):
                          headers={**HEADERS, "seconds": "wall time (s)"})
     fig, ax = new_figure(6.2, 4.0)
     wp.plot(frame, ax, error="error_mas", floor=1e-9, xlabel=r"error of the final $\mathbf{L}$ axis (mas)")
-    recolour_methods(ax)
     ax.legend(loc="best")
     results.timing_figure("work_precision", fig, f"Wall time against the error of the final angular-momentum axis "
                           f"after {span_text} of the spin-resolved Earth, one line per method (errors below "
@@ -106,8 +104,3 @@ def run(scene, model, results, quick):
 HEADERS = {"method": "method", "kind": "control", "setting": "step (h) or rtol", "error_mas": "error (mas)",
            "steps": "steps"}
 
-
-def recolour_methods(ax):
-    """Each method's line in its colour of every figure (splitting, order 2 -> splitting2)."""
-    for line in ax.get_lines():
-        line.set_color(method_colour(line.get_label().replace(", order ", "")))

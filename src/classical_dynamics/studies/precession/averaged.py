@@ -10,12 +10,11 @@ from ...models import earth
 from ...models import precession as prec
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
-from ...figure_style import TEXT_WIDTH_IN
+from ...figure_style import FULL_WIDTH_IN
 from ..results import plt
 from . import fitting
 from .secular import ARCSEC_PER_TURN
 
-WIDE = TEXT_WIDTH_IN - 0.2      # the saved SVG's tight bounding box adds about 0.12 in
 
 RTOL = 1e-12
 SAMPLE_DAYS = 0.25 * earth.JULIAN_YEAR_DAYS
@@ -119,7 +118,7 @@ def _nutation(results, model, t, psi, eps):
 
 def _cone_figure(results, model, s, t, eps_arcsec, span_years):
     years = t / earth.JULIAN_YEAR_DAYS
-    fig, (ax, bx) = plt.subplots(1, 2, figsize=(WIDE, 3.1), layout="constrained",
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(FULL_WIDTH_IN, 3.1), layout="constrained",
                                  gridspec_kw={"width_ratios": [1, 1.35]})
     ax.plot(s[:, 0], s[:, 1], lw=0.6, color="C4")
     ax.plot([0], [0], "k+", ms=8)

@@ -16,12 +16,11 @@ from ...models import earth
 from ...models import precession as prec
 from ...solvers import rigid_body
 from ...solvers.timing import min_time
-from ...figure_style import TEXT_WIDTH_IN
+from ...figure_style import FULL_WIDTH_IN
 from ..results import plt
 from . import averaged, fitting
 from .secular import ARCSEC_PER_TURN
 
-WIDE = TEXT_WIDTH_IN - 0.2      # the saved SVG's tight bounding box adds about 0.12 in
 
 QUICK_SPAN_YEARS = 20.0
 FREE_NUTATION_YEARS = 3.0
@@ -172,7 +171,7 @@ def _iau_nutation(results, model, t, psi, eps, fp, fe, args):
                    / earth.ARCSEC, "″")
     show = t <= 20.0 * earth.JULIAN_YEAR_DAYS
     years = 2000.0 + t[show] / earth.JULIAN_YEAR_DAYS
-    fig, axes = plt.subplots(3, 1, figsize=(WIDE, 4.3), sharex=True, layout="constrained",
+    fig, axes = plt.subplots(3, 1, figsize=(FULL_WIDTH_IN, 4.3), sharex=True, layout="constrained",
                              gridspec_kw={"height_ratios": [1, 1, 0.8]})
     for ax, ours, iau, name in ((axes[0], ours_psi, d_psi, r"$\Delta\psi$ (″)"),
                                 (axes[1], ours_eps, d_eps, r"$\Delta\varepsilon$ (″)")):
