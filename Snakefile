@@ -5,6 +5,7 @@
 #   snakemake -c all chains          one study (its scenes only); also: precession, chandler, self_excited, solvers
 #   snakemake -c all report          the HTML and PDF report
 #   snakemake -c1 dist               a citable archive with SHA256SUMS
+#   snakemake -c1 verify             rebuild that archive with this checkout, compare every number
 #   snakemake -c all --config quick=1    a reduced build (what the tests run)
 
 configfile: "workflow/config.yaml"

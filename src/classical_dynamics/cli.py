@@ -4,6 +4,10 @@
   python -m classical_dynamics run STUDY SCHEMA SCENE OUT_DIR TIMINGS_DIR [--quick]
   python -m classical_dynamics report RESULTS_DIR HTML PDF [--quick]
   python -m classical_dynamics dist RESULTS_DIR ARCHIVE
+  python -m classical_dynamics verify ARCHIVE [--scenes STUDY/SCENE,...] [--root .] [--cores N]
+  python -m classical_dynamics diff RESULTS_A RESULTS_B      (results folders or dist archives)
+
+Installed, the same commands are `classical-dynamics verify ...`, `classical-dynamics diff ...`.
 """
 
 from __future__ import annotations
@@ -69,6 +73,16 @@ def cmd_dist(args) -> int:
     return 0
 
 
+def cmd_verify(args) -> int:
+    from .verify import verify
+    return verify(Path(args.archive), Path(args.root), args.scenes, args.quick, args.cores)
+
+
+def cmd_diff(args) -> int:
+    from .verify import diff
+    return diff(Path(args.a), Path(args.b))
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="classical_dynamics")
     sub = parser.add_subparsers(dest="command", required=True)
@@ -96,10 +110,26 @@ def main(argv=None) -> int:
     p.add_argument("results")
     p.add_argument("archive")
     p.set_defaults(func=cmd_dist)
+    p = sub.add_parser("verify", help="rebuild a dist archive's scenes and compare every number with it; "
+                       "exit 1 if one moved beyond its tolerance, 2 for a bad archive")
+    p.add_argument("archive")
+    p.add_argument("--scenes", help="only these: study/scene or study, comma-separated")
+    p.add_argument("--root", default=".", help="the checkout whose code and scene files rebuild it")
+    p.add_argument("--cores", type=int, default=1, help="scenes rebuilt side by side")
+    mode = p.add_mutually_exclusive_group()
+    mode.add_argument("--quick", action="store_const", const=True, default=None,
+                      help="rebuild as a quick build (default: as each scene's provenance says)")
+    mode.add_argument("--full", action="store_const", const=False, dest="quick")
+    p.set_defaults(func=cmd_verify)
+    p = sub.add_parser("diff", help="every number that changed between two builds; exit 1 if any")
+    p.add_argument("a", metavar="RESULTS_A", help="a results folder or a dist archive")
+    p.add_argument("b", metavar="RESULTS_B")
+    p.set_defaults(func=cmd_diff)
     args = parser.parse_args(argv)
+    from .verify import VerifyError
     try:
         return args.func(args)
-    except SceneError as error:
+    except (SceneError, VerifyError) as error:
         print(error, file=sys.stderr)
         return 2
 

@@ -1,4 +1,5 @@
-# A citable archive: the report, every summary, table and figure, with a SHA256SUMS manifest.
+# A citable archive: the report, every summary, table and figure, with a SHA256SUMS manifest;
+# and verify, which rebuilds an archive with this checkout and compares every number with it.
 
 import tomllib
 
@@ -23,3 +24,18 @@ rule dist:
         "../envs/pipeline.yaml"
     shell:
         "{params.python} -m classical_dynamics dist results {output.archive} > {log} 2>&1"
+
+
+rule verify:
+    """Rebuild the archive's scenes with this checkout and compare every number with it (always runs:
+    no output; nothing is written but the log). Another archive: --config archive=PATH."""
+    params:
+        python=PY,
+        archive=config.get("archive", ARCHIVE),
+    threads: workflow.cores
+    log:
+        "results/logs/verify.log",
+    conda:
+        "../envs/pipeline.yaml"
+    shell:
+        "{params.python} -m classical_dynamics verify {params.archive} --cores {threads} 2>&1 | tee {log}"

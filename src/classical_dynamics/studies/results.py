@@ -37,6 +37,8 @@ class Results:
     notes: list = field(default_factory=list)
 
     def number(self, name, value, unit, *, reference=None, tolerance=None, note=None):
+        """tolerance: how far a rebuild may move the value before `verify` fails, {"absolute": a},
+        {"relative": r} or a bare number (absolute, in `unit`); none: verify's tight default (verify.py)."""
         entry = {"value": value, "unit": unit}
         if reference is not None:
             entry["reference"] = reference
