@@ -129,7 +129,7 @@ def test_nothing_past_the_pdf_text_block(built_repo, tmp_path):
     offenders = []
     for page in sorted(tmp_path.glob("p-*.pgm")):
         ink = np.asarray(Image.open(page)) < 180
-        top, bottom = int(22 * mm), int((297 - 24) * mm)
+        top, bottom = int(16 * mm), int((297 - 18) * mm)           # print.css: @page margins
         left, right = int((18 - 1.5) * mm), int((210 - 18 + 1.5) * mm)
         band = ink[top:bottom]
         if band[:, :left].any() or band[:, right:].any():

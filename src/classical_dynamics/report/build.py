@@ -8,10 +8,10 @@ from __future__ import annotations
 
 import base64
 import html
+import json
 import math
 import re
 from collections import defaultdict
-from datetime import datetime, timezone
 from pathlib import Path
 
 import jinja2
@@ -23,11 +23,13 @@ from .. import io
 from ..formatting import format_column, format_number, shortest, sig_for_tolerance
 from ..provenance import git_state, machine, package_versions
 from ..studies import STUDIES
-from ..units import unit_text
+from ..units import UnknownUnit, unit_text
 from . import claims as claims_mod
 from .bib import Citations, format_entry, read_bib
+from .citation import citation, commit_date
 from .inline_math import plain_text, render_markup, render_text
 from .math import latex_data_uri
+from .navigation import add_navigation
 from .numbering import NAMES, Numbering
 
 STUDY_ORDER = ["precession", "chandler", "chains", "self_excited", "solvers"]
@@ -116,6 +118,7 @@ class Report:
         self.numbering = Numbering()
         self.citations = Citations(read_bib(self.root / "report" / "references.bib"))
         self.claim_results = {}
+        self._count, self.cited = 0, {}          # numbers shown so far; per scene, where each is first cited
         self.env = jinja2.Environment(
             loader=jinja2.FileSystemLoader(str(self.root / "report")),
             autoescape=jinja2.select_autoescape(["html", "j2"]),
@@ -125,14 +128,27 @@ class Report:
         self.env.globals.update(
             num=self.num, value=self.value, shortest=shortest, claim_digits=self.claim_digits, unit=unit_html, label_number=self.numbering.label, fig=self.fig, table=self.table, eq=self.eq, ref=self.ref, cite=self.cite,
             claims=self.claims, stability=self.stability, scenes=self.scenes_table,
-            summary=self.index.summary, rebuild=self.rebuild, study_scenes=self.index.scenes)
+            summary=self.index.summary, rebuild=self.rebuild, study_scenes=self.index.scenes,
+            all_claims=self.all_claims, claim=self.claim, provenance_json=self.provenance_json,
+            cited=lambda study, scene: self.cited.get((study, scene), {}))
 
     # --- numbers ---------------------------------------------------------------------------
-    def _provenance_title(self, study, scene, name):
-        prov = self.index.provenance[(study, scene)]
-        dirty = " (uncommitted changes)" if prov.get("dirty") else ""
-        return (f"{study}/{scene}: {name} · commit {prov.get('commit', 'unknown')[:12]}{dirty} · "
-                f"scene sha256 {prov.get('scene_sha256', '')[:12]} · results/{study}/{scene}/summary.json")
+    def _number_link(self, study, scene, name, value, text, unit_key=None):
+        """A number as a link that opens its provenance (click, tap or keyboard; see report.js); without
+        script it leads to its scene's row of the provenance appendix. Its full-precision value and key
+        travel with it, the scene's commit and hash in the page's provenance table (provenance_json)."""
+        self._count += 1
+        anchor = f"n{self._count}"
+        self.cited.setdefault((study, scene), {}).setdefault(name, anchor)
+        try:                    # a number shown bare (unit=False) may carry a unit the registry lacks
+            unit = plain_text(unit_text(unit_key, value)).strip() if unit_key else ""
+        except UnknownUnit:
+            unit = str(unit_key)
+        full = repr(value) if isinstance(value, float) else str(value)
+        return (f'<a class="num" id="{anchor}" href="#prov-{study}-{scene}" role="button" '
+                f'aria-haspopup="dialog" data-scene="{study}/{scene}" data-key="{html.escape(name, quote=True)}" '
+                f'data-value="{html.escape(full, quote=True)}" data-unit="{html.escape(unit, quote=True)}">'
+                f'{text}</a>')
 
     def num(self, where: str, name: str, i=None, sig: int = 4, unit: bool = True, scale: float = 1.0):
         """A computed number with its unit, linked to its provenance. where = 'study/scene'."""
@@ -143,9 +159,8 @@ class Report:
             value = value[i]
         if scale != 1.0 and value is not None:
             value = value * scale
-        text = format_number(value, sig)
-        title = html.escape(self._provenance_title(study, scene, name), quote=True)
-        out = f'<a class="num" href="#prov-{study}-{scene}" title="{title}">{text}</a>'
+        out = self._number_link(study, scene, name if i is None else f"{name}[{i}]", value,
+                                format_number(value, sig), entry.get("unit"))
         if unit:
             out += str(unit_html(entry.get("unit"), value))
         return Markup(out)
@@ -153,9 +168,19 @@ class Report:
     def value(self, where: str, name: str, value, sig: int = 4):
         """A value derived from a results number (an element, a maximum), linked to its provenance."""
         study, scene = where.split("/")
-        title = html.escape(self._provenance_title(study, scene, name), quote=True)
-        return Markup(f'<a class="num" href="#prov-{study}-{scene}" title="{title}">'
-                      f'{format_number(value, sig)}</a>')
+        return Markup(self._number_link(study, scene, name, value, format_number(value, sig)))
+
+    def provenance_json(self) -> Markup:
+        """Per scene: what the provenance panel of each of its numbers shows."""
+        data = {}
+        for (study, scene), prov in sorted(self.index.provenance.items()):
+            data[f"{study}/{scene}"] = {
+                "commit": prov.get("commit", "unknown"), "dirty": bool(prov.get("dirty")),
+                "input": prov.get("scene_sha256", ""), "file": f"results/{study}/{scene}/summary.json",
+                "scene": f"workflow/scenes/{study}/{scene}.yaml", "command": self.rebuild(study, scene),
+                "finished": prov.get("finished", "")}
+        # </ cannot end the script early: json escapes no slash, so escape it here.
+        return Markup(json.dumps(data, sort_keys=True, ensure_ascii=False).replace("</", "<\\/"))
 
     # --- numbered things -------------------------------------------------------------------
     def ref(self, label: str) -> Markup:
@@ -179,11 +204,16 @@ class Report:
             caption += " " + str(extra)
         note = " Measured times: they vary from run to run." if timing else ""
         alt = html.escape(plain_text(meta["caption"]), quote=True)
+        folder = f"{study}/{'timings/' if timing else ''}{scene}"      # relative to report.html in results/
+        data = meta.get("data")
+        links = (f'<a href="{folder}/{meta["file"]}">SVG</a>'
+                 + (f' · <a href="{folder}/{data}">data (CSV)</a>' if data else "")
+                 + f' · scene <a href="../workflow/scenes/{study}/{scene}.yaml"><code>{study}/{scene}</code></a>')
         return Markup(
             f'<figure id="{label}" class="figure"><img src="{uri}" alt="{alt}">'
             f'<figcaption><span class="label">Figure {number}.</span> {caption}{note} '
-            f'<span class="source">Scene <code>{study}/{scene}</code>; rebuild: '
-            f'<code>{self.rebuild(study, scene)}</code>.</span></figcaption></figure>')
+            f'<span class="source">{links}; rebuild: <code>{self.rebuild(study, scene)}</code>.</span>'
+            f'</figcaption></figure>')
 
     def table(self, where: str, name: str, label: str, columns=None, timing: bool = False, sig: int = 4,
               rename=None, keep=None, sigs=None):
@@ -267,6 +297,14 @@ class Report:
             self.claim_results[study] = claims_mod.evaluate(study, path, self.index.entry) if path.exists() else []
         return self.claim_results[study]
 
+    def all_claims(self):
+        """Every claim of the studies present, in report order."""
+        return [c for study in self.index.studies() for c in self.claims(study)]
+
+    def claim(self, study, claim_id):
+        """One claim by its id, or None when its study is not in this build."""
+        return next((c for c in self.claims(study) if c.id == claim_id), None)
+
     def stability(self, study):
         rows = []
         for scene in self.index.scenes(study):
@@ -292,14 +330,17 @@ class Report:
         for (study, _), prov in self.index.provenance.items():
             build_times[study] += prov.get("wall_seconds", 0.0)
         first = next(iter(self.index.provenance.values()), {})
+        git = git_state()
         css = {name: (self.root / "report" / f"{name}.css").read_text(encoding="utf-8")
                for name in ("report", "screen", "print")}
         return {
             "studies": studies, "quick": self.quick, "css": css,
-            "git": git_state(), "packages": package_versions(), "machine": machine(),
+            "script": (self.root / "report" / "report.js").read_text(encoding="utf-8"),
+            "git": git, "packages": package_versions(), "machine": machine(),
+            "cite_this": citation(self.root, git["commit"], bool(git["dirty"])),
+            "commit_date": commit_date(self.root),
             "results_packages": first.get("packages", {}), "results_commit": first.get("commit", "unknown"),
             "build_times": dict(build_times), "provenance": self.index.provenance,
-            "generated": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
             "bibliography": lambda: [(i + 1, k, Markup(format_entry(self.citations.entries[k])))
                                      for i, k in enumerate(self.citations.order)],
         }
@@ -310,11 +351,12 @@ class Report:
         for _ in range(2):
             self.numbering.start_pass()
             self.citations.order = []
+            self._count, self.cited = 0, {}
             text = template.render(**context)
         if self.numbering.missing:
             raise ValueError("unresolved cross-references: " + ", ".join(sorted(self.numbering.missing)))
         claims_mod.require([r for rs in self.claim_results.values() for r in rs])
-        return break_points(text)
+        return break_points(add_navigation(text))
 
 
 def build_report(results_dir: Path, html_path: Path, pdf_path: Path | None = None, *, quick=False,

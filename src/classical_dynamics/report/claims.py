@@ -4,6 +4,8 @@ report/claims/<study>.yaml lists claims. Each names the source's value and where
 the computed number (scene and name in that scene's summary.json), an optional modern value,
 and a check: {absolute: tol}, {relative: tol} or {factor: f} (within a factor f) against the source
 value, or {at_most: x} / {at_least: x} / {equals: x} on the computed value. A failing claim with must_hold: true fails the build.
+Optional: headline: true puts a claim in the report's key results; explanation says why a claim that may
+fail does (a failing claim without one fails the build: the report explains every failure it shows).
 """
 
 from __future__ import annotations
@@ -35,6 +37,12 @@ class ClaimResult:
     passed: bool
     must_hold: bool
     problem: str = ""
+    headline: bool = False
+    explanation: str = ""
+
+    @property
+    def anchor(self) -> str:
+        return f"claim-{self.study}-{self.id}"
 
 
 def _pick(value, spec):
@@ -81,11 +89,16 @@ def evaluate(study: str, claims_file: Path, lookup) -> list[ClaimResult]:
             id=claim["id"], statement=claim["statement"], study=study, scene=spec["scene"],
             number=spec["number"], computed=computed, unit=claim.get("unit", unit), source=source,
             modern=claim.get("modern"), check=check, deviation=deviation, relative_deviation=relative,
-            passed=passed, must_hold=bool(claim.get("must_hold", False)), problem=problem))
+            passed=passed, must_hold=bool(claim.get("must_hold", False)), problem=problem,
+            headline=bool(claim.get("headline", False)), explanation=claim.get("explanation", "")))
     return results
 
 
 def require(results: list[ClaimResult]) -> None:
+    unexplained = [r for r in results if not r.passed and not r.must_hold and not r.explanation]
+    if unexplained:
+        raise ClaimFailure("claims that fail without an explanation (add explanation: to the claim): "
+                           + ", ".join(f"{r.study}/{r.id}" for r in unexplained))
     failed = [r for r in results if r.must_hold and not r.passed]
     if failed:
         lines = [f"claim '{r.id}' ({r.study}/{r.scene}: {r.number}) failed: computed {r.computed}, "

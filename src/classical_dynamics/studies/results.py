@@ -18,6 +18,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from .. import io  # noqa: E402
 from ..figure_style import STYLE, TEXT_WIDTH_IN  # noqa: E402
+from .figure_data import figure_data  # noqa: E402
 
 # One style for every figure of the report: applied once, when a study first imports this module.
 plt.rcParams.update(STYLE)
@@ -72,15 +73,33 @@ class Results:
             "numbers": self.numbers,
             "tables": {k: {"file": f"{k}.csv", "caption": c, "columns": list(f.columns), "headers": h}
                        for k, (f, c, h) in self.tables.items()},
-            "figures": {k: {"file": f"{k}.svg", "caption": c} for k, (_, c) in self.figures.items()},
+            "figures": self._figure_entries(self.figures, self.tables),
             "timings": {
                 "tables": {k: {"file": f"{k}.csv", "caption": c, "headers": h}
                            for k, (_, c, h) in self.timing_tables.items()},
-                "figures": {k: {"file": f"{k}.svg", "caption": c} for k, (_, c) in self.timing_figures.items()},
+                "figures": self._figure_entries(self.timing_figures, self.timing_tables),
             },
             "stability": self.stability,
             "notes": self.notes,
         }
+
+    def _plotted(self, figures, tables):
+        """Data files of figures that have no table of their name: what they plot, read from the figure."""
+        extracted = {}
+        for name, (fig, _) in figures.items():
+            if name not in tables:
+                extracted[name] = figure_data(fig)
+        return extracted
+
+    def _figure_entries(self, figures, tables):
+        """Each figure's SVG, caption and data file (<name>.csv: its table, or the points it plots)."""
+        extracted = self._plotted(figures, tables)
+        entries = {}
+        for name, (_, caption) in figures.items():
+            entries[name] = {"file": f"{name}.svg", "caption": caption, "data": f"{name}.csv"}
+            if name in extracted:
+                entries[name]["axes"] = extracted[name][1]
+        return entries
 
     def write(self, out_dir: Path, timings_dir: Path, provenance: dict, timing_rows: dict) -> None:
         """Write everything into staging folders, then move both into place."""
@@ -106,12 +125,19 @@ class Results:
                  "provenance.json": io.dumps_json(provenance).encode()}
         files.update({f"{k}.csv": io.csv_text(f).encode() for k, (f, _, _) in self.tables.items()})
         files.update({f"{k}.svg": io.svg_bytes(f) for k, (f, _) in self.figures.items()})
+        if self.stability:                     # the hard cases as a table too: the report links it
+            import pandas as pd
+            files["hard_cases.csv"] = io.csv_text(pd.DataFrame(self.stability)).encode()
+        files.update({f"{k}.csv": io.csv_text(data).encode()
+                      for k, (data, _) in self._plotted(self.figures, self.tables).items()})
         return files
 
     def _timing_files(self, timing_rows):
         import pandas as pd
         files = {f"{k}.csv": io.csv_text(f).encode() for k, (f, _, _) in self.timing_tables.items()}
         files.update({f"{k}.svg": io.svg_bytes(f) for k, (f, _) in self.timing_figures.items()})
+        files.update({f"{k}.csv": io.csv_text(data).encode()
+                      for k, (data, _) in self._plotted(self.timing_figures, self.timing_tables).items()})
         files["run.csv"] = io.csv_text(pd.DataFrame([timing_rows])).encode()
         return files
 

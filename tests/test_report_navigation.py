@@ -1,0 +1,213 @@
+"""Finding one's way through the report, trusting a number, citing it: in real Chromium and on the real PDF.
+
+The HTML at a laptop's width (1280 px) and a phone's (390 px, touch); the PDF's pages, outline and metadata
+through poppler. The numbering and citation helpers are tested directly.
+"""
+
+import re
+import subprocess
+from html import unescape
+from pathlib import Path
+
+import pytest
+import yaml
+
+from classical_dynamics.report.citation import citation
+from classical_dynamics.report.claims import ClaimFailure, ClaimResult, require
+from classical_dynamics.report.navigation import add_navigation, number_sections
+
+from .test_report_typesetting import CHROMIUM, FLAGS
+
+ROOT = Path(__file__).resolve().parents[1]
+PAGE_BUDGET = 60
+
+
+# --- numbering and citation, directly ------------------------------------------------------------
+
+PAGE = """<nav><!--contents--></nav>
+<section id="abstract" class="front"><h2>Abstract</h2></section>
+<section id="intro" class="chapter"><h2>Introduction</h2><h3 id="intro-a">First</h3><h3>Second <i>part</i></h3></section>
+<section id="two" class="chapter"><h2>Two</h2><h3 id="two-a">Only</h3></section>
+<section id="extra" class="appendix"><h2>Tables</h2><h3 id="extra-a">All</h3></section>"""
+
+
+def test_sections_are_numbered_and_listed_two_levels_deep():
+    page, outline = number_sections(PAGE)
+    assert [(h.number, h.text) for h in outline] == [("", "Abstract"), ("1", "Introduction"), ("2", "Two"),
+                                                     ("A", "Tables")]
+    assert [(h.number, h.id) for h in outline[1].children] == [("1.1", "intro-a"), ("1.2", "intro-second-part")]
+    assert outline[3].children[0].number == "A.1"
+    assert 'data-toc="1.2 Second part"' in page and 'href="#intro-second-part"' in page
+    full = add_navigation(PAGE)
+    contents = full[full.index("<nav>"):full.index("</nav>")]
+    assert contents.count("<li>") == 8 and '<a href="#two-a"><span class="secno">2.1</span> Only</a>' in contents
+
+
+def test_two_sections_with_one_id_are_refused():
+    with pytest.raises(ValueError, match="intro-a"):
+        number_sections(PAGE.replace('id="two-a"', 'id="intro-a"'))
+
+
+def test_the_bibtex_entry_says_what_citation_cff_says():
+    cff = yaml.safe_load((ROOT / "CITATION.cff").read_text())
+    cite = citation(ROOT, "0123456789abcdef0123456789abcdef01234567", dirty=False, archive_sha256="ab" * 32)
+    fields = dict(re.findall(r"^\s+(\w+) = \"(.*)\",?$", cite["bibtex"], re.M))
+    assert fields["title"] == cff["title"]
+    assert fields["version"] == f"{cff['version']}+g01234567"
+    assert fields["author"] == " and ".join("{" + a["name"] + "}" for a in cff["authors"])
+    assert "0123456789abcdef0123456789abcdef01234567" in fields["note"] and "ab" * 32 in fields["note"]
+    assert cite["cff"] == (ROOT / "CITATION.cff").read_text().strip()
+    assert (ROOT / "LICENSE").read_text().startswith(f"{cff['license']} License")
+
+
+def _claim(passed, explanation=""):
+    return ClaimResult(id="x", statement="s", study="precession", scene="a", number="n", computed=1.0, unit="",
+                       source={"value": 2.0}, modern=None, check={"relative": 0.01}, deviation=-1.0,
+                       relative_deviation=-0.5, passed=passed, must_hold=False, explanation=explanation)
+
+
+def test_a_claim_that_fails_must_say_why():
+    with pytest.raises(ClaimFailure, match="precession/x"):
+        require([_claim(False)])
+    require([_claim(False, "a rigid Earth"), _claim(True)])
+
+
+# --- the built report in Chromium ------------------------------------------------------------------
+
+LANDS = """(id) => { const t = document.getElementById(id); if (!t) return null;
+  const r = t.getBoundingClientRect(); return {top: r.top, visible: r.height > 0 && r.bottom > 0}; }"""
+
+
+@pytest.fixture(scope="module")
+def browser():
+    from playwright.sync_api import sync_playwright
+    with sync_playwright() as p:
+        b = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        yield b
+        b.close()
+
+
+def _open(browser, built_repo, width, touch=False):
+    context = browser.new_context(viewport={"width": width, "height": 900}, has_touch=touch, is_mobile=touch)
+    page = context.new_page()
+    page.goto((built_repo / "results/report.html").as_uri(), wait_until="load")
+    return page
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("width", [1280, 390])
+def test_every_contents_link_lands_on_its_target(browser, built_repo, width):
+    page = _open(browser, built_repo, width, touch=width < 1000)
+    targets = page.eval_on_selector_all("nav.toc a", "links => links.map(a => a.getAttribute('href').slice(1))")
+    assert len(targets) > 30                                     # chapters and their sections
+    missed = []
+    for target in targets:
+        if width < 1000:
+            page.click(".menu-toggle")                           # on a phone the contents are a menu
+        page.click(f"nav.toc a[href='#{target}']")
+        page.wait_for_timeout(30)
+        where = page.evaluate(LANDS, target)
+        if where is None or not where["visible"] or abs(where["top"]) > 60:
+            missed.append((target, where))
+        if width < 1000:
+            assert not page.is_visible("nav.toc"), "the menu closes when a section is chosen"
+    assert missed == []
+    assert page.evaluate("document.documentElement.scrollWidth") <= width    # no horizontal scroll
+    page.context.close()
+
+
+@pytest.mark.slow
+def test_the_sidebar_stays_beside_the_text_on_a_laptop(browser, built_repo):
+    page = _open(browser, built_repo, 1280)
+    assert page.is_visible("nav.toc") and not page.is_visible(".menu-toggle")
+    page.evaluate("window.scrollTo(0, document.body.scrollHeight / 2)")
+    box = page.locator("nav.toc").bounding_box()
+    assert box["y"] <= 1 and box["x"] < 400                     # sticky, on the left, still in view
+    page.context.close()
+
+
+@pytest.mark.slow
+def test_the_phone_menu_opens(browser, built_repo):
+    page = _open(browser, built_repo, 390, touch=True)
+    assert not page.is_visible("nav.toc")
+    page.tap(".menu-toggle")
+    assert page.is_visible("nav.toc a[href='#chains']")
+    assert page.get_attribute(".menu-toggle", "aria-expanded") == "true"
+    page.context.close()
+
+
+def _provenance_of(page, link):
+    scene, key = link.get_attribute("data-scene"), link.get_attribute("data-key")
+    panel = page.locator("#provenance-panel")
+    assert panel.is_visible()
+    text = panel.inner_text()
+    return scene, key, text
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("how", ["click", "tap", "keyboard"])
+def test_a_number_opens_its_provenance(browser, built_repo, how):
+    page = _open(browser, built_repo, 390 if how == "tap" else 1280, touch=how == "tap")
+    link = page.locator("#chandler a.num").first
+    link.scroll_into_view_if_needed()
+    if how == "click":
+        link.click()
+    elif how == "tap":
+        link.tap()
+    else:
+        link.focus()
+        page.keyboard.press("Enter")
+    scene, key, text = _provenance_of(page, link)
+    study, name = scene.split("/")
+    assert f"workflow/scenes/{study}/{name}.yaml" in text            # its scene
+    assert f"results/{scene}/summary.json → numbers.{key}" in text     # its file and key
+    assert f"snakemake -c all results/{scene}" in text                 # the command that rebuilds it
+    assert re.search(r"commit\s+[0-9a-f]{40}", text)
+    assert re.search(r"scene SHA-256\s+[0-9a-f]{64}", text)
+    assert float(link.get_attribute("data-value")) == pytest.approx(float(re.search(r"value\s+(\S+)", text)[1]))
+    # the panel links to the appendix row, and that row names the number and links back
+    row = page.locator(f"#prov-{study}-{name}")
+    assert page.locator(f"#provenance-panel a[href='#prov-{study}-{name}']").count() == 1
+    back = row.locator(f"tr.cited a:has-text('{key}')").first
+    assert page.locator(back.get_attribute("href")).first.get_attribute("data-key") == key
+    page.keyboard.press("Escape")
+    assert not page.is_visible("#provenance-panel")
+    page.context.close()
+
+
+@pytest.mark.slow
+def test_every_figure_links_its_svg_data_and_scene(built_repo):
+    page = (built_repo / "results/report.html").read_text()
+    figures = re.findall(r'<figure id="fig:[^"]+" class="figure">.*?</figure>', page, re.S)
+    assert len(figures) > 20
+    for figure in figures:
+        links = re.findall(r'<a href="([^"#]+)"', figure)
+        kinds = {Path(link).suffix for link in links}
+        assert {".svg", ".csv", ".yaml"} <= kinds, figure[:200]
+        for link in links:
+            assert (built_repo / "results" / link).resolve().is_file(), link
+
+
+# --- the PDF -------------------------------------------------------------------------------------
+
+@pytest.mark.slow
+def test_the_pdf_keeps_its_page_budget_outline_and_metadata(built_repo):
+    pdf = built_repo / "results/report.pdf"
+    info = subprocess.run(["pdfinfo", "-isodates", str(pdf)], capture_output=True, text=True, check=True).stdout
+    fields = dict(line.split(":", 1) for line in info.splitlines() if ":" in line)
+    fields = {k.strip(): v.strip() for k, v in fields.items()}
+    assert int(fields["Pages"]) <= PAGE_BUDGET
+    cff = yaml.safe_load((built_repo / "CITATION.cff").read_text())
+    assert fields["Title"] == cff["title"]
+    assert fields["Author"] == cff["authors"][0]["name"]
+    assert "Chandler wobble" in fields["Subject"] and "precession of the equinoxes" in fields["Keywords"]
+    commit_date = subprocess.run(["git", "show", "-s", "--format=%cI", "HEAD"], cwd=ROOT, capture_output=True,
+                                 text=True).stdout.strip()
+    assert fields["CreationDate"][:10] == commit_date[:10]
+    # The outline: every numbered chapter and section of the contents, in order.
+    xml = subprocess.run(["pdftohtml", "-xml", "-i", "-stdout", "-q", str(pdf)], capture_output=True, text=True,
+                         check=True).stdout
+    outline = [unescape(o).strip() for o in re.findall(r"<item[^>]*>([^<]+)</item>", xml)]
+    html_page = (built_repo / "results/report.html").read_text()
+    headings = [unescape(h) for h in re.findall(r'<h[23](?: id="[^"]+")? data-toc="([^"]+)"', html_page)]
+    assert len(headings) > 30 and headings == [o for o in outline if o != "Contents"]
