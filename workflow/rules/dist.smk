@@ -1,10 +1,6 @@
 # A citable archive: the report, every summary, table and figure, with a SHA256SUMS manifest;
 # and verify, which rebuilds an archive with this checkout and compares every number with it.
 
-import tomllib
-
-with open("pyproject.toml", "rb") as _handle:
-    _project = tomllib.load(_handle)["project"]
 ARCHIVE = f"results/dist/{_project['name']}-{_project['version']}.tar.gz"
 
 

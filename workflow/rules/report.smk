@@ -1,9 +1,33 @@
 # The report: every study's results through the Jinja templates into HTML, then the same HTML to PDF.
 
+import tomllib
+
+with open("pyproject.toml", "rb") as _handle:
+    _project = tomllib.load(_handle)["project"]
+# Every result but the report, archived before the report so that the report can print its SHA-256.
+RESULTS_ARCHIVE = f"results/dist/{_project['name']}-{_project['version']}-results.tar.gz"
+
+
+rule results_archive:
+    input:
+        [out for study in STUDIES for out in scene_outputs(study)],
+    output:
+        archive=RESULTS_ARCHIVE,
+        sums=RESULTS_ARCHIVE.removesuffix(".tar.gz") + ".SHA256SUMS",
+    params:
+        python=PY,
+    log:
+        "results/logs/results_archive.log",
+    conda:
+        "../envs/pipeline.yaml"
+    shell:
+        "{params.python} -m classical_dynamics.report.dist results {output.archive} > {log} 2>&1"
+
 
 rule report_html:
     input:
         results=[out for study in STUDIES for out in scene_outputs(study)],
+        archive=RESULTS_ARCHIVE,
         templates=sorted(str(p) for p in Path("report").rglob("*") if p.is_file()),
         code=code("report", "formatting.py", "units.py"),
     output:

@@ -27,6 +27,7 @@ from ..units import UnknownUnit, unit_text
 from . import claims as claims_mod
 from .bib import Citations, format_entry, read_bib
 from .citation import citation, commit_date
+from .dist import results_archive_name, sha256_of
 from .inline_math import plain_text, render_markup, render_text
 from .math import latex_data_uri
 from .navigation import add_navigation
@@ -331,13 +332,16 @@ class Report:
             build_times[study] += prov.get("wall_seconds", 0.0)
         first = next(iter(self.index.provenance.values()), {})
         git = git_state()
+        path = results_archive_name(self.index.dir, self.root)
+        archive = {"name": path.name, "sha256": sha256_of(path)} if path.is_file() else None
         css = {name: (self.root / "report" / f"{name}.css").read_text(encoding="utf-8")
                for name in ("report", "screen", "print")}
         return {
             "studies": studies, "quick": self.quick, "css": css,
             "script": (self.root / "report" / "report.js").read_text(encoding="utf-8"),
             "git": git, "packages": package_versions(), "machine": machine(),
-            "cite_this": citation(self.root, git["commit"], bool(git["dirty"])),
+            "results_archive": archive,
+            "cite_this": citation(self.root, git["commit"], bool(git["dirty"]), archive and archive["sha256"]),
             "commit_date": commit_date(self.root),
             "results_packages": first.get("packages", {}), "results_commit": first.get("commit", "unknown"),
             "build_times": dict(build_times), "provenance": self.index.provenance,

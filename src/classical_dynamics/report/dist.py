@@ -1,7 +1,13 @@
-"""A citable archive of the report and its results, with a SHA256SUMS manifest."""
+"""Citable archives of the results, with SHA256SUMS manifests.
+
+Two archives, both deterministic: the results archive (every summary, table, figure and provenance
+record, no report) is made before the report, which prints its SHA-256 so that a citation pins every
+number; the dist archive adds the report itself (whose own SHA-256 it cannot contain).
+"""
 
 from __future__ import annotations
 
+import argparse
 import gzip
 import hashlib
 import io as _io
@@ -14,9 +20,21 @@ INCLUDE = ("report.html", "report.pdf")
 SUFFIXES = {".json", ".csv", ".svg"}
 
 
-def archive_members(results_dir: Path) -> list[Path]:
+def results_archive_name(results_dir: Path, root: Path = Path(".")) -> Path:
+    """results/dist/<name>-<version>-results.tar.gz: the archive whose SHA-256 the report prints."""
+    import tomllib
+    with open(Path(root) / "pyproject.toml", "rb") as handle:
+        project = tomllib.load(handle)["project"]
+    return Path(results_dir) / "dist" / f"{project['name']}-{project['version']}-results.tar.gz"
+
+
+def sha256_of(path: Path) -> str:
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+
+
+def archive_members(results_dir: Path, with_report: bool = True) -> list[Path]:
     results_dir = Path(results_dir)
-    members = [results_dir / name for name in INCLUDE]
+    members = [results_dir / name for name in INCLUDE] if with_report else []
     for path in sorted(results_dir.rglob("*")):
         rel = path.relative_to(results_dir)
         if path.is_file() and path.suffix in SUFFIXES and rel.parts[0] not in ("dist", "logs"):
@@ -24,11 +42,12 @@ def archive_members(results_dir: Path) -> list[Path]:
     return members
 
 
-def make_archive(results_dir: Path, archive: Path) -> None:
-    """Deterministic tar.gz (sorted, fixed times and owners) plus SHA256SUMS of its members."""
+def make_archive(results_dir: Path, archive: Path, with_report: bool = True) -> None:
+    """Deterministic tar.gz (sorted, fixed times and owners) plus SHA256SUMS of its members: beside the
+    dist archive SHA256SUMS, beside the results archive <prefix>.SHA256SUMS."""
     results_dir, archive = Path(results_dir), Path(archive)
     prefix = archive.name.removesuffix(".tar.gz")
-    members = archive_members(results_dir)
+    members = archive_members(results_dir, with_report)
     sums = []
     buffer = _io.BytesIO()
     with tarfile.open(fileobj=buffer, mode="w", format=tarfile.PAX_FORMAT) as tar:
@@ -46,4 +65,13 @@ def make_archive(results_dir: Path, archive: Path) -> None:
     compressed = gzip.compress(buffer.getvalue(), mtime=0)
     io.atomic_write_bytes(archive, compressed)
     archive_sum = hashlib.sha256(compressed).hexdigest()
-    io.atomic_write_text(archive.parent / "SHA256SUMS", manifest.decode() + f"{archive_sum}  {archive.name}\n")
+    sums = archive.parent / ("SHA256SUMS" if with_report else f"{prefix}.SHA256SUMS")
+    io.atomic_write_text(sums, manifest.decode() + f"{archive_sum}  {archive.name}\n")
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description="the results archive (no report) whose SHA-256 the report prints")
+    parser.add_argument("results")
+    parser.add_argument("archive")
+    args = parser.parse_args()
+    make_archive(Path(args.results), Path(args.archive), with_report=False)
