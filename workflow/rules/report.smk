@@ -4,6 +4,7 @@
 rule report_html:
     input:
         results=[out for study in STUDIES for out in scene_outputs(study)],
+        gallery=rules.self_excited_gallery.output.results,
         templates=sorted(str(p) for p in Path("report").rglob("*") if p.is_file()),
         code=code("report", "formatting.py", "units.py"),
     output:
