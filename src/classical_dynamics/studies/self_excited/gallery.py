@@ -187,11 +187,9 @@ def panels(group, study_dir: Path, scenes):
     return out
 
 
-def _same(windows, slack=0.25):
-    """Windows close enough to share axes: each span within `slack` of the widest (the union is then drawn)."""
-    spans = [(hi - lo, y) for lo, hi, y in windows]
-    return all(s >= (1 - slack) * max(a for a, _ in spans) and y >= (1 - slack) * max(b for _, b in spans)
-               for s, y in spans)
+def _same(spans, slack=0.25):
+    """Spans close enough to share an axis: each within `slack` of the widest (the union is then drawn)."""
+    return all(span >= (1 - slack) * max(spans) for span in spans)
 
 
 def layout(n):
@@ -218,14 +216,14 @@ def grid_figure(group, found):
     y_name, y_label = ("p1", "$p_1$") if angle else ("q1", "$q_1$")
     planes = [p for p in found if p.kind == "portrait"]
     windows = [portrait.window_of(p.frame, y_name) for p in planes]
-    shared = _same(windows)
-    union = (min(w[0] for w in windows), max(w[1] for w in windows), max(w[2] for w in windows))
     body = any(p.kind == "body_view" for p in found)
+    share_x = _same([hi - lo for lo, hi, _ in windows]) and not body
+    share_y = _same([y for _, _, y in windows]) and not body
     columns, rows = layout(len(found))
     spare = columns * rows > len(found)
     height = min(MAX_HEIGHT_IN, rows * ROW_HEIGHT_IN + (0.0 if spare else LEGEND_HEIGHT_IN) + (0.5 if body else 0))
     fig, axes = plt.subplots(rows, columns, figsize=(FULL_WIDTH_IN, height), layout="constrained", squeeze=False,
-                             sharex=shared and not body, sharey=shared and not body,
+                             sharex=share_x, sharey=share_y,
                              width_ratios=[2.6, 1.0] if body else None)
     elements = set()
     for k, (ax, panel) in enumerate(zip(axes.flat, found)):
@@ -235,11 +233,13 @@ def grid_figure(group, found):
             draw_seen_along_z(ax, panel.frame, small=True)
             elements.add("euler")
         else:
-            portrait.draw(ax, panel.frame, y_name, window=union if shared else None, small=True)
-            portrait.axes_labels(ax, y_label, angle, ax.get_xlim(), x=bottom or not shared, y=left or not shared)
+            lo, hi, y_max = portrait.window_of(panel.frame, y_name)
+            window = (min(w[0] for w in windows) if share_x else lo, max(w[1] for w in windows) if share_x else hi,
+                      max(w[2] for w in windows) if share_y else y_max)
+            portrait.draw(ax, panel.frame, y_name, window=window, small=True)
+            portrait.axes_labels(ax, y_label, angle, window[:2], x=bottom or not share_x, y=left or not share_y)
+            ax.tick_params(labelbottom=bottom or not share_x, labelleft=left or not share_y)
             elements |= set(panel.frame.element.unique())
-            if shared and not body:
-                ax.label_outer()
         ax.set_title(panel.title, loc="left")
     for ax in list(axes.flat)[len(found):]:
         ax.axis("off")

@@ -384,7 +384,7 @@ def _singular_point_bifurcation(results):
             found.append((m1, x, kind))
     results.hard_case("singular_point_bifurcation", "Singular points found numerically for $m_1$ in [−1.5, 1.5] "
                       "that the closed form misses, misplaces or mistypes (count)", wrong, 0)
-    fig, ax = new_figure(height=3.2)
+    fig, ax = new_figure(height=2.8)
     m = np.linspace(-1.0, 1.0, 401)
     ax.plot(m, -np.arcsin(m), "k-", lw=1.2, label="saddles, closed form")
     centre = np.pi + np.arcsin(m)
@@ -428,7 +428,7 @@ def _limit_cycle_bifurcation(results, m1_scene, nu_scene):
     results.hard_case("limit_cycle_bifurcation", "Cells of the $(m_1, \\nu)$ grid where the integrated fate "
                       "disagrees with $\\nu^* = m_1/(2\\sqrt{1 - m_1^2})$ (count, cells within 2 % of the curve "
                       "excluded)", wrong, 0)
-    fig, ax = new_figure(height=3.2)
+    fig, ax = new_figure(height=2.8)
     ax.plot(M[bounded], N[bounded], "s", ms=2.5, color="#56B4E9", label="bounded: tends to $F$")
     ax.plot(M[~bounded], N[~bounded], "s", ms=2.5, color="0.78", label="runs to $-x$ in finite time")
     m = np.linspace(0.01, 0.999, 400)
@@ -452,7 +452,7 @@ def _cylinder(results, m1, nu, points):
     """Lee's Figure 2.13: phi2 taken mod 2 pi, the plane rolled onto a cylinder (cos phi2, sin phi2, p1). The
     saddles merge into one S and the centers into one C; F and F1 close on themselves; a closed orbit about C, a
     start above F1 winding onto F, and one below F1 running away to p1 -> -infinity."""
-    fig = plt.figure(figsize=(5.6, 3.9), layout="constrained")
+    fig = plt.figure(figsize=(5.8, 3.2), layout="constrained")      # at most 40 % of a page
     ax = fig.add_subplot(projection="3d")
     theta = np.linspace(0.0, 2 * np.pi, 721)
     F = se.limit_cycle_p1(theta, m1, nu)
