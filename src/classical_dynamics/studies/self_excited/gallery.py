@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 GALLERY = "gallery"
+ROOT = Path(__file__).resolve().parents[4]
 
 
 @dataclass(frozen=True)
@@ -57,8 +58,8 @@ GROUPS = (
               ("largest_perturbed_reversed", "For $m_1 < -1$ with drag (Lee's Figure 2.19), $\\boldsymbol{\\omega}$ "
                "runs to the negative $x$-axis from every start."))),
     Group("smallest", "largest",
-          "The torque along the smallest axis $z$. Lee's title says “largest or smallest”: the same plane, Lee (2.10), "
-          "serves, with $p$ and $r$, $a$ and $c$ exchanged. Euler's equations with the torque along $z$, integrated "
+          "The torque along the smallest axis $z$. Lee's title says “largest or smallest”: the same plane, "
+          "Lee (2.10), serves, with $p$ and $r$, $a$ and $c$ exchanged. Euler's equations with the torque along $z$, integrated "
           "and read as $(r, q, p)$, lie on it (dots).", (
               ("smallest_unperturbed", "The plane."),
               ("smallest_unperturbed/body_view", "The same integrations in the body, seen along the torque axis "
@@ -171,7 +172,6 @@ class Panel:
 def panels(group, study_dir: Path, scenes):
     """The group's panels whose scene is among `scenes` and has its table, lettered in order."""
     import pandas as pd
-    from .. import results as _  # noqa: F401  (the figure style)
     from ... import io
     out = []
     for entry, text in group.panels:
@@ -193,8 +193,8 @@ def _same(spans, slack=0.25):
 
 
 def layout(n):
-    """Columns and rows of a grid of n panels: three columns from five panels on, two below."""
-    columns = 3 if n >= 5 or n == 3 else min(n, 2)
+    """Columns and rows of a grid of n panels: at most three columns (a panel keeps its aspect and its text)."""
+    columns = min(n, 3)
     return columns, -(-n // columns)
 
 
@@ -205,8 +205,7 @@ LEGEND_HEIGHT_IN = 0.4
 def grid_figure(group, found):
     """The grid of one group: panels in Lee's order, shared axes where the windows agree, one legend (in a spare
     slot when there is one, otherwise below)."""
-    import numpy as np
-    from ..results import plt
+    from ..results import plt           # with the report's figure style
     from ...figure_style import FULL_WIDTH_IN, MAX_HEIGHT_IN
     from ...solvers.workprecision import legend_below
     from . import portrait
@@ -318,7 +317,7 @@ def main(argv=None) -> int:
     inputs = {s: provenance.sha256_file(study_dir / s / "summary.json") for s in scenes
               if (study_dir / s / "summary.json").exists()}
     record = {
-        "study": "self_excited", "scene": GALLERY, "scene_file": "src/classical_dynamics/studies/self_excited/gallery.py",
+        "study": "self_excited", "scene": GALLERY, "scene_file": str(Path(__file__).resolve().relative_to(ROOT)),
         "scene_sha256": hashlib.sha256(io.dumps_json(inputs).encode()).hexdigest(), "input_scenes": sorted(inputs),
         "input_sha256": inputs, "effects_simulated": [], "quick": bool(args.quick), **provenance.git_state(),
         "packages": provenance.package_versions(), "machine": provenance.machine(), "started": started,

@@ -507,7 +507,7 @@ def _excursion(results, M, start):
     hyp = se.hyperbola(M.body, w)
     hyp_spread = float(np.ptp(hyp) / np.max(w[:, 0] ** 2 / M.body.a + w[:, 2] ** 2 / M.body.c))
     c1 = se.middle_invariant(M.to_plane(w), M.m1, M.mu1, M.eps1, M.form)
-    fig, ax = new_figure(height=3.0)
+    fig, ax = new_figure(height=2.6)
     first = full.t_steps <= 2 * T
     ax.semilogy(full.t_steps[first], sizes[first], ".-", color=portrait.EULER_COLOUR, ms=2, lw=0.6,
                 label="$|\\omega|$ along Euler's equations (at the steps)")
