@@ -348,15 +348,14 @@ def test_rare_case_without_torque_line_of_rest_points():
     is 1/(nu |q10|) up to the bound. The scene's check no longer refuses it."""
     from classical_dynamics.studies.results import Results
     from classical_dynamics.studies.self_excited import middle_axis
-    import matplotlib.pyplot as plt
     body = se.Body.from_moments([3.0, 2.2, 1.2])
     M = se.MiddleAxis.with_plane_parameters(body, 0.0, -se.MiddleAxis.plane_nu("nu_c", body), 0.6, -0.6)
     assert M.form == "rare" and M.m == 0.0 and not middle_axis._turns_nowhere(M)
     results = Results("self_excited", "t", "t")
-    fig, ax = plt.subplots()
-    middle_axis._rare_rest(ax, results, M)
+    drawing = portrait.Drawing("q1", (-4.5, 4.5, 6.0))
+    middle_axis._rare_rest(drawing, results, M)
     middle_axis._rare_escape(results, M)
-    plt.close(fig)
+    assert drawing.elements() == {"rest_line"}                  # the line of rest points is drawn, across the plane
     cases = {h["name"]: h for h in results.stability}
     assert {"rest_line_at_rest", "rare_rest_decay", "rare_rest_direction", "rare_blow_up_time",
             "rare_escape_direction"} <= set(cases)

@@ -11,6 +11,7 @@ RESULTS_ARCHIVE = f"results/dist/{_project['name']}-{_project['version']}-result
 rule results_archive:
     input:
         [out for study in STUDIES for out in scene_outputs(study)],
+        rules.self_excited_gallery.output.results,
     output:
         archive=RESULTS_ARCHIVE,
         sums=RESULTS_ARCHIVE.removesuffix(".tar.gz") + ".SHA256SUMS",
@@ -27,6 +28,7 @@ rule results_archive:
 rule report_html:
     input:
         results=[out for study in STUDIES for out in scene_outputs(study)],
+        gallery=rules.self_excited_gallery.output.results,
         archive=RESULTS_ARCHIVE,
         templates=sorted(str(p) for p in Path("report").rglob("*") if p.is_file()),
         code=code("report", "formatting.py", "units.py"),

@@ -1,8 +1,38 @@
 # Study: the self-excited rigid body (Lee 1964): phase planes of Euler's equations under body-fixed torques.
-# Scenes: workflow/scenes/self_excited/ (one portrait each).
+# Scenes: workflow/scenes/self_excited/ (one portrait each); then the gallery redraws the portraits as grids.
+
+from classical_dynamics.studies.self_excited.gallery import portrait_scenes
+
+GALLERY_SCENES = [s for s in scenes("self_excited") if s in portrait_scenes()]
+
+
+rule self_excited_gallery:
+    """The study's phase portraits as small-multiple grids, grouped as Lee groups his figures (no integration:
+    it redraws each portrait scene's saved table)."""
+    input:
+        scenes=expand("results/self_excited/{scene}", scene=GALLERY_SCENES),
+        code=SHARED_CODE + code("studies/self_excited"),
+    output:
+        results=directory("results/self_excited/gallery"),
+        timings=directory("results/self_excited/timings/gallery"),
+    params:
+        python=PY,
+        quick=QUICK,
+    log:
+        "results/logs/self_excited/gallery.log",
+    conda:
+        "../envs/pipeline.yaml"
+    shell:
+        "{params.python} -m classical_dynamics.studies.self_excited.gallery results/self_excited"
+        " {output.results} {output.timings} {input.scenes} {params.quick} > {log} 2>&1"
+
+
+# results/self_excited/gallery is no scene (there is no gallery.yaml): this rule makes it, not the scene rule.
+ruleorder: self_excited_gallery > scene
 
 
 rule self_excited:
-    """Every scene of the self-excited rigid body study."""
+    """Every scene of the self-excited rigid body study, and the gallery of its portraits."""
     input:
         scene_outputs("self_excited"),
+        rules.self_excited_gallery.output.results,

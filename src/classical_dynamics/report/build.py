@@ -53,7 +53,10 @@ class ResultsIndex:
         return [s for s in STUDY_ORDER if s in present]
 
     def scenes(self, study):
-        return sorted(scene for s, scene in self.summaries if s == study)
+        """A study's scenes. A step drawn from other scenes' results (its provenance lists them as input_scenes, as
+        the self-excited gallery's does) is no scene: its figures are shown, its provenance listed, but not counted."""
+        return sorted(scene for s, scene in self.summaries
+                      if s == study and "input_scenes" not in self.provenance[(s, scene)])
 
     def summary(self, study, scene):
         try:

@@ -131,7 +131,7 @@ def publish(results, frame, name, error, caption, xlabel, headers=None, floor=1e
     results.table(f"accuracy_{name}", frame.drop(columns=["seconds"]), caption, headers=headers)
     results.timing_table(f"accuracy_{name}", frame, caption + " With the wall time of each run, the minimum over "
                          "repeated runs.", headers=headers)
-    fig, ax = new_figure(height=3.2)
+    fig, ax = new_figure(height=2.7)      # with its caption, at most 40 % of a page
     wp.plot(frame, ax, error=error, floor=floor, xlabel=xlabel)
     fig.legend(loc="outside right upper")
     styles = ["solid: this library's methods"]

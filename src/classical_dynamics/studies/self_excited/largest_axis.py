@@ -67,19 +67,27 @@ def run(scene, results, quick):
             a.grid(True, which="both", alpha=0.25, linewidth=0.6)
     else:
         fig, ax = new_figure(TEXT_WIDTH_IN, 3.9)
+    F = se.limit_cycle_p1(np.linspace(lo, hi, 801), m1, nu)
+    view = p1_max if F is None else max(p1_max, 1.1 * float(np.max(np.abs(F))))     # F and F1 in the window
+    drawing = portrait.Drawing("p1", (lo - 0.5, hi + 0.5, 2.0 * view))
     seconds, curves, _ = min_time(lambda: _trajectories(m1, nu, lo, hi, p1_max, tau_max, points), repeats=1,
                                   budget_s=0.1)
-    spreads = _draw_trajectories(ax, curves, m1, nu, lo, hi, p1_max)
+    spreads = _draw_trajectories(drawing, curves, m1, nu, lo, hi, p1_max)
     results.number("invariant_spread", spreads, "1", note=("E" if nu == 0 else "C1") + ": largest spread along "
                    "one trajectory, relative to the size of its terms")
     integral = "$E$" if nu == 0 else "$C_1$"
     results.hard_case("plane_invariant", f"The plane's first integral {integral} along its trajectories (largest "
                       "relative spread)", spreads, INVARIANT_BOUND)
-    _draw_separatrices(ax, m1, nu, lo, hi, p1_max, points)
+    _draw_separatrices(drawing, m1, nu, lo, hi, p1_max, points)
     paths = []
-    deviation, cyl, along_euler = _overlay(ax, L, body, smallest, m1, nu, lo, hi, points, keep=paths)
+    deviation, cyl, along_euler = _overlay(drawing, L, body, smallest, m1, nu, lo, hi, points, keep=paths)
     if smallest:
-        _seen_along_z(cx, paths, body, delta)
+        view_z = seen_along_z(paths, body, delta)
+        draw_seen_along_z(cx, view_z)
+        cx.set_title("seen along $z$")
+        results.table("body_view", view_z, "The motion in the body seen along the torque axis $z$: the ellipse "
+                      "$p^2/a + q^2/b = \\delta^2$ and the integrations of Euler's equations on it.",
+                      headers=BODY_VIEW_HEADERS)
     results.number("overlay_deviation", deviation, "1", note="Euler's equations in the plane against (2.10), max")
     results.number("cylinder_spread", cyl, "1", note="relative spread of q²/b + r²/c along Euler's equations")
     results.hard_case("overlay", "Full integrations of Euler's equations, mapped into the plane, on the plane's "
@@ -90,9 +98,9 @@ def run(scene, results, quick):
                       "mapped into the plane (largest relative spread)", along_euler, INVARIANT_BOUND)
     results.hard_case("elliptic_cylinder", "The end of $\\boldsymbol{\\omega}$ stays on its elliptic cylinder "
                       "(relative spread of $q^2/b + r^2/c$)", cyl, CYLINDER_BOUND)
-    F = se.limit_cycle_p1(np.linspace(lo, hi, 801), m1, nu)
-    view = p1_max if F is None else max(p1_max, 1.1 * float(np.max(np.abs(F))))     # F and F1 in the window
-    portrait.finish(ax, points, (lo, hi), view, "$p_1$", angle=True)
+    drawing.points(points)
+    drawing.window(lo, hi, view)
+    portrait.finish(ax, drawing, "$p_1$", angle=True)
     regime = f"$m_1$ = {portrait.param_text(m1)}" + (f", $\\nu$ = {portrait.param_text(nu)}" if nu
                                                     else ", unperturbed ($\\nu = 0$)")
     shown = ["trajectories of the plane (grey)"]
@@ -112,6 +120,9 @@ def run(scene, results, quick):
                     "$\\boldsymbol{\\omega}$ runs on the ellipse $p^2/a + q^2/b = \\delta^2$ about $z$ (black), "
                     "where for the torque along the largest axis it runs about $x$; the plane is the same.")
     results.figure("portrait", fig, caption)
+    drawing.save(results, "What the portrait draws, point by point: each element (trajectory, separatrix, limit "
+                 "cycle, Euler's equations mapped into the plane, singular point by type, the window's corners) and "
+                 "its curve number, in $(\\varphi_2, p_1)$.")
     results.timing_table("cost", pd.DataFrame([{"what": "plane trajectories of the portrait", "seconds": seconds}]),
                          "What the portrait's plane trajectories cost to integrate.",
                          headers={"what": "computation", "seconds": "wall time (s)"})
@@ -173,11 +184,11 @@ def _trajectories(m1, nu, lo, hi, p1_max, tau_max, points):
                                  _starts(m1, nu, lo, hi, p1_max, points), tau_max)
 
 
-def _draw_trajectories(ax, curves, m1, nu, lo, hi, p1_max):
-    """Draw the plane's trajectories; return the largest spread of the first integral along one of them."""
+def _draw_trajectories(drawing, curves, m1, nu, lo, hi, p1_max):
+    """Record the plane's trajectories; return the largest spread of the first integral along one of them."""
     worst = 0.0
     for y in curves:
-        ax.plot(y[:, 0], y[:, 1], color="0.65", lw=0.5)
+        drawing.curve("trajectory", y[:, 0], y[:, 1])
         inside = (np.abs(y[:, 1]) < 10 * p1_max) & (np.abs(y[:, 0]) < 10 * max(abs(lo), abs(hi)))
         y = y[inside]
         if len(y) < 2:
@@ -186,37 +197,48 @@ def _draw_trajectories(ax, curves, m1, nu, lo, hi, p1_max):
     return worst
 
 
-def _draw_separatrices(ax, m1, nu, lo, hi, p1_max, points):
+def _draw_separatrices(drawing, m1, nu, lo, hi, p1_max, points):
     phi = np.linspace(lo, hi, 4001)
-    first = True
     for pt in points:
         if pt["type"] == "center":
             continue
         sq = se.separatrix_p1_squared(phi, m1, -nu, pt["phi2"])
         ok = sq >= 0
         for sign in (1, -1):
-            y = np.where(ok, sign * np.sqrt(np.where(ok, sq, 0.0)), np.nan)
-            ax.plot(phi, y, color="k", lw=1.1, label="separatrices (closed form)" if first else None)
-            first = False
+            drawing.curve("separatrix", phi, np.where(ok, sign * np.sqrt(np.where(ok, sq, 0.0)), np.nan))
     F = se.limit_cycle_p1(phi, m1, nu)
     if F is not None:
-        ax.plot(phi, F, color=portrait.LIMIT_CYCLE_COLOUR, lw=1.4, label="$F$ (stable limit cycle)")
-        ax.plot(phi, -F, color=portrait.LIMIT_CYCLE_COLOUR, lw=1.4, ls="--", label="$F_1$ (unstable limit cycle)")
+        drawing.curve("limit_cycle_F", phi, F)
+        drawing.curve("limit_cycle_F1", phi, -F)
 
 
-def _seen_along_z(ax, paths, body, delta):
-    """The torque along z: Euler's integrations (p, q) and the ellipse p^2/a + q^2/b = delta^2 they run on."""
+BODY_VIEW_HEADERS = {"element": "what is drawn", "curve": "curve", "p": "$p$ (rad per time unit)",
+                     "q": "$q$ (rad per time unit)"}
+
+
+def seen_along_z(paths, body, delta):
+    """The torque along z: the ellipse p^2/a + q^2/b = delta^2 and Euler's integrations (p, q) on it, as a table."""
     theta = np.linspace(0.0, 2 * np.pi, 361)
-    ax.plot(delta * np.sqrt(body.a) * np.cos(theta), delta * np.sqrt(body.b) * np.sin(theta), "k-", lw=1.0)
-    for w in paths:
-        ax.plot(w[::4, 0], w[::4, 1], ".", color=portrait.EULER_COLOUR, ms=3)
+    parts = [pd.DataFrame({"element": "ellipse", "curve": 0, "p": delta * np.sqrt(body.a) * np.cos(theta),
+                           "q": delta * np.sqrt(body.b) * np.sin(theta)})]
+    parts += [pd.DataFrame({"element": "euler", "curve": k + 1, "p": w[::4, 0], "q": w[::4, 1]})
+              for k, w in enumerate(paths)]
+    frame = pd.concat(parts, ignore_index=True)
+    return frame.round({"p": portrait.DIGITS, "q": portrait.DIGITS})
+
+
+def draw_seen_along_z(ax, frame, small=False):
+    ring = frame[frame.element == "ellipse"]
+    ax.plot(ring.p, ring.q, "k-", lw=0.8 if small else 1.0)
+    dots = frame[frame.element == "euler"]
+    for _, path in dots.groupby("curve"):
+        ax.plot(path.p, path.q, ".", color=portrait.EULER_COLOUR, ms=2.2 if small else 3)
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("$p$ (rad per time unit)")
     ax.set_ylabel("$q$ (rad per time unit)")
-    ax.set_title("seen along $z$")
 
 
-def _overlay(ax, L, body, smallest, m1, nu, lo, hi, points, keep=None):
+def _overlay(drawing, L, body, smallest, m1, nu, lo, hi, points, keep=None):
     """Three starts integrated in (p, q, r) and in the plane: their largest disagreement after mapping, and along
     Euler's integrations the spreads of q^2/b + r^2/c and of the plane's first integral. For the smallest axis the
     physical equations are integrated and their state read as (r, q, p). keep: a list that receives each
@@ -229,7 +251,7 @@ def _overlay(ax, L, body, smallest, m1, nu, lo, hi, points, keep=None):
     starts += [(0.5 * (lo + hi), 1.2), (lo + 0.3 * (hi - lo), -0.6)]
     worst, cyl_worst, inv_worst = 0.0, 0.0, 0.0
     tau_span = 6.0
-    for k, (phi, p1) in enumerate(starts):
+    for phi, p1 in starts:
         tau = np.linspace(0.0, tau_span, 121)
         w0 = L.from_plane(phi, p1)[order]
         full = solve(Problem(rhs, w0, (0.0, tau_span / L.time_scale), physical), "dop853",
@@ -247,8 +269,7 @@ def _overlay(ax, L, body, smallest, m1, nu, lo, hi, points, keep=None):
         cyl = se.cylinder(L.body, reduced)
         cyl_worst = max(cyl_worst, float(np.ptp(cyl) / cyl[0]))
         inv_worst = max(inv_worst, se.invariant_spread(mapped, m1, -nu))
-        ax.plot(mapped[::4, 0], mapped[::4, 1], ".", color=portrait.EULER_COLOUR, ms=3,
-                label="Euler's equations, mapped" if k == 0 else None)
+        drawing.curve("euler", mapped[::4, 0], mapped[::4, 1])
     return worst, cyl_worst, inv_worst
 
 
@@ -363,7 +384,7 @@ def _singular_point_bifurcation(results):
             found.append((m1, x, kind))
     results.hard_case("singular_point_bifurcation", "Singular points found numerically for $m_1$ in [−1.5, 1.5] "
                       "that the closed form misses, misplaces or mistypes (count)", wrong, 0)
-    fig, ax = new_figure(height=3.2)
+    fig, ax = new_figure(height=2.8)
     m = np.linspace(-1.0, 1.0, 401)
     ax.plot(m, -np.arcsin(m), "k-", lw=1.2, label="saddles, closed form")
     centre = np.pi + np.arcsin(m)
@@ -407,7 +428,7 @@ def _limit_cycle_bifurcation(results, m1_scene, nu_scene):
     results.hard_case("limit_cycle_bifurcation", "Cells of the $(m_1, \\nu)$ grid where the integrated fate "
                       "disagrees with $\\nu^* = m_1/(2\\sqrt{1 - m_1^2})$ (count, cells within 2 % of the curve "
                       "excluded)", wrong, 0)
-    fig, ax = new_figure(height=3.2)
+    fig, ax = new_figure(height=2.8)
     ax.plot(M[bounded], N[bounded], "s", ms=2.5, color="#56B4E9", label="bounded: tends to $F$")
     ax.plot(M[~bounded], N[~bounded], "s", ms=2.5, color="0.78", label="runs to $-x$ in finite time")
     m = np.linspace(0.01, 0.999, 400)
@@ -431,7 +452,7 @@ def _cylinder(results, m1, nu, points):
     """Lee's Figure 2.13: phi2 taken mod 2 pi, the plane rolled onto a cylinder (cos phi2, sin phi2, p1). The
     saddles merge into one S and the centers into one C; F and F1 close on themselves; a closed orbit about C, a
     start above F1 winding onto F, and one below F1 running away to p1 -> -infinity."""
-    fig = plt.figure(figsize=(5.6, 3.9), layout="constrained")
+    fig = plt.figure(figsize=(5.8, 3.2), layout="constrained")      # at most 40 % of a page
     ax = fig.add_subplot(projection="3d")
     theta = np.linspace(0.0, 2 * np.pi, 721)
     F = se.limit_cycle_p1(theta, m1, nu)

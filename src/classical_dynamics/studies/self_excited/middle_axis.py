@@ -76,6 +76,7 @@ def run(scene, results, quick):
         results.number(f"n_{kind}s", sum(pt["type"] == kind for pt in points), "1")
 
     fig, ax = new_figure(TEXT_WIDTH_IN, 3.6)
+    drawing = portrait.Drawing("q1", (lo - 0.5, hi + 0.5, 2.0 * q1_max))
     centers = [pt["phi2"] for pt in points if pt["type"] == "center"]
     saddles = [pt["phi2"] for pt in points if pt["type"] != "center"]       # a degenerate point has a separatrix too
     if centers and saddles:                         # inside the saddle's loop: between the saddle and the center
@@ -92,7 +93,7 @@ def run(scene, results, quick):
     if saddles and not centers:
         others += [(saddles[0] + 0.5, 0.0), (saddles[0] + 1.0, 1.0), (saddles[0] - 0.2, 0.0)]
     for y in portrait.trajectories(se.plane_middle, M.plane_parameters, starts + others, 30.0):
-        ax.plot(y[:, 0], y[:, 1], color="0.55", lw=0.6)
+        drawing.curve("trajectory", y[:, 0], y[:, 1])
     closed = 0
     for phi, q1 in starts:                          # orbits about the center close; each turns back twice
         sol = solve(Problem(se.plane_middle, [phi, q1], (0.0, 200.0), M.plane_parameters()), "dop853", rtol=1e-12,
@@ -103,13 +104,13 @@ def run(scene, results, quick):
                           "(count; Lee: every motion is periodic for $|\\mu| < \\mu_\\mathrm{c}$, and inside the "
                           "saddle's loop or $F$ otherwise)",
                           len(starts) - closed, 0)
-    _separatrix(ax, M, saddles, centers, lo, hi)
+    _separatrix(drawing, M, saddles, centers, lo, hi)
     if M.mu1 < 0 and _turns_nowhere(M):
         _every_start_escapes(results, M, others)
     if form == "rare":
         _rare_escape(results, M)
         if M.m1 == 0.0:
-            _rare_rest(ax, results, M)
+            _rare_rest(drawing, results, M)
     else:
         escape = _escaping_start(M, centers, saddles)
         if escape is not None:
@@ -120,7 +121,7 @@ def run(scene, results, quick):
         _settles(results, M)
     overlay_starts = starts[:3] + others[:1] if starts else others[2:6]
     n_overlay = len(overlay_starts)
-    deviation, hyp, invariant, share = _overlay(ax, M, overlay_starts)
+    deviation, hyp, invariant, share = _overlay(drawing, M, overlay_starts)
     results.number("overlay_deviation", deviation, "1", note="Euler's equations in the plane against the plane, max")
     results.number("overlay_share", share, "1", note="share of the overlay's samples compared: those before the "
                    f"motion leaves the window (|q1| < 100), every bound, or, in plane I or II, the plane itself (by "
@@ -137,13 +138,15 @@ def run(scene, results, quick):
     results.hard_case("hyperbolic_cylinder", "The end of $\\boldsymbol{\\omega}$ stays on its hyperbolic cylinder "
                       "(relative spread of $p^2/a - r^2/c$, against $p^2/a + r^2/c$ at the start in the planes, where "
                       "it is 0)", hyp, 1e-10)
-    portrait.finish(ax, points, (lo, hi), q1_max, "$q_1$")
+    drawing.points(points)
+    drawing.window(lo, hi, q1_max)
+    portrait.finish(ax, drawing, "$q_1$")
     regime = f"{SYMBOLS[form] if form != 'rare' else '$m$'} = {portrait.param_text(m1)}"
     regime += f", $\\nu$ = {portrait.param_text(nu)}" if nu else ", unperturbed ($\\nu = 0$)"
-    labels = ax.get_legend_handles_labels()[1]
-    black = ("; black: the separatrix from the closed form" if "separatrix (closed form)" in labels else
-             "; black: the curve $C = 0$ of the closed form" if "$C = 0$ (closed form)" in labels else "")
-    if "line of rest points" in labels:
+    drawn = drawing.elements()
+    black = ("; black: the separatrix from the closed form" if "separatrix" in drawn else
+             "; black: the curve $C = 0$ of the closed form" if "curve_C0" in drawn else "")
+    if "rest_line" in drawn:
         black += "; the line of rest points in colour"
     marked = "; markers: the singular points, by type" if points else ""
     where = {"exp": "plane I ($\\alpha_1 = \\alpha_2$)" if alpha1 == alpha2 else "$|\\mu| = \\mu_\\mathrm{c}$",
@@ -154,6 +157,9 @@ def run(scene, results, quick):
                    f"{', ' + where[form] if form in where else ''}; {regime}: {_shape(M, points)}. Grey: trajectories "
                    f"of the plane{black}{marked}; dots: {portrait.COUNTS[n_overlay]} integrations of Euler's "
                    "equations in three dimensions, mapped into the plane, which lie on the plane's trajectories.")
+    drawing.save(results, "What the portrait draws, point by point: each element (trajectory, separatrix or the "
+                 "curve $C = 0$, line of rest points, Euler's equations mapped into the plane, singular point by type, "
+                 "the window's corners) and its curve number, in $(\\varphi_2, q_1)$.")
     if centers:
         _series(results, M, centers[0], nu)
     if "excursion" in data:
@@ -255,7 +261,7 @@ def _singular_points(m, form, eps):
     return out
 
 
-def _separatrix(ax, M, saddles, centers, lo, hi):
+def _separatrix(drawing, M, saddles, centers, lo, hi):
     """Through the saddle or degenerate point; without one, Lee's F (C = 0) about the center of the exponential
     form, or the lines q1 = +-sqrt(m/nu) of the rare case."""
     bounding = M.form == "exp" and centers or M.form == "rare" and M.m1 > 0
@@ -265,8 +271,8 @@ def _separatrix(ax, M, saddles, centers, lo, hi):
     phi = np.linspace(lo, hi, 3001)
     sq = C * np.exp(2 * M.mu1 * phi) + se.middle_g(phi, M.m1, M.mu1, M.eps1, M.form)
     for sign in (1, -1):
-        ax.plot(phi, np.where(sq >= 0, sign * np.sqrt(np.maximum(sq, 0.0)), np.nan), "k-", lw=1.1,
-                label=("separatrix (closed form)" if saddles else "$C = 0$ (closed form)") if sign == 1 else None)
+        drawing.curve("separatrix" if saddles else "curve_C0", phi,
+                      np.where(sq >= 0, sign * np.sqrt(np.maximum(sq, 0.0)), np.nan))
 
 
 def _escaping_start(M, centers, saddles):
@@ -293,12 +299,12 @@ def _third_kind(results, M, start):
                       "(1 if it does not)", 0.0 if sol.status == "blow-up" else 1.0, 0.0)
 
 
-def _overlay(ax, M, starts):
+def _overlay(drawing, M, starts):
     """Euler's equations from each start mapped into the plane against the plane's solution; returns the worst
     deviation, the spreads of the hyperbola and of the plane's first integral along Euler's rows, and the share of
     samples compared."""
     worst, hyp_worst, inv_worst, compared = 0.0, 0.0, 0.0, 0
-    for k, (phi, q1) in enumerate(starts):
+    for phi, q1 in starts:
         tau = np.linspace(0.0, 12.0, 241)
         full = solve(Problem(se.euler_middle, M.from_plane(phi, q1), (0.0, tau[-1] / M.time_scale),
                              M.euler_parameters()), "dop853", rtol=1e-13, atol=1e-15, t_eval=tau / M.time_scale,
@@ -316,8 +322,7 @@ def _overlay(ax, M, starts):
         w0 = full.y_eval[0]
         hyp_worst = max(hyp_worst, float(np.ptp(h) / max(abs(h[0]), w0[0]**2 / M.body.a + w0[2]**2 / M.body.c)))
         inv_worst = max(inv_worst, se.middle_invariant_spread(mapped, M.m1, M.mu1, M.eps1, M.form))
-        ax.plot(mapped[::5, 0], mapped[::5, 1], ".", color=portrait.EULER_COLOUR, ms=3,
-                label="Euler's equations, mapped" if k == 0 else None)
+        drawing.curve("euler", mapped[::5, 0], mapped[::5, 1])
     return worst, hyp_worst, inv_worst, compared / (len(starts) * tau.size)
 
 
@@ -380,13 +385,13 @@ def _riccati_time(m, nu, q_from, q_to):
     return float(F(q_to) - F(q_from))
 
 
-def _rare_rest(ax, results, M):
+def _rare_rest(drawing, results, M):
     """Lee's Figure 3.18(b), the rare case without torque (m0 = 0): dq1/dtau = -nu q1^2, so every point of q1 = 0
     is at rest (a permanent rotation about an axis of plane II: -b r p + mu |omega|^2 = 0 there at |mu| = mu_c).
     Above the line q1 = q10/(1 + nu q10 tau) falls to 0 while phi2 runs to +infinity, so p and r decay like
     e^{-phi2/2} = (1 + nu q10 tau)^{-1/(2 nu)}, faster than q: omega -> 0 along +y. Along Euler's equations ln|q|
     against ln|(p, r)| has slope 2 nu_c = b/(a + c) exactly."""
-    ax.axhline(0.0, color=portrait.LIMIT_CYCLE_COLOUR, lw=1.6, label="line of rest points")
+    drawing.curve("rest_line", drawing.reach[:2], [0.0, 0.0])
     drift = 0.0
     for phi in (-2.0, 0.0, 2.0):
         w0 = M.from_plane(phi, 0.0)
@@ -502,7 +507,7 @@ def _excursion(results, M, start):
     hyp = se.hyperbola(M.body, w)
     hyp_spread = float(np.ptp(hyp) / np.max(w[:, 0] ** 2 / M.body.a + w[:, 2] ** 2 / M.body.c))
     c1 = se.middle_invariant(M.to_plane(w), M.m1, M.mu1, M.eps1, M.form)
-    fig, ax = new_figure(height=3.0)
+    fig, ax = new_figure(height=2.6)
     first = full.t_steps <= 2 * T
     ax.semilogy(full.t_steps[first], sizes[first], ".-", color=portrait.EULER_COLOUR, ms=2, lw=0.6,
                 label="$|\\omega|$ along Euler's equations (at the steps)")

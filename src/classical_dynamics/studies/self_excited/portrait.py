@@ -97,12 +97,14 @@ LIMIT_CYCLE_COLOUR = "#D55E00"      # F and F1 (vermillion), in the portrait and
 EULER_COLOUR = "#0072B2"            # Euler's equations mapped into the plane (blue dots)
 
 
-def mark_points(ax, points):
-    style = {"saddle": ("x", "saddle"), "center": ("o", "center"), "degenerate": ("^", "degenerate point")}
+POINT_STYLE = {"saddle": ("x", "saddle"), "center": ("o", "center"), "degenerate": ("^", "degenerate point")}
+
+
+def mark_points(ax, points, size=6):
     seen = set()
     for pt in points:
-        marker, label = style[pt["type"]]
-        ax.plot(pt["phi2"], 0.0, marker, color="k", ms=6, mew=1.2, mfc="white" if marker == "o" else None,
+        marker, label = POINT_STYLE[pt["type"]]
+        ax.plot(pt["phi2"], 0.0, marker, color="k", ms=size, mew=1.2 * size / 6, mfc="white" if marker == "o" else None,
                 label=None if label in seen else label, zorder=5, clip_on=False)   # whole at the window's edge
         seen.add(label)
 
@@ -120,17 +122,150 @@ def pi_ticks(axis, low, high):
     axis.set_major_formatter(FuncFormatter(label))
 
 
-def finish(ax, points, phi2_range, y_max, y_label, angle=False):
-    """Singular points, the window, the labels and the legend of a portrait. angle: phi2 is an angle (the
+def finish(ax, drawing, y_label, angle=False):
+    """Draw a portrait from its recorded elements, with its window, labels and legend. angle: phi2 is an angle (the
     largest axis' plane), with ticks at multiples of pi; otherwise a logarithm (the middle axis'), no unit."""
-    mark_points(ax, points)
-    ax.set_xlim(*phi2_range)
-    ax.set_ylim(-y_max, y_max)
+    draw(ax, drawing.frame(), drawing.y_name)
+    lo, hi = ax.get_xlim()
+    axes_labels(ax, y_label, angle, (lo, hi))
+    legend_below(ax.figure, *legend_entries(drawing.elements()), ncol=4)
+
+
+def axes_labels(ax, y_label, angle, phi2_range, x=True, y=True):
     if angle:
         pi_ticks(ax.xaxis, *phi2_range)
-    ax.set_xlabel("$\\varphi_2$ (rad)" if angle else "$\\varphi_2$")
-    ax.set_ylabel(y_label)
-    handles, labels = ax.get_legend_handles_labels()
-    handles.insert(0, Line2D([], [], color="0.6", lw=0.6))
-    labels.insert(0, "trajectories of the plane")
-    legend_below(ax.figure, handles, labels, ncol=4)
+    if x:
+        ax.set_xlabel("$\\varphi_2$ (rad)" if angle else "$\\varphi_2$")
+    if y:
+        ax.set_ylabel(y_label)
+
+
+# --- what a portrait draws, as data ---------------------------------------------------------------------------
+# A portrait is drawn from a tidy table (one row per plotted point) so that the study's gallery can redraw it as a
+# panel of a grid: element, curve (one line per curve number), phi2 and the plane's velocity (p1 or q1).
+ELEMENTS = {      # element: (plot keywords, legend label); the singular points are drawn by mark_points
+    "trajectory": ({"color": "0.6", "lw": 0.55}, "trajectories of the plane"),
+    "separatrix": ({"color": "k", "lw": 1.1}, "separatrices (closed form)"),
+    "curve_C0": ({"color": "k", "lw": 1.1}, "$C = 0$ (closed form)"),
+    "limit_cycle_F": ({"color": LIMIT_CYCLE_COLOUR, "lw": 1.4}, "$F$ (stable limit cycle)"),
+    "limit_cycle_F1": ({"color": LIMIT_CYCLE_COLOUR, "lw": 1.4, "ls": "--"}, "$F_1$ (unstable limit cycle)"),
+    "rest_line": ({"color": LIMIT_CYCLE_COLOUR, "lw": 1.6}, "line of rest points"),
+    "euler": ({"color": EULER_COLOUR, "ls": "", "marker": ".", "ms": 3}, "Euler's equations, mapped"),
+}
+POINT_TYPES = ("saddle", "center", "degenerate")
+DIGITS = 5                    # decimals kept in the table: far below what a printed portrait resolves
+
+
+class Drawing:
+    """The elements of one portrait, recorded as they are computed; `frame()` is the table, `draw()` the figure."""
+
+    def __init__(self, y_name: str, reach: tuple):
+        self.y_name, self.reach, self.parts, self.curves = y_name, reach, [], 0
+
+    def curve(self, element, phi2, y):
+        """A line (or the dots of Euler's integrations), kept only where it can be seen: inside `reach`, a box
+        wider than any window it is drawn in, plus the first point beyond, so a line leaves the frame."""
+        phi2, y = np.asarray(phi2, float), np.asarray(y, float)
+        lo, hi, y_max = self.reach
+        seen = np.isfinite(phi2) & np.isfinite(y) & (phi2 >= lo) & (phi2 <= hi) & (np.abs(y) <= y_max)
+        keep = seen | np.r_[seen[1:], False] | np.r_[False, seen[:-1]]
+        keep &= np.isfinite(phi2) & np.isfinite(y)
+        runs = np.split(np.arange(len(y)), np.nonzero(np.diff(keep.astype(int)))[0] + 1)
+        for run in runs:
+            if keep[run[0]] and (len(run) > 1 or element == "euler"):
+                if element != "euler":
+                    run = run[_simplified(phi2[run] / (hi - lo), y[run] / (2 * y_max), SIMPLIFY)]
+                self.parts.append(pd.DataFrame({"element": element, "curve": self.curves,
+                                                "phi2": phi2[run].round(DIGITS), self.y_name: y[run].round(DIGITS)}))
+                self.curves += 1
+
+    def points(self, points):
+        for pt in points:
+            self.parts.append(pd.DataFrame({"element": [pt["type"]], "curve": [self.curves],
+                                            "phi2": [round(float(pt["phi2"]), 12)], self.y_name: [0.0]}))
+            self.curves += 1
+
+    def window(self, lo, hi, y_max):
+        self.parts.append(pd.DataFrame({"element": "window", "curve": self.curves, "phi2": [lo, hi],
+                                        self.y_name: [-y_max, y_max]}))
+        self.curves += 1
+
+    def elements(self):
+        return {element for part in self.parts for element in part.element}
+
+    def frame(self) -> pd.DataFrame:
+        return pd.concat(self.parts, ignore_index=True)
+
+    def save(self, results, caption):
+        results.table("portrait", self.frame(), caption, headers=TABLE_HEADERS)
+
+
+def _simplified(x, y, tolerance):
+    """Indices of the points of a polyline that keep it within `tolerance` of itself (Ramer-Douglas-Peucker):
+    a curve sampled finely enough for its sharpest bend needs far fewer points along its straight stretches."""
+    keep = np.zeros(len(x), bool)
+    keep[[0, -1]] = True
+    stack = [(0, len(x) - 1)]
+    while stack:
+        first, last = stack.pop()
+        if last - first < 2:
+            continue
+        dx, dy = x[last] - x[first], y[last] - y[first]
+        xs, ys = x[first + 1:last] - x[first], y[first + 1:last] - y[first]
+        norm = np.hypot(dx, dy)
+        distance = np.abs(dx * ys - dy * xs) / norm if norm > 0 else np.hypot(xs, ys)
+        worst = int(np.argmax(distance))
+        if distance[worst] > tolerance:
+            middle = first + 1 + worst
+            keep[middle] = True
+            stack += [(first, middle), (middle, last)]
+    return np.nonzero(keep)[0]
+
+
+SIMPLIFY = 2e-4                 # of the reach's width and height: about a hundredth of a millimetre in print
+TABLE_HEADERS = {"element": "what is drawn", "curve": "curve", "phi2": "$\\varphi_2$", "p1": "$p_1$", "q1": "$q_1$"}
+
+
+def window_of(frame, y_name):
+    rows = frame[frame.element == "window"]
+    return float(rows.phi2.min()), float(rows.phi2.max()), float(rows[y_name].max())
+
+
+def draw(ax, frame, y_name, window=None, small=False):
+    """A portrait from its table: every element in its style, the singular points by type, the window (the table's
+    own, or the one given). small: thinner lines and smaller markers, for a panel of a grid."""
+    shrink = 0.75 if small else 1.0
+    for element, (style, label) in ELEMENTS.items():
+        rows = frame[frame.element == element]
+        first = True
+        for _, curve in rows.groupby("curve", sort=True):
+            kw = dict(style)
+            kw["lw"] = kw.get("lw", 1.0) * shrink
+            if "ms" in kw:
+                kw["ms"] = kw["ms"] * shrink
+                curve = curve.iloc[::2] if small else curve                  # dots: half of them suffice in a panel
+            ax.plot(curve.phi2, curve[y_name], label=label if first and element != "trajectory" else None, **kw)
+            first = False
+    points = [{"phi2": row.phi2, "type": row.element} for row in frame[frame.element.isin(POINT_TYPES)].itertuples()]
+    mark_points(ax, points, size=4.5 if small else 6)
+    lo, hi, y_max = window or window_of(frame, y_name)
+    ax.set_xlim(lo, hi)
+    ax.set_ylim(-y_max, y_max)
+
+
+def legend_entries(elements, small=False):
+    """Handles and labels for the elements drawn (in the order of ELEMENTS), the singular points last."""
+    shrink = 0.75 if small else 1.0
+    handles, labels = [], []
+    for element, (style, label) in ELEMENTS.items():
+        if element in elements:
+            kw = dict(style)
+            kw["lw"] = kw.get("lw", 1.0) * (0.6 / 0.55 if element == "trajectory" else shrink)
+            handles.append(Line2D([], [], **kw))
+            labels.append(label)
+    for kind, (marker, label) in POINT_STYLE.items():
+        if kind in elements:
+            handles.append(Line2D([], [], ls="", marker=marker, color="k", ms=6 * shrink, mew=1.2,
+                                  mfc="white" if marker == "o" else None))
+            labels.append(label)
+    return handles, labels

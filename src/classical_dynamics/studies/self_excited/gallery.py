@@ -1,0 +1,333 @@
+"""The study's phase portraits redrawn as small multiples, grouped as Lee groups his figures.
+
+Each portrait scene saves what it draws as a table (portrait.csv; the smallest axis also body_view.csv); this step
+reads those tables and the scenes' summaries and draws one grid per group: shared axes where the windows agree,
+each panel titled by its letter and its parameters, one legend per grid. Nothing is integrated here. A scene whose
+results are missing is left out, and the panels that remain are lettered in order.
+
+  python -m classical_dynamics.studies.self_excited.gallery STUDY_RESULTS OUT_DIR TIMINGS_DIR SCENE... [--quick]
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+GALLERY = "gallery"
+ROOT = Path(__file__).resolve().parents[4]
+
+
+@dataclass(frozen=True)
+class Group:
+    name: str                  # the grid's figure and table: grid_<name>.svg, grid_<name>.csv
+    axis: str                  # largest (phi2 an angle, p1) or middle (phi2 a logarithm, q1)
+    lead: str                  # the caption's first sentences: what every panel shows
+    panels: tuple              # (scene, what to notice in its panel), in Lee's order
+
+
+EULER = ("The dots, integrations of Euler's equations in three dimensions mapped into the plane, lie on the plane's "
+         "trajectories.")
+
+GROUPS = (
+    Group("largest_unperturbed", "largest",
+          "Phase planes of Lee (2.10) for the torque along the largest axis $x$, unperturbed ($\\nu = 0$). " + EULER, (
+              ("largest_unperturbed", "Grammel's problem (Lee's Figure 2.2): closed orbits inside the homoclinic "
+               "loops are periodic motions about permanent axes in the $yz$-plane; outside them "
+               "$\\boldsymbol{\\omega}$ runs to the positive $x$-axis."),
+              ("largest_unperturbed_negative", "The mirror image (Lee's Figure 2.4): the motions of the first kind "
+               "run to the negative $x$-axis."),
+              ("largest_unperturbed_critical", "At $m_1 = 1$ the saddle and the center of each pair coalesce into a "
+               "degenerate point (Lee's Figure 2.5): no periodic motion remains."),
+              ("largest_unperturbed_strong", "For $m_1 > 1$ there are no singular points (Lee's Figure 2.7) and "
+               "every motion runs to the $x$-axis. Since a small $\\delta$ makes $|m_1|$ large, the rotation about "
+               "the $x$-axis is stable."),
+              ("force_free", "The force-free body (Lee's Figure 2.9), the plane of the pendulum: the saddles are the "
+               "unstable rotations about the middle axis, the centers the stable rotations about the smallest."))),
+    Group("largest_perturbed", "largest",
+          "Phase planes of Lee (2.10) for the torque along the largest axis $x$ with the drag-like term "
+          "$-\\nu p_1^2$. " + EULER, (
+              ("largest_perturbed_cycles", "With $\\nu < \\nu^*$ (Lee's Figure 2.10) the limit cycles $F$ and $F_1$ "
+               "appear. On $F$, $\\boldsymbol{\\omega}$ turns about the $x$-axis and returns after two turns of "
+               "$\\varphi_2$ ($4\\pi$), twice the period of $p$."),
+              ("largest_perturbed_critical", "At $\\nu = \\nu^*$ the limit cycles touch the saddles (Lee's Figure "
+               "2.15)."),
+              ("largest_perturbed_no_cycles", "Above $\\nu^*$ the limit cycles are gone (Lee's Figure 2.14); the "
+               "closed orbits about the centers remain."),
+              ("largest_perturbed_strong", "For $m_1 > 1$ with drag (Lee's Figure 2.20) there are no singular "
+               "points, but $F$ and $F_1$ exist; above $F_1$, $\\boldsymbol{\\omega}$ tends to $F$."),
+              ("largest_perturbed_reversed", "For $m_1 < -1$ with drag (Lee's Figure 2.19), $\\boldsymbol{\\omega}$ "
+               "runs to the negative $x$-axis from every start."))),
+    Group("smallest", "largest",
+          "The torque along the smallest axis $z$. Lee's title says “largest or smallest”: the same plane, "
+          "Lee (2.10), serves, with $p$ and $r$, $a$ and $c$ exchanged. Euler's equations with the torque along $z$, integrated "
+          "and read as $(r, q, p)$, lie on it (dots).", (
+              ("smallest_unperturbed", "The plane."),
+              ("smallest_unperturbed/body_view", "The same integrations in the body, seen along the torque axis "
+               "$z$: the end of $\\boldsymbol{\\omega}$ runs on the ellipse $p^2/a + q^2/b = \\delta^2$ about $z$ "
+               "(black), where for the torque along the largest axis it runs about $x$; the plane is the same."))),
+    Group("middle_below_critical", "middle",
+          "Phase planes of Lee (3.52) for the torque along the middle axis $y$, below the critical drag "
+          "($\\nu < \\nu_\\mathrm{c}$): one center, every trajectory closed. " + EULER, (
+              ("middle_unperturbed", "Unperturbed (Lee's Figure 3.3): the end of $\\boldsymbol{\\omega}$ moves on a "
+               "hyperbolic cylinder; every motion is periodic."),
+              ("middle_perturbed", "With the drag-like term, $\\nu$ below $\\nu_\\mathrm{c}$: still one center and "
+               "every motion periodic."),
+              ("middle_near_critical", "Nearer $\\nu_\\mathrm{c}$, in a wider window: the orbits about the center "
+               "swing far out before they close (the huge excursions)."))),
+    Group("middle_beyond_critical", "middle",
+          "Phase planes of the cosh form, Lee (3.56), for the torque along the middle axis above the critical drag "
+          "($\\nu > \\nu_\\mathrm{c}$). " + EULER, (
+              ("middle_beyond_critical", "$m_2 > 1$ (Lee's Figure 3.9): a saddle and a center; periodic motions "
+               "inside the saddle's loop, motions of the third kind outside it."),
+              ("middle_beyond_critical_degenerate", "$m_2 = 1$ (Lee's Figure 3.10): saddle and center merged into "
+               "one degenerate point; motions of the second kind into it, of the third kind elsewhere."),
+              ("middle_beyond_critical_none", "$m_2 < 1$ (Lee's Figure 3.11): no singular point; every motion is "
+               "of the third kind and leaves every bound in finite time."),
+              ("middle_beyond_critical_resonant", "$\\nu = \\tfrac12$, where Lee's (3.19) divides by zero: the "
+               "separatrix from the resonant closed form; the portrait is that of $m_2 > 1$."))),
+    Group("middle_planes", "middle",
+          "Phase planes for the torque along the middle axis in the planes of the separating polhodes, Lee (3.58) "
+          "and (3.59), with drag, and at the critical drag $|\\mu| = \\mu_\\mathrm{c}$, where every cylinder obeys "
+          "the form of plane I. " + EULER, (
+              ("middle_plane_one", "Plane I (Lee's Figure 3.12): a center; periodic motions inside Lee's "
+               "separatrix $F$ ($C = 0$); outside it $\\boldsymbol{\\omega}$ runs to the $-y$ axis."),
+              ("middle_critical", "At $|\\mu| = \\mu_\\mathrm{c}$ on a cylinder off the planes: the portrait of "
+               "plane I."),
+              ("middle_plane_two", "Plane II below $\\nu_\\mathrm{c}$ (Lee's Figure 3.14): a center, every orbit "
+               "closed."))),
+    Group("middle_plane_two_saddles", "middle",
+          "Phase planes of Lee (3.59) for the torque along the middle axis in plane II above the critical drag, "
+          "where $k_1$ changes sign and the singular point becomes a saddle whose separatrices divide the plane into "
+          "four regions (Lee's Figure 3.16). " + EULER, (
+              ("middle_plane_two_saddle", "$m_3 > 1$."),
+              ("middle_plane_two_saddle_unit", "$m_3 = 1$."),
+              ("middle_plane_two_saddle_weak", "$0 < m_3 < 1$."),
+              ("middle_plane_two_resonant", "$\\nu = \\tfrac12$, where Lee's (3.63) divides by zero: the "
+               "separatrix from the resonant closed form; one saddle, as at $\\nu = 0.45$."))),
+    Group("middle_planes_unperturbed", "middle",
+          "Phase planes for the torque along the middle axis in the planes of the separating polhodes without drag "
+          "(Lee's Figures 3.4 and 3.5), Lee (3.43) and (3.44). " + EULER, (
+              ("middle_plane_one_unperturbed", "Plane I, $m_3 > 0$ (Lee's Figure 3.4 (a)–(c)): a center, every "
+               "orbit closed."),
+              ("middle_plane_one_force_free", "Plane I without torque (Lee's Figure 3.4 (d)): no singular point; "
+               "the trajectories level off, the separatrix motion of the force-free body."),
+              ("middle_plane_one_negative", "Plane I, $m_3 < 0$ (Lee's Figure 3.4 (e)): no singular point; "
+               "$\\boldsymbol{\\omega}$ runs to the $-y$ axis, $|q_1|$ growing like $|m_3|\\tau$."),
+              ("middle_plane_two_unperturbed", "Plane II, $m_3 < 0$ (Lee's Figure 3.5): a center, every orbit "
+               "closed."),
+              ("middle_plane_two_runaway", "Plane II, $m_3 > 0$ (Lee's Figure 3.5 (e)): no singular point; "
+               "$\\boldsymbol{\\omega}$ runs to the $+y$ axis."))),
+    Group("middle_escape", "middle",
+          "Phase planes for the torque along the middle axis in the planes of the separating polhodes with drag, "
+          "where nothing turns the motion back or the drag alone stops it. " + EULER, (
+              ("middle_plane_one_no_center", "Plane I, $m_3 < 0$ (Lee's Figure 3.13): no singular point; "
+               "$\\boldsymbol{\\omega}$ leaves every bound in finite time from every start."),
+              ("middle_plane_two_no_saddle", "Plane II above $\\nu_\\mathrm{c}$, $m_3 < 0$ (Lee's Figure 3.17): "
+               "the same."),
+              ("middle_plane_two_positive", "Plane II below $\\nu_\\mathrm{c}$, $m_3 > 0$ (Lee's Figure 3.15): "
+               "$q_1$ tends to $\\sqrt{m_3/\\nu}$, the rotation about $+y$."))),
+    Group("middle_rare", "middle",
+          "Lee's rare case, Lee (3.65): the torque along the middle axis in plane II at $\\nu = \\nu_\\mathrm{c}$ "
+          "(Lee's Figure 3.18; here $\\tau = t$, $\\varphi_2 = 2\\sqrt{ac}\\,\\varphi$ and "
+          "$m = 2\\sqrt{ac}\\,m_0$). " + EULER, (
+              ("middle_rare", "$m > 0$: above the line $q_1 = -\\sqrt{m/\\nu}$ the motion tends to "
+               "$q_1 = \\sqrt{m/\\nu}$ (black: the lines $C = 0$); below it $\\boldsymbol{\\omega}$ leaves every "
+               "bound."),
+              ("middle_rare_no_torque", "Without torque: the line of rest points $q_1 = 0$; above it "
+               "$\\boldsymbol{\\omega} \\to 0$ along $+y$, below it $\\boldsymbol{\\omega}$ leaves every bound."),
+              ("middle_rare_negative", "$m < 0$: from every start $\\boldsymbol{\\omega}$ leaves every bound, "
+               "towards an axis of plane II perpendicular to $y$."))),
+)
+LETTERS = "abcdefghijklmnopqrstuvwxyz"
+
+
+def portrait_scenes():
+    """Every scene a grid draws (its portrait, or another table of it), once each."""
+    return sorted({scene.split("/")[0] for group in GROUPS for scene, _ in group.panels})
+
+
+def parameter_symbol(numbers):
+    """m1 of Lee's plane, named as Lee names it for the middle axis' forms: m2 (cosh), m3 (planes), m (rare)."""
+    form = numbers.get("form", {}).get("value", "sinh")
+    return {"cosh": "$m_2$", "exp": "$m_3$", "exp-": "$m_3$", "rare": "$m$"}.get(form, "$m_1$")
+
+
+def panel_title(letter, numbers):
+    from .portrait import param_text
+    return (f"({letter}) {parameter_symbol(numbers)} = {param_text(numbers['m1']['value'])}, "
+            f"$\\nu$ = {param_text(numbers['nu']['value'])}")
+
+
+@dataclass
+class Panel:
+    letter: str
+    scene: str
+    kind: str                  # "portrait" or "body_view"
+    title: str
+    text: str
+    frame: object              # the scene's table
+    numbers: dict
+
+
+def panels(group, study_dir: Path, scenes):
+    """The group's panels whose scene is among `scenes` and has its table, lettered in order."""
+    import pandas as pd
+    from ... import io
+    out = []
+    for entry, text in group.panels:
+        scene, _, table = entry.partition("/")
+        folder = study_dir / scene
+        path = folder / f"{table or 'portrait'}.csv"
+        if scene not in scenes or not path.exists() or not (folder / "summary.json").exists():
+            continue
+        numbers = io.read_json(folder / "summary.json")["numbers"]
+        letter = LETTERS[len(out)]
+        title = f"({letter}) seen along $z$" if table else panel_title(letter, numbers)
+        out.append(Panel(letter, scene, table or "portrait", title, text, pd.read_csv(path), numbers))
+    return out
+
+
+def _same(spans, slack=0.25):
+    """Spans close enough to share an axis: each within `slack` of the widest (the union is then drawn)."""
+    return all(span >= (1 - slack) * max(spans) for span in spans)
+
+
+def layout(n):
+    """Columns and rows of a grid of n panels: at most three columns (a panel keeps its aspect and its text)."""
+    columns = min(n, 3)
+    return columns, -(-n // columns)
+
+
+ROW_HEIGHT_IN = 1.3             # a panel's plot, title and tick labels at three columns across the text width
+LEGEND_HEIGHT_IN = 0.4
+
+
+def grid_figure(group, found):
+    """The grid of one group: panels in Lee's order, shared axes where the windows agree, one legend (in a spare
+    slot when there is one, otherwise below)."""
+    from ..results import plt           # with the report's figure style
+    from ...figure_style import FULL_WIDTH_IN, MAX_HEIGHT_IN
+    from ...solvers.workprecision import legend_below
+    from . import portrait
+    from .largest_axis import draw_seen_along_z
+
+    angle = group.axis == "largest"
+    y_name, y_label = ("p1", "$p_1$") if angle else ("q1", "$q_1$")
+    planes = [p for p in found if p.kind == "portrait"]
+    windows = [portrait.window_of(p.frame, y_name) for p in planes]
+    body = any(p.kind == "body_view" for p in found)
+    share_x = _same([hi - lo for lo, hi, _ in windows]) and not body
+    share_y = _same([y for _, _, y in windows]) and not body
+    columns, rows = layout(len(found))
+    spare = columns * rows > len(found)
+    height = min(MAX_HEIGHT_IN, rows * ROW_HEIGHT_IN + (0.0 if spare else LEGEND_HEIGHT_IN) + (0.5 if body else 0))
+    fig, axes = plt.subplots(rows, columns, figsize=(FULL_WIDTH_IN, height), layout="constrained", squeeze=False,
+                             sharex=share_x, sharey=share_y,
+                             width_ratios=[2.6, 1.0] if body else None)
+    elements = set()
+    for k, (ax, panel) in enumerate(zip(axes.flat, found)):
+        ax.grid(True, which="both", alpha=0.25, linewidth=0.6)
+        bottom, left = k + columns >= len(found), k % columns == 0
+        if panel.kind == "body_view":
+            draw_seen_along_z(ax, panel.frame, small=True)
+            elements.add("euler")
+        else:
+            lo, hi, y_max = portrait.window_of(panel.frame, y_name)
+            window = (min(w[0] for w in windows) if share_x else lo, max(w[1] for w in windows) if share_x else hi,
+                      max(w[2] for w in windows) if share_y else y_max)
+            portrait.draw(ax, panel.frame, y_name, window=window, small=True)
+            portrait.axes_labels(ax, y_label, angle, window[:2], x=bottom or not share_x, y=left or not share_y)
+            ax.tick_params(labelbottom=bottom or not share_x, labelleft=left or not share_y)
+            elements |= set(panel.frame.element.unique())
+        ax.set_title(panel.title, loc="left")
+    for ax in list(axes.flat)[len(found):]:
+        ax.axis("off")
+    handles, labels = portrait.legend_entries(elements, small=True)
+    if spare:
+        axes.flat[-1].legend(handles, labels, loc="center", ncol=1, borderaxespad=0.0)
+    else:
+        legend_below(fig, handles, labels, ncol=3)
+    return fig
+
+
+def grid_table(group, found):
+    """The data of every panel: its letter, scene and parameters, then the scene's own rows."""
+    import pandas as pd
+    parts = []
+    for panel in found:
+        frame = panel.frame.copy()
+        frame.insert(0, "panel", panel.letter)
+        frame.insert(1, "scene", panel.scene)
+        frame.insert(2, "m1", panel.numbers["m1"]["value"])
+        frame.insert(3, "nu", panel.numbers["nu"]["value"])
+        parts.append(frame)
+    return pd.concat(parts, ignore_index=True)
+
+
+TABLE_HEADERS = {"panel": "panel", "scene": "scene", "m1": "$m_1$ ($m_2$, $m_3$ or $m$ as the panel's title names "
+                 "it)", "nu": "$\\nu$", "element": "what is drawn", "curve": "curve", "phi2": "$\\varphi_2$",
+                 "p1": "$p_1$", "q1": "$q_1$", "p": "$p$ (rad per time unit)", "q": "$q$ (rad per time unit)"}
+
+
+def caption(group, found):
+    return group.lead + " " + " ".join(f"({p.letter}) {p.text}" for p in found)
+
+
+def build(study_dir: Path, scenes, quick=False):
+    """The gallery's Results: one grid figure and its table per group that has a panel."""
+    from ..results import Results
+    results = Results("self_excited", GALLERY, "The phase portraits of the study's scenes, redrawn as grids")
+    for group in GROUPS:
+        found = panels(group, Path(study_dir), set(scenes))
+        if not found:
+            continue
+        name = f"grid_{group.name}"
+        results.figure(name, grid_figure(group, found), caption(group, found))
+        results.table(name, grid_table(group, found), f"The data of {name}.svg, panel by panel.",
+                      headers=TABLE_HEADERS)
+        results.number(f"panels_{group.name}", len(found), "1", note="panels in the grid")
+        for panel in found:
+            if panel.kind == "portrait":
+                results.number(f"panel_{panel.scene}", panel.letter, "", note=f"the panel of grid_{group.name} that "
+                               "draws the scene's portrait")
+                results.number(f"grid_{panel.scene}", group.name, "", note="the grid that draws the scene's portrait")
+    return results
+
+
+def main(argv=None) -> int:
+    import argparse
+    import hashlib
+    import time
+    from datetime import datetime, timezone
+    from ... import io, provenance
+
+    parser = argparse.ArgumentParser(prog="classical_dynamics.studies.self_excited.gallery")
+    parser.add_argument("study_results")
+    parser.add_argument("out_dir")
+    parser.add_argument("timings_dir")
+    parser.add_argument("scenes", nargs="*")
+    parser.add_argument("--quick", action="store_true")
+    args = parser.parse_args(argv)
+    now = lambda: datetime.now(timezone.utc).isoformat(timespec="seconds")       # noqa: E731
+    started, wall0, cpu0 = now(), time.perf_counter(), time.process_time()
+    study_dir = Path(args.study_results)
+    scenes = sorted(Path(s).name for s in args.scenes)
+    results = build(study_dir, scenes, args.quick)
+    wall, cpu = time.perf_counter() - wall0, time.process_time() - cpu0
+    inputs = {s: provenance.sha256_file(study_dir / s / "summary.json") for s in scenes
+              if (study_dir / s / "summary.json").exists()}
+    record = {
+        "study": "self_excited", "scene": GALLERY, "scene_file": str(Path(__file__).resolve().relative_to(ROOT)),
+        "scene_sha256": hashlib.sha256(io.dumps_json(inputs).encode()).hexdigest(), "input_scenes": sorted(inputs),
+        "input_sha256": inputs, "effects_simulated": [], "quick": bool(args.quick), **provenance.git_state(),
+        "packages": provenance.package_versions(), "machine": provenance.machine(), "started": started,
+        "finished": now(), "wall_seconds": round(wall, 3), "cpu_seconds": round(cpu, 3),
+    }
+    timing = {"study": "self_excited", "scene": GALLERY, "wall_seconds": wall, "cpu_seconds": cpu, "started": started,
+              "cpu_model": record["machine"]["cpu_model"], "cores": record["machine"]["cores"]}
+    results.write(Path(args.out_dir), Path(args.timings_dir), record, timing)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

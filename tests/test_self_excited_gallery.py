@@ -1,0 +1,104 @@
+"""The self-excited study's gallery: the portrait scenes redrawn as grids of small multiples, from the tables the
+scenes save. A few real scenes are run (quick) into a scratch results folder; the others of their groups are absent."""
+
+import json
+import re
+
+import pandas as pd
+import pytest
+
+from classical_dynamics.cli import main as cli
+from classical_dynamics.figure_style import MAX_HEIGHT_IN, MIN_FONT_PT, TEXT_WIDTH_IN
+from classical_dynamics.studies.self_excited import gallery
+
+from .conftest import ROOT
+
+SCHEMA = ROOT / "workflow" / "schemas" / "self_excited.schema.yaml"
+SCENES = ["force_free", "largest_unperturbed_strong", "largest_perturbed_strong", "smallest_unperturbed",
+          "middle_rare_no_torque", "middle_plane_two_saddle_weak"]
+
+
+@pytest.fixture(scope="module")
+def built(tmp_path_factory):
+    study = tmp_path_factory.mktemp("results") / "self_excited"
+    for scene in SCENES:
+        assert cli(["run", "self_excited", str(SCHEMA), str(ROOT / "workflow/scenes/self_excited" / f"{scene}.yaml"),
+                    str(study / scene), str(study / "timings" / scene), "--quick"]) == 0
+    # one scene named on the command line has no results: it must be left out, not fail the step
+    assert gallery.main([str(study), str(study / "gallery"), str(study / "timings" / "gallery"),
+                         *[str(study / s) for s in SCENES], str(study / "largest_unperturbed")]) == 0
+    return study
+
+
+def summary(folder):
+    return json.loads((folder / "summary.json").read_text())
+
+
+def svg_texts(path):
+    """The texts of a figure as matplotlib writes them in an SVG with paths for glyphs: a comment per text."""
+    return re.findall(r'<g id="text_\d+">\s*<!-- (.*?) -->', path.read_text())
+
+
+def test_every_portrait_scene_of_the_study_is_in_a_group_once():
+    scene_files = {p.stem for p in (ROOT / "workflow/scenes/self_excited").glob("*.yaml")}
+    listed = [entry for group in gallery.GROUPS for entry, _ in group.panels if "/" not in entry]
+    assert len(listed) == len(set(listed)) and set(listed) <= scene_files
+    planes = {p.stem for p in (ROOT / "workflow/scenes/self_excited").glob("*.yaml") if "viscous" not in p.read_text()}
+    assert set(gallery.portrait_scenes()) == planes
+
+
+def test_each_scene_present_is_a_panel_titled_with_its_parameters(built):
+    got = summary(built / "gallery")
+    numbers = got["numbers"]
+    for scene in SCENES:
+        letter, grid = numbers[f"panel_{scene}"]["value"], numbers[f"grid_{scene}"]["value"]
+        plane = summary(built / scene)["numbers"]
+        texts = svg_texts(built / "gallery" / f"grid_{grid}.svg")
+        title = next(t for t in texts if t.startswith(f"({letter}) "))
+        shown = re.fullmatch(r"\([a-z]\) \$m(_\d)?\$ = (\S+), \$\\nu\$ = (\S+)", title)
+        assert shown, title
+        for text, key in ((shown.group(2), "m1"), (shown.group(3), "nu")):      # as given, or to four figures
+            assert float(text.replace("\u2212", "-")) == pytest.approx(plane[key]["value"], rel=5e-4, abs=1e-12)
+    assert "panel_largest_unperturbed" not in numbers                   # no results, no panel
+    assert not any(k.startswith("panel_viscous") for k in numbers)
+    # letters run on without gaps in each grid, in the group's order
+    for group in gallery.GROUPS:
+        present = [e.split("/")[0] for e, _ in group.panels if e.split("/")[0] in SCENES]
+        assert (f"grid_{group.name}" in got["figures"]) == bool(present)
+        letters = [numbers[f"panel_{s}"]["value"] for s in dict.fromkeys(present)]
+        assert letters == sorted(letters) and letters[0:1] in ([], ["a"])
+
+
+def test_the_grid_table_holds_each_panels_data(built):
+    numbers = summary(built / "gallery")["numbers"]
+    for scene in SCENES:
+        grid = pd.read_csv(built / "gallery" / f"grid_{numbers[f'grid_{scene}']['value']}.csv")
+        mine = grid[grid.scene == scene]
+        own = pd.read_csv(built / scene / "portrait.csv")
+        y = "p1" if "p1" in own else "q1"
+        rows = mine[mine.element.isin(own.element.unique())].dropna(subset=[y])
+        assert len(rows) == len(own)
+        pd.testing.assert_frame_equal(rows[own.columns].reset_index(drop=True), own, check_dtype=False)
+        assert set(mine.m1) == {summary(built / scene)["numbers"]["m1"]["value"]}
+        for kind in ("saddle", "center", "degenerate"):                 # the singular points, typed
+            assert (own.element == kind).sum() == summary(built / scene)["numbers"][f"n_{kind}s"]["value"]
+    body = pd.read_csv(built / "gallery" / "grid_smallest.csv")
+    assert set(body[body.panel == "b"].element) == {"ellipse", "euler"}
+
+
+def test_grids_fit_the_page_and_their_text_is_legible(built):
+    for path in sorted((built / "gallery").glob("grid_*.svg")):
+        svg = path.read_text()
+        width, height = (float(v) for v in re.search(r'width="([\d.]+)pt" height="([\d.]+)pt"', svg).groups())
+        assert width <= TEXT_WIDTH_IN * 72 and height <= MAX_HEIGHT_IN * 72
+        for group in re.findall(r'<g id="text_\d+">(.*?)</g>\s*</g>', svg, re.S):
+            sizes = [100 * float(s) for s in re.findall(r"scale\(([\d.]+) -[\d.]+\)", group)]
+            assert not sizes or max(sizes) >= MIN_FONT_PT - 0.05
+        assert "Date" not in svg and (built / "gallery" / path.with_suffix(".csv").name).exists()
+
+
+def test_provenance_names_the_input_scenes(built):
+    record = json.loads((built / "gallery" / "provenance.json").read_text())
+    assert record["input_scenes"] == sorted(SCENES) and record["scene"] == "gallery"
+    for key in ("commit", "scene_sha256", "wall_seconds", "cpu_seconds", "finished", "effects_simulated"):
+        assert key in record
