@@ -345,6 +345,11 @@ def verify(archive: Path, root: Path, scenes: str | None = None, quick: bool | N
             raise VerifyError(f"{root}: not a checkout of this project (no workflow/scenes)")
         chosen = select(scenes_of(archived), scenes, archive)
         provenance = {s: read_provenance(archived, *s) for s in chosen}
+        # A step drawn from other scenes' results (the self-excited gallery) is no scene: rebuilding its
+        # input scenes checks what it draws, so it is named, not rerun.
+        derived = [s for s in chosen if "input_scenes" in provenance[s]]
+        chosen = [s for s in chosen if s not in derived]
+        provenance = {s: provenance[s] for s in chosen}
         modes = {}
         for (study, scene), record in provenance.items():
             modes[study, scene] = quick if quick is not None else record.get("quick")
@@ -363,6 +368,9 @@ def verify(archive: Path, root: Path, scenes: str | None = None, quick: bool | N
               f"({' and '.join(kinds)} build) rebuilt with the checkout at {root}", file=out)
         for note in notes:
             print(f"note: {note}", file=out)
+        for study, scene in derived:
+            print(f"note: {study}/{scene} is drawn from other scenes' results; not rebuilt (its input scenes are)",
+                  file=out)
         for study, scene in failed:
             print(f"FAILED {study}/{scene}: {errors[study, scene]}", file=out)
         if changes:
