@@ -179,7 +179,8 @@ def test_two_clean_builds_give_identical_results(built_repo, tmp_path):
 
 def test_dist_archive_with_checksums(scratch):
     snakemake(scratch, "-c", "1", "dist", "--config", "quick=1")
-    archives = list((scratch / "results/dist").glob("classical-dynamics-*.tar.gz"))
+    archives = [a for a in (scratch / "results/dist").glob("classical-dynamics-*.tar.gz")
+                if not a.name.endswith("-results.tar.gz")]
     assert len(archives) == 1
     with tarfile.open(archives[0]) as tar:
         names = tar.getnames()
@@ -192,3 +193,15 @@ def test_dist_archive_with_checksums(scratch):
             assert hashlib.sha256(tar.extractfile(name).read()).hexdigest() == digest
     outer = (scratch / "results/dist/SHA256SUMS").read_text().splitlines()[-1]
     assert outer.split("  ")[0] == hashlib.sha256(archives[0].read_bytes()).hexdigest()
+
+
+def test_the_report_prints_the_sha256_of_the_results_archive(built_repo):
+    """The archive of every result but the report is made first; the report and its BibTeX name its checksum."""
+    archive, = (built_repo / "results/dist").glob("classical-dynamics-*-results.tar.gz")
+    digest = hashlib.sha256(archive.read_bytes()).hexdigest()
+    page = (built_repo / "results/report.html").read_text()
+    assert page.count(digest) >= 2                                # the how-to-cite text and the BibTeX note
+    with tarfile.open(archive) as tar:
+        names = tar.getnames()
+    assert not any(n.endswith(("report.html", "report.pdf")) for n in names)
+    assert any(n.endswith("chains/hanging_particles/summary.json") for n in names)

@@ -19,7 +19,7 @@ from classical_dynamics.report.navigation import add_navigation, number_sections
 from .test_report_typesetting import CHROMIUM, FLAGS
 
 ROOT = Path(__file__).resolve().parents[1]
-PAGE_BUDGET = 60
+PAGE_BUDGET = 60                                  # A4 pages, issue 16
 
 
 # --- numbering and citation, directly ------------------------------------------------------------
@@ -211,3 +211,38 @@ def test_the_pdf_keeps_its_page_budget_outline_and_metadata(built_repo):
     html_page = (built_repo / "results/report.html").read_text()
     headings = [unescape(h) for h in re.findall(r'<h[23](?: id="[^"]+")? data-toc="([^"]+)"', html_page)]
     assert len(headings) > 30 and headings == [o for o in outline if o != "Contents"]
+
+
+def _outline_starts(pdf) -> set[int]:
+    """Pages on which a top-level entry of the PDF outline (a chapter, appendix or front section) starts."""
+    xml = subprocess.run(["pdftohtml", "-xml", "-i", "-stdout", "-q", str(pdf)], capture_output=True, text=True,
+                         check=True).stdout
+    starts, depth = set(), 0
+    for tag, page in re.findall(r'<(/?outline|item)(?: page="(\d+)")?', xml):
+        depth += {"outline": 1, "/outline": -1}.get(tag, 0)
+        if tag == "item" and depth == 1:
+            starts.add(int(page))
+    return starts
+
+
+@pytest.mark.slow
+def test_no_page_is_more_than_40_percent_blank_but_a_sections_last(built_repo, tmp_path):
+    """Ink must reach at least 60 % down the text block, except on the last page of a chapter or section."""
+    import numpy as np
+    from PIL import Image
+    pdf = built_repo / "results/report.pdf"
+    subprocess.run(["pdftoppm", "-r", "30", "-gray", str(pdf), str(tmp_path / "p")], check=True)
+    pages = sorted(tmp_path.glob("p-*.pgm"))
+    starts = _outline_starts(pdf)
+    mostly_blank = []
+    for number, page in enumerate(pages, start=1):
+        if number + 1 in starts or number == len(pages):
+            continue                                        # a chapter's last page may end where it ends
+        ink = np.asarray(Image.open(page)) < 200
+        mm = ink.shape[0] / 297
+        block = ink[int(22 * mm):int((297 - 18) * mm)]     # below the running head, above the folio
+        rows = np.flatnonzero(block.any(axis=1))
+        used = (rows.max() + 1) / len(block) if len(rows) else 0.0
+        if used < 0.6:
+            mostly_blank.append((number, round(1 - used, 2)))
+    assert mostly_blank == []

@@ -89,7 +89,7 @@ def run(scene, model, results, quick):
     results.timing_table("accuracy", frame, f"Work-precision of the spin-resolved Earth over {span_text}: the runs "
                          "of the accuracy table with their wall times (minimum of repeats).",
                          headers={**HEADERS, "seconds": "wall time (s)"})
-    fig, ax = new_figure(6.2, 4.0)
+    fig, ax = new_figure(6.2, 3.3)
     wp.plot(frame, ax, error="error_mas", floor=1e-9, xlabel=r"error of the final $\mathbf{L}$ axis (mas)")
     ax.legend(loc="best")
     results.timing_figure("work_precision", fig, f"Wall time against the error of the final angular-momentum axis "
