@@ -109,7 +109,7 @@ def test_editing_one_scene_reruns_that_scene_and_the_report_only(scratch):
     scene = scratch / "workflow/scenes/chains/loaded_string.yaml"
     scene.write_text(scene.read_text().replace("newton: 1.0", "newton: 2.0"))
     out = snakemake(scratch, "-n", "--config", "quick=1")
-    assert job_counts(out.stdout) == {"scene": 1, "report_html": 1, "report_pdf": 1, "all": 1}
+    assert job_counts(out.stdout) == {"scene": 1, "results_archive": 1, "report_html": 1, "report_pdf": 1, "all": 1}
     assert "results/chains/loaded_string" in out.stdout
     snakemake(scratch, "-c", "2", "--config", "quick=1")
     summary = json.loads((scratch / "results/chains/loaded_string/summary.json").read_text())

@@ -181,7 +181,7 @@ class Report:
             data[f"{study}/{scene}"] = {
                 "commit": prov.get("commit", "unknown"), "dirty": bool(prov.get("dirty")),
                 "input": prov.get("scene_sha256", ""), "file": f"results/{study}/{scene}/summary.json",
-                "scene": f"workflow/scenes/{study}/{scene}.yaml", "command": self.rebuild(study, scene),
+                "scene": self._scene_file(study, scene), "command": self.rebuild(study, scene),
                 "finished": prov.get("finished", "")}
         # </ cannot end the script early: json escapes no slash, so escape it here.
         return Markup(json.dumps(data, sort_keys=True, ensure_ascii=False).replace("</", "<\\/"))
@@ -212,12 +212,17 @@ class Report:
         data = meta.get("data")
         links = (f'<a href="{folder}/{meta["file"]}">SVG</a>'
                  + (f' · <a href="{folder}/{data}">data (CSV)</a>' if data else "")
-                 + f' · scene <a href="../workflow/scenes/{study}/{scene}.yaml"><code>{study}/{scene}</code></a>')
+                 + f' · scene <a href="../{self._scene_file(study, scene)}"><code>{study}/{scene}</code></a>')
         return Markup(
             f'<figure id="{label}" class="figure"><img src="{uri}" alt="{alt}">'
             f'<figcaption><span class="label">Figure {number}.</span> {caption}{note} '
             f'<span class="source">{links}; rebuild: <code>{self.rebuild(study, scene)}</code>.</span>'
             f'</figcaption></figure>')
+
+    def _scene_file(self, study, scene) -> str:
+        """The input a results folder was computed from, relative to the checkout: its scene file, or for a step
+        drawn from other scenes (the gallery) the code that draws it."""
+        return self.index.provenance[(study, scene)].get("scene_file", f"workflow/scenes/{study}/{scene}.yaml")
 
     def table(self, where: str, name: str, label: str, columns=None, timing: bool = False, sig: int = 4,
               rename=None, keep=None, sigs=None):
