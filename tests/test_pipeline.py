@@ -157,8 +157,10 @@ def test_a_bad_scene_stops_the_build_and_touches_nothing(scratch, text, field):
 
 def test_a_failing_must_hold_claim_fails_the_build_naming_it(scratch):
     claims = scratch / "report/claims/chains.yaml"
-    claims.write_text(claims.read_text().replace("check: {absolute: 5.0e-4}\n  must_hold: true",
-                                                 "check: {absolute: 1.0e-9}\n  must_hold: true", 1))
+    text = claims.read_text()
+    block = re.search(r"- id: lamb_gravest_period\n.*?(?=\n- id:)", text, re.S).group(0)
+    assert "check: {absolute: 5.0e-4}" in block
+    claims.write_text(text.replace(block, block.replace("check: {absolute: 5.0e-4}", "check: {absolute: 1.0e-9}")))
     out = snakemake(scratch, "-c", "1", "--config", "quick=1", check=False)
     assert out.returncode != 0
     assert "claim 'lamb_gravest_period'" in out.stdout + out.stderr

@@ -28,7 +28,9 @@ def test_html_in_a_real_browser(built_repo, tmp_path):
         page.goto(html.as_uri(), wait_until="load")
         images = page.evaluate("Array.from(document.images).map(i => [i.complete, i.naturalWidth, i.alt])")
         figures = page.evaluate("document.querySelectorAll('figure.figure img').length")
-        numbers = page.evaluate("Array.from(document.querySelectorAll('a.num')).map(a => a.title)")
+        numbers = page.evaluate("""Array.from(document.querySelectorAll('a.num')).map(a => {
+            const p = JSON.parse(document.getElementById('provenance-data').textContent)[a.dataset.scene];
+            return p ? [p.commit, p.input, a.dataset.key, a.dataset.value] : null; })""")
         page.screenshot(path=str(tmp_path / "top.png"))
         page.locator("#chains-results").scroll_into_view_if_needed()
         page.screenshot(path=str(tmp_path / "results.png"))
@@ -36,7 +38,8 @@ def test_html_in_a_real_browser(built_repo, tmp_path):
     assert errors == [] and failed == []
     assert [u for u in requests if not u.startswith(("file:", "data:"))] == []     # works offline
     assert figures >= 10 and all(complete and width > 0 for complete, width, _ in images)
-    assert len(numbers) > 50 and all("commit" in t and "sha256" in t for t in numbers)
+    # every number knows its scene's commit and input hash, its key and its full value
+    assert len(numbers) > 50 and all(n and n[0] and len(n[1]) == 64 and n[2] and n[3] for n in numbers)
     for shot in ("top.png", "results.png"):
         pixels = np.asarray(Image.open(tmp_path / shot).convert("L"), dtype=float)
         assert pixels.std() > 10                                                   # not blank

@@ -142,6 +142,9 @@ def test_identifiers_and_commands_break_only_at_separators(built_repo, pdf_text)
     """Every piece of a <code> between /, _, - and spaces appears unbroken in the PDF's text
     ("snakemake", never "sn" and "akemake" on two lines)."""
     page = (built_repo / "results/report.html").read_text(encoding="utf-8")
+    # what print.css leaves out: the numbers cited per scene and the rows of long tables (HTML only)
+    page = re.sub(r'<tr class="cited">.*?</tr>', "", page, flags=re.S)
+    page = re.sub(r'(<figure class="table long"[^>]*>.*?</figcaption>).*?</figure>', r"\1", page, flags=re.S)
     pieces = set()
     for code in re.findall(r"<code>(.*?)</code>", page, re.S):
         text = html_lib.unescape(re.sub(r"<[^>]+>", "", code))

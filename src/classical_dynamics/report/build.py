@@ -342,6 +342,9 @@ class Report:
         git = git_state()
         path = results_archive_name(self.index.dir, self.root)
         archive = {"name": path.name, "sha256": sha256_of(path)} if path.is_file() else None
+        # The report's date: its commit's, so a rebuild does not change it; outside git, its newest result's.
+        date = commit_date(self.root) or max((p.get("finished", "") for p in self.index.provenance.values()),
+                                             default="")
         css = {name: (self.root / "report" / f"{name}.css").read_text(encoding="utf-8")
                for name in ("report", "screen", "print")}
         return {
@@ -349,8 +352,8 @@ class Report:
             "script": (self.root / "report" / "report.js").read_text(encoding="utf-8"),
             "git": git, "packages": package_versions(), "machine": machine(),
             "results_archive": archive,
-            "cite_this": citation(self.root, git["commit"], bool(git["dirty"]), archive and archive["sha256"]),
-            "commit_date": commit_date(self.root),
+            "cite_this": citation(self.root, git["commit"], bool(git["dirty"]), archive and archive["sha256"], date),
+            "commit_date": date,
             "results_packages": first.get("packages", {}), "results_commit": first.get("commit", "unknown"),
             "build_times": dict(build_times), "provenance": self.index.provenance,
             "bibliography": lambda: [(i + 1, k, Markup(format_entry(self.citations.entries[k])))

@@ -23,8 +23,9 @@ def _git(root: Path, *args: str) -> str:
 
 
 def commit_date(root: Path) -> str:
-    """ISO 8601 date of the commit the report is built from: a date that does not change on rebuild."""
-    return _git(root, "show", "-s", "--format=%cI", "HEAD") or "1970-01-01T00:00:00+00:00"
+    """ISO 8601 date of the commit the report is built from, a date that does not change on rebuild;
+    "" outside a git checkout."""
+    return _git(root, "show", "-s", "--format=%cI", "HEAD")
 
 
 def version(root: Path, commit: str, dirty: bool) -> str:
@@ -46,13 +47,13 @@ def _author_text(author: dict) -> str:
     return author.get("name") or f'{author.get("family-names", "")}, {author.get("given-names", "")}'.strip(", ")
 
 
-def citation(root: Path, commit: str, dirty: bool, archive_sha256: str | None = None) -> dict:
-    """The citation of this build: plain text, BibTeX and the CFF file it comes from."""
+def citation(root: Path, commit: str, dirty: bool, archive_sha256: str | None = None, date: str = "") -> dict:
+    """The citation of this build (dated `date`, ISO 8601): plain text, BibTeX and the CFF file it comes from."""
     root = Path(root)
     cff_text = (root / "CITATION.cff").read_text(encoding="utf-8")
     cff = yaml.safe_load(cff_text)
     exact = version(root, commit, dirty)
-    year = commit_date(root)[:4]
+    year = (date or commit_date(root) or str(cff.get("date-released", "")))[:4]
     note = f"commit {commit}"
     if archive_sha256:
         note += f", results archive SHA-256 {archive_sha256}"
