@@ -186,3 +186,22 @@ def test_pliability_solver_against_30_digit_laguerre_zero():
 def test_pliability_refuses_what_it_cannot_do():
     with pytest.raises(ValueError):
         chain_eigen.lowest_eigenvalues(np.ones(4), None, np.ones(3), "fixed-fixed", 2, "pliability")
+
+
+def test_sympy_derives_the_small_chains_and_proves_the_printed_formulas():
+    """The characteristic polynomial's roots in closed form; a printed formula must equal them for every value of
+    its symbols, so a wrong one (2k/m for 3k/m) is caught, and so is a right value at one point only."""
+    import sympy as sp
+
+    from classical_dynamics.studies.chains import symbolic as sy
+    _, roots, values = sy.derive([1.0, 2.0], 1.0, "fixed-fixed")
+    assert sy.formula_is_exact(sy.SOURCE_FORMULAS["unequal_masses"], roots)
+    assert np.allclose(sy.evaluate(roots, values), [(3 - 3 ** 0.5) / 2, (3 + 3 ** 0.5) / 2], rtol=1e-15)
+    _, roots, _ = sy.derive([1.0, 1.0], 1.0, "fixed-fixed")
+    assert sy.formula_is_exact(sy.SOURCE_FORMULAS["equal_springs"], roots)
+    assert not sy.formula_is_exact([sy.k / sy.m1, 2 * sy.k / sy.m1], roots)
+    # right at m1 = m2 but not for every m1, m2: the equal-springs values against the unequal-mass roots
+    _, roots, _ = sy.derive([1.0, 2.0], 1.0, "fixed-fixed")
+    assert not sy.formula_is_exact([sy.k / sy.m1, 3 * sy.k / sy.m1], roots)
+    _, roots, values = sy.derive([15.995, 12.0, 15.995], 1.0, "free-free")
+    assert sy.formula_is_exact(sy.SOURCE_FORMULAS["triatomic"], roots) and roots[0] == sp.Integer(0)

@@ -164,6 +164,7 @@ def test_a_failing_must_hold_claim_fails_the_build_naming_it(scratch):
     out = snakemake(scratch, "-c", "1", "--config", "quick=1", check=False)
     assert out.returncode != 0
     assert "claim 'lamb_gravest_period'" in out.stdout + out.stderr
+    assert "Traceback" not in out.stdout + out.stderr                 # the claim is named, no traceback
     assert not (scratch / "results/report.html").exists()
 
 

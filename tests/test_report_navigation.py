@@ -251,3 +251,32 @@ def test_no_page_is_more_than_40_percent_blank_but_a_sections_last(built_repo, t
         if used < 0.6:
             mostly_blank.append((number, round(1 - used, 2)))
     assert mostly_blank == []
+
+
+# --- the source ledger ---------------------------------------------------------------------------
+
+def _ledger(tmp_path, entry):
+    folder = tmp_path / "ledger"
+    folder.mkdir(exist_ok=True)
+    (folder / "notes.yaml").write_text(yaml.safe_dump({"source": {"key": "lecture_notes", "title": "Notes"},
+                                                       "statements": [entry]}))
+    return folder
+
+
+@pytest.mark.parametrize("entry,message", [
+    ({"id": "a", "where": "p. 1", "states": "ω² = k/m"}, "maps to nothing"),
+    ({"id": "a", "claim": "chains/no_such_claim"}, "no_such_claim"),
+    ({"id": "a", "claim": "chains/lamb_node", "out_of_scope": "historical"}, "exactly one"),
+])
+def test_a_ledger_statement_must_map_to_one_thing_that_exists(tmp_path, entry, message):
+    from classical_dynamics.report.ledger import LedgerError, read_ledger
+    with pytest.raises(LedgerError, match=message):
+        read_ledger(_ledger(tmp_path, entry), ROOT / "report" / "claims")
+
+
+def test_the_ledgers_map_every_statement(tmp_path):
+    from classical_dynamics.report.ledger import read_ledger
+    sources = read_ledger(ROOT / "report" / "ledger", ROOT / "report" / "claims")
+    for source in sources:
+        assert source.statements, source.key
+        assert all(s.kind != "out_of_scope" or len(s.target) > 20 for s in source.statements)   # a real reason

@@ -62,8 +62,14 @@ def cmd_run(args) -> int:
 
 def cmd_report(args) -> int:
     from .report.build import build_report
-    build_report(Path(args.results), Path(args.html), Path(args.pdf) if args.pdf else None,
-                 quick=args.quick, root=Path(args.root))
+    from .report.claims import ClaimFailure
+    from .report.ledger import LedgerError
+    try:
+        build_report(Path(args.results), Path(args.html), Path(args.pdf) if args.pdf else None,
+                     quick=args.quick, root=Path(args.root))
+    except (ClaimFailure, LedgerError) as error:      # what the report's data say is wrong: no traceback
+        print(f"report: {error}", file=sys.stderr)
+        return 1
     return 0
 
 

@@ -29,6 +29,7 @@ from .bib import Citations, format_entry, read_bib
 from .citation import citation, commit_date
 from .dist import results_archive_name, sha256_of
 from .inline_math import plain_text, render_markup, render_text
+from .ledger import read_ledger, require_figures
 from .math import latex_data_uri
 from .navigation import add_navigation
 from .numbering import NAMES, Numbering
@@ -122,6 +123,7 @@ class Report:
         self.numbering = Numbering()
         self.citations = Citations(read_bib(self.root / "report" / "references.bib"))
         self.claim_results = {}
+        self.ledger = read_ledger(self.root / "report" / "ledger", self.root / "report" / "claims")
         self._count, self.cited = 0, {}          # numbers shown so far; per scene, where each is first cited
         self.env = jinja2.Environment(
             loader=jinja2.FileSystemLoader(str(self.root / "report")),
@@ -133,7 +135,7 @@ class Report:
             num=self.num, value=self.value, shortest=shortest, claim_digits=self.claim_digits, unit=unit_html, label_number=self.numbering.label, fig=self.fig, table=self.table, eq=self.eq, ref=self.ref, cite=self.cite,
             claims=self.claims, stability=self.stability, scenes=self.scenes_table,
             summary=self.index.summary, rebuild=self.rebuild, study_scenes=self.index.scenes,
-            all_claims=self.all_claims, claim=self.claim, provenance_json=self.provenance_json,
+            all_claims=self.all_claims, claim=self.claim, provenance_json=self.provenance_json, ledger=self.ledger,
             cited=lambda study, scene: self.cited.get((study, scene), {}))
 
     # --- numbers ---------------------------------------------------------------------------
@@ -371,6 +373,8 @@ class Report:
         if self.numbering.missing:
             raise ValueError("unresolved cross-references: " + ", ".join(sorted(self.numbering.missing)))
         claims_mod.require([r for rs in self.claim_results.values() for r in rs])
+        if set(self.index.studies()) == set(STUDY_ORDER):        # a partial build lacks some figures
+            require_figures(self.ledger, set(self.numbering.numbers))
         return break_points(add_navigation(text))
 
 

@@ -40,7 +40,7 @@ FUNCTIONS = {"sin", "cos", "tan", "cot", "sec", "csc", "sinh", "cosh", "tanh", "
              "sn", "cn", "dn", "am", "erf", "tr"}
 ACCENTS = {"dot": "\u0307", "ddot": "\u0308", "hat": "\u0302", "bar": "\u0304", "tilde": "\u0303",
            "vec": "\u20d7", "breve": "\u0306"}
-UPRIGHT = {"mathrm", "text", "textrm", "operatorname", "mathup", "rm"}
+UPRIGHT = {"mathrm", "text", "textrm", "operatorname", "mathup", "rm", "mathsf"}
 BOLD = {"mathbf", "boldsymbol", "bm"}
 FRACTIONS = {("1", "2"): "½", ("1", "3"): "⅓", ("2", "3"): "⅔", ("1", "4"): "¼", ("3", "4"): "¾"}
 IGNORED = {"left", "right", "big", "Big", "bigl", "bigr", "Bigl", "Bigr", "displaystyle", "textstyle"}

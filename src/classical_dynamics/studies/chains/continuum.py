@@ -56,6 +56,10 @@ def run(scene, results, quick):
     results.number("gravest_period_s", 4 * np.pi / j[0] * np.sqrt(length / effects["gravity"]["g_m_per_s2"]), "s")
     results.number("lamb_roots_over_pi", j / np.pi, "1", note="$\\sigma\\tau_1/\\pi$, Lamb Art. 90 (23)")
     results.number("frequency_ratio_2_to_1", j[1] / j[0], "1")
+    if "spectral_check" in analysis:      # the first zero of J0 without a Bessel routine: the drum's coefficient too
+        results.number("first_zero_j0_collocation", float(sigma[0]), "1",
+                       note="$j_{0,1}$ from the collocation; a drum's lowest mode is "
+                       "$\\omega_{01} = j_{0,1}\\sqrt{T/\\sigma}/a$")
     results.number("second_mode_node_x_over_l", (j[0] / j[1]) ** 2, "x/l from the free end",
                    note="$J_0(j_{02}\\sqrt{x/l}) = 0$ where $j_{02}\\sqrt{x/l} = j_{01}$")
     table = pd.DataFrame({

@@ -126,6 +126,8 @@ def run(scene, results, quick):
     results.table("frequencies", pd.DataFrame(table),
                   f"Frequencies {symbol} of the {n}-{'link' if model == 'links' else 'particle'} chain in units of "
                   f"{unit_math}" + (f", beside {' and '.join(beside)}." if beside else "."), headers=headers)
+    if "closed_form" in analysis:
+        _closed_form(results, masses, effects["springs"]["k_n_per_m"], ends, analysis["closed_form"], values)
     if shapes is not None and analysis.get("mode_shapes") and "gravity" in effects:
         _mode_shapes(results, shapes, n, k)
     if "convergence" in analysis:
@@ -136,6 +138,28 @@ def run(scene, results, quick):
         _large_n(results, analysis["large_n"]["n"], quick)
     if analysis.get("dispersion"):
         _dispersion(results, built, values, unit, unit_name, unit_label)
+
+
+def _closed_form(results, masses, springs, ends, name, values):
+    """ω² derived with sympy (the characteristic polynomial's roots), against the eigensolver's numbers and
+    against the source's printed formula, which must equal the derived roots for every value of its symbols."""
+    from . import symbolic
+    _, roots, symbols = symbolic.derive(masses, springs, ends)
+    derived = np.sqrt(np.clip(symbolic.evaluate(roots, symbols), 0.0, None))
+    printed = symbolic.SOURCE_FORMULAS[name]
+    from_source = np.sqrt(np.clip(symbolic.evaluate(printed, symbols), 0.0, None))
+    scale = np.max(derived)                       # zero modes compare on the scale of the largest frequency
+    solver_vs_derived = float(np.max(np.abs(values - derived) / np.maximum(derived, scale)))
+    results.number("closed_form_frequencies_rad_per_s", derived, "rad/s", note="roots of the characteristic "
+                   "polynomial derived with sympy, evaluated at 30 digits")
+    results.number("solver_vs_closed_form", solver_vs_derived, "1",
+                   note="largest relative difference, eigensolver against the sympy derivation")
+    results.number("source_formula_exact", int(symbolic.formula_is_exact(printed, roots)), "1",
+                   note="1: the printed formula equals the derived roots for every value of its symbols")
+    results.number("source_formula_vs_solver", float(np.max(np.abs(values - from_source) /
+                                                            np.maximum(from_source, scale))), "1")
+    results.hard_case("closed_form", "The eigensolver's frequencies against the roots of the characteristic "
+                      "polynomial derived with sympy (largest relative difference)", solver_vs_derived, 1e-12)
 
 
 def _zero_modes(results, lam, shapes, rigid, rigid_name):
