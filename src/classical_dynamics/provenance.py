@@ -36,18 +36,22 @@ def package_versions() -> dict[str, str]:
     return versions
 
 
+def git(root: Path | str, *args: str) -> str | None:
+    """The output of one git command in the checkout at root, or None outside git."""
+    try:
+        return subprocess.run(["git", *args], cwd=root, capture_output=True, text=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return None
+
+
 @lru_cache(maxsize=1)
 def git_state() -> dict[str, object]:
     """Commit and dirty flag of the checkout the code runs from ('unknown' outside git)."""
     root = Path(__file__).resolve().parents[2]
-    try:
-        commit = subprocess.run(["git", "rev-parse", "HEAD"], cwd=root, capture_output=True,
-                                text=True, check=True).stdout.strip()
-        dirty = bool(subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"],
-                                    cwd=root, capture_output=True, text=True, check=True).stdout.strip())
-    except (OSError, subprocess.CalledProcessError):
+    commit = git(root, "rev-parse", "HEAD")
+    if commit is None:
         return {"commit": "unknown", "dirty": None}
-    return {"commit": commit, "dirty": dirty}
+    return {"commit": commit, "dirty": bool(git(root, "status", "--porcelain", "--untracked-files=no"))}
 
 
 @lru_cache(maxsize=1)

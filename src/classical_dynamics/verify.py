@@ -29,6 +29,7 @@ from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 
 from . import io
+from .provenance import git, sha256_file
 
 DEFAULT_RELATIVE = 1e-9
 ABSOLUTE_FLOOR = 1e-15
@@ -258,7 +259,7 @@ def unpack_archive(archive: Path, into: Path) -> Path:
     if beside.is_file():
         for line in beside.read_text(errors="replace").splitlines():
             digest, _, name = line.partition("  ")
-            if name == archive.name and digest != _file_sha256(archive):
+            if name == archive.name and digest != sha256_file(archive):
                 raise VerifyError(f"{archive}: checksum mismatch with {beside}")
     results = Path(into, prefix)
     try:
@@ -266,14 +267,6 @@ def unpack_archive(archive: Path, into: Path) -> Path:
     except VerifyError:
         raise VerifyError(f"{archive}: not a classical-dynamics archive (no <study>/<scene>/summary.json)") from None
     return results
-
-
-def _file_sha256(path: Path) -> str:
-    digest = hashlib.sha256()
-    with open(path, "rb") as handle:
-        for block in iter(lambda: handle.read(1 << 20), b""):
-            digest.update(block)
-    return digest.hexdigest()
 
 
 def _read_sums(path: Path, archive: Path, prefix: str) -> dict[str, str]:
@@ -290,18 +283,11 @@ def _read_sums(path: Path, archive: Path, prefix: str) -> dict[str, str]:
 
 # --- rebuilding ----------------------------------------------------------------------------------
 
-def _git(root: Path, *args) -> str | None:
-    try:
-        return subprocess.run(["git", *args], cwd=root, capture_output=True, text=True, check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return None
-
-
 def checkout_commit(root: Path) -> str:
-    commit = _git(root, "rev-parse", "HEAD")
+    commit = git(root, "rev-parse", "HEAD")
     if commit is None:
         return "unknown (not a git checkout)"
-    return commit + (" (dirty)" if _git(root, "status", "--porcelain", "--untracked-files=no") else "")
+    return commit + (" (dirty)" if git(root, "status", "--porcelain", "--untracked-files=no") else "")
 
 
 def run_scene(root: Path, study: str, scene: str, quick: bool, out: Path) -> str | None:
@@ -396,9 +382,9 @@ def _input_notes(root: Path, provenance: dict) -> list[str]:
         notes.append(f"archive built at commit {', '.join(commits)}; checkout at {here}")
     for (study, scene), record in provenance.items():
         path = root / "workflow" / "scenes" / study / f"{scene}.yaml"
-        if path.is_file() and _file_sha256(path) != record.get("scene_sha256"):
+        if path.is_file() and sha256_file(path) != record.get("scene_sha256"):
             notes.append(f"{study}/{scene}: scene file changed since the archive "
-                         f"(sha256 {str(record.get('scene_sha256'))[:12]} -> {_file_sha256(path)[:12]})")
+                         f"(sha256 {str(record.get('scene_sha256'))[:12]} -> {sha256_file(path)[:12]})")
     return notes
 
 

@@ -21,13 +21,13 @@ from markupsafe import Markup
 
 from .. import io
 from ..formatting import format_column, format_number, shortest, sig_for_tolerance
-from ..provenance import git_state, machine, package_versions
+from ..provenance import git_state, machine, package_versions, sha256_file
 from ..studies import STUDIES
 from ..units import UnknownUnit, unit_text
 from . import claims as claims_mod
 from .bib import Citations, format_entry, read_bib
 from .citation import citation, commit_date
-from .dist import results_archive_name, sha256_of
+from .dist import results_archive_name
 from .inline_math import plain_text, render_markup, render_text
 from .ledger import read_ledger, require_figures
 from .math import latex_data_uri
@@ -343,7 +343,7 @@ class Report:
         first = next(iter(self.index.provenance.values()), {})
         git = git_state()
         path = results_archive_name(self.index.dir, self.root)
-        archive = {"name": path.name, "sha256": sha256_of(path)} if path.is_file() else None
+        archive = {"name": path.name, "sha256": sha256_file(path)} if path.is_file() else None
         # The report's date: its commit's, so a rebuild does not change it; outside git, its newest result's.
         date = commit_date(self.root) or max((p.get("finished", "") for p in self.index.provenance.values()),
                                              default="")

@@ -6,26 +6,19 @@ version made precise by the commit, so the two cannot drift apart.
 
 from __future__ import annotations
 
-import subprocess
 import tomllib
 from pathlib import Path
 
 import yaml
 from pybtex.database import BibliographyData, Entry, Person
 
-
-def _git(root: Path, *args: str) -> str:
-    try:
-        return subprocess.run(["git", *args], cwd=root, capture_output=True, text=True,
-                              check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return ""
+from ..provenance import git
 
 
 def commit_date(root: Path) -> str:
     """ISO 8601 date of the commit the report is built from, a date that does not change on rebuild;
     "" outside a git checkout."""
-    return _git(root, "show", "-s", "--format=%cI", "HEAD")
+    return git(root, "show", "-s", "--format=%cI", "HEAD") or ""
 
 
 def version(root: Path, commit: str, dirty: bool) -> str:

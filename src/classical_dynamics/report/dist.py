@@ -28,10 +28,6 @@ def results_archive_name(results_dir: Path, root: Path = Path(".")) -> Path:
     return Path(results_dir) / "dist" / f"{project['name']}-{project['version']}-results.tar.gz"
 
 
-def sha256_of(path: Path) -> str:
-    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
-
-
 def archive_members(results_dir: Path, with_report: bool = True) -> list[Path]:
     results_dir = Path(results_dir)
     members = [results_dir / name for name in INCLUDE] if with_report else []

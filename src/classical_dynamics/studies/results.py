@@ -36,6 +36,7 @@ class Results:
     timing_tables: dict = field(default_factory=dict)
     timing_figures: dict = field(default_factory=dict)
     notes: list = field(default_factory=list)
+    _drawn: dict = field(default_factory=dict, repr=False)     # figure_data per figure: read once, used twice
 
     def number(self, name, value, unit, *, reference=None, tolerance=None, note=None):
         """tolerance: how far a rebuild may move the value before `verify` fails, {"absolute": a},
@@ -85,11 +86,10 @@ class Results:
 
     def _plotted(self, figures, tables):
         """Data files of figures that have no table of their name: what they plot, read from the figure."""
-        extracted = {}
         for name, (fig, _) in figures.items():
-            if name not in tables:
-                extracted[name] = figure_data(fig)
-        return extracted
+            if name not in tables and id(fig) not in self._drawn:
+                self._drawn[id(fig)] = figure_data(fig)
+        return {name: self._drawn[id(fig)] for name, (fig, _) in figures.items() if name not in tables}
 
     def _figure_entries(self, figures, tables):
         """Each figure's SVG, caption and data file (<name>.csv: its table, or the points it plots)."""
