@@ -205,3 +205,70 @@ def test_sympy_derives_the_small_chains_and_proves_the_printed_formulas():
     assert not sy.formula_is_exact([sy.k / sy.m1, 3 * sy.k / sy.m1], roots)
     _, roots, values = sy.derive([15.995, 12.0, 15.995], 1.0, "free-free")
     assert sy.formula_is_exact(sy.SOURCE_FORMULAS["triatomic"], roots) and roots[0] == sp.Integer(0)
+
+
+# --- Lamb's theory of small oscillations (Arts. 90-97) --------------------------------------------------
+
+def test_second_order_friction_shift_reduces_to_the_one_degree_case():
+    """One mode alone: lambda^2 + eps c lambda + sigma^2 = 0 has lambda = -eps c/2 + i sqrt(sigma^2 - eps^2c^2/4),
+    whose expansion is i sigma - eps c/2 - i eps^2 c^2/(8 sigma) (Lamb Art. 96); the order-by-order derivation
+    for n modes must give that when the coupling terms vanish."""
+    import sympy as sp
+    from classical_dynamics.studies.chains.symbolic import damped_frequency_shift
+    sigma, C, l1, l2 = damped_frequency_shift(3, 1)
+    uncoupled = {C[0, 1]: 0, C[1, 2]: 0}
+    c, s = C[1, 1], sigma[1]
+    assert sp.simplify(l1 + c / 2) == 0
+    assert sp.simplify(l2.subs(uncoupled) + sp.I * c**2 / (8 * s)) == 0
+
+
+def test_second_order_friction_shift_against_the_quadratic_eigenproblem():
+    """The derived correction leaves a third-order rest on a random three-mode system (seeded)."""
+    import sympy as sp
+    from classical_dynamics.studies.chains.symbolic import damped_frequency_shift
+    rng = np.random.default_rng(3)
+    sig = np.array([1.0, 1.7, 2.9])
+    C0 = rng.standard_normal((3, 3))
+    C0 = C0 @ C0.T
+    rests = []
+    for eps in (1e-2, 1e-3):
+        A = np.block([[np.zeros((3, 3)), np.eye(3)], [-np.diag(sig**2), -eps * C0]])
+        full = np.linalg.eigvals(A)
+        full = full[full.imag > 0]
+        full = full[np.argsort(full.imag)]
+        symbols, C, l1, l2 = damped_frequency_shift(3, 0)
+        values = {**dict(zip(symbols, sig)), **{C[i, j]: eps * C0[i, j] for i in range(3) for j in range(3)}}
+        predicted = 1j * sig[0] + complex(sp.N(l1.subs(values))) + complex(sp.N(l2.subs(values)))
+        rests.append(abs(full[0] - predicted))
+    assert rests[1] < rests[0] / 500                        # third order: a thousandfold per decade
+
+
+def test_three_particles_on_a_string_lamb_art_90():
+    """sigma^2 = (2 -+ sqrt2) mu and 2 mu, with mu = P/(m a), and the modes of Fig. 57 (independent of sympy:
+    the sine law of the loaded string, 2 sqrt(mu) sin(s pi / 8))."""
+    chain = particle_chain(3, "fixed-fixed", 4.0, 1.0, {"tension": {"newton": 1.0}})
+    lam, shapes = chain_eigen.modes(chain.segment_stiffness, None, chain.masses, "fixed-fixed", 3)
+    np.testing.assert_allclose(lam, [2 - np.sqrt(2), 2.0, 2 + np.sqrt(2)], rtol=1e-14)
+    np.testing.assert_allclose(np.sqrt(lam), 2 * np.sin(np.arange(1, 4) * np.pi / 8), rtol=1e-14)
+    first = shapes[:, 0] / shapes[0, 0]
+    np.testing.assert_allclose(first, [1.0, np.sqrt(2), 1.0], rtol=1e-14)
+
+
+def test_resonant_response_kept_apart_beats_the_direct_solve():
+    """Near resonance forming K - sigma^2 M loses eps/delta; the normal-coordinate sum with the detuning apart
+    does not (Lamb Art. 95), against a 50-digit solve."""
+    from classical_dynamics.studies.chains import small_oscillations
+    chain = particle_chain(3, "fixed-fixed", 4.0, 1.0, {"tension": {"newton": 1.0},
+                                                         "forcing": {"newton": [1.0, 0.0, 0.0]}})
+    sigma1 = small_oscillations._exact_lowest(chain)
+    delta = 1e-10
+    reference = small_oscillations._response_mp(chain, sigma1, delta)
+    K, M = chain.stiffness_matrix(), np.diag(chain.masses)
+    sigma, phi = small_oscillations._modes(chain)
+    s = sigma[0] * (1 - delta)
+    direct = np.linalg.solve(K - s**2 * M, chain.force)
+    gap = sigma**2 - s**2
+    gap[0] = sigma[0] ** 2 * delta * (2 - delta)
+    normal = phi @ (phi.T @ chain.force / gap)
+    assert np.linalg.norm(normal - reference) / np.linalg.norm(reference) < 1e-13
+    assert np.linalg.norm(direct - reference) / np.linalg.norm(reference) > 1e-9

@@ -47,7 +47,7 @@ BAD = [
     ("negative mass", edited(chain__mass_kg=-2.0), "chain.mass_kg", "expected a number > 0"),
     ("zero particles", edited(chain__n=0), "chain.n", "expected a number >= 1"),
     ("unknown effect", edited(effects={"magnetism": {}}), "effects.magnetism",
-     "known effect: gravity, rotation, springs, tension"),
+     "known effect: forcing, friction, gravity, rotation, springs, tension"),
     ("negative gravity", edited(effects={"gravity": {"g_m_per_s2": -9.81}}), "effects.gravity.g_m_per_s2", "> 0"),
     ("missing title", edited(title=KeyError), "title", "required"),
     ("no effects", edited(effects={}), "effects", "at least 1"),
@@ -55,6 +55,14 @@ BAD = [
     ("masses list of wrong length", edited(chain__masses_kg=[1.0, 2.0]), "chain.masses_kg", "n = 10"),
     ("continuum with n", edited(chain__model="continuum"), "chain.n", "no n for a continuum"),
     ("not finite", edited(chain__length_m=float("nan")), "chain.length_m", "a finite number"),
+    ("a response without a force", edited(analysis={"forced": {"sigma_max_over_lowest": 3, "points": 101,
+                                                               "transient_detuning": 1e-6, "transient_periods": 5}}),
+     "analysis.forced", "the effect forcing"),
+    ("only a force, nothing restoring", edited(effects={"forcing": {"newton": 1.0}}), "effects",
+     "a restoring effect"),
+    ("a dashpot list of wrong length", edited(effects={"gravity": {"g_m_per_s2": 9.81},
+                                                       "friction": {"b_kg_per_s": [1.0, 2.0]}}),
+     "effects.friction.b_kg_per_s", "one value per particle, 10"),
 ]
 
 

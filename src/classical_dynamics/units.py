@@ -40,6 +40,7 @@ REGISTRY: dict[str, Unit] = {
     "σ": Unit("$\\sigma$"),
     "time": Unit("time units"), "time units": Unit("time units"), "1/time": Unit("per time unit"), "1/time²": Unit("per time unit squared"),
     "g/l": Unit("$g/l$"), "√(g/l)": Unit("$\\sqrt{g/l}$"), "√(l/g)": Unit("$\\sqrt{l/g}$"), "√(k/m)": Unit("$\\sqrt{k/m}$"),
+    "k/m": Unit("$k/m$"), "μ": Unit("$\\mu$"),
     "x/l from the free end": Unit("of the length from the free end"),
     # counted things
     "particles": Unit("particles", word=True, singular="particle"),

@@ -39,6 +39,8 @@ class Contribution:
     segment_stiffness: np.ndarray | None = None   # N/m per segment
     diagonal: np.ndarray | None = None            # N/m per particle
     tension_n: np.ndarray | None = None           # the tension behind the stiffness, for the report
+    damping: np.ndarray | None = None             # kg/s per particle: a dashpot to the frame (Rayleigh's F)
+    force: np.ndarray | None = None               # N per particle: amplitude of a force varying as cos(sigma t)
 
 
 def _require_fixed_free(name: str, geometry: ChainGeometry):
@@ -76,6 +78,28 @@ def _springs(params, geometry: ChainGeometry) -> Contribution:
     return Contribution(segment_stiffness=k)
 
 
+@EFFECTS.register("friction", "dissipation",
+                  "dashpots from particles to the frame: Rayleigh's dissipation function F = 1/2 sum b y'^2")
+def _friction(params, geometry: ChainGeometry) -> Contribution:
+    return Contribution(damping=_per_particle(params["b_kg_per_s"], geometry, "friction"))
+
+
+@EFFECTS.register("forcing", "excitation", "a simple-harmonic force F cos(sigma t) on chosen particles")
+def _forcing(params, geometry: ChainGeometry) -> Contribution:
+    return Contribution(force=_per_particle(params["newton"], geometry, "forcing"))
+
+
+def _per_particle(values, geometry: ChainGeometry, name: str) -> np.ndarray:
+    values = np.asarray(values, float)
+    if values.ndim and values.size != geometry.n:
+        raise ValueError(f"effect {name}: one value per particle ({geometry.n}), got {values.size}")
+    return np.broadcast_to(values, (geometry.n,)).copy()
+
+
+# Effects that restore (they set the free frequencies); friction and forcing act on a chain that has them.
+RESTORING = ("gravity", "rotation", "tension", "springs")
+
+
 def segments_for(n: int, ends: str) -> int:
     return {"fixed-free": n, "fixed-fixed": n + 1, "free-free": n - 1}[ends]
 
@@ -86,6 +110,8 @@ class ParticleChain:
     segment_stiffness: np.ndarray
     diagonal: np.ndarray | None
     contributions: dict
+    damping: np.ndarray | None = None     # kg/s per particle, from friction
+    force: np.ndarray | None = None       # N per particle, from forcing
 
     @property
     def masses(self) -> np.ndarray:
@@ -122,13 +148,15 @@ def particle_chain(n: int, ends: str, length_m: float, masses_kg, effects: dict)
                              positions_m=spacing * (np.arange(n) + offset))
     components = EFFECTS.assemble(effects, geometry)
     stiffness = np.zeros(segments)
-    diagonal = None
+    diagonal = damping = force = None
     for part in components.values():
         if part.segment_stiffness is not None:
             stiffness = stiffness + part.segment_stiffness
         if part.diagonal is not None:
             diagonal = part.diagonal if diagonal is None else diagonal + part.diagonal
-    return ParticleChain(geometry, stiffness, diagonal, components)
+        damping = part.damping if part.damping is not None else damping
+        force = part.force if part.force is not None else force
+    return ParticleChain(geometry, stiffness, diagonal, components, damping, force)
 
 
 def rigid_links_matrices(n: int):

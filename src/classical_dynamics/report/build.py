@@ -227,7 +227,7 @@ class Report:
         return self.index.provenance[(study, scene)].get("scene_file", f"workflow/scenes/{study}/{scene}.yaml")
 
     def table(self, where: str, name: str, label: str, columns=None, timing: bool = False, sig: int = 4,
-              rename=None, keep=None, sigs=None):
+              rename=None, keep=None, sigs=None, long: bool = False):
         """A results table: headers as the study declared them ("quantity (unit)", with math), numbers
         right-aligned to `sig` figures (per column in `sigs`), columns of whole numbers printed as such.
         keep = {column: [values]} shows the rows whose values are listed (by value, not position, so a
@@ -269,7 +269,7 @@ class Report:
         note = " Measured times: they vary from run to run." if timing else ""
         csv = f'results/{study}/{"timings/" if timing else ""}{scene}/{name}.csv'
         return Markup(
-            f'<figure id="{label}" class="table"><figcaption><span class="label">Table {number}.</span> '
+            f'<figure id="{label}" class="table{" long" if long else ""}"><figcaption><span class="label">Table {number}.</span> '
             f'{render_text(meta["caption"])}{note} <span class="source">Scene <code>{study}/{scene}</code>, '
             f'<code>{csv}</code>.</span></figcaption>'
             f'<div class="scroll"><table><thead><tr>{"".join(head)}</tr></thead><tbody>{"".join(body)}</tbody>'

@@ -18,7 +18,11 @@ __all__ = ["TITLE", "EFFECTS", "check", "run"]     # the interface every study m
 # effect -> the ends it needs and the models it is written for
 _EFFECT_ENDS = {"gravity": {"fixed-free"}, "rotation": {"fixed-free"}}
 _LINKS_EFFECTS = {"gravity"}
-_PARTICLE_ONLY_ANALYSES = {"accuracy_cost", "time_domain", "dispersion", "large_n"}
+_PARTICLE_ONLY_ANALYSES = {"accuracy_cost", "time_domain", "dispersion", "large_n", "separation",
+                           "rayleigh_symmetric", "constraint", "forced", "friction"}
+# an analysis that needs an effect: the response needs a force, the decay a dissipation
+_ANALYSIS_NEEDS = {"forced": "forcing", "friction": "friction"}
+_NOT_RESTORING = {"forcing", "friction"}
 
 
 def check(path: Path, data: dict) -> None:
@@ -60,6 +64,25 @@ def check(path: Path, data: dict) -> None:
         if len(springs["k_n_per_m"]) != want:
             raise SceneError(path, "effects.springs.k_n_per_m",
                              f"{want} spring constants for {n} particles, {ends}", len(springs["k_n_per_m"]))
+    if not set(effects) - _NOT_RESTORING:
+        raise SceneError(path, "effects", "a restoring effect (gravity, rotation, tension or springs) besides "
+                         "forcing and friction", sorted(effects))
+    for name in sorted(_NOT_RESTORING & set(effects)):
+        if model != "particles":
+            raise SceneError(path, f"effects.{name}", "a particle chain (chain.model: particles)", model)
+    for name, effect in _ANALYSIS_NEEDS.items():
+        if name in analysis and effect not in effects:
+            raise SceneError(path, f"analysis.{name}", f"the effect {effect} listed under effects", None,
+                             has_got=False)
+    for name, field in (("friction", "b_kg_per_s"), ("forcing", "newton")):
+        values = effects.get(name, {}).get(field)
+        if isinstance(values, list) and n is not None and len(values) != n:
+            raise SceneError(path, f"effects.{name}.{field}", f"one value per particle, {n}", len(values))
+    if analysis.get("separation") and (n != 2 or masses is not None):
+        raise SceneError(path, "analysis.separation", "two equal particles (Lamb Art. 90 Ex. 1)", n)
+    if analysis.get("rayleigh_symmetric") and (n != 3 or ends != "fixed-fixed"):
+        raise SceneError(path, "analysis.rayleigh_symmetric", "three particles, both ends fixed (Lamb Art. 94 "
+                         "Ex. 1)", n)
     for name in analysis:
         if name in _PARTICLE_ONLY_ANALYSES and model != "particles":
             raise SceneError(path, f"analysis.{name}", "a particle chain (chain.model: particles)", model)

@@ -7,7 +7,7 @@ import pandas as pd
 import scipy.linalg as sla
 
 from ...formatting import format_number
-from ...models.chains import (continuum_frequencies, exact_discrete_frequencies, frequency_unit,
+from ...models.chains import (RESTORING, continuum_frequencies, exact_discrete_frequencies, frequency_unit,
                               particle_chain, rigid_links_matrices)
 from ...provenance import software_stamp
 from ...solvers import chain_eigen
@@ -15,6 +15,7 @@ from ...solvers.special import bessel_j0_zeros, laguerre_lowest_zero_asymptotic,
 from ...solvers.timing import min_time
 from ...figure_style import FULL_WIDTH_IN
 from ..results import new_figure, plt
+from . import small_oscillations, symbolic
 
 
 SOLVER_LIMITS = {"dense": 2048, "tridiagonal": 8192, "tridiagonal_select": 131072, "pliability": 131072}
@@ -90,6 +91,7 @@ def run(scene, results, quick):
         shapes = None
     else:
         built = particle_chain(n, ends, length, masses, effects)
+        effects = {name: p for name, p in effects.items() if name in RESTORING}   # the free frequencies' effects
         lam, shapes = chain_eigen.modes(built.segment_stiffness, built.diagonal, built.masses, ends, k)
         zero_floor = 1e-12 * np.max(np.abs(lam)) if lam.size else 0.0
         clipped = np.where(np.abs(lam) <= zero_floor, 0.0, lam)
@@ -127,7 +129,19 @@ def run(scene, results, quick):
                   f"Frequencies {symbol} of the {n}-{'link' if model == 'links' else 'particle'} chain in units of "
                   f"{unit_math}" + (f", beside {' and '.join(beside)}." if beside else "."), headers=headers)
     if "closed_form" in analysis:
-        _closed_form(results, masses, effects["springs"]["k_n_per_m"], ends, analysis["closed_form"], values)
+        _closed_form(results, masses, built.segment_stiffness, ends, analysis["closed_form"], values)
+        if analysis["closed_form"] in symbolic.SOURCE_SHAPES:
+            small_oscillations.printed_shapes(results, built, masses, analysis["closed_form"])
+    if analysis.get("separation"):
+        small_oscillations.separation(results, built)
+    if analysis.get("rayleigh_symmetric"):
+        small_oscillations.rayleigh_symmetric(results, built, masses)
+    if "constraint" in analysis:
+        small_oscillations.constraint(results, built, analysis["constraint"]["samples"], analysis["constraint"]["seed"])
+    if "forced" in analysis:
+        small_oscillations.forced(results, built, analysis["forced"])
+    if "friction" in analysis:
+        small_oscillations.friction(results, built, analysis["friction"])
     if shapes is not None and analysis.get("mode_shapes") and "gravity" in effects:
         _mode_shapes(results, shapes, n, k)
     if "convergence" in analysis:
@@ -143,7 +157,6 @@ def run(scene, results, quick):
 def _closed_form(results, masses, springs, ends, name, values):
     """ω² derived with sympy (the characteristic polynomial's roots), against the eigensolver's numbers and
     against the source's printed formula, which must equal the derived roots for every value of its symbols."""
-    from . import symbolic
     _, roots, symbols = symbolic.derive(masses, springs, ends)
     derived = np.sqrt(np.clip(symbolic.evaluate(roots, symbols), 0.0, None))
     printed = symbolic.SOURCE_FORMULAS[name]
@@ -152,6 +165,8 @@ def _closed_form(results, masses, springs, ends, name, values):
     solver_vs_derived = float(np.max(np.abs(values - derived) / np.maximum(derived, scale)))
     results.number("closed_form_frequencies_rad_per_s", derived, "rad/s", note="roots of the characteristic "
                    "polynomial derived with sympy, evaluated at 30 digits")
+    results.number("closed_form_squared_over_k_per_m", derived**2 / (symbols[symbolic.k] / symbols[symbolic.m1]),
+                   "k/m", note="$\\omega^2$ in units of the softest spring (or $P/a$) over the first mass")
     results.number("solver_vs_closed_form", solver_vs_derived, "1",
                    note="largest relative difference, eigensolver against the sympy derivation")
     results.number("source_formula_exact", int(symbolic.formula_is_exact(printed, roots)), "1",

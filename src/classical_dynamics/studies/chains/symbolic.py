@@ -27,6 +27,14 @@ SOURCE_FORMULAS = {
     "springs_k_3k_k": [k / m1, 7 * k / m1],
     # lecture notes: the linear triatomic molecule m-M-m, free in space (m1 = m, m2 = M)
     "triatomic": [sp.Integer(0), k / m1, k * (m2 + 2 * m1) / (m1 * m2)],
+    # Lamb Art. 90 Ex. 2: three equal particles on a string under tension P, spacing a: mu = P/(m a) = k/m1
+    "three_on_string": [(2 - sp.sqrt(2)) * k / m1, 2 * k / m1, (2 + sp.sqrt(2)) * k / m1],
+}
+
+# Mode shapes as the sources print them, in the order of SOURCE_FORMULAS (Lamb Art. 90, Fig. 57:
+# "the upper sign makes y1 = y3 = -y2/sqrt2, whilst the lower makes y1 = y3 = y2/sqrt2").
+SOURCE_SHAPES = {
+    "three_on_string": [[1, sp.sqrt(2), 1], [1, 0, -1], [1, -sp.sqrt(2), 1]],
 }
 
 
@@ -52,6 +60,59 @@ def derive(masses_kg, springs_n_per_m, ends: str):
     roots = sorted(sp.roots(sp.Poly(polynomial, lam)).keys(), key=lambda r: float(r.subs({k: 1, **mass_values})))
     values = {k: float(softest), **mass_values}
     return polynomial, roots, values
+
+
+def stiffness_and_mass(masses_kg, springs_n_per_m, ends: str):
+    """K and M of derive(), in the same symbols."""
+    masses, _ = _symbols_for(masses_kg, [m1, m2, m3])
+    springs = np.atleast_1d(springs_n_per_m).astype(float)
+    B = sp.Matrix(difference_matrix(len(masses), ends).astype(int))
+    if springs.size == 1:
+        springs = np.full(B.shape[0], springs[0])
+    ratios = [sp.nsimplify(s / springs.min(), rational=True) for s in springs]
+    return B.T * sp.diag(*[r * k for r in ratios]) * B, sp.diag(*masses)
+
+
+def shapes_are_exact(K, M, roots, shapes) -> bool:
+    """Each printed shape is annulled by K - omega^2 M at its printed omega^2, exactly."""
+    return all(sp.simplify(((K - lam * M) * sp.Matrix(v)).norm()) == 0 for lam, v in zip(roots, shapes))
+
+
+def rayleigh_symmetric_type(K, M):
+    """Lamb Art. 94 Ex. 1: the Rayleigh quotient of the symmetric type y1 = y3 = theta y2, and its stationary
+    thetas (the roots of its derivative), exactly."""
+    theta = sp.Symbol("theta", real=True)
+    y = sp.Matrix([theta, 1, theta])
+    quotient = sp.simplify((y.T * K * y)[0] / (y.T * M * y)[0])
+    stationary = sp.solve(sp.numer(sp.together(sp.diff(quotient, theta))), theta)
+    return theta, quotient, sorted(stationary, key=float)
+
+
+def separation_by_diagonal():
+    """Lamb Art. 90 Ex. 1: for 2V = a x^2 + 2h xy + b y^2 and equal masses m, the frequency polynomial
+    (a - m s)(b - m s) - h^2 takes the value -h^2 <= 0 at s = a/m and at s = b/m, so its two real roots lie
+    outside [min(a, b)/m, max(a, b)/m]: the diagonal values separate them. Returns that value at both points."""
+    a, b, h, m, s2 = sp.symbols("a b h m s2", real=True)
+    f = sp.expand((a - m * s2) * (b - m * s2) - h**2)
+    return sp.simplify(f.subs(s2, a / m)), sp.simplify(f.subs(s2, b / m)), -h**2
+
+
+def damped_frequency_shift(n_modes: int, mode: int):
+    """Lamb Arts. 96-97: small friction in normal coordinates, lambda^2 x + eps lambda C x + Sigma^2 x = 0
+    (C symmetric, Sigma diagonal). Perturbation to second order in eps, solved order by order:
+    lambda = i sigma_k + eps l1 + eps^2 l2. Returns (l1, l2) as functions of sigma_1..n and c_ij."""
+    eps = sp.Symbol("epsilon")
+    sigma = sp.symbols(f"sigma1:{n_modes + 1}", positive=True)
+    C = sp.Matrix(n_modes, n_modes, lambda i, j: sp.Symbol(f"c{min(i, j) + 1}{max(i, j) + 1}"))
+    l1, l2 = sp.symbols("l1 l2")
+    x1 = sp.symbols(f"x1_1:{n_modes + 1}")
+    others = [i for i in range(n_modes) if i != mode]
+    x = sp.Matrix([1 if i == mode else eps * x1[i] for i in range(n_modes)])   # normalized: x_k = 1
+    lam = sp.I * sigma[mode] + eps * l1 + eps**2 * l2
+    residual = ((lam**2 * sp.eye(n_modes) + eps * lam * C + sp.diag(*[s**2 for s in sigma])) * x).applyfunc(sp.expand)
+    first = sp.solve([r.coeff(eps, 1) for r in residual], [l1] + [x1[i] for i in others], dict=True)[0]
+    second = sp.solve([sp.expand(residual[mode].coeff(eps, 2).subs(first))], [l2], dict=True)[0]
+    return sigma, C, sp.simplify(first[l1]), sp.simplify(second[l2])
 
 
 def formula_is_exact(formula, roots) -> bool:

@@ -1,0 +1,287 @@
+"""Lamb's general theory of small oscillations (Higher Mechanics, Arts. 90-97) on the scenes' chains.
+
+Each function checks one statement of the theory on a built ParticleChain and records what it measures:
+the printed mode shapes (Art. 90, Fig. 57), the separation of two roots by the diagonal values (Art. 90
+Ex. 1), the stationary symmetric type (Art. 94 Ex. 1), interlacing under a constraint and orthogonality
+(Arts. 91, 93), the forced response and its resonances (Art. 95), and small friction (Arts. 96-97). The
+numbers come from the eigensolver or an integrator; sympy derives the references (symbolic.py).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import scipy.linalg as sla
+from scipy.integrate import solve_ivp
+
+from ...figure_style import FULL_WIDTH_IN
+from ..results import new_figure
+from . import symbolic
+
+
+def _matrices(built):
+    K = built.stiffness_matrix()
+    return K, np.diag(built.masses)
+
+
+def _modes(built):
+    """All frequencies sigma (rad/s) and M-normalized shapes (columns) of the undamped chain."""
+    K, M = _matrices(built)
+    lam, phi = sla.eigh(K, M)
+    return np.sqrt(np.clip(lam, 0.0, None)), phi
+
+
+def printed_shapes(results, built, masses, name):
+    """The source's mode shapes: exact eigenvectors (sympy) and the eigensolver's shapes against them."""
+    K, M = symbolic.stiffness_and_mass(masses, built.segment_stiffness, built.geometry.ends)
+    exact = symbolic.shapes_are_exact(K, M, symbolic.SOURCE_FORMULAS[name], symbolic.SOURCE_SHAPES[name])
+    results.number("source_shapes_exact", int(exact), "1",
+                   note="1: each printed shape is annulled by $K - \\sigma^2 M$ at its printed $\\sigma^2$ (sympy)")
+    _, phi = _modes(built)
+    printed = np.array([[float(x) for x in v] for v in symbolic.SOURCE_SHAPES[name]]).T
+    cosines = [abs(phi[:, i] @ printed[:, i]) / (np.linalg.norm(phi[:, i]) * np.linalg.norm(printed[:, i]))
+               for i in range(printed.shape[1])]
+    results.number("source_shapes_vs_solver", float(max(1 - c for c in cosines)), "1",
+                   note="largest $1 - |\\cos\\theta|$ between a printed shape and the eigensolver's")
+
+
+def separation(results, built):
+    """Art. 90 Ex. 1: the roots are separated by a/m and b/m (sympy shows f = -h^2 there), and the mode
+    directions obey h (F^2 - G^2) = (a - b) F G; both on this scene's two-particle chain."""
+    at_a, at_b, expected = symbolic.separation_by_diagonal()
+    results.number("separation_proved", int(at_a == expected and at_b == expected), "1",
+                   note="1: sympy finds $-h^2$ at $\\sigma^2 = a/m$ and at $b/m$")
+    K, M = _matrices(built)
+    if not np.allclose(np.diag(M), M[0, 0]):
+        raise ValueError("separation (Lamb Art. 90 Ex. 1) is stated for equal masses")
+    m = M[0, 0]
+    (a, h), b = K[0], K[1, 1]
+    sigma, phi = _modes(built)
+    diagonal = sorted([a / m, b / m])
+    margin = min(diagonal[0] - sigma[0] ** 2, sigma[1] ** 2 - diagonal[1]) / sigma[1] ** 2
+    results.number("separation_margin", float(margin), "1",
+                   note="$\\min(\\min(a, b)/m - \\sigma_1^2,\\ \\sigma_2^2 - \\max(a, b)/m)/\\sigma_2^2$: "
+                        "not negative when the diagonal values separate the roots")
+    residual = max(abs(h * (F**2 - G**2) - (a - b) * F * G) / (abs(h) * (F**2 + G**2)) for F, G in phi.T)
+    results.number("mode_direction_residual", float(residual), "1",
+                   note="largest $|h(F^2 - G^2) - (a - b)FG|$ over $|h|(F^2 + G^2)$, Lamb's (8)")
+
+
+def rayleigh_symmetric(results, built, masses):
+    """Art. 94 Ex. 1: y1 = y3 = theta y2 makes sigma^2 stationary at theta = +-1/sqrt2, where it is exact."""
+    K, M = symbolic.stiffness_and_mass(masses, built.segment_stiffness, built.geometry.ends)
+    theta, quotient, stationary = symbolic.rayleigh_symmetric_type(K, M)
+    printed = [-1 / symbolic.sp.sqrt(2), 1 / symbolic.sp.sqrt(2)]
+    exact = len(stationary) == 2 and all(symbolic.sp.simplify(s - p) == 0 for s, p in zip(stationary, printed))
+    results.number("rayleigh_stationary_theta", [float(s) for s in stationary], "1",
+                   note="roots of $d\\sigma^2/d\\theta$ for the type $(\\theta, 1, \\theta)$ (sympy)")
+    results.number("rayleigh_stationary_exact", int(exact), "1", note="1: the roots are exactly $\\pm1/\\sqrt2$")
+    sigma, _ = _modes(built)
+    values = symbolic.evaluate([quotient.subs(theta, s) for s in stationary],
+                               {symbolic.k: float(built.segment_stiffness.min()), symbolic.m1: float(masses[0])})
+    symmetric = np.sort(sigma[[0, 2]] ** 2)              # the two symmetric modes: (1, ±√2, 1)
+    results.number("rayleigh_stationary_vs_solver", float(np.max(np.abs(np.sort(values) - symmetric) / symmetric)),
+                   "1", note="the quotient at its stationary points against the eigensolver's $\\sigma_1^2$, "
+                             "$\\sigma_3^2$")
+
+
+def constraint(results, built, samples: int, seed: int):
+    """Arts. 91, 93: modes orthogonal in T and V; one constraint puts each new root between two old ones."""
+    K, M = _matrices(built)
+    sigma, phi = _modes(built)
+    lam, n = sigma**2, len(sigma)
+    results.number("orthogonality_mass", float(np.max(np.abs(phi.T @ M @ phi - np.eye(n)))), "1",
+                   note="largest $|\\phi_i^T M \\phi_j - \\delta_{ij}|$")
+    off = phi.T @ K @ phi - np.diag(lam)
+    results.number("orthogonality_stiffness", float(np.max(np.abs(off)) / lam.max()), "1",
+                   note="largest $|\\phi_i^T K \\phi_j|$, $i \\ne j$, over $\\sigma_n^2$")
+    # the constraints: each particle held fixed, then random linear relations c^T y = 0 (seeded)
+    rng = np.random.default_rng(seed)
+    relations = list(np.eye(n)) + list(rng.standard_normal((samples, n)))
+    worst, violations = np.inf, 0
+    for c in relations:
+        basis = sla.null_space(c[None, :])                # y = basis z satisfies the constraint
+        reduced = sla.eigh(basis.T @ K @ basis, basis.T @ M @ basis, eigvals_only=True)
+        margin = np.minimum(reduced - lam[:-1], lam[1:] - reduced) / lam.max()
+        worst = min(worst, float(margin.min()))
+        violations += int(np.sum(margin < -1e-13))
+    results.number("constraints_tried", len(relations), "1")
+    results.number("interlacing_violations", violations, "1",
+                   note="roots outside $[\\sigma_k^2, \\sigma_{k+1}^2]$ after one constraint")
+    results.number("interlacing_margin", worst, "1",
+                   note="smallest distance of a constrained root inside its interval, over $\\sigma_n^2$")
+
+
+def forced(results, built, spec):
+    """Art. 95: the response to F cos(sigma t), directly and in normal coordinates, and near resonance."""
+    K, M = _matrices(built)
+    F = built.force
+    sigma, phi = _modes(built)
+    modal_force = phi.T @ F                             # Theta of each normal coordinate
+
+    def direct(s):
+        return np.linalg.solve(K - s**2 * M, F)
+
+    def normal(s):
+        return phi @ (modal_force / (sigma**2 - s**2))
+
+    grid = np.linspace(0.0, spec["sigma_max_over_lowest"] * sigma[0], spec["points"])
+    away = [s for s in grid if np.min(np.abs(sigma - s)) > 1e-3 * sigma[0]]
+    deviation = max(np.linalg.norm(direct(s) - normal(s)) / np.linalg.norm(normal(s)) for s in away)
+    results.number("forced_direct_vs_normal", float(deviation), "1",
+                   note="largest relative difference, $(K - \\sigma^2 M)^{-1}F$ against Lamb's sum over normal "
+                        "coordinates")
+    static = np.linalg.solve(K, F)
+    results.number("forced_static_limit", float(np.linalg.norm(normal(0.0) - static) / np.linalg.norm(static)),
+                   "1", note="the sum at $\\sigma = 0$ against the statical displacement $K^{-1}F$")
+    # Near the gravest resonance the response grows as 1/(sigma_1^2 - sigma^2), its shape the first mode's.
+    # sigma = sigma_1 (1 - delta) rounds sigma^2 to eps, so forming K - sigma^2 M loses eps/delta of the answer;
+    # in normal coordinates the detuning stays exact: sigma_1^2 - sigma^2 = sigma_1^2 delta (2 - delta).
+    def detuned(delta):
+        s = sigma[0] * (1 - delta)
+        gap = sigma**2 - s**2
+        gap[0] = sigma[0] ** 2 * delta * (2 - delta)
+        return phi @ (modal_force / gap), s
+
+    residue = phi[:, 0] * modal_force[0]
+    exact_sigma1 = _exact_lowest(built)
+    rows = []
+    for d in np.logspace(-2, -10, 9):
+        y, s = detuned(d)
+        reference = _response_mp(built, exact_sigma1, d)
+        rows.append({"detuning": d, "amplitude_over_static": np.linalg.norm(y) / np.linalg.norm(static),
+                     "residue_deviation": np.linalg.norm(sigma[0] ** 2 * d * (2 - d) * y - residue)
+                     / np.linalg.norm(residue),
+                     "normal_error": np.linalg.norm(y - reference) / np.linalg.norm(reference),
+                     "direct_error": np.linalg.norm(direct(s) - reference) / np.linalg.norm(reference)})
+    frame = pd.DataFrame(rows)
+    slope = float(np.polyfit(np.log(frame.detuning), np.log(frame.residue_deviation), 1)[0])
+    results.number("resonance_residue_slope", slope, "1",
+                   note="$(\\sigma_1^2 - \\sigma^2)y$ tends to the first mode's term as the detuning $\\delta$: "
+                        "fitted order of its deviation")
+    closest = frame.iloc[-1]
+    results.number("resonance_direct_error_at_closest", float(closest.direct_error), "1",
+                   note="$(K - \\sigma^2 M)^{-1}F$ in double precision at $\\delta = 10^{-10}$, against 50 digits")
+    results.hard_case("resonance_normal", "Forced response $10^{-10}$ from the gravest resonance in normal "
+                      "coordinates, the detuning kept apart, against a 50-digit solve (mpmath)",
+                      float(frame.normal_error.max()), 1e-12)
+    results.table("resonance", frame, "Forced response near the gravest resonance (Lamb Art. 95): detuning "
+                  "$\\delta = 1 - \\sigma/\\sigma_1$, amplitude over the statical one, how far "
+                  "$(\\sigma_1^2 - \\sigma^2)y$ is from the first mode's term, and the relative error of the "
+                  "response in normal coordinates and by a direct solve, against 50 digits.",
+                  headers={"detuning": "$\\delta$", "amplitude_over_static": "$|y|/|y_0|$",
+                           "residue_deviation": "from mode 1", "normal_error": "normal coordinates",
+                           "direct_error": "direct solve"})
+    _transient(results, built, sigma, phi, modal_force, spec)
+    _response_figure(results, grid, direct, static, sigma)
+
+
+def _exact_lowest(built):
+    """sigma_1 at 50 digits from the closed form the scene's chain has (sympy): the reference's resonance."""
+    _, roots, values = symbolic.derive(built.masses, built.segment_stiffness, built.geometry.ends)
+    return symbolic.sp.sqrt(roots[0].subs(values)).evalf(60)
+
+
+def _response_mp(built, sigma1, delta):
+    """(K - sigma^2 M)^{-1} F at 50 digits, sigma = sigma_1 (1 - delta) with sigma_1 exact."""
+    import mpmath
+    with mpmath.workdps(50):
+        K, M = _matrices(built)
+        s = mpmath.mpf(str(sigma1)) * (1 - mpmath.mpf(delta))
+        A = mpmath.matrix(K.tolist()) - s**2 * mpmath.matrix(M.tolist())
+        y = mpmath.lu_solve(A, mpmath.matrix(built.force.tolist()))
+        return np.array([float(v) for v in y])
+
+
+def _transient(results, built, sigma, phi, modal_force, spec):
+    """Started from rest at detuning delta, y(t) = sum phi_k Theta_k (cos sigma t - cos sigma_k t)/(sigma_k^2 -
+    sigma^2). Written so the difference of cosines cancels; the product of sines keeps every digit."""
+    delta = spec["transient_detuning"]
+    s = sigma[0] * (1 - delta)
+    t = np.linspace(0.0, spec["transient_periods"] * 2 * np.pi / sigma[0], 401)
+
+    def naive(t):
+        q = modal_force[:, None] * (np.cos(s * t) - np.cos(sigma[:, None] * t)) / (sigma[:, None] ** 2 - s**2)
+        return phi @ q
+
+    def stable(t):
+        half_sum, half_diff = (sigma[:, None] + s) / 2, (sigma[:, None] - s) / 2
+        q = modal_force[:, None] * 2 * np.sin(half_sum * t) * np.sin(half_diff * t) / (
+            (sigma[:, None] - s) * (sigma[:, None] + s))
+        return phi @ q
+
+    K, M = _matrices(built)
+    n = len(sigma)
+    Minv_K, Minv_F = np.linalg.solve(M, K), np.linalg.solve(M, built.force)
+
+    def rhs(time, z):
+        return np.concatenate([z[n:], -Minv_K @ z[:n] + Minv_F * np.cos(s * time)])
+
+    run = solve_ivp(rhs, (0.0, t[-1]), np.zeros(2 * n), method="DOP853", t_eval=t, rtol=1e-13, atol=1e-16)
+    scale = np.max(np.abs(stable(t)))
+    results.number("transient_detuning", delta, "1")
+    results.number("transient_integrator_vs_closed_form", float(np.max(np.abs(run.y[:n] - stable(t))) / scale),
+                   "1", note="DOP853 (scipy, rtol $10^{-13}$) against the product-of-sines form")
+    results.number("transient_difference_of_cosines_error", float(np.max(np.abs(naive(t) - stable(t))) / scale),
+                   "1", note="the textbook difference of cosines against the product of sines: the digits "
+                             "cancellation loses")
+    exponent = int(round(np.log10(delta)))
+    results.hard_case("resonance_transient", f"Started from rest at detuning $\\delta = 10^{{{exponent}}}$: the "
+                      "closed form as a product of sines against DOP853",
+                      float(np.max(np.abs(run.y[:n] - stable(t))) / scale), 1e-8)
+
+
+def _response_figure(results, grid, direct, static, sigma):
+    fig, ax = new_figure(FULL_WIDTH_IN, 2.1)
+    fine = np.linspace(grid[0], grid[-1], 3001)
+    amplitude = np.array([np.abs(direct(s)) for s in fine]) / np.linalg.norm(static)
+    for j, style in enumerate(("-", "--", ":")):
+        ax.semilogy(fine / sigma[0], amplitude[:, j], style, lw=1.0, label=f"particle {j + 1}")
+    for s in sigma:
+        ax.axvline(s / sigma[0], color="0.7", lw=0.6, zorder=0)
+    ax.set_xlabel("$\\sigma/\\sigma_1$")
+    ax.set_ylabel("$|y_j|/|y_0|$")
+    ax.set_ylim(1e-2, 1e3)
+    ax.legend(loc="upper right", fontsize="small", ncol=3)
+    results.figure("forced_response", fig, "Amplitude of each particle under a force $F\\cos\\sigma t$ on the "
+                   "first, over the statical displacement $|y_0|$ (Lamb Art. 95); grey lines mark the free "
+                   "frequencies, where it is infinite.")
+
+
+def friction(results, built, spec):
+    """Arts. 96-97: a small dashpot changes each frequency at second order and sets the decay rate at first
+    order, c_kk/2 in normal coordinates; sympy's second-order term leaves a third-order remainder."""
+    K, M = _matrices(built)
+    sigma, phi = _modes(built)
+    n = len(sigma)
+    C0 = phi.T @ np.diag(built.damping) @ phi            # the dissipation in normal coordinates, at scale 1
+    shift = [symbolic.damped_frequency_shift(n, k) for k in range(n)]
+    rows = []
+    for eps in spec["scales"]:
+        B = eps * np.diag(built.damping)
+        A = np.block([[np.zeros((n, n)), np.eye(n)], [-np.linalg.solve(M, K), -np.linalg.solve(M, B)]])
+        lam = np.linalg.eigvals(A)
+        lam = np.sort_complex(lam[lam.imag > 0])
+        lam = lam[np.argsort(lam.imag)]
+        for k, (symbols, C, l1, l2) in enumerate(shift):
+            values = {**dict(zip(symbols, sigma)), **{C[i, j]: eps * C0[i, j] for i in range(n) for j in range(n)}}
+            first = complex(symbolic.sp.N(l1.subs(values)))
+            second = complex(symbolic.sp.N(l2.subs(values)))
+            rows.append({"scale": eps, "mode": k + 1,
+                         "frequency_shift": abs(lam[k].imag - sigma[k]) / sigma[k],
+                         "decay_vs_first_order": abs(-lam[k].real - (-first.real)) / (-first.real),
+                         "second_order_remainder": abs(lam[k] - (1j * sigma[k] + first + second)) / sigma[k]})
+    frame = pd.DataFrame(rows)
+    for column in ("frequency_shift", "decay_vs_first_order", "second_order_remainder"):
+        slopes = [np.polyfit(np.log(g.scale), np.log(g[column]), 1)[0] for _, g in frame.groupby("mode")]
+        results.number(f"{column}_order", float(min(slopes)), "1",
+                       note="smallest fitted order in the friction scale over the modes")
+    results.number("frequency_shift_at_largest", float(frame[frame.scale == max(spec["scales"])]
+                                                       .frequency_shift.max()), "1")
+    results.number("friction_scale_largest", float(max(spec["scales"])), "1")
+    results.table("friction", frame, "Small friction (Lamb Arts. 96 and 97): at each scale of the dashpot, each "
+                  "mode's relative frequency change, its decay rate against the first-order $c_{kk}/2$, and what "
+                  "the second-order term derived with sympy leaves.",
+                  headers={"scale": "scale", "mode": "mode", "frequency_shift": "$|\\Delta\\sigma|/\\sigma$",
+                           "decay_vs_first_order": "decay rate vs $c_{kk}/2$",
+                           "second_order_remainder": "after 2nd order"})
