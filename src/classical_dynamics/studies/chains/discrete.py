@@ -142,6 +142,15 @@ def run(scene, results, quick):
         small_oscillations.forced(results, built, analysis["forced"])
     if "friction" in analysis:
         small_oscillations.friction(results, built, analysis["friction"])
+        small_oscillations.dissipation(results, built, analysis["friction"]["aperiodic_scale"])
+    if analysis.get("parabola_type"):
+        quotient = float(symbolic.string_parabola_quotient())
+        results.number("parabola_sigma2_rho_l2_over_p", quotient, "1",
+                       note="$\\sigma^2\\rho l^2/P$ of the type $x(l - x)$ (Lamb Ex. XIV.12), derived with sympy")
+        results.number("parabola_over_continuum", quotient / np.pi**2, "1",
+                       note="over the continuous string's exact $\\pi^2$: above 1, as Art. 94 requires")
+    if "initial_value" in analysis:
+        small_oscillations.initial_value(results, built, analysis["initial_value"])
     if shapes is not None and analysis.get("mode_shapes") and "gravity" in effects:
         _mode_shapes(results, shapes, n, k)
     if "convergence" in analysis:
@@ -375,7 +384,7 @@ def _accuracy_cost(results, spec, quick):
                          headers={"n": "$n$", "solver": "solver", "seconds": "wall time (s)", "runs": "runs",
                                   "algebraic_relative_error": "error of $\\lambda_1$",
                                   "discretization_relative_error": "error of $\\omega_1$"})
-    fig, ax = new_figure(5.4, 3.4)
+    fig, ax = new_figure(5.4, 2.6)
     for method, part in frame.groupby("solver", sort=False):
         _solver_line(ax, method, part.n, part.seconds)
     ax.set_xlabel("$n$")
@@ -386,7 +395,7 @@ def _accuracy_cost(results, spec, quick):
                           "full tridiagonal solver's next; the tridiagonal solver that computes only the lowest modes "
                           "and the pliability solver grow about linearly and are the only ones run up to the "
                           "largest $n$.")
-    fig, ax = new_figure(5.4, 3.4)
+    fig, ax = new_figure(5.4, 2.6)
     for method, part in frame.groupby("solver", sort=False):
         _solver_line(ax, method, part.n, np.maximum(part.algebraic_relative_error, 1e-17))
     ns = np.array(sorted(frame.n.unique()), float)
@@ -451,7 +460,7 @@ def _cost_to_target(results, targets, quick):
 def _work_precision_figure(results, errors, cost, ns):
     """Error of omega_1 against the time it took, one line per route (and LAPACK's floor)."""
     j1 = bessel_j0_zeros(1)[0] / 2
-    fig, ax = new_figure(5.6, 3.6)
+    fig, ax = new_figure(5.6, 2.9)
     for scheme, err in errors.items():
         n_sorted = sorted(err)
         label, colour, _ = SCHEMES[_scheme(scheme)]

@@ -105,6 +105,20 @@ def constraint(results, built, samples: int, seed: int):
         margin = np.minimum(reduced - lam[:-1], lam[1:] - reduced) / lam.max()
         worst = min(worst, float(margin.min()))
         violations += int(np.sum(margin < -1e-13))
+    # Art. 93: held orthogonal (in T) to the gravest mode, the system's roots are the remaining ones exactly
+    basis = sla.null_space((M @ phi[:, 0])[None, :])
+    rest = sla.eigh(basis.T @ K @ basis, basis.T @ M @ basis, eigvals_only=True)
+    results.number("successive_minima_error", float(np.max(np.abs(rest - lam[1:]) / lam[1:])), "1",
+                   note="constrained by $\\phi_1^TMy = 0$, the roots against $\\sigma_2^2, \\ldots$ (relative)")
+    # Art. 94: the quotient is stationary at a mode: a type off by epsilon errs by epsilon^2
+    direction = rng.standard_normal(n)
+    epsilons = np.array([1e-2, 1e-3, 1e-4])
+    errors = []
+    for eps in epsilons:
+        y = phi[:, 0] + eps * direction
+        errors.append(abs((y @ K @ y) / (y @ M @ y) - lam[0]) / lam[0])
+    results.number("stationary_order", float(np.polyfit(np.log(epsilons), np.log(errors), 1)[0]), "1",
+                   note="fitted order of the quotient's error for the type $\\phi_1 + \\epsilon\\eta$, $\\eta$ random")
     results.number("constraints_tried", len(relations), "1")
     results.number("interlacing_violations", violations, "1",
                    note="roots outside $[\\sigma_k^2, \\sigma_{k+1}^2]$ after one constraint")
@@ -242,7 +256,7 @@ def _response_figure(results, grid, direct, static, sigma):
     ax.set_xlabel("$\\sigma/\\sigma_1$")
     ax.set_ylabel("$|y_j|/|y_0|$")
     ax.set_ylim(1e-2, 1e3)
-    ax.legend(loc="upper right", fontsize="small", ncol=3)
+    ax.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), fontsize="small", ncol=3, frameon=False)
     results.figure("forced_response", fig, "Amplitude of each particle under a force $F\\cos\\sigma t$ on the "
                    "first, over the statical displacement $|y_0|$ (Lamb Art. 95); grey lines mark the free "
                    "frequencies, where it is infinite.")
@@ -285,3 +299,55 @@ def friction(results, built, spec):
                   headers={"scale": "scale", "mode": "mode", "frequency_shift": "$|\\Delta\\sigma|/\\sigma$",
                            "decay_vs_first_order": "decay rate vs $c_{kk}/2$",
                            "second_order_remainder": "after 2nd order"})
+
+
+def initial_value(results, built, spec):
+    """Art. 91: any motion is the sum of the modes, each started by the mass-weighted projections of the initial
+    state; Ex. XIV.1: its energy is the sum of the modes' energies. Against DOP853 from a random start (seeded)."""
+    K, M = _matrices(built)
+    sigma, phi = _modes(built)
+    n = len(sigma)
+    rng = np.random.default_rng(spec["seed"])
+    y0, v0 = rng.standard_normal(n), rng.standard_normal(n)
+    a, b = phi.T @ M @ y0, phi.T @ M @ v0                    # the normal coordinates and their rates at t = 0
+    t = np.linspace(0.0, spec["periods"] * 2 * np.pi / sigma[0], 801)
+    modal = phi @ (a[:, None] * np.cos(sigma[:, None] * t) + (b / sigma)[:, None] * np.sin(sigma[:, None] * t))
+    Minv_K = np.linalg.solve(M, K)
+    run = solve_ivp(lambda _, z: np.concatenate([z[n:], -Minv_K @ z[:n]]), (0.0, t[-1]), np.concatenate([y0, v0]),
+                    method="DOP853", t_eval=t, rtol=1e-13, atol=1e-14)
+    results.number("initial_value_modal_vs_integrator", float(np.max(np.abs(run.y[:n] - modal)) /
+                                                              np.max(np.abs(modal))), "1",
+                   note="the sum of modes against DOP853 (rtol $10^{-13}$), largest difference over the largest "
+                        "displacement")
+    energy = 0.5 * v0 @ M @ v0 + 0.5 * y0 @ K @ y0
+    by_modes = float(np.sum(0.5 * b**2 + 0.5 * sigma**2 * a**2))
+    results.number("energy_sum_of_modes", abs(by_modes - energy) / energy, "1",
+                   note="$T + V$ against the sum of the modes' energies (relative)")
+
+
+def dissipation(results, built, scale):
+    """Art. 96: the energy falls at the rate 2F, F = 1/2 q'^T B q' (Rayleigh's dissipation function), along a
+    DOP853 run; Art. 97: past critical friction a root is real and negative, the motion aperiodic."""
+    K, M = _matrices(built)
+    sigma, _ = _modes(built)
+    n = len(sigma)
+    B = np.diag(built.damping)
+    A = np.block([[np.zeros((n, n)), np.eye(n)], [-np.linalg.solve(M, K), -np.linalg.solve(M, B)]])
+    t = np.linspace(0.0, 10 * 2 * np.pi / sigma[0], 401)
+
+    def rhs(_, z):                     # the state, and the work done against friction, integral of 2F
+        return np.concatenate([A @ z[:-1], [z[n:-1] @ B @ z[n:-1]]])
+
+    z0 = np.concatenate([np.ones(n), np.zeros(n), [0.0]])
+    run = solve_ivp(rhs, (0.0, t[-1]), z0, method="DOP853", t_eval=t, rtol=1e-13, atol=1e-14)
+    q, v, lost = run.y[:n], run.y[n:-1], run.y[-1]
+    energy = 0.5 * np.einsum("it,ij,jt->t", v, M, v) + 0.5 * np.einsum("it,ij,jt->t", q, K, q)
+    results.number("dissipation_balance", float(np.max(np.abs(energy - (energy[0] - lost))) / energy[0]), "1",
+                   note="$T + V$ along DOP853 against its start less $\\int 2F\\,dt$ (relative to the start)")
+    lam = np.linalg.eigvals(np.block([[np.zeros((n, n)), np.eye(n)],
+                                      [-np.linalg.solve(M, K), -scale * np.linalg.solve(M, B)]]))
+    real = lam[np.abs(lam.imag) <= 1e-12 * np.abs(lam).max()].real
+    results.number("aperiodic_scale", scale, "1", note="the dashpot raised past critical")
+    results.number("aperiodic_real_roots", int(real.size), "1")
+    results.number("aperiodic_largest_real_root", float(real.max()) / sigma[0] if real.size else None, "1",
+                   note="over the free $\\sigma_1$; negative: the displacements decay without oscillation")

@@ -115,6 +115,24 @@ def damped_frequency_shift(n_modes: int, mode: int):
     return sigma, C, sp.simplify(first[l1]), sp.simplify(second[l2])
 
 
+def hanging_chain_quotient():
+    """Lamb Art. 94 Ex. 2: sigma^2 l/g of the type y = s + beta s^2/l (s from the top), from the energies
+    T ~ int rho y'^2 ds and V ~ int g rho (l - s) y'^2 ds (tension: the weight below), derived; and as printed."""
+    beta, s, l = sp.symbols("beta s l", positive=True)
+    y = s + beta * s**2 / l
+    quotient = sp.integrate((l - s) * sp.diff(y, s) ** 2, (s, 0, l)) / sp.integrate(y**2, (s, 0, l)) * l
+    printed = (15 + 20 * beta + 10 * beta**2) / (10 + 15 * beta + 6 * beta**2)
+    return beta, sp.simplify(quotient), printed
+
+
+def string_parabola_quotient():
+    """Lamb Ex. XIV.12: the type y = x (l - x) on a string (tension P, density rho) gives sigma^2 = 10 P/(rho l^2),
+    the period 2 pi/sqrt(10) in units of l sqrt(rho/P). Returns sigma^2 rho l^2 / P, derived."""
+    x, l = sp.symbols("x l", positive=True)
+    y = x * (l - x)
+    return sp.simplify(sp.integrate(sp.diff(y, x) ** 2, (x, 0, l)) / sp.integrate(y**2, (x, 0, l)) * l**2)
+
+
 def formula_is_exact(formula, roots) -> bool:
     """The printed ω² are exactly the derived roots, for every value of the symbols."""
     return len(formula) == len(roots) and all(

@@ -79,7 +79,7 @@ def run(scene, results, quick):
     results.hard_case("energy_bounded", f"Energy error over {format_number(periods)} gravest periods does not "
                       "grow: its largest value in the last tenth of the run over its largest in the first tenth",
                       float(np.max(np.abs(drift[-tenth:])) / max(np.max(np.abs(drift[:tenth])), 1e-300)), 2.0)
-    fig, ax = new_figure(5.2, 3.0)
+    fig, ax = new_figure(5.2, 2.5)
     running = np.maximum.accumulate(np.abs(drift))
     keep = t_periods > 0
     ax.loglog(t_periods[keep], running[keep], lw=1.2, color="C4")
@@ -100,7 +100,7 @@ def run(scene, results, quick):
     results.table("amplitude_shift", shift, "Mean frequency $\\omega$ of the free end against the initial amplitude "
                   "(largest link angle) of a mode-1 start, relative to the linear $\\omega_1$.",
                   headers={"amplitude_deg": "amplitude (°)", "omega_over_linear": "$\\omega/\\omega_1$"})
-    fig, ax = new_figure(4.6, 3.0)
+    fig, ax = new_figure(4.6, 2.5)
     ax.plot(shift.amplitude_deg, shift.omega_over_linear, "o-", color="C4")
     ax.set_xlabel("initial amplitude, largest link angle (°)")
     ax.set_ylabel(r"$\omega/\omega_1$")
