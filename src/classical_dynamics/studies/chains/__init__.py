@@ -19,7 +19,7 @@ __all__ = ["TITLE", "EFFECTS", "check", "run"]     # the interface every study m
 _EFFECT_ENDS = {"gravity": {"fixed-free"}, "rotation": {"fixed-free"}}
 _LINKS_EFFECTS = {"gravity"}
 _PARTICLE_ONLY_ANALYSES = {"accuracy_cost", "time_domain", "dispersion", "large_n", "separation",
-                           "rayleigh_symmetric", "constraint", "forced", "friction", "initial_value", "parabola_type"}
+                           "rayleigh_symmetric", "constraint", "forced", "friction", "initial_value", "parabola_type", "ring_waves"}
 # an analysis that needs an effect: the response needs a force, the decay a dissipation
 _ANALYSIS_NEEDS = {"forced": "forcing", "friction": "friction"}
 _NOT_RESTORING = {"forcing", "friction"}
@@ -30,6 +30,9 @@ def check(path: Path, data: dict) -> None:
     chain, effects = data["chain"], data["effects"]
     model, ends = chain["model"], chain.get("ends", "fixed-free")
     analysis = data.get("analysis", {})
+    if model == "ring":
+        _check_ring(path, chain, effects, analysis)
+        return
     if model == "continuum":
         if "n" in chain:
             raise SceneError(path, "chain.n", "no n for a continuum (n is for particles or links)", chain["n"])
@@ -100,6 +103,25 @@ def check(path: Path, data: dict) -> None:
                          beta["beta_max"])
 
 
+def _check_ring(path, chain, effects, analysis):
+    """A closed chain turning in its plane (Lamb Art. 98): beads on stiff springs, spun; nothing else."""
+    if set(effects) != {"rotation", "springs"}:
+        raise SceneError(path, "effects", "rotation and springs for a ring (the springs keep it nearly "
+                         "inextensible)", sorted(effects))
+    if "ends" in chain or "masses_kg" in chain:
+        raise SceneError(path, "chain", "n, length_m and mass_kg only for a ring (closed, equal beads)",
+                         sorted(chain))
+    if "mass_kg" not in chain or chain.get("n", 0) < 16:
+        raise SceneError(path, "chain.n", "at least 16 beads, and mass_kg", chain.get("n"))
+    if isinstance(effects["springs"]["k_n_per_m"], list):
+        raise SceneError(path, "effects.springs.k_n_per_m", "one stiffness for every spring of the ring",
+                         effects["springs"]["k_n_per_m"])
+    if set(analysis) != {"ring_waves"}:
+        raise SceneError(path, "analysis", "ring_waves only for a ring", sorted(analysis))
+    if chain["n"] > 2000:
+        raise SceneError(path, "chain.n", "at most 2000 beads (a dense eigenproblem of 4n unknowns)", chain["n"])
+
+
 def run(scene: Scene, quick: bool = False):
     from ..results import Results          # imported here so that validation stays light
     from . import continuum, discrete, time_domain
@@ -108,6 +130,9 @@ def run(scene: Scene, quick: bool = False):
     model = scene.data["chain"]["model"]
     if model == "continuum":
         continuum.run(scene, results, quick)
+    elif model == "ring":
+        from . import ring
+        ring.run(scene, results, quick)
     else:
         discrete.run(scene, results, quick)
         if "time_domain" in scene.data.get("analysis", {}):

@@ -384,7 +384,7 @@ def _accuracy_cost(results, spec, quick):
                          headers={"n": "$n$", "solver": "solver", "seconds": "wall time (s)", "runs": "runs",
                                   "algebraic_relative_error": "error of $\\lambda_1$",
                                   "discretization_relative_error": "error of $\\omega_1$"})
-    fig, ax = new_figure(5.4, 2.6)
+    fig, ax = new_figure(5.4, 2.25)
     for method, part in frame.groupby("solver", sort=False):
         _solver_line(ax, method, part.n, part.seconds)
     ax.set_xlabel("$n$")
@@ -395,7 +395,7 @@ def _accuracy_cost(results, spec, quick):
                           "full tridiagonal solver's next; the tridiagonal solver that computes only the lowest modes "
                           "and the pliability solver grow about linearly and are the only ones run up to the "
                           "largest $n$.")
-    fig, ax = new_figure(5.4, 2.6)
+    fig, ax = new_figure(5.4, 2.25)
     for method, part in frame.groupby("solver", sort=False):
         _solver_line(ax, method, part.n, np.maximum(part.algebraic_relative_error, 1e-17))
     ns = np.array(sorted(frame.n.unique()), float)

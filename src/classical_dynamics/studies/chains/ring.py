@@ -1,0 +1,127 @@
+"""A closed chain rotating in its own plane (Lamb Art. 98, after his gyrostatic theory): its waves.
+
+The chain is n beads of mass m on a circle of radius a, joined by stiff springs k (inextensible as k grows),
+turning at omega with no external force. In the rotating frame the small motions obey
+M x'' + G x' + (K - omega^2 M) x = 0, G = 2 m omega J the Coriolis terms, K the springs' stiffness about the
+stretched equilibrium (the tension gives the transverse part). The quadratic eigenproblem is solved in state
+form; each mode's wave number s is read from the discrete Fourier transform of its radial displacement, and
+its pattern turns relative to the chain at -Im(lambda)/s. Lamb: relative speeds -omega and
+omega (s^2 - 3)/(s^2 + 1), in space 0 and 2 omega (s^2 - 1)/(s^2 + 1); the steady tension is rho omega^2 a^2.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import sympy as sp
+
+
+def equilibrium(n: int, radius_m: float, mass_kg: float, omega: float, k: float):
+    """Bead positions, the tension that holds them on the circle, and the springs' natural length."""
+    theta = 2 * np.pi * np.arange(n) / n
+    positions = radius_m * np.column_stack([np.cos(theta), np.sin(theta)])
+    m = mass_kg / n
+    chord = 2 * radius_m * np.sin(np.pi / n)
+    tension = m * omega**2 * radius_m / (2 * np.sin(np.pi / n))    # two neighbours pull each bead inward
+    return theta, positions, m, chord, tension, chord - tension / k
+
+
+def matrices(positions, m, omega, k, tension, chord):
+    """M, G and the effective stiffness K - omega^2 M (rotating frame) of the ring, 2n coordinates."""
+    n = len(positions)
+    K = np.zeros((2 * n, 2 * n))
+    for i in range(n):
+        j = (i + 1) % n
+        e = (positions[j] - positions[i]) / chord
+        block = k * np.outer(e, e) + tension / chord * (np.eye(2) - np.outer(e, e))
+        for a, b, sign in ((i, i, 1), (j, j, 1), (i, j, -1), (j, i, -1)):
+            K[2 * a:2 * a + 2, 2 * b:2 * b + 2] += sign * block
+    M = m * np.eye(2 * n)
+    J = np.kron(np.eye(n), np.array([[0.0, -1.0], [1.0, 0.0]]))
+    return M, 2 * m * omega * J, K - omega**2 * M
+
+
+def modes(theta, positions, M, G, K_eff):
+    """Eigenvalues lambda (upper half plane) and each mode's signed wave number s."""
+    n = len(theta)
+    A = np.block([[np.zeros_like(M), np.eye(2 * n)], [-np.linalg.solve(M, K_eff), -np.linalg.solve(M, G)]])
+    lam, vectors = np.linalg.eig(A)
+    radial = positions / np.linalg.norm(positions, axis=1)[:, None]
+    u = np.einsum("jc,jcm->jm", radial, vectors[:2 * n].reshape(n, 2, -1))
+    spectrum = np.fft.fft(u, axis=0)                         # u_j ~ exp(i s theta_j): the peak at s
+    s = np.fft.fftfreq(n, 1.0 / n).astype(int)[np.argmax(np.abs(spectrum), axis=0)]
+    return lam, s
+
+
+def dispersion():
+    """Lamb's (44) for v ~ cos(s theta - sigma t): sigma^2 (s^2 + 1) + 4 omega s sigma - omega^2 s^2 (s^2 - 3) = 0;
+    sympy's roots, and whether they are -s omega and s omega (s^2 - 3)/(s^2 + 1) exactly."""
+    s, w = sp.symbols("s omega", positive=True)
+    sigma = sp.Symbol("sigma", real=True)
+    roots = sp.solve(sigma**2 * (s**2 + 1) + 4 * w * s * sigma - w**2 * s**2 * (s**2 - 3), sigma)
+    printed = [-s * w, s * w * (s**2 - 3) / (s**2 + 1)]
+    exact = len(roots) == 2 and all(any(sp.simplify(r - p) == 0 for r in roots) for p in printed)
+    return roots, exact
+
+
+def run(scene, results, quick):
+    chain, effects = scene.data["chain"], scene.data["effects"]
+    spec = scene.data["analysis"]["ring_waves"]
+    n = min(chain["n"], 120) if quick else chain["n"]
+    radius = chain["length_m"] / (2 * np.pi)
+    omega, k = effects["rotation"]["omega_rad_per_s"], float(effects["springs"]["k_n_per_m"])
+    theta, positions, m, chord, tension, _ = equilibrium(n, radius, chain["mass_kg"], omega, k)
+    rho = chain["mass_kg"] / chain["length_m"]
+    results.number("n", n, "particles")
+    results.number("stiffness_ratio", k / (m * omega**2), "1", note="$k/m\\omega^2$: large, the chain nearly "
+                   "inextensible")
+    results.number("tension_over_rho_omega2_a2", tension / (rho * omega**2 * radius**2), "1",
+                   note="the beads' steady tension against Lamb's $\\rho\\omega^2a^2$")
+    M, G, K_eff = matrices(positions, m, omega, k, tension, chord)
+    lam, s = modes(theta, positions, M, G, K_eff)
+    # Two roots are defective: s = 0 at zero (a change of spin: the ring's angle drifts in the rotating frame)
+    # and s = 1 at omega (a displaced circle: the whole ring drifts, t exp(-i omega t)). Rounding splits each by
+    # about sqrt(eps), into a real pair or a quartet. Every other root must be imaginary.
+    defective = (np.abs(lam) < 1e-3 * omega) | (np.abs(np.abs(lam) - omega) < 1e-3 * omega)
+    regular = ~defective
+    results.number("largest_real_part", float(np.max(np.abs(lam[regular].real)) / np.max(np.abs(lam))), "1",
+                   note="$\\max|\\operatorname{Re}\\lambda|/\\max|\\lambda|$ but the two defective roots: "
+                        "gyroscopic and stable, the roots imaginary")
+    results.number("defective_real_part", float(np.max(np.abs(lam[defective].real)) / omega), "1",
+                   note="the defective roots ($s$ = 0, 1) split by rounding, $|\\operatorname{Re}\\lambda|/\\omega$")
+    rows = []
+    for wave in range(1, spec["s_max"] + 1):
+        candidates = lam[s == wave]
+        flexural = candidates[np.argsort(np.abs(candidates))[:2]]      # the stretching waves are far faster
+        speeds = np.sort(-flexural.imag / wave / omega)
+        expected = (-1.0, (wave**2 - 3) / (wave**2 + 1))
+        rows.append({"s": wave, "relative_1": speeds[0], "relative_2": speeds[1],
+                     "space_1": speeds[0] + 1, "space_2": speeds[1] + 1,
+                     "lamb_space_2": 2 * (wave**2 - 1) / (wave**2 + 1),
+                     "deviation": max(abs(speeds[0] - expected[0]), abs(speeds[1] - expected[1]))})
+    frame = pd.DataFrame(rows)
+    waves = frame[frame.s >= 2]
+    results.number("stationary_wave_speed_max", float(waves.space_1.abs().max()), "1",
+                   note="largest $|$pattern speed in space$|/\\omega$ of the first wave, $s$ = 2 to "
+                        f"{spec['s_max']}: Lamb's 0")
+    results.number("second_wave_deviation_max", float((waves.space_2 - waves.lamb_space_2).abs().max()), "1",
+                   note="largest deviation of the second wave's speed in space from $2\\omega(s^2 - 1)/(s^2 + 1)$, "
+                        "over $\\omega$")
+    one = frame[frame.s == 1].iloc[0]
+    results.number("s1_space_speeds", [float(one.space_1), float(one.space_2)], "1",
+                   note="$s = 1$: both waves at rest in space (the disturbed form is a displaced circle)")
+    _, exact = dispersion()
+    results.number("dispersion_roots_exact", int(exact), "1",
+                   note="1: sympy's roots of (44) are $-s\\omega$ and $s\\omega(s^2 - 3)/(s^2 + 1)$ exactly")
+    results.hard_case("ring_roots_imaginary", "Rotating ring: the gyroscopic eigenproblem's largest real part, "
+                      "relative, but the defective roots (rounding; a growing mode would be an instability)",
+                      float(np.max(np.abs(lam[regular].real)) / np.max(np.abs(lam))), 1e-9)
+    results.hard_case("ring_defective_root", "Rotating ring: the defective double roots, a change of spin ($s$ = "
+                      "0) and a drifting ring ($s$ = 1), split by about $\\sqrt{\\epsilon}$, not by an instability: "
+                      "$|\\operatorname{Re}\\lambda|/\\omega$", float(np.max(np.abs(lam[defective].real)) / omega), 1e-3)
+    results.table("waves", frame[["s", "relative_1", "relative_2", "space_2", "lamb_space_2", "deviation"]],
+                  "Waves on the rotating ring (Lamb Art. 98): pattern speeds over $\\omega$ relative to the chain "
+                  "and, for the second wave, in space beside Lamb's $2(s^2 - 1)/(s^2 + 1)$; the first wave is at "
+                  "rest in space. The deviation is from Lamb's relative speeds.",
+                  headers={"s": "$s$", "relative_1": "wave 1", "relative_2": "wave 2", "space_2": "wave 2 in space",
+                           "lamb_space_2": "Lamb", "deviation": "deviation"})
