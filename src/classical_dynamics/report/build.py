@@ -218,7 +218,8 @@ class Report:
         return Markup(
             f'<figure id="{label}" class="figure"><img src="{uri}" alt="{alt}">'
             f'<figcaption><span class="label">Figure {number}.</span> {caption}{note} '
-            f'<span class="source">{links}; rebuild: <code>{self.rebuild(study, scene)}</code>.</span>'
+            f'<span class="source">{links}<span class="rebuild">; rebuild: <code>{self.rebuild(study, scene)}</code></span>.'
+            f'</span>'
             f'</figcaption></figure>')
 
     def _scene_file(self, study, scene) -> str:

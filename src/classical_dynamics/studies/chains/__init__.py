@@ -33,6 +33,14 @@ def check(path: Path, data: dict) -> None:
     if model == "ring":
         _check_ring(path, chain, effects, analysis)
         return
+    if model == "triangle":
+        if set(effects) != {"springs"} or isinstance(effects["springs"]["k_n_per_m"], list):
+            raise SceneError(path, "effects", "springs with one stiffness for a triangle of three atoms",
+                             sorted(effects))
+        if set(chain) - {"model", "length_m", "mass_kg"} or "mass_kg" not in chain or analysis:
+            raise SceneError(path, "chain", "model, length_m (the perimeter) and mass_kg only, no analysis, for "
+                             "a triangle", sorted(chain))
+        return
     if model == "continuum":
         if "n" in chain:
             raise SceneError(path, "chain.n", "no n for a continuum (n is for particles or links)", chain["n"])
@@ -130,9 +138,9 @@ def run(scene: Scene, quick: bool = False):
     model = scene.data["chain"]["model"]
     if model == "continuum":
         continuum.run(scene, results, quick)
-    elif model == "ring":
-        from . import ring
-        ring.run(scene, results, quick)
+    elif model in ("ring", "triangle"):
+        from . import planar
+        (planar.run_ring if model == "ring" else planar.run_triangle)(scene, results, quick)
     else:
         discrete.run(scene, results, quick)
         if "time_domain" in scene.data.get("analysis", {}):

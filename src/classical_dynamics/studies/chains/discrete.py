@@ -132,6 +132,8 @@ def run(scene, results, quick):
         _closed_form(results, masses, built.segment_stiffness, ends, analysis["closed_form"], values)
         if analysis["closed_form"] in symbolic.SOURCE_SHAPES:
             small_oscillations.printed_shapes(results, built, masses, analysis["closed_form"])
+    if "closed_form" in analysis or "constraint" in analysis:
+        small_oscillations.orthogonality(results, built)
     if analysis.get("separation"):
         small_oscillations.separation(results, built)
     if analysis.get("rayleigh_symmetric"):

@@ -38,11 +38,19 @@ def printed_shapes(results, built, masses, name):
     results.number("source_shapes_exact", int(exact), "1",
                    note="1: each printed shape is annulled by $K - \\sigma^2 M$ at its printed $\\sigma^2$ (sympy)")
     _, phi = _modes(built)
-    printed = np.array([[float(x) for x in v] for v in symbolic.SOURCE_SHAPES[name]]).T
+    _, _, values = symbolic.derive(masses, built.segment_stiffness, built.geometry.ends)
+    printed = np.array([symbolic.evaluate([symbolic.sp.sympify(x) for x in v], values)
+                        for v in symbolic.SOURCE_SHAPES[name]]).T
     cosines = [abs(phi[:, i] @ printed[:, i]) / (np.linalg.norm(phi[:, i]) * np.linalg.norm(printed[:, i]))
                for i in range(printed.shape[1])]
     results.number("source_shapes_vs_solver", float(max(1 - c for c in cosines)), "1",
                    note="largest $1 - |\\cos\\theta|$ between a printed shape and the eigensolver's")
+    if built.geometry.ends == "free-free":        # a free molecule: its vibrations carry no momentum
+        sigma, _ = _modes(built)
+        moving = phi[:, sigma > 1e-6 * sigma.max()]
+        momentum = np.abs(built.masses @ moving) / (built.masses.sum() * np.max(np.abs(moving), axis=0))
+        results.number("vibration_momentum", float(momentum.max()), "1",
+                       note="largest $|\\sum m_iX_i|$ of a vibration over $\\sum m_i\\max|X_i|$")
 
 
 def separation(results, built):
@@ -85,8 +93,8 @@ def rayleigh_symmetric(results, built, masses):
                              "$\\sigma_3^2$")
 
 
-def constraint(results, built, samples: int, seed: int):
-    """Arts. 91, 93: modes orthogonal in T and V; one constraint puts each new root between two old ones."""
+def orthogonality(results, built):
+    """Art. 91: the modes are conjugate, orthogonal in T (the mass) and in V (the stiffness)."""
     K, M = _matrices(built)
     sigma, phi = _modes(built)
     lam, n = sigma**2, len(sigma)
@@ -95,6 +103,13 @@ def constraint(results, built, samples: int, seed: int):
     off = phi.T @ K @ phi - np.diag(lam)
     results.number("orthogonality_stiffness", float(np.max(np.abs(off)) / lam.max()), "1",
                    note="largest $|\\phi_i^T K \\phi_j|$, $i \\ne j$, over $\\sigma_n^2$")
+
+
+def constraint(results, built, samples: int, seed: int):
+    """Arts. 91, 93: modes orthogonal in T and V; one constraint puts each new root between two old ones."""
+    K, M = _matrices(built)
+    sigma, phi = _modes(built)
+    lam, n = sigma**2, len(sigma)
     # the constraints: each particle held fixed, then random linear relations c^T y = 0 (seeded)
     rng = np.random.default_rng(seed)
     relations = list(np.eye(n)) + list(rng.standard_normal((samples, n)))

@@ -33,8 +33,15 @@ SOURCE_FORMULAS = {
 
 # Mode shapes as the sources print them, in the order of SOURCE_FORMULAS (Lamb Art. 90, Fig. 57:
 # "the upper sign makes y1 = y3 = -y2/sqrt2, whilst the lower makes y1 = y3 = y2/sqrt2").
+_ROOT = sp.sqrt(m1**2 - m1 * m2 + m2**2)
 SOURCE_SHAPES = {
     "three_on_string": [[1, sp.sqrt(2), 1], [1, 0, -1], [1, -sp.sqrt(2), 1]],
+    # lecture notes: the normal coordinates x1 + x2 and x1 - x2
+    "equal_springs": [[1, 1], [1, -1]],
+    # lecture notes: X2/X1 = [m2 - m1 -+ root]/m2, the upper sign with the upper root
+    "unequal_masses": [[m2, m2 - m1 + _ROOT], [m2, m2 - m1 - _ROOT]],
+    # lecture notes: the translation, (1, 0, -1) and (1, -2m/M, 1) (m1 = m, m2 = M)
+    "triatomic": [[1, 1, 1], [1, 0, -1], [1, -2 * m1 / m2, 1]],
 }
 
 

@@ -1,5 +1,10 @@
-"""A closed chain rotating in its own plane (Lamb Art. 98, after his gyrostatic theory): its waves.
+"""Planar spring networks: a closed chain rotating in its own plane (Lamb Art. 98) and the triangle of three
+equal atoms, the classical ozone molecule (lecture notes).
 
+Both assemble the same stiffness: a spring between beads i and j, along the unit vector e, of length l under
+tension T, adds k e e^T + (T/l)(1 - e e^T) (the stretched spring resists sideways motion by its tension).
+
+The ring: 
 The chain is n beads of mass m on a circle of radius a, joined by stiff springs k (inextensible as k grows),
 turning at omega with no external force. In the rotating frame the small motions obey
 M x'' + G x' + (K - omega^2 M) x = 0, G = 2 m omega J the Coriolis terms, K the springs' stiffness about the
@@ -14,6 +19,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import sympy as sp
+from scipy.linalg import null_space as sla_null_space, subspace_angles as sla_subspace_angles
 
 
 def equilibrium(n: int, radius_m: float, mass_kg: float, omega: float, k: float):
@@ -26,16 +32,24 @@ def equilibrium(n: int, radius_m: float, mass_kg: float, omega: float, k: float)
     return theta, positions, m, chord, tension, chord - tension / k
 
 
-def matrices(positions, m, omega, k, tension, chord):
-    """M, G and the effective stiffness K - omega^2 M (rotating frame) of the ring, 2n coordinates."""
+def spring_stiffness(positions, edges, k: float, tension: float = 0.0):
+    """Stiffness matrix (2n x 2n) of springs k along `edges` about the given positions, pretensioned by T."""
     n = len(positions)
     K = np.zeros((2 * n, 2 * n))
-    for i in range(n):
-        j = (i + 1) % n
-        e = (positions[j] - positions[i]) / chord
-        block = k * np.outer(e, e) + tension / chord * (np.eye(2) - np.outer(e, e))
+    for i, j in edges:
+        d = positions[j] - positions[i]
+        length = np.linalg.norm(d)
+        e = d / length
+        block = k * np.outer(e, e) + tension / length * (np.eye(2) - np.outer(e, e))
         for a, b, sign in ((i, i, 1), (j, j, 1), (i, j, -1), (j, i, -1)):
             K[2 * a:2 * a + 2, 2 * b:2 * b + 2] += sign * block
+    return K
+
+
+def matrices(positions, m, omega, k, tension):
+    """M, G and the effective stiffness K - omega^2 M (rotating frame) of the ring, 2n coordinates."""
+    n = len(positions)
+    K = spring_stiffness(positions, [(i, (i + 1) % n) for i in range(n)], k, tension)
     M = m * np.eye(2 * n)
     J = np.kron(np.eye(n), np.array([[0.0, -1.0], [1.0, 0.0]]))
     return M, 2 * m * omega * J, K - omega**2 * M
@@ -64,10 +78,10 @@ def dispersion():
     return roots, exact
 
 
-def run(scene, results, quick):
+def run_ring(scene, results, quick):
     chain, effects = scene.data["chain"], scene.data["effects"]
     spec = scene.data["analysis"]["ring_waves"]
-    n = min(chain["n"], 120) if quick else chain["n"]
+    n = chain["n"]                                   # 400 beads: a few seconds, quick or not
     radius = chain["length_m"] / (2 * np.pi)
     omega, k = effects["rotation"]["omega_rad_per_s"], float(effects["springs"]["k_n_per_m"])
     theta, positions, m, chord, tension, _ = equilibrium(n, radius, chain["mass_kg"], omega, k)
@@ -77,7 +91,7 @@ def run(scene, results, quick):
                    "inextensible")
     results.number("tension_over_rho_omega2_a2", tension / (rho * omega**2 * radius**2), "1",
                    note="the beads' steady tension against Lamb's $\\rho\\omega^2a^2$")
-    M, G, K_eff = matrices(positions, m, omega, k, tension, chord)
+    M, G, K_eff = matrices(positions, m, omega, k, tension)
     lam, s = modes(theta, positions, M, G, K_eff)
     # Two roots are defective: s = 0 at zero (a change of spin: the ring's angle drifts in the rotating frame)
     # and s = 1 at omega (a displaced circle: the whole ring drifts, t exp(-i omega t)). Rounding splits each by
@@ -125,3 +139,57 @@ def run(scene, results, quick):
                   "rest in space. The deviation is from Lamb's relative speeds.",
                   headers={"s": "$s$", "relative_1": "wave 1", "relative_2": "wave 2", "space_2": "wave 2 in space",
                            "lamb_space_2": "Lamb", "deviation": "deviation"})
+
+
+# --- The triangle: three equal atoms on three equal springs ------------------------------------------------
+
+def triangle_polynomial():
+    """det(K - lambda M) of the equilateral triangle, factored by sympy (K exact: the corners' coordinates in
+    sqrt(3)), and its roots with their multiplicities."""
+    k, m, lam = sp.symbols("k m lambda", positive=True)
+    corners = [sp.Matrix([0, 0]), sp.Matrix([1, 0]), sp.Matrix([sp.Rational(1, 2), sp.sqrt(3) / 2])]
+    K = sp.zeros(6, 6)
+    for i, j in ((0, 1), (1, 2), (2, 0)):
+        e = corners[j] - corners[i]
+        block = k * e * e.T                                   # unit sides, no tension
+        for a, b, sign in ((i, i, 1), (j, j, 1), (i, j, -1), (j, i, -1)):
+            K[2 * a:2 * a + 2, 2 * b:2 * b + 2] += sign * block
+    polynomial = sp.factor((K - lam * m * sp.eye(6)).det())
+    roots = sp.roots(sp.Poly(polynomial, lam))
+    return polynomial, {sp.simplify(r * m / k): multiplicity for r, multiplicity in roots.items()}
+
+
+def run_triangle(scene, results, quick):
+    """The ozone molecule of the notes: omega^2 = 0 three times (two translations, a rotation), 3k/2m twice
+    (a degenerate pair) and 3k/m (the breathing mode)."""
+    chain, k = scene.data["chain"], float(scene.data["effects"]["springs"]["k_n_per_m"])
+    side, m = chain["length_m"] / 3, chain["mass_kg"] / 3
+    angles = np.pi / 2 + 2 * np.pi * np.arange(3) / 3
+    positions = side / np.sqrt(3) * np.column_stack([np.cos(angles), np.sin(angles)])
+    K = spring_stiffness(positions, [(0, 1), (1, 2), (2, 0)], k)
+    lam, shapes = np.linalg.eigh(K / m)
+    scale = lam.max()
+    lam = np.where(np.abs(lam) <= 1e-12 * scale, 0.0, lam)
+    results.number("omega_squared_over_k_per_m", lam / (k / m), "k/m")
+    _, exact = triangle_polynomial()
+    results.number("sympy_roots_over_k_per_m", [float(r) for r in sorted(exact) for _ in range(exact[r])], "k/m",
+                   note="roots of $\\det(K - \\omega^2M)$, factored by sympy, with their multiplicities")
+    results.number("solver_vs_sympy", float(np.max(np.abs(lam / (k / m) - np.array(
+        [float(r) for r in sorted(exact) for _ in range(exact[r])])))), "1")
+    # The rigid motions span the zero modes: two translations and the turn about the centre (y ~ r x e_z).
+    rigid = np.column_stack([np.tile([1.0, 0.0], 3), np.tile([0.0, 1.0], 3),
+                             np.column_stack([-positions[:, 1], positions[:, 0]]).ravel()])
+    zero = shapes[:, :3]
+    results.number("zero_modes_vs_rigid", float(np.max(sla_subspace_angles(zero, rigid))), "rad",
+                   note="largest principal angle between the zero modes and the rigid motions")
+    breathing = positions.ravel() / np.linalg.norm(positions)
+    results.number("breathing_mode_vs_radial", float(1 - abs(shapes[:, 5] @ breathing)), "1",
+                   note="$1 - |\\cos\\theta|$: the top mode against the radial breathing")
+    pair = shapes[:, 3:5]
+    expected = sla_null_space(np.column_stack([rigid, breathing]).T)     # what is left: the degenerate plane
+    results.number("degenerate_pair_subspace", float(np.max(sla_subspace_angles(pair, expected))), "rad",
+                   note="largest principal angle between the solver's pair and the plane orthogonal to the "
+                        "rigid motions and the breathing (vectors of a degenerate pair are not unique)")
+    results.hard_case("degenerate_pair", "Ozone: the doubly degenerate pair compared as a plane (principal "
+                      "angles), not as vectors, which any rotation within it changes",
+                      float(np.max(sla_subspace_angles(pair, expected))), 1e-12, "rad")
