@@ -314,3 +314,23 @@ def test_polar_path_time_axis_reads_calendar_years():
     assert 1989 < low < 1991 and 2002 < high < 2004
     polhode = results.figures["polar_path"][0].axes[0]
     assert polhode.get_aspect() == 1.0                       # x and y in the same unit: equal aspect
+
+
+def test_retarding_couple_lamb_x10():
+    """Lamb Ex. X.10: under -kappa omega, tan(theta) falls at kappa(1/A - 1/C); it grows for a prolate body."""
+    from classical_dynamics.studies.chandler.retarding import decay_rate
+
+    for a in (2.0 / 3.0, 2.0):
+        closed = 0.01 * (1.0 / a - 1.0)
+        rate, L_ratio = decay_rate(a, 0.01, np.radians(1.0), 3.0 / abs(closed))
+        assert rate == pytest.approx(closed, rel=1e-8)
+        assert L_ratio < 1.0
+
+
+def test_retarding_scene_needs_oblate_and_prolate(tmp_path):
+    scene = yaml.safe_load((ROOT / "workflow" / "scenes" / "chandler" / "retarding.yaml").read_text())
+    scene["body"]["prolate_A_over_C"] = 0.9
+    path = tmp_path / "bad.yaml"
+    path.write_text(yaml.safe_dump(scene, allow_unicode=True))
+    with pytest.raises(SceneError):
+        validate("chandler", path, SCHEMA)

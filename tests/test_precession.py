@@ -375,3 +375,24 @@ def test_the_good_scene_and_every_shipped_scene_validate(tmp_path):
     validate("precession", path, SCHEMA)
     for scene in sorted((ROOT / "workflow/scenes/precession").glob("*.yaml")):
         validate("precession", scene, SCHEMA)
+
+
+def test_lamb_examples_from_the_model():
+    """Ex. VI.5 from the torque routine equals 3(C - A) sin d cos d/(E rho); Ex. XI.1's couple is C n psi'."""
+    from classical_dynamics.studies.precession import examples
+
+    class Collect:
+        def __init__(self):
+            self.numbers = {}
+
+        def number(self, name, value, unit, note=None):
+            self.numbers[name] = value
+
+    r = Collect()
+    examples.moon_line_offset(r, {"C_minus_A_over_Ea2": 0.00109, "moon_distance_radii": 60, "declination_deg": 28})
+    assert r.numbers["moon_line_offset_radii"] == pytest.approx(r.numbers["moon_line_offset_closed_form_radii"],
+                                                                rel=1e-13)
+    examples.gyroscope_couple(r, {"weights_lb": [300, 35], "radii_of_gyration_ft": [1.0, 2.5], "spin_rev_per_s": 20,
+                                  "turn_period_s": 10, "g_ft_per_s2": 32.2, "transverse_over_axial": 0.3})
+    assert r.numbers["gyroscope_couple_ft_lb"] == pytest.approx(r.numbers["gyroscope_couple_closed_form_ft_lb"],
+                                                                rel=1e-13)

@@ -35,7 +35,9 @@ REGISTRY: dict[str, Unit] = {
     "″": Unit("″", close_up=True), "mas": Unit("mas"), "″/yr": Unit("″/yr", close_up=True),
     "mas/yr": Unit("mas/yr"), "mas/cy": Unit("mas/cy"), "″/cy": Unit("″/cy", close_up=True), "rad/s": Unit("rad s$^{-1}$"), "cycles/yr": Unit("cycles/yr"),
     # lengths
-    "m": Unit("m"), "km": Unit("km"), "cm": Unit("cm"),
+    "m": Unit("m"), "km": Unit("km"), "cm": Unit("cm"), "ft": Unit("ft"),
+    # a couple in the British engineering units of Lamb's examples (foot-pound force)
+    "ft-lb": Unit("ft·lb"),
     # natural units of scaled problems
     "σ": Unit("$\\sigma$"),
     "time": Unit("time units"), "time units": Unit("time units"), "1/time": Unit("per time unit"), "1/time²": Unit("per time unit squared"),

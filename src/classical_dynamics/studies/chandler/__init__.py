@@ -1,8 +1,9 @@
 """Study: the Chandler wobble, from Euler's rigid Earth to the observed polar motion.
 
 A scene is either a model Earth (`earth` + `effects`: triaxiality, elastic_yielding, dissipation,
-excitation; none listed is the rigid symmetric Earth of Lamb Art. 47) or an observation
-(`observation`: a window of the IERS C04 series, fitted for the Chandler and annual wobbles).
+excitation; none listed is the rigid symmetric Earth of Lamb Art. 47), an observation
+(`observation`: a window of the IERS C04 series, fitted for the Chandler and annual wobbles), or a
+symmetric `body` under the retarding couple of Lamb Ex. X.10.
 """
 
 from __future__ import annotations
@@ -20,11 +21,24 @@ def check(path: Path, data: dict) -> None:
     """Physical consistency the schema cannot express. Raises SceneError (one line)."""
     from ...models import earth
 
-    if ("earth" in data) == ("observation" in data):
-        raise SceneError(path, "earth", "either `earth` (a model) or `observation` (the IERS series), not both "
-                         "or neither", sorted(k for k in ("earth", "observation") if k in data))
+    kinds = [k for k in ("earth", "observation", "body") if k in data]
+    if len(kinds) != 1:
+        raise SceneError(path, "earth", "one of `earth` (a model), `observation` (the IERS series) or `body` (a "
+                         "symmetric body under a retarding couple)", kinds)
     effects = data.get("effects") or {}
     analysis = data.get("analysis", {})
+    if "body" in data:
+        if effects or analysis:
+            raise SceneError(path, "body", "no effects or analysis beside `body` (the couple is the scene)",
+                             sorted(set(effects) | set(analysis)))
+        body = data["body"]
+        if not body["oblate_A_over_C"] < 1.0 < body["prolate_A_over_C"]:
+            raise SceneError(path, "body", "oblate_A_over_C below 1 and prolate_A_over_C above 1 (C > A, C < A)",
+                             [body["oblate_A_over_C"], body["prolate_A_over_C"]])
+        if body["oblate_A_over_C"] < 0.5:
+            raise SceneError(path, "body.oblate_A_over_C", "at least 0.5 (2A ≥ C: a physical body)",
+                             body["oblate_A_over_C"])
+        return
     if "observation" in data:
         if effects:
             raise SceneError(path, "effects", "no effects for an observation scene (the Earth supplies them)",
@@ -98,10 +112,12 @@ def _k_s():
 
 def run(scene: Scene, quick: bool = False):
     from ..results import Results       # imported here so that validation stays light
-    from . import accuracy, model, observed
+    from . import accuracy, model, observed, retarding
 
     results = Results("chandler", scene.name, scene.title)
-    if "observation" in scene.data:
+    if "body" in scene.data:
+        retarding.run(scene, results, quick)
+    elif "observation" in scene.data:
         observed.run(scene, results, quick)
     else:
         model.run(scene, results, quick)

@@ -130,6 +130,14 @@ def _invariants(results, y, model):
     results.number("angular_momentum_drift", drift, "1",
                    note="largest $|\\Delta|\\mathbf{L}||/|\\mathbf{L}|$ over the run")
     results.hard_case("angular_momentum_kept", "$|\\mathbf{L}|$ kept over the run (relative)", drift, 1e-12)
+    params = model.parameters()
+    if not params[wobble.ELASTIC]:
+        # the wobble's own invariant, resolvable where T and |L| are not: 2CT - H^2 = A(C - A)p^2 + B(C - B)q^2
+        # (Lamb Art. 48 (6), units C = 1, y = omega/n), formed from p and q so that nothing cancels
+        a, b = params[wobble.A_C], params[wobble.B_C]
+        D = a * (1.0 - a) * y[:, 0] ** 2 + b * (1.0 - b) * y[:, 1] ** 2
+        results.number("wobble_invariant_drift", float(np.max(np.abs(D / D[0] - 1.0))), "1",
+                       note="largest relative change of $2CT - H^2 = A(C - A)p^2 + B(C - B)q^2$ over the run")
 
 
 def _dissipation_structure(results, model, tilt_deg=10.0, periods=20):

@@ -53,6 +53,10 @@ def check(path: Path, data: dict) -> None:
     if "inverse_problem" in analysis and fidelity != "secular":
         raise SceneError(path, "analysis.inverse_problem", "fidelity: secular (H from the observed rate is "
                          "read through the formula)", fidelity)
+    gyro = analysis.get("gyroscope_couple")
+    if gyro and len(gyro["weights_lb"]) != len(gyro["radii_of_gyration_ft"]):
+        raise SceneError(path, "analysis.gyroscope_couple.radii_of_gyration_ft", "one radius of gyration for each "
+                         "weight", gyro["radii_of_gyration_ft"])
     windows = analysis.get("aliasing_windows_years")
     if windows and max(windows) > analysis["span_years"]:
         raise SceneError(path, "analysis.aliasing_windows_years", f"windows no longer than span_years = "
@@ -61,10 +65,11 @@ def check(path: Path, data: dict) -> None:
 
 def run(scene: Scene, quick: bool = False):
     from ..results import Results       # imported here so that validation stays light
-    from . import accuracy, averaged, full, secular
+    from . import accuracy, averaged, examples, full, secular
 
     results = Results("precession", scene.name, scene.title)
     model = secular.run(scene, results)
+    examples.run(scene, model, results)
     fidelity = scene.data["fidelity"]
     if fidelity == "averaged":
         averaged.run(scene, model, results, quick)

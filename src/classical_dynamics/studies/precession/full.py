@@ -89,6 +89,8 @@ def run(scene, model, results, quick):
     results.number("full_minus_averaged_relative", fp.rate / fa.rate - 1.0, "1")
     results.hard_case("retrograde", "The equinox moves westward (1 if it moves eastward)",
                       0.0 if fp.rate > 0 else 1.0, 0.0)
+    results.number("lamb_psi_dot_sign", -1 if fp.rate > 0 else 1, "1",
+                   note="the sign of $\\dot\\psi$ in Lamb's sense (Art. 61 (6)): −1, the axis moves retrograde")
     for term, key in NUTATION_TERMS.items():
         if term in args:
             results.number(f"nutation_longitude_{key}_arcsec", fitting.amplitude(fp, term) / earth.ARCSEC, "″",

@@ -69,6 +69,9 @@ def run(scene, results) -> prec.PrecessionModel:
     results.number("secular_solar_rate_arcsec_per_year", solar, "″/yr", note="Lamb Art. 61 (7), per Julian year")
     results.number("secular_lunar_rate_arcsec_per_year", lunar, "″/yr", note="Lamb Art. 61 (16)")
     results.number("secular_rate_arcsec_per_year", total, "″/yr", note="westward (retrograde), positive")
+    if model.inclined:
+        results.number("lunar_inclination_deg", np.degrees(model.moon_i), "°",
+                       note="the lunar orbit's mean inclination to the ecliptic (an input of the constants)")
     if model.sun and model.moon:
         results.number("lunar_to_solar_ratio", lunar / solar, "1", note="from the secular rates of the "
                        "effects included")
