@@ -293,3 +293,34 @@ def test_heavy_top_nutates_between_the_roots_of_the_cubic():
     assert np.allclose(np.sort(np.unique(np.round(np.cos(theta), 8))), [nut.u1, nut.u2], atol=1e-9)
     drift = [np.max(np.abs(v - v[0])) / abs(v[0]) for v in top.integrals(sol.y_eval)]
     assert max(drift) < 1e-10
+
+
+def test_heavy_top_scene_lists_gravity_and_is_a_real_body(tmp_path):
+    import yaml
+    from classical_dynamics.scenes import SceneError
+    from classical_dynamics.studies import validate
+    root = __import__("pathlib").Path(__file__).resolve().parents[1]
+    schema = root / "workflow" / "schemas" / "solvers.schema.yaml"
+    shipped = root / "workflow" / "scenes" / "solvers" / "heavy_top.yaml"
+    validate("solvers", shipped, schema)
+    good = yaml.safe_load(shipped.read_text())
+    for change, field in ((lambda d: d.pop("effects"), "effects.gravity"),
+                          (lambda d: d["top"].update(C=2.5), "top.C"),
+                          (lambda d: d["effects"]["gravity"].update(Mgh=-1.0), "effects.gravity.Mgh")):
+        data = yaml.safe_load(yaml.safe_dump(good))
+        change(data)
+        path = tmp_path / "heavy_top.yaml"
+        path.write_text(yaml.safe_dump(data))
+        with pytest.raises(SceneError, match=field.replace(".", r"\.")):
+            validate("solvers", path, schema)
+
+
+def test_moments_of_inertia_by_quadrature():
+    from classical_dynamics.studies.solvers import inertia
+    M, I = inertia.tensor(*inertia.sphere(1.0, 16))
+    assert np.allclose(I / M, 0.4 * np.eye(3), rtol=0, atol=1e-13)
+    M, I = inertia.tensor(*inertia.torus_circular(3.0, 1.0, 16))
+    assert I[2, 2] / M == pytest.approx(9.75, rel=1e-13)                  # Lamb Ex. VII.10: a^2 + 3 kappa^2
+    s = 1 / np.sqrt(2)
+    _, I = inertia.tensor(np.array([[s, -s, 0.0], [-s, s, 0.0]]), np.ones(2))
+    assert np.allclose(I, [[1, 1, 0], [1, 1, 0], [0, 0, 2]], atol=1e-15)   # the lecture notes' dumbbell

@@ -2,8 +2,9 @@
 
 Scenes choose a `problem`: hnw_rigid_body or detest_b5 (work-precision sweeps against their
 elliptic-function solutions), long_horizon (energy and Casimir error over up to 10^6 periods),
-hard_cases (the separatrix, the intermediate axis, blow-up, numerical damping), or heavy_top (the heavy
-symmetric top in the body frame against its closed forms; its one effect is gravity).
+hard_cases (the separatrix, the intermediate axis, blow-up, numerical damping), heavy_top (the heavy
+symmetric top in the body frame against its closed forms; its one effect is gravity), or inertia (moments of
+inertia of the textbook bodies by quadrature).
 """
 
 from __future__ import annotations
@@ -47,7 +48,7 @@ def check(path: Path, data: dict) -> None:
 
 def run(scene: Scene, quick: bool = False):
     from ..results import Results
-    from . import hard_cases, heavy_top, long_horizon, sweeps
+    from . import hard_cases, heavy_top, inertia, long_horizon, sweeps
 
     results = Results("solvers", scene.name, scene.title)
     problem = scene.data["problem"]
@@ -55,6 +56,8 @@ def run(scene: Scene, quick: bool = False):
         sweeps.run(scene, results, quick)
     elif problem == "heavy_top":
         heavy_top.run(scene, results, quick)
+    elif problem == "inertia":
+        inertia.run(scene, results, quick)
     elif problem == "long_horizon":
         long_horizon.run(scene, results, quick)
     else:

@@ -106,7 +106,7 @@ def _general(results, top, n, alpha, nutations, rtol):
     # the figure: the path of the apex over a first few nutations, between the circles of the two roots
     t_fig = np.linspace(0.0, min(T, np.pi / apsidal * nut.period), 1601)       # one turn in azimuth
     k = tm.axis_in_space(_run(top, y0, t_fig[-1], rtol, t_eval=t_fig, events=False).y_eval)
-    fig, ax = new_figure(width=3.3, height=3.0)
+    fig, ax = new_figure(width=3.0, height=2.7)
     ring = np.linspace(0, 2 * np.pi, 361)
     for u, style, label in ((nut.u2, "--", "$\\theta_1$"), (nut.u1, ":", "$\\theta_2$")):
         r = np.sqrt(1 - u * u)
