@@ -280,6 +280,9 @@ def _sleeping(results, top, rtol, quick):
     results.number("sleeping_below_root_deg", float(np.degrees(below_root)), "°",
                    note="the outer root of the cubic in cos theta")
     results.number("sleeping_spin_periods", spin_periods, "1")
+    results.number("sleeping_start_tilt", theta0, "rad")
+    results.number("sleeping_ratio_above", 1.01, "1", note="nu^2/4AMgh")
+    results.number("sleeping_ratio_below", 0.99, "1", note="nu^2/4AMgh")
     results.hard_case("sleeping_top_above", "The sleeping top at $\\nu^2/4AMgh = 1.01$, started $10^{-4}$ rad "
                       f"from the vertical, over {spin_periods} spin periods: largest tilt against the linear bound "
                       "$\\theta_0\\nu/\\sqrt{\\nu^2 - 4AMgh}$ (relative difference)", largest / bound - 1, 1e-3)
