@@ -264,3 +264,63 @@ def test_batch_with_parameters_per_row():
     status, t_end, final, _ = solve_batch(rhs.riccati, Y0[:, :1], (0.0, 0.3), P, rtol=1e-10, atol=1e-12)
     for row, p, y in zip(Y0[:, :1], P, final):
         assert np.array_equal(solve(Problem(rhs.riccati, row, (0.0, 0.3), p), rtol=1e-10, atol=1e-12).y, y)
+
+
+# --- the heavy symmetric top (studies/solvers/top_model.py) against its closed forms ----------------------------
+def test_heavy_top_steady_roots_solve_lambs_quadratic():
+    from classical_dynamics.studies.solvers import top_model as tm
+    A, Mgh, J3 = 1.0, 1.0, 3.0
+    for alpha in np.radians([20.0, 60.0, 89.0, 120.0]):
+        for w in tm.steady_roots(A, J3, Mgh, alpha):
+            assert abs(A * w * w * np.cos(alpha) - J3 * w + Mgh) <= 1e-13 * max(1.0, A * w * w)
+    assert tm.steady_roots(A, J3, Mgh, np.pi / 2)[0] == pytest.approx(Mgh / J3, rel=1e-15)   # the gyroscope
+    threshold = np.sqrt(4 * A * Mgh * np.cos(np.radians(60.0)))
+    assert tm.steady_roots(A, 0.999 * threshold, Mgh, np.radians(60.0)) is None               # spin too slow
+    assert tm.steady_roots(A, 0.0, Mgh, np.radians(60.0)) is None                             # conical pendulum
+
+
+def test_heavy_top_nutates_between_the_roots_of_the_cubic():
+    from classical_dynamics.studies.solvers import top_model as tm
+    top = tm.Top(1.0, 0.5, 1.0)
+    y0 = top.state(np.radians(50.0), 0.0, 0.1, 5.0)
+    J3, Jz, E = (float(v[0]) for v in top.integrals(y0))
+    nut = tm.Nutation.from_integrals(top.A, top.C, top.Mgh, J3, Jz, E)
+    t = np.linspace(0.0, 10 * nut.period, 201)
+    sol = solve(Problem(top.rhs, y0, (0.0, t[-1]), top.params), "dop853", rtol=1e-12, atol=1e-15, t_eval=t,
+                events=Events(tm.apse, tm.APSE_EVENTS_N))
+    assert np.max(np.abs(sol.y_eval[:, 5] - nut.cos_theta(t, y0[5]))) < 1e-9               # Jacobi's sn^2
+    theta = tm.angles(sol.event_y[sol.event_t > 1e-9])[0]
+    assert np.allclose(np.sort(np.unique(np.round(np.cos(theta), 8))), [nut.u1, nut.u2], atol=1e-9)
+    drift = [np.max(np.abs(v - v[0])) / abs(v[0]) for v in top.integrals(sol.y_eval)]
+    assert max(drift) < 1e-10
+
+
+def test_heavy_top_scene_lists_gravity_and_is_a_real_body(tmp_path):
+    import yaml
+    from classical_dynamics.scenes import SceneError
+    from classical_dynamics.studies import validate
+    root = __import__("pathlib").Path(__file__).resolve().parents[1]
+    schema = root / "workflow" / "schemas" / "solvers.schema.yaml"
+    shipped = root / "workflow" / "scenes" / "solvers" / "heavy_top.yaml"
+    validate("solvers", shipped, schema)
+    good = yaml.safe_load(shipped.read_text())
+    for change, field in ((lambda d: d.pop("effects"), "effects.gravity"),
+                          (lambda d: d["top"].update(C=2.5), "top.C"),
+                          (lambda d: d["effects"]["gravity"].update(Mgh=-1.0), "effects.gravity.Mgh")):
+        data = yaml.safe_load(yaml.safe_dump(good))
+        change(data)
+        path = tmp_path / "heavy_top.yaml"
+        path.write_text(yaml.safe_dump(data))
+        with pytest.raises(SceneError, match=field.replace(".", r"\.")):
+            validate("solvers", path, schema)
+
+
+def test_moments_of_inertia_by_quadrature():
+    from classical_dynamics.studies.solvers import inertia
+    M, I = inertia.tensor(*inertia.sphere(1.0, 16))
+    assert np.allclose(I / M, 0.4 * np.eye(3), rtol=0, atol=1e-13)
+    M, I = inertia.tensor(*inertia.torus_circular(3.0, 1.0, 16))
+    assert I[2, 2] / M == pytest.approx(9.75, rel=1e-13)                  # Lamb Ex. VII.10: a^2 + 3 kappa^2
+    s = 1 / np.sqrt(2)
+    _, I = inertia.tensor(np.array([[s, -s, 0.0], [-s, s, 0.0]]), np.ones(2))
+    assert np.allclose(I, [[1, 1, 0], [1, 1, 0], [0, 0, 2]], atol=1e-15)   # the lecture notes' dumbbell

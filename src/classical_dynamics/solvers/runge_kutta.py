@@ -314,6 +314,7 @@ def integrate(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extr
     n_ev = 0
     g_old = np.empty(max(n_events, 1))
     g_new = np.empty(max(n_events, 1))
+    g_mid = np.empty(max(n_events, 1))    # the events at a bisection point (tmp is the stages' scratch)
     if n_events > 0:
         g(t0, y0, p, g_old)
     naccept = 0
@@ -371,12 +372,11 @@ def integrate(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extr
                     if (up and directions[e] >= 0) or (down and directions[e] <= 0):
                         lo, hi = x_prev, x_sub
                         g_lo = g_prev[e]
-                        tmp = np.empty(max(n_events, 1))
                         for _ in range(80):
                             mid = 0.5 * (lo + hi)
-                            g(t + mid * h, _dense_eval(kind, coeffs, h, y, mid), p, tmp)
-                            if (tmp[e] < 0.0) == (g_lo < 0.0) and tmp[e] != 0.0:
-                                lo, g_lo = mid, tmp[e]
+                            g(t + mid * h, _dense_eval(kind, coeffs, h, y, mid), p, g_mid)
+                            if (g_mid[e] < 0.0) == (g_lo < 0.0) and g_mid[e] != 0.0:
+                                lo, g_lo = mid, g_mid[e]
                             else:
                                 hi = mid
                             if (hi - lo) * abs(h) <= 4e-16 * max(abs(t), 1.0):
