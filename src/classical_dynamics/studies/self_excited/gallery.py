@@ -38,9 +38,13 @@ GROUPS = (
                "run to the negative $x$-axis."),
               ("largest_unperturbed_critical", "At $m_1 = 1$ the saddle and the center of each pair coalesce into a "
                "degenerate point (Lee's Figure 2.5): no periodic motion remains."),
+              ("largest_unperturbed_critical_negative", "The mirror image at $m_1 = -1$ (Lee's Figure 2.6): "
+               "degenerate points, and the motions of the first kind run to the negative $x$-axis."),
               ("largest_unperturbed_strong", "For $m_1 > 1$ there are no singular points (Lee's Figure 2.7) and "
                "every motion runs to the $x$-axis. Since a small $\\delta$ makes $|m_1|$ large, the rotation about "
                "the $x$-axis is stable."),
+              ("largest_unperturbed_strong_negative", "For $m_1 < -1$ (Lee's Figure 2.8) every motion runs to the "
+               "negative $x$-axis."),
               ("force_free", "The force-free body (Lee's Figure 2.9), the plane of the pendulum: the saddles are the "
                "unstable rotations about the middle axis, the centers the stable rotations about the smallest."))),
     Group("largest_perturbed", "largest",
@@ -53,10 +57,19 @@ GROUPS = (
                "2.15)."),
               ("largest_perturbed_no_cycles", "Above $\\nu^*$ the limit cycles are gone (Lee's Figure 2.14); the "
                "closed orbits about the centers remain."),
-              ("largest_perturbed_strong", "For $m_1 > 1$ with drag (Lee's Figure 2.20) there are no singular "
-               "points, but $F$ and $F_1$ exist; above $F_1$, $\\boldsymbol{\\omega}$ tends to $F$."),
+              ("largest_perturbed_negative", "For $-1 < m_1 < 0$ with drag (Lee's Figure 2.16) there are no limit "
+               "cycles: closed orbits about the centers, and otherwise $\\boldsymbol{\\omega}$ runs to the negative "
+               "$x$-axis."),
+              ("largest_perturbed_zero", "The same at $m_1 = 0$ (Lee's Figure 2.16): saddles at even, centers at "
+               "odd multiples of $\\pi$."),
+              ("largest_perturbed_unit", "At $m_1 = 1$ with drag (Lee's Figure 2.17) the points are degenerate as "
+               "without drag, but $F$ and $F_1$ exist."),
+              ("largest_perturbed_unit_negative", "At $m_1 = -1$ with drag (Lee's Figure 2.18): degenerate points, "
+               "no limit cycles."),
               ("largest_perturbed_reversed", "For $m_1 < -1$ with drag (Lee's Figure 2.19), $\\boldsymbol{\\omega}$ "
-               "runs to the negative $x$-axis from every start."))),
+               "runs to the negative $x$-axis from every start."),
+              ("largest_perturbed_strong", "For $m_1 > 1$ with drag (Lee's Figure 2.20) there are no singular "
+               "points, but $F$ and $F_1$ exist; above $F_1$, $\\boldsymbol{\\omega}$ tends to $F$."))),
     Group("smallest", "largest",
           "The torque along the smallest axis $z$. Lee's title says “largest or smallest”: the same plane, "
           "Lee (2.10), serves, with $p$ and $r$, $a$ and $c$ exchanged. Euler's equations with the torque along $z$, integrated "
@@ -68,8 +81,11 @@ GROUPS = (
     Group("middle_below_critical", "middle",
           "Phase planes of Lee (3.52) for the torque along the middle axis $y$, below the critical drag "
           "($\\nu < \\nu_\\mathrm{c}$): one center, every trajectory closed. " + EULER, (
-              ("middle_unperturbed", "Unperturbed (Lee's Figure 3.3): the end of $\\boldsymbol{\\omega}$ moves on a "
-               "hyperbolic cylinder; every motion is periodic."),
+              ("middle_unperturbed_negative", "Unperturbed, $m_1 < 0$ (Lee's Figure 3.3): the end of "
+               "$\\boldsymbol{\\omega}$ moves on a hyperbolic cylinder; one center, at $\\operatorname{arcsinh}m_1$, "
+               "and every motion is periodic."),
+              ("middle_unperturbed_zero", "$m_1 = 0$, the force-free body on its cylinder: the center at 0."),
+              ("middle_unperturbed", "$m_1 > 0$: the center moves to the right."),
               ("middle_perturbed", "With the drag-like term, $\\nu$ below $\\nu_\\mathrm{c}$: still one center and "
                "every motion periodic."),
               ("middle_near_critical", "Nearer $\\nu_\\mathrm{c}$, in a wider window: the orbits about the center "
@@ -122,6 +138,8 @@ GROUPS = (
           "where nothing turns the motion back or the drag alone stops it. " + EULER, (
               ("middle_plane_one_no_center", "Plane I, $m_3 < 0$ (Lee's Figure 3.13): no singular point; "
                "$\\boldsymbol{\\omega}$ leaves every bound in finite time from every start."),
+              ("middle_plane_one_no_torque", "Plane I, $m_3 = 0$, the quadratic torque alone (Lee's Figure 3.13, "
+               "“non-positive”): the same."),
               ("middle_plane_two_no_saddle", "Plane II above $\\nu_\\mathrm{c}$, $m_3 < 0$ (Lee's Figure 3.17): "
                "the same."),
               ("middle_plane_two_positive", "Plane II below $\\nu_\\mathrm{c}$, $m_3 > 0$ (Lee's Figure 3.15): "
