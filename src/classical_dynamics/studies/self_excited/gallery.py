@@ -38,9 +38,13 @@ GROUPS = (
                "run to the negative $x$-axis."),
               ("largest_unperturbed_critical", "At $m_1 = 1$ the saddle and the center of each pair coalesce into a "
                "degenerate point (Lee's Figure 2.5): no periodic motion remains."),
+              ("largest_unperturbed_critical_negative", "The mirror image at $m_1 = -1$ (Lee's Figure 2.6): "
+               "degenerate points, and the motions of the first kind run to the negative $x$-axis."),
               ("largest_unperturbed_strong", "For $m_1 > 1$ there are no singular points (Lee's Figure 2.7) and "
                "every motion runs to the $x$-axis. Since a small $\\delta$ makes $|m_1|$ large, the rotation about "
                "the $x$-axis is stable."),
+              ("largest_unperturbed_strong_negative", "For $m_1 < -1$ (Lee's Figure 2.8) every motion runs to the "
+               "negative $x$-axis."),
               ("force_free", "The force-free body (Lee's Figure 2.9), the plane of the pendulum: the saddles are the "
                "unstable rotations about the middle axis, the centers the stable rotations about the smallest."))),
     Group("largest_perturbed", "largest",
@@ -53,10 +57,19 @@ GROUPS = (
                "2.15)."),
               ("largest_perturbed_no_cycles", "Above $\\nu^*$ the limit cycles are gone (Lee's Figure 2.14); the "
                "closed orbits about the centers remain."),
-              ("largest_perturbed_strong", "For $m_1 > 1$ with drag (Lee's Figure 2.20) there are no singular "
-               "points, but $F$ and $F_1$ exist; above $F_1$, $\\boldsymbol{\\omega}$ tends to $F$."),
+              ("largest_perturbed_negative", "For $-1 < m_1 < 0$ with drag (Lee's Figure 2.16) there are no limit "
+               "cycles: closed orbits about the centers, and otherwise $\\boldsymbol{\\omega}$ runs to the negative "
+               "$x$-axis."),
+              ("largest_perturbed_zero", "The same at $m_1 = 0$ (Lee's Figure 2.16): saddles at even, centers at "
+               "odd multiples of $\\pi$."),
+              ("largest_perturbed_unit", "At $m_1 = 1$ with drag (Lee's Figure 2.17) the points are degenerate as "
+               "without drag, but $F$ and $F_1$ exist."),
+              ("largest_perturbed_unit_negative", "At $m_1 = -1$ with drag (Lee's Figure 2.18): degenerate points, "
+               "no limit cycles."),
               ("largest_perturbed_reversed", "For $m_1 < -1$ with drag (Lee's Figure 2.19), $\\boldsymbol{\\omega}$ "
-               "runs to the negative $x$-axis from every start."))),
+               "runs to the negative $x$-axis from every start."),
+              ("largest_perturbed_strong", "For $m_1 > 1$ with drag (Lee's Figure 2.20) there are no singular "
+               "points, but $F$ and $F_1$ exist; above $F_1$, $\\boldsymbol{\\omega}$ tends to $F$."))),
     Group("smallest", "largest",
           "The torque along the smallest axis $z$. Lee's title says “largest or smallest”: the same plane, "
           "Lee (2.10), serves, with $p$ and $r$, $a$ and $c$ exchanged. Euler's equations with the torque along $z$, integrated "
@@ -68,8 +81,11 @@ GROUPS = (
     Group("middle_below_critical", "middle",
           "Phase planes of Lee (3.52) for the torque along the middle axis $y$, below the critical drag "
           "($\\nu < \\nu_\\mathrm{c}$): one center, every trajectory closed. " + EULER, (
-              ("middle_unperturbed", "Unperturbed (Lee's Figure 3.3): the end of $\\boldsymbol{\\omega}$ moves on a "
-               "hyperbolic cylinder; every motion is periodic."),
+              ("middle_unperturbed_negative", "Unperturbed, $m_1 < 0$ (Lee's Figure 3.3): the end of "
+               "$\\boldsymbol{\\omega}$ moves on a hyperbolic cylinder; one center, at $\\operatorname{arcsinh}m_1$, "
+               "and every motion is periodic."),
+              ("middle_unperturbed_zero", "$m_1 = 0$, the force-free body on its cylinder: the center at 0."),
+              ("middle_unperturbed", "$m_1 > 0$: the center moves to the right."),
               ("middle_perturbed", "With the drag-like term, $\\nu$ below $\\nu_\\mathrm{c}$: still one center and "
                "every motion periodic."),
               ("middle_near_critical", "Nearer $\\nu_\\mathrm{c}$, in a wider window: the orbits about the center "
@@ -122,6 +138,8 @@ GROUPS = (
           "where nothing turns the motion back or the drag alone stops it. " + EULER, (
               ("middle_plane_one_no_center", "Plane I, $m_3 < 0$ (Lee's Figure 3.13): no singular point; "
                "$\\boldsymbol{\\omega}$ leaves every bound in finite time from every start."),
+              ("middle_plane_one_no_torque", "Plane I, $m_3 = 0$, the quadratic torque alone (Lee's Figure 3.13, "
+               "“non-positive”): the same."),
               ("middle_plane_two_no_saddle", "Plane II above $\\nu_\\mathrm{c}$, $m_3 < 0$ (Lee's Figure 3.17): "
                "the same."),
               ("middle_plane_two_positive", "Plane II below $\\nu_\\mathrm{c}$, $m_3 > 0$ (Lee's Figure 3.15): "
@@ -273,6 +291,115 @@ def caption(group, found):
     return group.lead + " " + " ".join(f"({p.letter}) {p.text}" for p in found)
 
 
+# Lee's closed-form figures (no integration): the potential of the unperturbed plane (2.20), Figures 2.1 and 2.3,
+# and the coefficients k1, k2 of the middle-axis reduction against |mu|, Figures 3.6 and 3.7, for the study's body.
+CLOSED_FORM_BODY = (3.0, 2.2, 1.2)       # the moments of every scene of the study
+CLOSED_FORM_M1 = (0.5, -0.5)             # the planes of largest_unperturbed and largest_unperturbed_negative
+CLOSED_FORM_ALPHA = ((0.8, 0.3), (0.8, -0.3))    # the middle-axis scenes' cylinder, and alpha2 of the other sign
+K_COLOURS = {"k1": "#0072B2", "k2": "#D55E00"}
+
+
+def closed_form_data():
+    """The curves of the closed-form figure as one table (panel, curve, x, y), and the crossings of k1 and k2
+    found by root finding, against Lee's mu_c = b sqrt(ac)/(a + c)."""
+    import numpy as np
+    import pandas as pd
+    from scipy.optimize import brentq
+    from ...models import self_excited as se
+    rows, crossings = [], {}
+    phi = np.linspace(-3 * np.pi, 3 * np.pi, 601)
+    for letter, m1 in zip("ab", CLOSED_FORM_M1):
+        rows.append(pd.DataFrame({"panel": letter, "curve": "V", "x": phi, "y": -m1 * phi + np.cos(phi)}))
+        for pt in se.singular_points(m1, 0.0, phi[0], phi[-1]):
+            rows.append(pd.DataFrame({"panel": [letter], "curve": [pt["type"]], "x": [pt["phi2"]],
+                                      "y": [-m1 * pt["phi2"] + np.cos(pt["phi2"])]}))
+    body = se.Body.from_moments(list(CLOSED_FORM_BODY))
+    mu_c = body.b * np.sqrt(body.a * body.c) / (body.a + body.c)
+    size = np.linspace(0.0, 2.0 * mu_c, 201)
+    for letter, (alpha1, alpha2) in zip("cd", CLOSED_FORM_ALPHA):
+        def k(name, s):
+            return getattr(se.MiddleAxis(body, 0.0, -s, alpha1, alpha2), name)
+        for name in ("k1", "k2"):
+            rows.append(pd.DataFrame({"panel": letter, "curve": name, "x": size, "y": [k(name, s) for s in size]}))
+        cross = brentq(lambda s: k("k1", s) - k("k2", s), 0.0, 2.0 * mu_c, xtol=1e-16, rtol=1e-15)
+        crossings[letter] = cross
+        rows.append(pd.DataFrame({"panel": [letter], "curve": ["crossing"], "x": [cross], "y": [k("k1", cross)]}))
+    return pd.concat(rows, ignore_index=True), crossings, float(mu_c), body
+
+
+def closed_form_figure(frame, mu_c, body):
+    import numpy as np
+    from matplotlib.lines import Line2D
+    from ..results import plt
+    from ...figure_style import FULL_WIDTH_IN
+    from ...solvers.workprecision import legend_below
+    from . import portrait
+    fig, axes = plt.subplots(1, 4, figsize=(FULL_WIDTH_IN, 1.95), layout="constrained")
+    for ax in axes:
+        ax.grid(True, which="both", alpha=0.25, linewidth=0.6)
+    for ax, letter, m1 in zip(axes[:2], "ab", CLOSED_FORM_M1):
+        part = frame[frame.panel == letter]
+        curve = part[part.curve == "V"]
+        ax.plot(curve.x, curve.y, color="k", lw=1.0)
+        for x, y, kind in zip(part.x, part.y, part.curve):
+            if kind != "V":
+                marker = portrait.POINT_STYLE[kind][0]
+                ax.plot(x, y, marker, color="k", ms=4, mew=0.8, mfc="white" if marker == "o" else None, zorder=5)
+        portrait.pi_ticks(ax.xaxis, -9 * np.pi, 9 * np.pi)      # a narrow panel: ticks every 2π
+        ax.set_xlabel("$\\varphi_2$ (rad)")
+        ax.set_title(f"({letter}) $m_1$ = {portrait.param_text(m1)}", loc="left")
+    axes[0].set_ylabel("$V(\\varphi_2)$")
+    axes[1].sharey(axes[0])
+    axes[1].tick_params(labelleft=False)
+    for ax, letter, (alpha1, alpha2) in zip(axes[2:], "cd", CLOSED_FORM_ALPHA):
+        part = frame[frame.panel == letter]
+        for name in ("k1", "k2"):
+            curve = part[part.curve == name]
+            ax.plot(curve.x, curve.y, color=K_COLOURS[name], lw=1.2)
+        ax.axvline(mu_c, color="0.4", lw=0.8, ls=":")
+        ax.axhline(0.0, color="0.6", lw=0.6)
+        cross = part[part.curve == "crossing"]
+        ax.plot(cross.x, cross.y, "o", color="k", ms=3.5, zorder=5)
+        ax.set_xlabel("$|\\mu|$")
+        ax.set_title(f"({letter}) $\\alpha_2$ = {portrait.param_text(alpha2)}", loc="left")
+    axes[2].set_ylabel("$k_1$, $k_2$")
+    axes[3].sharey(axes[2])
+    axes[3].tick_params(labelleft=False)
+    handles = [Line2D([], [], color="k", lw=1.0), Line2D([], [], ls="", marker="x", color="k", ms=4),
+               Line2D([], [], ls="", marker="o", color="k", ms=4, mfc="white"),
+               Line2D([], [], color=K_COLOURS["k1"], lw=1.2), Line2D([], [], color=K_COLOURS["k2"], lw=1.2),
+               Line2D([], [], ls="", marker="o", color="k", ms=3.5), Line2D([], [], color="0.4", lw=0.8, ls=":")]
+    labels = ["$V = -m_1\\varphi_2 + \\cos\\varphi_2$", "saddle (maximum)", "center (minimum)", "$k_1$", "$k_2$",
+              "$k_1 = k_2$, found", "$\\mu_\\mathrm{c} = b\\sqrt{ac}/(a + c)$"]
+    legend_below(fig, handles, labels, ncol=7)
+    return fig
+
+
+def closed_forms(results):
+    """Lee's Figures 2.1, 2.3, 3.6 and 3.7 as one figure with its table and the crossings as numbers."""
+    from ...formatting import shortest
+    frame, crossings, mu_c, body = closed_form_data()
+    moments = ", ".join(shortest(m) for m in CLOSED_FORM_BODY)
+    (a1, a2), (_, b2) = CLOSED_FORM_ALPHA
+    caption = ("Lee's closed-form figures. (a), (b) The potential $V(\\varphi_2) = -m_1\\varphi_2 + \\cos\\varphi_2$ "
+               "of the unperturbed plane, Lee (2.20), for $m_1 = 0.5$ and $-0.5$ (Lee's Figures 2.1 and 2.3): its "
+               "maxima are the saddles and its minima the centers, $2\\pi$ apart on a falling or rising line. "
+               "(c), (d) The coefficients $k_1$ and $k_2$ of the reduction for the torque along the middle axis, "
+               f"against the drag $|\\mu|$, for the moments {moments} and $\\alpha_1 = {shortest(a1)}$, "
+               f"$\\alpha_2 = {shortest(a2)}$ or ${shortest(b2)}$ (Lee's Figures 3.6 and 3.7): "
+               "straight lines, Lee (3.50) and (3.51), that cross below the $|\\mu|$-axis (dot: the crossing "
+               "found by root finding) at the critical drag $\\mu_\\mathrm{c}$ (dotted). Below $\\mu_\\mathrm{c}$, "
+               "$|k_1| > |k_2|$ and the sinh form (3.52) holds; above it the cosh form (3.56).")
+    results.figure("closed_forms", closed_form_figure(frame, mu_c, body), caption)
+    results.table("closed_forms", frame, "The curves and points of closed_forms.svg, panel by panel.",
+                  headers={"panel": "panel", "curve": "curve or point", "x": "$\\varphi_2$ (rad) or $|\\mu|$",
+                           "y": "$V$ or $k_1$, $k_2$"})
+    results.number("mu_c_closed_form", mu_c, "1", note="Lee's critical drag b√(ac)/(a + c) for the moments "
+                   f"{moments}")
+    results.number("mu_c_crossing", crossings["c"], "1", note=f"k1 = k2 by root finding, α = ({a1:g}, {a2:g})")
+    results.number("mu_c_crossing_opposite", crossings["d"], "1", note=f"the same for α = ({a1:g}, {b2:g})")
+
+
 def build(study_dir: Path, scenes, quick=False):
     """The gallery's Results: one grid figure and its table per group that has a panel."""
     from ..results import Results
@@ -291,6 +418,7 @@ def build(study_dir: Path, scenes, quick=False):
                 results.number(f"panel_{panel.scene}", panel.letter, "", note=f"the panel of grid_{group.name} that "
                                "draws the scene's portrait")
                 results.number(f"grid_{panel.scene}", group.name, "", note="the grid that draws the scene's portrait")
+    closed_forms(results)
     return results
 
 

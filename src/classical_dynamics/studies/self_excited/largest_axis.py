@@ -133,6 +133,8 @@ def run(scene, results, quick):
         _series(results, m1, nu, centers[0]["phi2"], amplitudes)
         if nu == 0.0 or nu < (1.0 - 1e-9) * se.nu_star(m1):    # where the saddle's own loop encloses the center
             _separatrix_sides(results, m1, nu)
+    if nu == 0.0 and abs(abs(m1) - 1.0) < 1e-12:
+        _degenerate_approach(results, m1)
     if cycles:
         _blow_up(results, m1, nu)
         _limit_cycle_period(results, m1, nu)
@@ -291,6 +293,36 @@ def _series(results, m1, nu, phi_c, amplitudes):
     results.figure("series", fig, "The relative error of Lee's period series (§4.2) against the integrated period, "
                    "by amplitude $\\eta$ (log-log), with the dashed reference slope $\\eta^4$, the first power the "
                    f"series leaves out: the fitted slope is {format_number(slope, 3)}.")
+
+
+DEGENERATE_TAUS = (40.0, 100.0)     # where the approach to the degenerate point is measured
+DEGENERATE_BOUND = 1e-4             # hard case: relative error of the algebraic rate
+
+
+def _degenerate_approach(results, m1):
+    """|m1| = 1 without drag: the separatrix (2.23) through the degenerate point phi2d (sin phi2d = -m1) is
+    p1^2 = 2(x - sin x) ~ x^3/3 in x = |phi2 - phi2d|, so the motion along it reaches the point only algebraically,
+    x = 12/(tau + c)^2, where a saddle is approached exponentially. Started on the branch at x = 0.5 and integrated,
+    x^(-1/2) must grow linearly in tau at the rate 1/sqrt(12) (the energy error of the integration, 1e-13 or so,
+    would stop the motion near x = (6e-13)^(1/3) only at tau of several hundred)."""
+    side = np.sign(m1)                                      # m1 = 1: from the right, m1 = -1: from the left
+    phi_d = float(np.arcsin(-m1))
+    phi0 = phi_d + 0.5 * side
+    gap = (-m1 * phi_d + np.cos(phi_d)) - (-m1 * phi0 + np.cos(phi0))         # E at the point − V(phi0)
+    p0 = -side * np.sqrt(2.0 * gap)
+    taus = np.array(DEGENERATE_TAUS)
+    sol = solve(Problem(se.plane_largest, [phi0, p0], (0.0, taus[-1]), [m1, 0.0, 1.0]), "dop853", rtol=1e-13,
+                atol=1e-15, t_eval=taus)
+    x = np.abs(sol.y_eval[:, 0] - phi_d)
+    rate = float(np.diff(x ** -0.5)[0] / np.diff(taus)[0])
+    results.number("degenerate_approach_coefficient", 1.0 / rate**2, "1", note="C in |φ2 − φ2d| ≈ C/(τ + c)² along "
+                   "the separatrix into the degenerate point, from |φ2 − φ2d|^(−1/2) at τ = 40 and 100; 12 expected")
+    results.number("degenerate_distance_tau100", float(x[-1]), "1", note="|φ2 − φ2d| at τ = 100 from 0.5 at τ = 0")
+    results.hard_case("degenerate_approach", "$|m_1| = 1$: along the separatrix the motion reaches the degenerate "
+                      "point algebraically, $|\\varphi_2 - \\varphi_{2\\mathrm{d}}| \\approx 12/\\tau^2$, not "
+                      "exponentially as into a saddle (relative error of the rate of "
+                      "$|\\varphi_2 - \\varphi_{2\\mathrm{d}}|^{-1/2}$ against $1/\\sqrt{12}$, $\\tau$ from 40 to 100)",
+                      rate * np.sqrt(12.0) - 1.0, DEGENERATE_BOUND)
 
 
 def _blow_up(results, m1, nu):

@@ -135,6 +135,8 @@ def run(scene, results, quick):
     results.hard_case("plane_invariant", f"The plane's first integral (${integral}$, Lee's closed form"
                       f"{resonant}) along Euler's equations mapped "
                       "into the plane (largest relative spread)", invariant, INVARIANT_BOUND)
+    results.number("cylinder_spread", hyp, "1", note="relative spread of p²/a − r²/c along Euler's equations "
+                   "(against p²/a + r²/c at the start in the planes, where it is 0)")
     results.hard_case("hyperbolic_cylinder", "The end of $\\boldsymbol{\\omega}$ stays on its hyperbolic cylinder "
                       "(relative spread of $p^2/a - r^2/c$, against $p^2/a + r^2/c$ at the start in the planes, where "
                       "it is 0)", hyp, 1e-10)

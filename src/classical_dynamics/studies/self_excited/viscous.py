@@ -217,6 +217,10 @@ def special_function_costs(results, quick):
                            "asymptotic_error": "expansion error", "asymptotic_bound": "expansion bound",
                            "quadrature_error": "quadrature error", "quadrature_bound": "quadrature estimate"})
     held = (frame.series_error <= frame.series_bound + 1e-16) & (frame.asymptotic_error <= frame.asymptotic_bound)
+    ratio = np.maximum(frame.series_error / (frame.series_bound + 1e-16),
+                       frame.asymptotic_error / frame.asymptotic_bound)
+    results.number("si_ci_error_over_bound", float(ratio.max()), "1", note="largest error/bound over the table "
+                   "si_ci_values, the series (10⁻¹⁶ added to its bound for round-off) and the expansion")
     results.hard_case("si_ci_bounds_hold", "Values of $\\si$, $\\ci$ where the series' or the expansion's error "
                       "exceeds its bound (count)", int((~held).sum()), 0)
     results.number("si_ci_digest_check_x2", float(frame.series_error[(frame.x == 2.0)].iloc[0]), "1",
