@@ -386,7 +386,7 @@ def _accuracy_cost(results, spec, quick):
                          headers={"n": "$n$", "solver": "solver", "seconds": "wall time (s)", "runs": "runs",
                                   "algebraic_relative_error": "error of $\\lambda_1$",
                                   "discretization_relative_error": "error of $\\omega_1$"})
-    fig, ax = new_figure(5.4, 2.25)
+    fig, ax = new_figure(5.4, 2.1)
     for method, part in frame.groupby("solver", sort=False):
         _solver_line(ax, method, part.n, part.seconds)
     ax.set_xlabel("$n$")
@@ -397,7 +397,7 @@ def _accuracy_cost(results, spec, quick):
                           "full tridiagonal solver's next; the tridiagonal solver that computes only the lowest modes "
                           "and the pliability solver grow about linearly and are the only ones run up to the "
                           "largest $n$.")
-    fig, ax = new_figure(5.4, 2.25)
+    fig, ax = new_figure(5.4, 2.1)
     for method, part in frame.groupby("solver", sort=False):
         _solver_line(ax, method, part.n, np.maximum(part.algebraic_relative_error, 1e-17))
     ns = np.array(sorted(frame.n.unique()), float)
@@ -462,7 +462,7 @@ def _cost_to_target(results, targets, quick):
 def _work_precision_figure(results, errors, cost, ns):
     """Error of omega_1 against the time it took, one line per route (and LAPACK's floor)."""
     j1 = bessel_j0_zeros(1)[0] / 2
-    fig, ax = new_figure(5.6, 2.9)
+    fig, ax = new_figure(5.6, 2.5)
     for scheme, err in errors.items():
         n_sorted = sorted(err)
         label, colour, _ = SCHEMES[_scheme(scheme)]

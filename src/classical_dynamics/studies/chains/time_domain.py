@@ -79,7 +79,7 @@ def run(scene, results, quick):
     results.hard_case("energy_bounded", f"Energy error over {format_number(periods)} gravest periods does not "
                       "grow: its largest value in the last tenth of the run over its largest in the first tenth",
                       float(np.max(np.abs(drift[-tenth:])) / max(np.max(np.abs(drift[:tenth])), 1e-300)), 2.0)
-    fig, ax = new_figure(5.2, 2.5)
+    fig, ax = new_figure(5.2, 2.05)
     running = np.maximum.accumulate(np.abs(drift))
     keep = t_periods > 0
     ax.loglog(t_periods[keep], running[keep], lw=1.2, color="C4")
