@@ -324,3 +324,28 @@ def test_moments_of_inertia_by_quadrature():
     s = 1 / np.sqrt(2)
     _, I = inertia.tensor(np.array([[s, -s, 0.0], [-s, s, 0.0]]), np.ones(2))
     assert np.allclose(I, [[1, 1, 0], [1, 1, 0], [0, 0, 2]], atol=1e-15)   # the lecture notes' dumbbell
+
+
+@rhs_function
+def oscillators(t, y, p, out):
+    """Five uncoupled unit oscillators, y = (x1..x5, v1..v5)."""
+    for k in range(5):
+        out[k] = y[5 + k]
+        out[5 + k] = -y[k]
+
+
+@rhs_function
+def first_position(t, y, p, out):
+    out[0] = y[0]
+
+
+def test_a_short_event_vector_leaves_later_steps_exact():
+    """Locating an event must not touch the stages' scratch: a 10-component state with one event, found many
+    times, ends where the exact solution does (the fault this guards against wrote past a 1-element array)."""
+    y0 = np.array([1.0, 0.5, -0.3, 0.2, 0.9, 0.0, 0.4, 0.1, -0.7, 0.3])
+    sol = solve(Problem(oscillators, y0, (0.0, 30.0)), rtol=1e-12, atol=1e-14, events=Events(first_position, 1))
+    t = 30.0
+    exact = np.concatenate([y0[:5] * np.cos(t) + y0[5:] * np.sin(t), -y0[:5] * np.sin(t) + y0[5:] * np.cos(t)])
+    assert sol.event_t.size == 10                     # x1 = cos t crosses zero at pi/2 + k pi, k = 0..9
+    np.testing.assert_allclose(sol.event_t, np.pi / 2 + np.pi * np.arange(10), atol=1e-10)
+    np.testing.assert_allclose(sol.y, exact, atol=1e-9)

@@ -205,7 +205,7 @@ def _mode_shapes(results, shapes, n, k):
     from scipy import special
     j = bessel_j0_zeros(3)
     height = 1 - np.arange(1, n + 1) / n                    # particle heights above the free end, x/l
-    fig, ax = new_figure(4.4, 4.0)
+    fig, ax = new_figure(4.4, 3.65)
     x = np.linspace(0, 1, 400)
     for idx in range(min(3, k, n)):
         y = shapes[:, idx] / shapes[-1, idx]

@@ -271,7 +271,7 @@ def _response_figure(results, grid, direct, static, sigma):
     ax.set_xlabel("$\\sigma/\\sigma_1$")
     ax.set_ylabel("$|y_j|/|y_0|$")
     ax.set_ylim(1e-2, 1e3)
-    ax.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), fontsize="small", ncol=3, frameon=False)
+    ax.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=3, frameon=False)
     results.figure("forced_response", fig, "Amplitude of each particle under a force $F\\cos\\sigma t$ on the "
                    "first, over the statical displacement $|y_0|$ (Lamb Art. 95); grey lines mark the free "
                    "frequencies, where it is infinite.")

@@ -81,7 +81,7 @@ def run(scene, results, quick):
     results.timing_table("accuracy", frame, f"Work-precision of the {shortest(span_years)}-year wobble: the runs "
                          "of the accuracy table with their wall times (minimum of repeats).",
                          headers={**HEADERS, "seconds": "wall time (s)"})
-    fig, ax = new_figure(6.2, 4.0)
+    fig, ax = new_figure(6.2, 3.6)
     wp.plot(frame, ax, floor=1e-16, xlabel="error at the final time / wobble amplitude")
     wp.legend_below(fig)                 # below the axes: no line hidden under it
     results.timing_figure("work_precision", fig, f"Wall time against the error at the end of {span_text} of wobble "

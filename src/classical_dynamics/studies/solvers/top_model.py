@@ -57,18 +57,11 @@ def top_gravity(t, y, p, out):
 
 @rhs_function
 def apse(t, y, p, out):
-    """theta' sin theta = omega_1 gamma_2 - omega_2 gamma_1: zero at the apses of the nutation.
-
-    out has 9 entries, the first the event and the others a constant 1 that never changes sign: the compiled
-    loop (solvers/runge_kutta.integrate) reuses its scratch vector `tmp` with the length of the event vector
-    once an event is found, so an event vector shorter than the state would be overrun there (reported).
-    """
+    """theta' sin theta = omega_1 gamma_2 - omega_2 gamma_1: zero at the apses of the nutation."""
     out[0] = y[0] * y[4] - y[1] * y[3]
-    for k in range(1, 9):
-        out[k] = 1.0
 
 
-APSE_EVENTS_N = 9
+APSE_EVENTS_N = 1
 
 
 @rhs_function
