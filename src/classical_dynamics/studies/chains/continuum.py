@@ -111,6 +111,9 @@ def _rayleigh(results, spec, exact1, quick):
                    "√(l/g)")
     from . import symbolic
     b, derived, printed = symbolic.hanging_chain_quotient()
+    integral, membrane = symbolic.hanging_chain_tau()
+    results.number("tau_substitution_exact", int(integral and membrane), "1",
+                   note="1: $\\int_0^x dx/\\sqrt{gx} = 2\\sqrt{x/g}$ and $x = g\\tau^2/4$ turns (15) into (19) (sympy)")
     results.number("rayleigh_formula_exact", int(sp_simplify(derived - printed) == 0), "1",
                    note="1: Lamb's quotient (11) equals the one sympy derives from $T$ and $V$ for every $\\beta$")
     results.number("rayleigh_best_beta", beta_star, "1", note="stationary point, $6\\beta^2 + 4\\beta - 5 = 0$")

@@ -501,6 +501,13 @@ def _large_n(results, n, quick):
     results.hard_case("large_n_lowest_mode", f"Lowest mode of a chain of $n$ = {format_number(n)} particles to "
                       "$10^{-12}$ relative (pliability solver against Tricomi's expansion of the Laguerre zero)",
                       measured["pliability"], 1e-12)
+    # Lamb Art. 87: the pliabilities are reciprocal, sum Q q' = sum Q' q, here for the long chain's factored K^-1
+    rng = np.random.default_rng(7)
+    loads = rng.standard_normal((n, 2))
+    q = chain_eigen._apply_pliability(loads, np.arange(n, 0, -1.0), np.ones(n))
+    results.number("reciprocity_relative", float(abs(loads[:, 0] @ q[:, 1] - loads[:, 1] @ q[:, 0]) /
+                                                 (np.linalg.norm(loads[:, 0]) * np.linalg.norm(q[:, 1]))), "1",
+                   note=f"$|Q\\cdot q' - Q'\\cdot q|/|Q||q'|$ for two random loads, $n$ = {format_number(n)}")
     results.notes.append(f"At $n$ = {format_number(n)} LAPACK's tridiagonal solver gives $\\lambda_1$ to "
                          f"{format_number(measured['tridiagonal_select'], 2)} relative: the $n^2\\epsilon$ loss the "
                          "pliability form avoids.")

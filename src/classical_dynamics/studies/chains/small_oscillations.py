@@ -134,6 +134,19 @@ def constraint(results, built, samples: int, seed: int):
         errors.append(abs((y @ K @ y) / (y @ M @ y) - lam[0]) / lam[0])
     results.number("stationary_order", float(np.polyfit(np.log(epsilons), np.log(errors), 1)[0]), "1",
                    note="fitted order of the quotient's error for the type $\\phi_1 + \\epsilon\\eta$, $\\eta$ random")
+    # Art. 92: the roots of det(V - lambda T) are real for any symmetric T > 0 and V, and positive when V > 0;
+    # asked of the general (non-symmetric) QZ solver, which could return complex roots
+    worst_imaginary, negative = 0.0, 0
+    for size in range(2, 11):
+        for _ in range(20):
+            a, b = rng.standard_normal((size, size)), rng.standard_normal((size, size))
+            T, V = a @ a.T + 1e-3 * np.eye(size), b @ b.T + 1e-3 * np.eye(size)
+            roots = sla.eig(V, T, right=False)
+            worst_imaginary = max(worst_imaginary, float(np.max(np.abs(roots.imag) / np.abs(roots))))
+            negative += int(np.sum(roots.real <= 0))
+    results.number("general_roots_imaginary", worst_imaginary, "1",
+                   note="largest $|\\operatorname{Im}\\lambda|/|\\lambda|$ over 180 random pairs $T$, $V$ of sizes 2 to 10")
+    results.number("general_roots_not_positive", negative, "1")
     results.number("constraints_tried", len(relations), "1")
     results.number("interlacing_violations", violations, "1",
                    note="roots outside $[\\sigma_k^2, \\sigma_{k+1}^2]$ after one constraint")

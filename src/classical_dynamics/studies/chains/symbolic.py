@@ -132,6 +132,20 @@ def hanging_chain_quotient():
     return beta, sp.simplify(quotient), printed
 
 
+def hanging_chain_tau():
+    """Lamb Art. 90 Ex. 3: the time to run from the free end to x at the local wave speed sqrt(g x) is
+    tau = 2 sqrt(x/g); with x = g tau^2/4 the chain's g d/dx (x dy/dx) becomes y'' + y'/tau, the membrane's (19).
+    Returns whether each holds exactly."""
+    x, g, tau = sp.symbols("x g tau", positive=True)
+    integral = sp.simplify(sp.integrate(1 / sp.sqrt(g * x), (x, 0, x)) - 2 * sp.sqrt(x / g)) == 0
+    f = sp.Function("y")(tau)
+    x_of_tau = g * tau**2 / 4
+    d_dx = lambda e: sp.diff(e, tau) / sp.diff(x_of_tau, tau)                      # noqa: E731
+    chain = g * d_dx(x_of_tau * d_dx(f))
+    membrane = sp.diff(f, tau, 2) + sp.diff(f, tau) / tau
+    return integral, sp.simplify(chain - membrane) == 0
+
+
 def string_parabola_quotient():
     """Lamb Ex. XIV.12: the type y = x (l - x) on a string (tension P, density rho) gives sigma^2 = 10 P/(rho l^2),
     the period 2 pi/sqrt(10) in units of l sqrt(rho/P). Returns sigma^2 rho l^2 / P, derived."""
