@@ -19,7 +19,7 @@ __all__ = ["TITLE", "EFFECTS", "check", "run"]     # the interface every study m
 _EFFECT_ENDS = {"gravity": {"fixed-free"}, "rotation": {"fixed-free"}}
 _LINKS_EFFECTS = {"gravity"}
 _PARTICLE_ONLY_ANALYSES = {"accuracy_cost", "time_domain", "dispersion", "large_n", "separation",
-                           "rayleigh_symmetric", "constraint", "forced", "friction", "initial_value", "parabola_type", "ring_waves"}
+                           "rayleigh_symmetric", "constraint", "forced", "friction", "initial_value", "parabola_type", "ring_waves", "continuum_limit"}
 # an analysis that needs an effect: the response needs a force, the decay a dissipation
 _ANALYSIS_NEEDS = {"forced": "forcing", "friction": "friction"}
 _NOT_RESTORING = {"forcing", "friction"}

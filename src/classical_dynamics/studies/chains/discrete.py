@@ -151,6 +151,8 @@ def run(scene, results, quick):
                        note="$\\sigma^2\\rho l^2/P$ of the type $x(l - x)$ (Lamb Ex. XIV.12), derived with sympy")
         results.number("parabola_over_continuum", quotient / np.pi**2, "1",
                        note="over the continuous string's exact $\\pi^2$: above 1, as Art. 94 requires")
+    if "continuum_limit" in analysis:
+        _continuum_limit(results, chain, effects, ends, analysis["continuum_limit"]["n_values"])
     if "initial_value" in analysis:
         small_oscillations.initial_value(results, built, analysis["initial_value"])
     if shapes is not None and analysis.get("mode_shapes") and "gravity" in effects:
@@ -163,6 +165,28 @@ def run(scene, results, quick):
         _large_n(results, analysis["large_n"]["n"], quick)
     if analysis.get("dispersion"):
         _dispersion(results, built, values, unit, unit_name, unit_label)
+
+
+def _continuum_limit(results, chain, effects, ends, n_values):
+    """The string of density rho = (mass)/l lumped into n particles of rho a each (Lamb's loaded string: the
+    spacing a = l/(n + 1) carries its own mass): its lowest three frequencies tend to the continuous string's
+    harmonics (s pi / l) sqrt(P / rho); the fitted order of the approach."""
+    length, total = chain["length_m"], float(np.sum(_masses(chain, chain["n"])))
+    errors, intervals = [], []
+    for n in n_values:
+        built = particle_chain(n, ends, length, np.full(n, total / (n + 1)), effects)
+        lam, _ = chain_eigen.modes(built.segment_stiffness, built.diagonal, built.masses, ends, 3)
+        errors.append(np.abs(np.sqrt(lam) / continuum_frequencies(effects, ends, length, total, 3, n=n) - 1))
+        intervals.append(built.geometry.n_segments)
+    errors = np.array(errors)
+    orders = [-np.polyfit(np.log(intervals), np.log(errors[:, s]), 1)[0] for s in range(3)]
+    results.number("continuum_limit_order", float(min(orders)), "1",
+                   note=f"fitted order in the number of intervals of the lowest three frequencies' approach to the "
+                        f"harmonics, $n$ = "
+                        f"{n_values[0]} to {n_values[-1]} (smallest of the three)")
+    results.number("continuum_limit_error_at_largest", float(errors[-1].max()), "1",
+                   note=f"largest relative difference from the harmonics at $n$ = {n_values[-1]}")
+    results.number("continuum_limit_n_largest", int(n_values[-1]), "particles")
 
 
 def _closed_form(results, masses, springs, ends, name, values):
