@@ -19,17 +19,17 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import sympy as sp
-from scipy.linalg import null_space as sla_null_space, subspace_angles as sla_subspace_angles
+import scipy.linalg as sla
 
 
-def equilibrium(n: int, radius_m: float, mass_kg: float, omega: float, k: float):
-    """Bead positions, the tension that holds them on the circle, and the springs' natural length."""
+def equilibrium(n: int, radius_m: float, mass_kg: float, omega: float):
+    """Bead positions on the circle and the tension that holds them there (the springs' natural length is
+    whatever gives it: the stiffness about this state does not depend on it)."""
     theta = 2 * np.pi * np.arange(n) / n
     positions = radius_m * np.column_stack([np.cos(theta), np.sin(theta)])
     m = mass_kg / n
-    chord = 2 * radius_m * np.sin(np.pi / n)
     tension = m * omega**2 * radius_m / (2 * np.sin(np.pi / n))    # two neighbours pull each bead inward
-    return theta, positions, m, chord, tension, chord - tension / k
+    return theta, positions, m, tension
 
 
 def spring_stiffness(positions, edges, k: float, tension: float = 0.0):
@@ -84,7 +84,7 @@ def run_ring(scene, results, quick):
     n = chain["n"]                                   # 400 beads: a few seconds, quick or not
     radius = chain["length_m"] / (2 * np.pi)
     omega, k = effects["rotation"]["omega_rad_per_s"], float(effects["springs"]["k_n_per_m"])
-    theta, positions, m, chord, tension, _ = equilibrium(n, radius, chain["mass_kg"], omega, k)
+    theta, positions, m, tension = equilibrium(n, radius, chain["mass_kg"], omega)
     rho = chain["mass_kg"] / chain["length_m"]
     results.number("n", n, "particles")
     results.number("stiffness_ratio", k / (m * omega**2), "1", note="$k/m\\omega^2$: large, the chain nearly "
@@ -180,16 +180,17 @@ def run_triangle(scene, results, quick):
     rigid = np.column_stack([np.tile([1.0, 0.0], 3), np.tile([0.0, 1.0], 3),
                              np.column_stack([-positions[:, 1], positions[:, 0]]).ravel()])
     zero = shapes[:, :3]
-    results.number("zero_modes_vs_rigid", float(np.max(sla_subspace_angles(zero, rigid))), "rad",
+    results.number("zero_modes_vs_rigid", float(np.max(sla.subspace_angles(zero, rigid))), "rad",
                    note="largest principal angle between the zero modes and the rigid motions")
     breathing = positions.ravel() / np.linalg.norm(positions)
     results.number("breathing_mode_vs_radial", float(1 - abs(shapes[:, 5] @ breathing)), "1",
                    note="$1 - |\\cos\\theta|$: the top mode against the radial breathing")
     pair = shapes[:, 3:5]
-    expected = sla_null_space(np.column_stack([rigid, breathing]).T)     # what is left: the degenerate plane
-    results.number("degenerate_pair_subspace", float(np.max(sla_subspace_angles(pair, expected))), "rad",
+    expected = sla.null_space(np.column_stack([rigid, breathing]).T)     # what is left: the degenerate plane
+    pair_angle = float(np.max(sla.subspace_angles(pair, expected)))
+    results.number("degenerate_pair_subspace", pair_angle, "rad",
                    note="largest principal angle between the solver's pair and the plane orthogonal to the "
                         "rigid motions and the breathing (vectors of a degenerate pair are not unique)")
     results.hard_case("degenerate_pair", "Ozone: the doubly degenerate pair compared as a plane (principal "
                       "angles), not as vectors, which any rotation within it changes",
-                      float(np.max(sla_subspace_angles(pair, expected))), 1e-12, "rad")
+                      pair_angle, 1e-12, "rad")

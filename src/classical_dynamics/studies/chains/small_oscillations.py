@@ -24,6 +24,12 @@ def _matrices(built):
     return K, np.diag(built.masses)
 
 
+def _state_matrix(K, M, B):
+    """M q'' + B q' + K q = 0 as z' = A z, z = (q, q'): the quadratic eigenproblem linearized."""
+    n = len(K)
+    return np.block([[np.zeros((n, n)), np.eye(n)], [-np.linalg.solve(M, K), -np.linalg.solve(M, B)]])
+
+
 def _modes(built):
     """All frequencies sigma (rad/s) and M-normalized shapes (columns) of the undamped chain."""
     K, M = _matrices(built)
@@ -301,8 +307,7 @@ def friction(results, built, spec):
     rows = []
     for eps in spec["scales"]:
         B = eps * np.diag(built.damping)
-        A = np.block([[np.zeros((n, n)), np.eye(n)], [-np.linalg.solve(M, K), -np.linalg.solve(M, B)]])
-        lam = np.linalg.eigvals(A)
+        lam = np.linalg.eigvals(_state_matrix(K, M, B))
         lam = np.sort_complex(lam[lam.imag > 0])
         lam = lam[np.argsort(lam.imag)]
         for k, (symbols, C, l1, l2) in enumerate(shift):
@@ -360,7 +365,7 @@ def dissipation(results, built, scale):
     sigma, _ = _modes(built)
     n = len(sigma)
     B = np.diag(built.damping)
-    A = np.block([[np.zeros((n, n)), np.eye(n)], [-np.linalg.solve(M, K), -np.linalg.solve(M, B)]])
+    A = _state_matrix(K, M, B)
     t = np.linspace(0.0, 10 * 2 * np.pi / sigma[0], 401)
 
     def rhs(_, z):                     # the state, and the work done against friction, integral of 2F
@@ -372,8 +377,7 @@ def dissipation(results, built, scale):
     energy = 0.5 * np.einsum("it,ij,jt->t", v, M, v) + 0.5 * np.einsum("it,ij,jt->t", q, K, q)
     results.number("dissipation_balance", float(np.max(np.abs(energy - (energy[0] - lost))) / energy[0]), "1",
                    note="$T + V$ along DOP853 against its start less $\\int 2F\\,dt$ (relative to the start)")
-    lam = np.linalg.eigvals(np.block([[np.zeros((n, n)), np.eye(n)],
-                                      [-np.linalg.solve(M, K), -scale * np.linalg.solve(M, B)]]))
+    lam = np.linalg.eigvals(_state_matrix(K, M, scale * B))
     real = lam[np.abs(lam.imag) <= 1e-12 * np.abs(lam).max()].real
     results.number("aperiodic_scale", scale, "1", note="the dashpot raised past critical")
     results.number("aperiodic_real_roots", int(real.size), "1")

@@ -51,26 +51,8 @@ def _symbols_for(values, names):
     return [names[distinct.index(float(v))] for v in values], dict(zip(names, distinct))
 
 
-def derive(masses_kg, springs_n_per_m, ends: str):
-    """ω² of the chain in closed form (sympy), and the values of the symbols for this scene."""
-    masses, mass_values = _symbols_for(masses_kg, [m1, m2, m3])
-    springs = np.atleast_1d(springs_n_per_m).astype(float)
-    B = difference_matrix(len(masses), ends)
-    if springs.size == 1:
-        springs = np.full(B.shape[0], springs[0])
-    softest = springs.min()
-    ratios = [sp.nsimplify(s / softest, rational=True) for s in springs]
-    K = sp.Matrix(B.astype(int)).T * sp.diag(*[r * k for r in ratios]) * sp.Matrix(B.astype(int))
-    M = sp.diag(*masses)
-    lam = sp.Symbol("lambda")
-    polynomial = sp.factor((K - lam * M).det())
-    roots = sorted(sp.roots(sp.Poly(polynomial, lam)).keys(), key=lambda r: float(r.subs({k: 1, **mass_values})))
-    values = {k: float(softest), **mass_values}
-    return polynomial, roots, values
-
-
 def stiffness_and_mass(masses_kg, springs_n_per_m, ends: str):
-    """K and M of derive(), in the same symbols."""
+    """K and M in symbols: one mass symbol per distinct mass, springs as k times their ratio to the softest."""
     masses, _ = _symbols_for(masses_kg, [m1, m2, m3])
     springs = np.atleast_1d(springs_n_per_m).astype(float)
     B = sp.Matrix(difference_matrix(len(masses), ends).astype(int))
@@ -78,6 +60,17 @@ def stiffness_and_mass(masses_kg, springs_n_per_m, ends: str):
         springs = np.full(B.shape[0], springs[0])
     ratios = [sp.nsimplify(s / springs.min(), rational=True) for s in springs]
     return B.T * sp.diag(*[r * k for r in ratios]) * B, sp.diag(*masses)
+
+
+def derive(masses_kg, springs_n_per_m, ends: str):
+    """ω² of the chain in closed form (sympy), and the values of the symbols for this scene."""
+    K, M = stiffness_and_mass(masses_kg, springs_n_per_m, ends)
+    _, mass_values = _symbols_for(masses_kg, [m1, m2, m3])
+    lam = sp.Symbol("lambda")
+    polynomial = sp.factor((K - lam * M).det())
+    roots = sorted(sp.roots(sp.Poly(polynomial, lam)).keys(), key=lambda r: float(r.subs({k: 1, **mass_values})))
+    values = {k: float(np.min(springs_n_per_m)), **mass_values}
+    return polynomial, roots, values
 
 
 def shapes_are_exact(K, M, roots, shapes) -> bool:
@@ -122,14 +115,15 @@ def damped_frequency_shift(n_modes: int, mode: int):
     return sigma, C, sp.simplify(first[l1]), sp.simplify(second[l2])
 
 
-def hanging_chain_quotient():
+def hanging_chain_quotient_is_printed() -> bool:
     """Lamb Art. 94 Ex. 2: sigma^2 l/g of the type y = s + beta s^2/l (s from the top), from the energies
-    T ~ int rho y'^2 ds and V ~ int g rho (l - s) y'^2 ds (tension: the weight below), derived; and as printed."""
+    T ~ int rho y'^2 ds and V ~ int g rho (l - s) y'^2 ds (tension: the weight below), derived, equals the
+    printed (15 + 20 beta + 10 beta^2)/(10 + 15 beta + 6 beta^2) for every beta."""
     beta, s, l = sp.symbols("beta s l", positive=True)
     y = s + beta * s**2 / l
     quotient = sp.integrate((l - s) * sp.diff(y, s) ** 2, (s, 0, l)) / sp.integrate(y**2, (s, 0, l)) * l
     printed = (15 + 20 * beta + 10 * beta**2) / (10 + 15 * beta + 6 * beta**2)
-    return beta, sp.simplify(quotient), printed
+    return sp.simplify(quotient - printed) == 0
 
 
 def hanging_chain_tau():
