@@ -9,9 +9,35 @@ from pathlib import Path
 from .. import io
 
 
+def _keep_whole_lines(split_first_line):
+    """WeasyPrint 70's line splitter, without its one-word first lines.
+
+    A text box that ends in a collapsible space (the text before an <em> or a link) and fits its line only without
+    that space is measured with it: the splitter then takes the line for unbreakable and keeps just its first word,
+    so a paragraph opens with "This" alone on a line. The space hangs in CSS (css-text-3, white-space processing), so
+    the box fits; WeasyPrint's own inline layout already lets a trailing space overflow the line.
+    """
+
+    def split(text, style, context, max_width, *args, **kwargs):
+        result = split_first_line(text, style, context, max_width, *args, **kwargs)
+        stripped = text.rstrip(" ")
+        if (result[2] is None or stripped == text or not stripped or max_width is None
+                or style["white_space"] not in ("normal", "pre-line")):
+            return result
+        if split_first_line(stripped, style, context, max_width, *args, **kwargs)[2] is not None:
+            return result                               # it does not fit even without the space: a real break
+        return split_first_line(text, style, context, max_width + style["font_size"], *args, **kwargs)
+
+    return split
+
+
 def html_to_pdf(html_path: Path, pdf_path: Path) -> None:
     import weasyprint
+    from weasyprint.layout import inline
 
+    if not getattr(inline.split_first_line, "keeps_whole_lines", False):
+        inline.split_first_line = _keep_whole_lines(inline.split_first_line)
+        inline.split_first_line.keeps_whole_lines = True
     document = weasyprint.HTML(filename=str(html_path), media_type="print")
     with tempfile.TemporaryDirectory() as tmp:
         target = Path(tmp) / "report.pdf"
