@@ -4,6 +4,7 @@ import hashlib
 import json
 import re
 import shutil
+import subprocess
 import tarfile
 
 import pytest
@@ -193,9 +194,16 @@ def test_dist_archive_with_checksums(scratch):
         assert any(n.endswith("chains/hanging_particles/summary.json") for n in names)
         for line in sums:
             digest, name = line.split("  ")
-            assert hashlib.sha256(tar.extractfile(name).read()).hexdigest() == digest
-    outer = (scratch / "results/dist/SHA256SUMS").read_text().splitlines()[-1]
-    assert outer.split("  ")[0] == hashlib.sha256(archives[0].read_bytes()).hexdigest()
+            assert hashlib.sha256(tar.extractfile(f"{prefix}/{name}").read()).hexdigest() == digest
+        assert len(sums) == len(names) - 1                     # every member but the manifest itself
+        tar.extractall(scratch / "unpacked", filter="data")
+    # Each manifest checks where it lies, with the standard tool: the archive beside it, the members unpacked.
+    for folder in (scratch / "results/dist", scratch / "unpacked" / prefix):
+        check = subprocess.run(["sha256sum", "--check", "--strict", "SHA256SUMS"], cwd=folder,
+                               capture_output=True, text=True)
+        assert check.returncode == 0, check.stdout[-500:] + check.stderr[-500:]
+    outer = (scratch / "results/dist/SHA256SUMS").read_text().splitlines()
+    assert outer == [f"{hashlib.sha256(archives[0].read_bytes()).hexdigest()}  {archives[0].name}"]
 
 
 def test_the_report_prints_the_sha256_of_the_results_archive(built_repo):

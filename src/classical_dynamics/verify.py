@@ -277,7 +277,8 @@ def _read_sums(path: Path, archive: Path, prefix: str) -> dict[str, str]:
         digest, sep, name = line.partition("  ")
         if not sep or not re.fullmatch(r"[0-9a-f]{64}", digest):
             raise VerifyError(f"{archive}: malformed line in {prefix}/SHA256SUMS: {line[:60]!r}")
-        listed[name] = digest
+        # Members are named relative to <prefix>/ (earlier archives named them with the prefix).
+        listed[name if name.startswith(prefix + "/") else f"{prefix}/{name}"] = digest
     return listed
 
 

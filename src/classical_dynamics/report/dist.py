@@ -39,8 +39,12 @@ def archive_members(results_dir: Path, with_report: bool = True) -> list[Path]:
 
 
 def make_archive(results_dir: Path, archive: Path, with_report: bool = True) -> None:
-    """Deterministic tar.gz (sorted, fixed times and owners) plus SHA256SUMS of its members: beside the
-    dist archive SHA256SUMS, beside the results archive <prefix>.SHA256SUMS."""
+    """Deterministic tar.gz (sorted, fixed times and owners) with a SHA256SUMS of its members inside, and beside
+    it (SHA256SUMS for the dist archive, <prefix>.SHA256SUMS for the results archive) the archive's own sum.
+
+    Each manifest names files relative to the folder it lies in, so `sha256sum -c` checks it there: beside the
+    archive for the archive, inside the unpacked <prefix>/ for the members.
+    """
     results_dir, archive = Path(results_dir), Path(archive)
     prefix = archive.name.removesuffix(".tar.gz")
     members = archive_members(results_dir, with_report)
@@ -50,7 +54,7 @@ def make_archive(results_dir: Path, archive: Path, with_report: bool = True) -> 
         for path in members:
             data = path.read_bytes()
             rel = path.relative_to(results_dir).as_posix()
-            sums.append(f"{hashlib.sha256(data).hexdigest()}  {prefix}/{rel}")
+            sums.append(f"{hashlib.sha256(data).hexdigest()}  {rel}")
             info = tarfile.TarInfo(f"{prefix}/{rel}")
             info.size, info.mtime, info.mode, info.uid, info.gid = len(data), 0, 0o644, 0, 0
             tar.addfile(info, _io.BytesIO(data))
@@ -62,7 +66,7 @@ def make_archive(results_dir: Path, archive: Path, with_report: bool = True) -> 
     io.atomic_write_bytes(archive, compressed)
     archive_sum = hashlib.sha256(compressed).hexdigest()
     sums = archive.parent / ("SHA256SUMS" if with_report else f"{prefix}.SHA256SUMS")
-    io.atomic_write_text(sums, manifest.decode() + f"{archive_sum}  {archive.name}\n")
+    io.atomic_write_text(sums, f"{archive_sum}  {archive.name}\n")
 
 
 if __name__ == "__main__":
