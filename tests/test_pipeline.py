@@ -10,7 +10,7 @@ import tarfile
 import pytest
 import yaml
 
-from .conftest import copy_repository, snakemake
+from .conftest import copy_repository, run_env, snakemake
 
 pytestmark = pytest.mark.slow
 
@@ -216,3 +216,20 @@ def test_the_report_prints_the_sha256_of_the_results_archive(built_repo):
         names = tar.getnames()
     assert not any(n.endswith(("report.html", "report.pdf")) for n in names)
     assert any(n.endswith("chains/hanging_particles/summary.json") for n in names)
+
+
+def test_a_checkout_path_with_a_space_runs(tmp_path):
+    """make puts .venv inside the checkout, so the interpreter's path carries the checkout's space: every shell
+    rule quotes its paths. A venv in the spaced folder, seeing this environment's packages through a .pth file."""
+    import site
+    import sys
+    repo = copy_repository(tmp_path / "my checkout")
+    subprocess.run([sys.executable, "-m", "venv", "--without-pip", str(repo / ".venv")], check=True)
+    venv_site, = (repo / ".venv/lib").glob("python3*/site-packages")
+    (venv_site / "parent.pth").write_text("\n".join(site.getsitepackages()) + "\n")
+    done = subprocess.run([str(repo / ".venv/bin/python"), "-m", "snakemake", "-c", "1",
+                           "results/chains/two_masses_three_springs", "--config", "quick=1"], cwd=repo, env=run_env(repo),
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+    summary = json.loads((repo / "results/chains/two_masses_three_springs/summary.json").read_text())
+    assert summary["numbers"]

@@ -19,7 +19,7 @@ rule dist:
     conda:
         "../envs/pipeline.yaml"
     shell:
-        "{params.python} -m classical_dynamics dist results {output.archive} > {log} 2>&1"
+        "{params.python:q} -m classical_dynamics dist results {output.archive:q} > {log:q} 2>&1"
 
 
 rule verify:
@@ -34,4 +34,4 @@ rule verify:
     conda:
         "../envs/pipeline.yaml"
     shell:
-        "{params.python} -m classical_dynamics verify {params.archive} --cores {threads} 2>&1 | tee {log}"
+        "{params.python:q} -m classical_dynamics verify {params.archive:q} --cores {threads} 2>&1 | tee {log:q}"

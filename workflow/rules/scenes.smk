@@ -23,5 +23,5 @@ rule scene:
     conda:
         "../envs/pipeline.yaml"
     shell:
-        "{params.python} -m classical_dynamics run {wildcards.study} {input.schema} {input.scene}"
-        " {output.results} {output.timings} {params.quick} > {log} 2>&1"
+        "{params.python:q} -m classical_dynamics run {wildcards.study:q} {input.schema:q} {input.scene:q}"
+        " {output.results:q} {output.timings:q} {params.quick} > {log:q} 2>&1"

@@ -23,8 +23,8 @@ rule self_excited_gallery:
     conda:
         "../envs/pipeline.yaml"
     shell:
-        "{params.python} -m classical_dynamics.studies.self_excited.gallery results/self_excited"
-        " {output.results} {output.timings} {input.scenes} {params.quick} > {log} 2>&1"
+        "{params.python:q} -m classical_dynamics.studies.self_excited.gallery results/self_excited"
+        " {output.results:q} {output.timings:q} {input.scenes:q} {params.quick} > {log:q} 2>&1"
 
 
 # results/self_excited/gallery is no scene (there is no gallery.yaml): this rule makes it, not the scene rule.
