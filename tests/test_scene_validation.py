@@ -1,7 +1,10 @@
 """Bad scenes stop before any computation: one line naming file, field and expectation; nothing written."""
 
+import os
 import subprocess
 import sys
+import time
+from pathlib import Path
 
 import pytest
 import yaml
@@ -136,3 +139,59 @@ def test_only_listed_effects_are_evaluated(monkeypatch):
     chain = particle_chain(5, "fixed-fixed", 1.0, 0.2, {"tension": {"newton": 2.0}})
     assert called == ["tension"]
     assert set(chain.contributions) == {"tension"}
+
+
+# Hostile or accidental files: refused in one line before parsing runs away (issue 19).
+BOMB = "a: &a [x, x, x, x, x, x, x, x, x]\n" + "".join(
+    f"{chr(98 + i)}: &{chr(98 + i)} [{', '.join(['*' + chr(97 + i)] * 9)}]\n" for i in range(8))
+
+
+@pytest.mark.parametrize("case,text,field,expected", [
+    ("alias bomb", BOMB, "(YAML at line 2", "an alias (*a)"),
+    ("one alias", yaml.safe_dump(GOOD) + "extra: &x 1\nagain: *x\n", "(YAML at", "an alias (*x)"),
+    ("deep nesting", "title: " + "[" * 20000 + "]" * 20000 + "\n", "(YAML at", "nesting deeper than"),
+    ("oversized", "title: x\n" + "# padding\n" * 120_000, "(file)", "at most 1000 kB"),
+    ("not UTF-8", b"title: \xff\xfe\n", "(file)", "UTF-8 text"),
+])
+def test_hostile_scene_files_are_refused_quickly_in_one_line(tmp_path, case, text, field, expected):
+    path = tmp_path / "scene.yaml"
+    path.write_bytes(text if isinstance(text, bytes) else text.encode())
+    start = time.perf_counter()
+    with pytest.raises(SceneError) as error:
+        validate("chains", path, SCHEMA)
+    assert time.perf_counter() - start < 2
+    message = str(error.value)
+    assert "\n" not in message and message.startswith(f"{path}: field '{field}")
+    assert expected in message
+
+
+@pytest.mark.parametrize("kind", ["symlink", "fifo", "device"])
+def test_a_scene_that_is_not_a_regular_file_is_refused_without_reading_it(tmp_path, kind):
+    path = tmp_path / "scene.yaml"
+    if kind == "symlink":
+        (tmp_path / "elsewhere.yaml").write_text(yaml.safe_dump(GOOD))
+        path.symlink_to(tmp_path / "elsewhere.yaml")
+    elif kind == "fifo":
+        os.mkfifo(path)                     # reading it would block for ever
+    else:
+        path.symlink_to("/dev/zero")        # reading it would never end
+    with pytest.raises(SceneError, match=r"field '\(file\)': expected a regular file"):
+        validate("chains", path, SCHEMA)
+
+
+def test_a_physical_check_that_overflows_is_one_line(tmp_path):
+    """alpha = (1e308, 1e308) passes the schema; its square overflows in the middle-axis check."""
+    scene = (ROOT / "workflow/scenes/self_excited/middle_perturbed.yaml").read_text()
+    path = tmp_path / "scene.yaml"
+    path.write_text(scene.replace("alpha: [0.8, 0.3]", "alpha: [1.0e+308, 1.0e+308]"))
+    with pytest.raises(SceneError) as error:
+        validate("self_excited", path, ROOT / "workflow/schemas/self_excited.schema.yaml")
+    assert "\n" not in str(error.value) and str(error.value).startswith(f"{path}: field '")
+
+
+@pytest.mark.parametrize("name,leftover", [(".loaded_string.yaml.swp", True), ("loaded_string.yaml~", True),
+                                           ("#loaded_string.yaml#", True), (".hidden.yaml", True),
+                                           ("loaded_string.yaml", False), ("loaded_string.yml", False)])
+def test_editor_leftovers_are_not_scenes(name, leftover):
+    from classical_dynamics.scenes.loader import is_leftover
+    assert is_leftover(Path(name)) is leftover

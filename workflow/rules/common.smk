@@ -5,6 +5,7 @@ import sys
 from pathlib import Path
 
 from classical_dynamics.scenes import SceneError
+from classical_dynamics.scenes.loader import is_leftover
 from classical_dynamics.studies import STUDIES, validate
 
 PY = sys.executable
@@ -14,7 +15,7 @@ PACKAGE = Path("src/classical_dynamics")
 
 def scenes(study):
     """Every scene file of a study: dropping a YAML file in workflow/scenes/<study>/ adds it."""
-    return sorted(p.stem for p in Path("workflow/scenes", study).glob("*.yaml"))
+    return sorted(p.stem for p in Path("workflow/scenes", study).glob("*.yaml") if not is_leftover(p))
 
 
 def scene_outputs(study):
@@ -38,8 +39,13 @@ SHARED_CODE = code("solvers", "models", "scenes", "io.py", "provenance.py", "cli
 # build with one line (file, field, expectation) and nothing under results/ is touched.
 for _study in STUDIES:
     for _scene in sorted(Path("workflow/scenes", _study).glob("*")):
+        if is_leftover(_scene):            # an editor's swap or backup file
+            continue
         try:
             validate(_study, _scene, f"workflow/schemas/{_study}.schema.yaml")
         except SceneError as _error:
             sys.stderr.write(f"{_error}\n")
+            sys.exit(1)
+        except Exception as _error:        # a fault of ours, not the user's; still one line, naming the file
+            sys.stderr.write(f"{_scene}: could not be validated ({type(_error).__name__}: {_error})\n")
             sys.exit(1)

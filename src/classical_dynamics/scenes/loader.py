@@ -9,7 +9,9 @@ from __future__ import annotations
 
 import hashlib
 import math
+import os
 import re
+import stat
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable, Iterable
@@ -19,6 +21,15 @@ import yaml
 
 SCENE_NAME = re.compile(r"^[a-z0-9_]+$")
 RESERVED_NAMES = {"timings", "logs", "dist"}
+MAX_BYTES = 1_000_000          # a scene is a page of YAML; a megabyte is already a mistake
+MAX_DEPTH = 12                 # the deepest scene nests 4 levels
+# Files an editor or a merge leaves beside the scenes: never scenes, never an error.
+LEFTOVER = re.compile(r"^(\.|#)|(~|\.sw[a-p]|\.bak|\.orig|\.tmp|\.rej)$")
+
+
+def is_leftover(path: Path) -> bool:
+    """An editor's swap or backup file, a hidden file: ignored where scenes are listed."""
+    return bool(LEFTOVER.search(Path(path).name))
 
 
 class SceneError(ValueError):
@@ -52,7 +63,24 @@ class Scene:
 
 
 class _UniqueKeyLoader(yaml.SafeLoader):
-    """Safe loader that refuses a key given twice (PyYAML would silently keep the last)."""
+    """Safe loader that refuses a key given twice (PyYAML would silently keep the last), any alias (`*name`: a
+    scene needs none, and nine nested ones are an expansion bomb), and nesting deeper than MAX_DEPTH."""
+
+    depth = 0
+
+    def compose_node(self, parent, index):
+        if self.check_event(yaml.AliasEvent):
+            event = self.peek_event()
+            raise yaml.composer.ComposerError(None, None, f"an alias (*{event.anchor}): scenes take no aliases",
+                                              event.start_mark)
+        self.depth += 1
+        try:
+            if self.depth > MAX_DEPTH:
+                raise yaml.composer.ComposerError(None, None, f"nesting deeper than {MAX_DEPTH} levels",
+                                                  self.peek_event().start_mark)
+            return super().compose_node(parent, index)
+        finally:
+            self.depth -= 1
 
 
 def _construct_mapping(loader, node, deep=False):
@@ -119,11 +147,35 @@ def _reject_non_finite(data, path=""):
             _reject_non_finite(item, f"{path}.{i}" if path else str(i))
 
 
-def read_yaml(path: Path) -> object:
+def read_bytes(path: Path) -> bytes:
+    """The scene's bytes, read once: a regular file (not a link, device or pipe) of at most MAX_BYTES."""
     try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise SceneError(path, "(file)", "a readable UTF-8 YAML file", str(exc)) from None
+        info = os.lstat(path)
+    except OSError as exc:
+        raise SceneError(path, "(file)", "a readable file", exc.strerror) from None
+    if stat.S_ISLNK(info.st_mode):
+        raise SceneError(path, "(file)", "a regular file, not a symbolic link (copy the scene instead)",
+                         os.readlink(path))
+    if not stat.S_ISREG(info.st_mode):
+        raise SceneError(path, "(file)", "a regular file, not a device, pipe or folder", None, has_got=False)
+    if info.st_size > MAX_BYTES:
+        raise SceneError(path, "(file)", f"at most {MAX_BYTES // 1000} kB of YAML", f"{info.st_size} bytes")
+    try:
+        with open(path, "rb") as handle:
+            data = handle.read(MAX_BYTES + 1)
+    except OSError as exc:
+        raise SceneError(path, "(file)", "a readable file", exc.strerror) from None
+    if len(data) > MAX_BYTES:               # grew since the stat
+        raise SceneError(path, "(file)", f"at most {MAX_BYTES // 1000} kB of YAML", "more")
+    return data
+
+
+def read_yaml(path: Path, data: bytes | None = None) -> object:
+    data = read_bytes(path) if data is None else data
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise SceneError(path, "(file)", "UTF-8 text", f"byte {exc.start}: {data[exc.start:exc.start + 1]!r}") from None
     try:
         return yaml.load(text, Loader=_UniqueKeyLoader)
     except yaml.YAMLError as exc:
@@ -131,6 +183,8 @@ def read_yaml(path: Path) -> object:
         where = f"line {mark.line + 1}, column {mark.column + 1}" if mark else "(unknown line)"
         problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
         raise SceneError(path, f"(YAML at {where})", "valid YAML", problem) from None
+    except RecursionError:                  # belt and braces: MAX_DEPTH stops nesting first
+        raise SceneError(path, "(YAML)", f"nesting of at most {MAX_DEPTH} levels", None, has_got=False) from None
 
 
 def load_scene(path: Path | str, study: str, schema: dict, known_effects: Iterable[str],
@@ -142,7 +196,8 @@ def load_scene(path: Path | str, study: str, schema: dict, known_effects: Iterab
         raise SceneError(path, "(file name)",
                          "a name of lower-case letters, digits and _ ending in .yaml, not "
                          + ", ".join(sorted(RESERVED_NAMES)), path.name)
-    data = read_yaml(path)
+    raw = read_bytes(path)
+    data = read_yaml(path, raw)
     if not isinstance(data, dict):
         raise SceneError(path, "(top level)", "a mapping of scene fields", data)
     try:
@@ -163,8 +218,13 @@ def load_scene(path: Path | str, study: str, schema: dict, known_effects: Iterab
         field_name, expected, got, has_got = _expected_from(error)
         raise SceneError(path, field_name, expected, got, has_got=has_got)
     if check is not None:
-        check(path, data)
-    digest = hashlib.sha256(path.read_bytes()).hexdigest()
+        try:
+            check(path, data)
+        except SceneError:
+            raise
+        except (ArithmeticError, ValueError, TypeError) as exc:     # e.g. 1e308 squared in a physical check
+            raise SceneError(path, "(values)", "numbers the model can evaluate", f"{type(exc).__name__}: {exc}") from None
+    digest = hashlib.sha256(raw).hexdigest()                      # the bytes that were parsed
     return Scene(name=name, study=study, path=path, data=data, sha256=digest,
                  effects=dict(data.get("effects") or {}))
 
