@@ -60,6 +60,14 @@ def run(scene, results, quick):
     frame = wp.sweep(case, entries, repeats=repeats, budget_s=0.5 if quick else 2.0)
     orders = wp.fitted_orders(frame)
     accuracy = frame.drop(columns=["seconds", "runs"])
+    if scene.data["problem"] == "hnw_rigid_body":     # handbook (2.154)-(2.155): T and L^2 kept, to DOP853's accuracy
+        tight = accuracy[(accuracy.method == "dop853") & (accuracy.kind == "tolerance")]
+        tight = tight[tight.setting == tight.setting.min()].iloc[0]
+        results.number("dop853_tightest_rtol", float(tight.setting), "1")
+        results.number("dop853_tightest_energy_drift", float(tight.energy_drift), "1",
+                       note="largest relative drift of $T$ along DOP853 at its tightest tolerance")
+        results.number("dop853_tightest_casimir_drift", float(tight.casimir_drift), "1",
+                       note="largest relative drift of $L^2$ along DOP853 at its tightest tolerance")
     headers = accuracy_headers(scene.data["problem"])
     name = NAMES[case.name]
     results.table("accuracy", accuracy, f"The {name}: the error against the exact elliptic-function solution, by "
