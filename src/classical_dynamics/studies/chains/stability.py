@@ -51,9 +51,9 @@ def equilibrium(results, built):
     ring of springs k, each tied down by k, have a double root 4k/m; sympy finds every first minor of Delta zero
     there, and the motion over 10^4 periods stays bounded; a non-symmetric K with a double root grows as t."""
     K, M = built.stiffness_matrix(), np.diag(built.masses)
-    results.number("scene_smallest_stiffness_eigenvalue", float(sla.eigh(K, M, eigvals_only=True)[0]), "1/s²",
-                   note="this stable scene's smallest $\\lambda$ of $(K, M)$: positive, $V$ a minimum")
     k, m = float(np.min(built.segment_stiffness)), float(built.masses[0])
+    results.number("scene_smallest_stiffness_eigenvalue", float(sla.eigh(K, M, eigvals_only=True)[0]) / (k / m), "k/m",
+                   note="this stable scene's smallest $\\lambda$ of $(K, M)$: positive, $V$ a minimum")
     Kind = np.array([[0.0, k], [k, 0.0]])       # springs k, -k, k: each diagonal k + (-k), the coupling -(-k)
     eig = np.linalg.eigvalsh(Kind)
     results.number("indefinite_V_eigenvalues_over_k", (eig / k).tolist(), "k",

@@ -233,7 +233,7 @@ def _rotations(results, seed=22):
     rotvec = Rotation.from_matrix(printed).as_rotvec()
     results.number("ex2_2_rotvec_misalignment", float(1 - abs(rotvec @ expected) / np.linalg.norm(rotvec)), "1",
                    note="the same for scipy's rotation vector")
-    results.number("ex2_2_angle_deg", float(np.degrees(Rotation.from_matrix(printed).magnitude())), "deg",
+    results.number("ex2_2_angle_deg", float(np.degrees(Rotation.from_matrix(printed).magnitude())), "°",
                    note="scipy's rotation angle of the handbook's $R$")
-    results.number("ex2_2_angle_from_trace_deg", float(np.degrees(np.arccos((np.trace(printed) - 1) / 2))), "deg",
+    results.number("ex2_2_angle_from_trace_deg", float(np.degrees(np.arccos((np.trace(printed) - 1) / 2))), "°",
                    note="$\\arccos((\\mathrm{Tr}\\,R - 1)/2)$")
