@@ -5,6 +5,7 @@ import json
 import re
 import shutil
 import subprocess
+import sys
 import tarfile
 
 import pytest
@@ -233,3 +234,26 @@ def test_a_checkout_path_with_a_space_runs(tmp_path):
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
     summary = json.loads((repo / "results/chains/two_masses_three_springs/summary.json").read_text())
     assert summary["numbers"]
+
+
+def test_a_cut_short_result_is_refused_by_the_report_and_rerun_by_the_pipeline(scratch):
+    """A truncated summary.json: the report names it in one line; a dry run lists that scene (and what follows
+    from it) and nothing else; a kill's staging folder is read by nobody; the rerun restores the same bytes."""
+    summary = scratch / "results/chains/loaded_string/summary.json"
+    whole = summary.read_bytes()
+    summary.write_bytes(whole[:len(whole) // 2])
+    staging = scratch / "results/chains/.loaded_string.k1ll3d"
+    staging.mkdir()
+    (staging / "summary.json").write_text("{")
+    done = subprocess.run([sys.executable, "-m", "classical_dynamics", "report", "results", "/dev/null", "--quick"],
+                          cwd=scratch, env=run_env(scratch), capture_output=True, text=True)
+    assert done.returncode == 2 and "Traceback" not in done.stderr
+    assert done.stderr.strip() == (f"results/chains/loaded_string/summary.json: does not match its checksum in "
+                                   "provenance.json (truncated or edited); rebuild the scene")
+    out = snakemake(scratch, "-n", "--config", "quick=1")
+    assert job_counts(out.stdout) == {"scene": 1, "results_archive": 1, "report_html": 1, "report_pdf": 1, "all": 1}
+    assert "results/chains/loaded_string" in out.stdout
+    snakemake(scratch, "-c", "2", "--config", "quick=1")
+    assert summary.read_bytes() == whole
+    with tarfile.open(next((scratch / "results/dist").glob("*-results.tar.gz"))) as tar:
+        assert not any(".loaded_string.k1ll3d" in name for name in tar.getnames())

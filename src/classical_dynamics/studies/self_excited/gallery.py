@@ -13,6 +13,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
+from ...io import ResultError
+
 GALLERY = "gallery"
 ROOT = Path(__file__).resolve().parents[4]
 
@@ -198,6 +200,7 @@ def panels(group, study_dir: Path, scenes):
         path = folder / f"{table or 'portrait'}.csv"
         if scene not in scenes or not path.exists() or not (folder / "summary.json").exists():
             continue
+        io.check_result_folder(folder)          # a portrait is redrawn only from a whole scene folder
         numbers = io.read_json(folder / "summary.json")["numbers"]
         letter = LETTERS[len(out)]
         title = f"({letter}) seen along $z$" if table else panel_title(letter, numbers)
@@ -458,4 +461,7 @@ def main(argv=None) -> int:
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    try:
+        raise SystemExit(main())
+    except ResultError as error:           # a scene folder cut short or edited, named in one line
+        raise SystemExit(f"{error}")
