@@ -7,6 +7,7 @@ import shutil
 import subprocess
 import sys
 import tarfile
+from pathlib import Path
 
 import pytest
 import yaml
@@ -257,3 +258,32 @@ def test_a_cut_short_result_is_refused_by_the_report_and_rerun_by_the_pipeline(s
     assert summary.read_bytes() == whole
     with tarfile.open(next((scratch / "results/dist").glob("*-results.tar.gz"))) as tar:
         assert not any(".loaded_string.k1ll3d" in name for name in tar.getnames())
+
+
+@pytest.mark.parametrize("signal_name", ["SIGINT", "SIGKILL"])
+def test_a_build_killed_mid_job_resumes_to_the_same_results(scratch, signal_name):
+    """Kill a real build while a scene runs; the README's recovery (rerun; --unlock first after kill -9) gives
+    the same results files as the uninterrupted build."""
+    import os
+    import signal
+    import time
+    target = scratch / "results/chains/hanging_links"
+    before = {p.relative_to(target): p.read_bytes() for p in target.rglob("*") if p.is_file()}
+    shutil.rmtree(target)
+    log = scratch / "results/logs/chains/hanging_links.log"
+    log.unlink(missing_ok=True)
+    command = [str(Path(sys.executable).parent / "snakemake"), "-c", "1", "results/chains/hanging_links",
+               "--config", "quick=1"]
+    build = subprocess.Popen(command, cwd=scratch, env=run_env(scratch), stdout=subprocess.DEVNULL,
+                             stderr=subprocess.DEVNULL, start_new_session=True)
+    deadline = time.monotonic() + 120
+    while not log.exists() and time.monotonic() < deadline:    # the scene's job has started
+        time.sleep(0.05)
+    time.sleep(0.5)
+    os.killpg(build.pid, getattr(signal, signal_name))
+    build.wait(timeout=60)
+    if signal_name == "SIGKILL":
+        snakemake(scratch, "--unlock")
+    snakemake(scratch, "-c", "1", "results/chains/hanging_links", "--config", "quick=1")
+    after = {p.relative_to(target): p.read_bytes() for p in target.rglob("*") if p.is_file()}
+    assert after == before
