@@ -108,3 +108,10 @@ def test_reduction_a_b_and_re_w():
     assert r.n["re_w_formula"] == pytest.approx(1.6, rel=1e-15)
     assert 1.0 < r.n["re_w_elongated_min"] < r.n["re_w_elongated_max"] < 2.0 < r.n["re_w_disc_min"]
     assert r.n["re_w_disc_max"] == pytest.approx(3.0, rel=1e-15)
+
+
+@pytest.mark.parametrize("s", [0.3, 7.0, 30.0])
+def test_gauss_rule_of_xi_against_quad(s):
+    from scipy import integrate
+    f = lambda u: (1.0 + 0.5 * np.sin(2.0 * u)) * (1.0 - np.exp(-0.5 * (s - u)))     # noqa: E731
+    assert abs(s5._gauss(f, s) - integrate.quad(f, 0.0, s, epsabs=1e-15, epsrel=1e-14, limit=200)[0]) < 1e-13 * s
