@@ -267,6 +267,7 @@ def grid_figure(group, found):
         elif panel.kind == "zoom":
             portrait.draw(ax, panel.frame, y_name, small=True)
             portrait.axes_labels(ax, y_label, angle, portrait.window_of(panel.frame, y_name)[:2])
+            ax.set_ylim(-0.15 * portrait.window_of(panel.frame, y_name)[2], None)     # the upper half: T1, T2
             elements |= set(panel.frame.element.unique())
         else:
             lo, hi, y_max = portrait.window_of(panel.frame, y_name)

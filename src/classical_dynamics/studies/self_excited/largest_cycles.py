@@ -106,8 +106,8 @@ def _zoom_table(results, m1, nu, x):
     s1 = float(np.arcsin(-m1))
     lo, hi = s1 - 0.3, s1 + 2 * np.pi + 0.3
     drawing = portrait.Drawing("p1", (lo, hi, 8.0))
-    drawing.curve("separatrix", x["T1"][:, 0], x["T1"][:, 1])
-    drawing.curve("separatrix", x["T2"][:, 0], x["T2"][:, 1])
+    drawing.curve("separatrix_T", x["T1"][:, 0], x["T1"][:, 1])
+    drawing.curve("separatrix_T", x["T2"][:, 0], x["T2"][:, 1])
     phi = np.linspace(lo, hi, 400)
     F = se.limit_cycle_p1(phi, m1, nu)
     if F is not None:
@@ -118,7 +118,7 @@ def _zoom_table(results, m1, nu, x):
     rows = [(1, c, x["f1"]), (2, c, x["f2"]), (3, *x["g1"]), (4, *x["g2"])]
     drawing.parts.append(pd.DataFrame({"element": "crossing", "curve": [r[0] for r in rows],
                                        "phi2": [r[1] for r in rows], "p1": [r[2] for r in rows]}))
-    top = 1.15 * max(x["f1"], x["f2"], float(np.max(F)) if F is not None else 0.0)
+    top = 1.25 * max(x["f1"], x["f2"], float(np.max(F)) if F is not None else 0.0)
     drawing.window(lo, hi, top)
     results.table("zoom", drawing.frame().round({"phi2": portrait.DIGITS, "p1": portrait.DIGITS}),
                   "Lee's Figure 2.12, one period of the plane: the separatrices $T_1$ (out of $S_1$) and $T_2$ (into "
@@ -172,15 +172,15 @@ def permanent_rotations(results, body, m1, nu, delta):
         w0 = np.array([sign * P, 0.0, 0.0])
         sol = solve(Problem(se.euler_largest, w0, (0.0, span), par), "dop853", rtol=1e-13, atol=1e-15)
         drift = max(drift, float(np.max(np.abs(sol.y - w0))))
-    results.number("x_rotation_p", P, "rad/time", note="√(m/|μ|): the permanent rotations about x at ±this")
-    results.number("x_rotation_drift", drift, "rad/time", note="largest change of ω started at (±√(m/|μ|), 0, 0): "
+    results.number("x_rotation_p", P, "1/time", note="√(m/|μ|): the permanent rotations about x at ±this")
+    results.number("x_rotation_drift", drift, "1/time", note="largest change of ω started at (±√(m/|μ|), 0, 0): "
                    "+ over t ≤ 100, − over t ≤ 20")
     kick = 1e-6
     t = np.linspace(0.0, t_end, 2001)
     sol = solve(Problem(se.euler_largest, np.array([P + kick, kick, kick]), (0.0, t_end), par), "dop853",
                 rtol=1e-13, atol=1e-18, t_eval=t)
     results.number("x_rotation_plus_kicked", float(np.max(np.linalg.norm(sol.y_eval - [P, 0, 0], axis=1))),
-                   "rad/time", note="largest distance from (√(m/|μ|), 0, 0), t ≤ 100, after a kick of 10⁻⁶ in p, q, r")
+                   "1/time", note="largest distance from (√(m/|μ|), 0, 0), t ≤ 100, after a kick of 10⁻⁶ in p, q, r")
     small = 1e-9                                  # kicked in p only: p − P grows like e^{2√(m|μ|) t} while small
     sol = solve(Problem(se.euler_largest, np.array([-P - small, 0.0, 0.0]), (0.0, t_end), par), "dop853",
                 rtol=1e-13, atol=1e-20, t_eval=t, bound=portrait.BLOW_UP_BOUND)
@@ -200,7 +200,7 @@ def permanent_rotations(results, body, m1, nu, delta):
         sol = solve(Problem(se.euler_largest, w0, (0.0, T), par), "dop853", rtol=1e-12, atol=1e-14, t_eval=ts)
         mean = float(np.trapezoid(sol.y_eval[:, 0], ts) / T)
         rows.append({"delta": d, "m1": m1d, "mean_p": mean, "ratio": mean / P})
-        results.number(f"mean_p_F_delta_{d:g}".replace(".", "_"), mean, "rad/time", note=f"time mean of p over one "
+        results.number(f"mean_p_F_delta_{d:g}".replace(".", "_"), mean, "1/time", note=f"time mean of p over one "
                        f"period of ω on F, δ = {d:g} (m, μ fixed), Euler's equations")
     results.table("x_rotation_limit", pd.DataFrame(rows), "As $\\delta \\to 0$ (the torque fixed) $F$ shrinks onto "
                   "the permanent rotation $p = \\sqrt{m/|\\mu|}$: the time mean of $p$ over one period of "
