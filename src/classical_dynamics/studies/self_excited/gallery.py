@@ -71,7 +71,12 @@ GROUPS = (
               ("largest_perturbed_reversed", "For $m_1 < -1$ with drag (Lee's Figure 2.19), $\\boldsymbol{\\omega}$ "
                "runs to the negative $x$-axis from every start."),
               ("largest_perturbed_strong", "For $m_1 > 1$ with drag (Lee's Figure 2.20) there are no singular "
-               "points, but $F$ and $F_1$ exist; above $F_1$, $\\boldsymbol{\\omega}$ tends to $F$."))),
+               "points, but $F$ and $F_1$ exist; above $F_1$, $\\boldsymbol{\\omega}$ tends to $F$."),
+              ("largest_perturbed_cycles/zoom", "One period of the first plane (Lee's Figure 2.12): the separatrix "
+               "$T_1$ out of the saddle $S_1$ crosses the vertical through the center at $f_1$, above the point "
+               "$f_2$ where $T_2$ into $S_2$ crosses it; so $T_1$ goes on to the vertical through $S_2$ ($g_1$) and "
+               "$T_2$ comes from the $\\varphi_2$-axis ($g_2$). Below $\\nu^*$ $f_1$ lies above $f_2$, above "
+               "$\\nu^*$ below it."))),
     Group("smallest", "largest",
           "The torque along the smallest axis $z$. Lee's title says “largest or smallest”: the same plane, "
           "Lee (2.10), serves, with $p$ and $r$, $a$ and $c$ exchanged. Euler's equations with the torque along $z$, integrated "
@@ -182,7 +187,7 @@ def panel_title(letter, numbers):
 class Panel:
     letter: str
     scene: str
-    kind: str                  # "portrait" or "body_view"
+    kind: str                  # "portrait", "body_view" or "zoom" (one period of a plane, its own window)
     title: str
     text: str
     frame: object              # the scene's table
@@ -203,7 +208,9 @@ def panels(group, study_dir: Path, scenes):
         io.check_result_folder(folder)          # a portrait is redrawn only from a whole scene folder
         numbers = io.read_json(folder / "summary.json")["numbers"]
         letter = LETTERS[len(out)]
-        title = f"({letter}) seen along $z$" if table else panel_title(letter, numbers)
+        of = next((f"({p.letter})" for p in out if p.scene == scene and p.kind == "portrait"), panel_title("", numbers))
+        title = {"body_view": f"({letter}) seen along $z$", "zoom": f"({letter}) one period of {of}"}.get(
+            table, panel_title(letter, numbers))
         out.append(Panel(letter, scene, table or "portrait", title, text, pd.read_csv(path), numbers))
     return out
 
@@ -242,16 +249,29 @@ def grid_figure(group, found):
     columns, rows = layout(len(found))
     spare = columns * rows > len(found)
     height = min(MAX_HEIGHT_IN, rows * ROW_HEIGHT_IN + (0.0 if spare else LEGEND_HEIGHT_IN) + (0.5 if body else 0))
+    zoom = any(p.kind == "zoom" for p in found)          # a zoom keeps its own window: share by hand, not by subplots
     fig, axes = plt.subplots(rows, columns, figsize=(FULL_WIDTH_IN, height), layout="constrained", squeeze=False,
-                             sharex=share_x, sharey=share_y,
+                             sharex=share_x and not zoom, sharey=share_y and not zoom,
                              width_ratios=[2.6, 1.0] if body else None)
+    if zoom:
+        shared = [ax for ax, p in zip(axes.flat, found) if p.kind == "portrait"]
+        for ax in shared[1:]:
+            if share_x:
+                ax.sharex(shared[0])
+            if share_y:
+                ax.sharey(shared[0])
     elements = set()
     for k, (ax, panel) in enumerate(zip(axes.flat, found)):
         ax.grid(True, which="both", alpha=0.25, linewidth=0.6)
-        bottom, left = k + columns >= len(found), k % columns == 0
+        bottom, left = k + columns >= len(found) - zoom, k % columns == 0     # a zoom (last) has its own axes
         if panel.kind == "body_view":
             draw_seen_along_z(ax, panel.frame, small=True)
             elements.add("euler")
+        elif panel.kind == "zoom":
+            portrait.draw(ax, panel.frame, y_name, small=True)
+            portrait.axes_labels(ax, y_label, angle, portrait.window_of(panel.frame, y_name)[:2])
+            ax.set_ylim(-0.15 * portrait.window_of(panel.frame, y_name)[2], None)     # the upper half: T1, T2
+            elements |= set(panel.frame.element.unique())
         else:
             lo, hi, y_max = portrait.window_of(panel.frame, y_name)
             window = (min(w[0] for w in windows) if share_x else lo, max(w[1] for w in windows) if share_x else hi,

@@ -149,6 +149,9 @@ def run(scene, results, quick):
     if data.get("analysis", {}).get("bifurcation"):
         _singular_point_bifurcation(results)
         _limit_cycle_bifurcation(results, m1, nu)
+    if not smallest:
+        from . import largest_cycles            # Lee §2.5 (Figure 2.12, the motions on and off F) and §2.6
+        largest_cycles.run(results, data, body, m1, nu, delta)
 
 
 def _eigenvalue_check(results, m1, nu, points):
