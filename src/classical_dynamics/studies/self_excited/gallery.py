@@ -419,7 +419,34 @@ def build(study_dir: Path, scenes, quick=False):
                                "draws the scene's portrait")
                 results.number(f"grid_{panel.scene}", group.name, "", note="the grid that draws the scene's portrait")
     closed_forms(results)
+    symbolic_checks(results)
     return results
+
+
+def symbolic_checks(results):
+    """Lee §3's k1, k2, mu_c and nu_c, and §4.1's series coefficients, by sympy (see symbolic.py)."""
+    import numpy as np
+    from . import symbolic
+    rng = np.random.default_rng(1964)
+    results.number("k_constants_mismatch", symbolic.k_constants(), "1", note="terms of (3.3) put into Euler's q "
+                   "equation that do not cancel against Lee's (3.8) with his m0, k1, k2 (sympy)")
+    factors, exceptions, samples, below = symbolic.mu_c_regimes(rng)
+    results.number("mu_c_factor_mismatch", factors, "1", note="of k1 − k2 = ½(α1 − α2)²(a + c)(|μ| − μc) and "
+                   "k1 + k2 = −½(α1 + α2)²(a + c)(|μ| + μc), those sympy does not confirm")
+    results.number("mu_c_regime_exceptions", exceptions, "1", note=f"of {samples} random bodies, cylinders and "
+                   f"drags |μ| in (0, 2μc) ({below} below μc), those breaking Lee's rule: below μc |k1| > |k2| and "
+                   "k1 < 0, above it |k2| > |k1| and k2 < 0")
+    identity, exact, largest, bodies = symbolic.nu_c(rng)
+    results.number("nu_c_identity_mismatch", identity, "1", note="a − b + c − abc simplified by sympy for symbolic "
+                   "A, B, C (0: the identity holds, so b < a + c and νc < ½)")
+    results.number("nu_c_exact", float(exact), "1", note=f"b/(2(a + c)) in exact arithmetic for the moments 3, 2.2, "
+                   f"1.2: {exact}")
+    results.number("nu_c_sweep_max", largest, "1", note=f"largest νc = b/(2(a + c)) over {bodies} random bodies "
+                   "A > B > C, A < B + C")
+    differ, total, _ = symbolic.lindstedt()
+    results.number("lindstedt_mismatch", len(differ), "1", note=f"of Lee's {total} printed coefficients of (4.6)–"
+                   "(4.8) (h1, θ2's three, h2, c0 … c3, h3), those that differ from a sympy Lindstedt–Poincaré "
+                   "expansion of (4.1) to third order" + (f": {', '.join(differ)}" if differ else ""))
 
 
 def main(argv=None) -> int:
