@@ -83,6 +83,9 @@ def check(path: Path, data: dict) -> None:
                          "moment)", sorted(effects))
     if L.m == 0.0 and "body_torque" in effects:
         raise SceneError(path, "effects.body_torque", "a plane that needs a constant torque (none here)", 0.0)
+    if data.get("analysis", {}).get("motions") and (axis != "largest" or plane["nu"] != 0.0):
+        raise SceneError(path, "analysis.motions", "torque_axis: largest and nu = 0 (Lee §2.2-§2.4)",
+                         [axis, plane["nu"]])
     _check_range(path, data)
 
 

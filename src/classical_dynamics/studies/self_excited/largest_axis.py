@@ -148,6 +148,9 @@ def run(scene, results, quick):
             accuracy.limit_cycle(results, m1, nu, quick)
     if data.get("analysis", {}).get("bifurcation"):
         _singular_point_bifurcation(results)
+    if data.get("analysis", {}).get("motions"):
+        from . import motions
+        motions.run(results, L, m1, points)
         _limit_cycle_bifurcation(results, m1, nu)
 
 
