@@ -499,3 +499,38 @@ def test_motions_only_for_the_largest_axis_without_drag(tmp_path):
     data = yaml.safe_load((ROOT / "workflow/scenes/self_excited/largest_perturbed_cycles.yaml").read_text())
     data.setdefault("analysis", {})["motions"] = True
     assert_refused(tmp_path, "self_excited", data, "analysis.motions")
+
+
+def test_motion_in_space_on_F_two_attitudes_agree_and_the_body_does_not_return():
+    from classical_dynamics.studies.self_excited import space
+
+    m1, nu = 0.5, 0.1
+    L = se.LargestAxis.with_plane_parameters(BODY, m1, -nu, 1.0)
+    sigma3 = np.arctan(-1.0 / (2.0 * nu))
+    w0 = L.from_plane(-sigma3, float(se.limit_cycle_p1(np.array([-sigma3]), m1, nu)[0]))
+    r = _Numbers()
+    xs, ls = space.run(r, L, BODY, w0)
+    n = r.numbers
+    # omega's period in the body: two turns of phi2 on F, Jacobi's form
+    assert n["space_omega_period"] == pytest.approx(2 * se.limit_cycle_period(m1, nu) / L.time_scale, rel=1e-10)
+    assert n["space_angles_vs_quaternion"] < 1e-10 and n["space_momentum_vs_torque"] < 1e-10
+    assert 0.1 < n["space_theta_min"] and n["space_theta_max"] < np.pi - 0.1
+    assert n["space_turn_after_period"] > 0.01
+    assert np.allclose(np.linalg.norm(xs, axis=1), 1.0, atol=1e-12) and np.allclose(np.linalg.norm(ls, axis=1), 1.0)
+
+
+def test_rotation_helpers_round_trip():
+    from classical_dynamics.studies.self_excited import space
+
+    R = space.angles_matrix(0.4, 1.1, -2.3)
+    assert np.allclose(space.quaternion_matrix(space.matrix_quaternion(R)), R, atol=1e-15)
+    assert space.rotation_angle(space.angles_matrix(0.0, 1e-9, 0.0)) == pytest.approx(1e-9, rel=1e-6)
+    for psi, theta in ((3.0, 0.2), (-2.9, 3.0)):       # traces below zero take the other branch
+        R = space.angles_matrix(psi, theta, 0.1)
+        assert np.allclose(space.quaternion_matrix(space.matrix_quaternion(R)), R, atol=1e-14)
+
+
+def test_motion_in_space_needs_the_limit_cycle(tmp_path):
+    data = yaml.safe_load((ROOT / "workflow/scenes/self_excited/largest_unperturbed.yaml").read_text())
+    data.setdefault("analysis", {})["motion_in_space"] = True
+    assert_refused(tmp_path, "self_excited", data, "analysis.motion_in_space")
