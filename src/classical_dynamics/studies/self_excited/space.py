@@ -158,10 +158,10 @@ def draw_sphere(ax, xs, ls):
     ax.scatter(*ls[0], color="#009E73", s=12, marker="s")
     for k, name in enumerate("XYZ"):
         tip = np.zeros(3)
-        tip[k] = 1.25
+        tip[k] = 1.15
         ax.plot(*np.c_[np.zeros(3), tip], color="0.4", lw=0.6)
-        ax.text(*(1.12 * tip), f"${name}$", color="0.2", ha="center", va="center")
-    ax.set_box_aspect((1, 1, 1))
+        ax.text(*(1.1 * tip), f"${name}$", color="0.2", ha="center", va="center")
+    ax.set_box_aspect((1, 1, 1), zoom=1.2)
     for set_lim in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
         set_lim(-1.0, 1.0)
     ax.set_axis_off()
