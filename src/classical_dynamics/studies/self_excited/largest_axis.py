@@ -146,6 +146,9 @@ def run(scene, results, quick):
         _limit_cycle_period(results, m1, nu)
         if centers and nu > 0:
             _cylinder(results, m1, nu, points)
+    if data.get("analysis", {}).get("motions"):
+        from . import motions
+        motions.run(results, L, m1, points)
     if data.get("analysis", {}).get("accuracy_cost"):
         from . import accuracy
         if nu == 0.0 and centers:
@@ -155,9 +158,6 @@ def run(scene, results, quick):
     if data.get("analysis", {}).get("bifurcation"):
         _singular_point_bifurcation(results)
         _limit_cycle_bifurcation(results, m1, nu)
-    if data.get("analysis", {}).get("motions"):
-        from . import motions
-        motions.run(results, L, m1, points)
 
 
 def _eigenvalue_check(results, m1, nu, points):
