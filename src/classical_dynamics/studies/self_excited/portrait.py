@@ -50,7 +50,7 @@ def series_check(results, measured, series, amplitudes, caption):
     return frame
 
 
-def series_figure(ax, frame, slope):
+def series_figure(ax, frame, slope, ncol=1):
     """A period series' relative error against the amplitude (log-log), the fitted slope in the legend, and the
     dashed reference slope eta^4 through the points' centre, moved down by a factor 3 so both stay visible."""
     from matplotlib.ticker import FixedLocator, NullFormatter, NullLocator
@@ -68,7 +68,7 @@ def series_figure(ax, frame, slope):
     ax.xaxis.set_minor_formatter(NullFormatter())
     ax.set_xlabel("amplitude $\\eta$")
     ax.set_ylabel("relative error of the period")
-    ax.figure.legend(loc="outside lower center", ncol=1)
+    ax.figure.legend(loc="outside lower center", ncol=ncol)
 
 
 COUNTS = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}
