@@ -26,6 +26,9 @@ class Recorder:
     def hard_case(self, name, description, measured, bound, unit=""):
         self.hard[name] = (measured, bound)
 
+    def figure(self, name, fig, caption):
+        self.figures = {**getattr(self, "figures", {}), name: caption}
+
 
 def test_attitude_turns_the_body_the_right_way():
     """A spin about the body's z axis at rate 1: after time t the body's x axis points at (cos t, sin t, 0)."""
@@ -74,6 +77,7 @@ def test_poinsot_body_numbers():
     assert 0 <= n["triangle_least_margin"] < 1e-3          # flat bodies come near the bound, none beyond it
     assert n["hnw_triangle_margin"] < 0
     assert n["invariable_planes_residual"] < 1e-9
+    assert "herpolhode" in r.figures and "$" in r.figures["herpolhode"]
 
 
 def test_cone_rates_signs_and_forms():

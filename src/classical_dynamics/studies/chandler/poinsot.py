@@ -142,9 +142,38 @@ def poinsot_body(results, spec) -> None:
                    note="herpolhode length over polhode length, less 1, over the run")
     crossings = int(np.sum(np.diff(np.sign(w[:, 0])) != 0))
     results.number("poinsot_half_periods", crossings, "1", note="sign changes of $p$ over the run")
+    shown = 2                                   # polhode periods drawn: more fill the ring
+    change = np.flatnonzero(np.diff(np.sign(w[:, 0])) != 0)
+    end = change[2 * shown] + 1 if len(change) > 2 * shown else len(w)
+    _herpolhode_figure(results, x_space[:end], n_space[0], lo, hi, shown, I)
     conjugate_plane(results, I)
     triangle_inequality(results)
     invariable_cone(results, I)
+
+
+def _herpolhode_figure(results, x_space, n0, lo, hi, periods, I):
+    """The herpolhode on the fixed plane between its two circles (a half-width figure)."""
+    from ...figure_style import TEXT_WIDTH_IN
+    from ...formatting import shortest
+    from ..results import new_figure
+    e1 = np.cross(n0, [0.0, 1.0, 0.0])
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(n0, e1)
+    fig, ax = new_figure(0.5 * TEXT_WIDTH_IN, 2.25)
+    turn = np.linspace(0.0, 2.0 * np.pi, 361)
+    ax.plot(x_space @ e1, x_space @ e2, lw=0.9, color="C4")
+    for radius in (lo, hi):
+        ax.plot(radius * np.cos(turn), radius * np.sin(turn), ls="--", lw=0.7, color="0.3")
+    ax.plot([0], [0], "k+", ms=7)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(r"$\xi$ (ellipsoid units)")
+    ax.set_ylabel(r"$\eta$ (ellipsoid units)")
+    moments = " : ".join(shortest(float(v)) for v in I)
+    results.figure("herpolhode", fig, f"The herpolhode of a free body with $A : B : C$ = {moments} over {periods} "
+                   "polhode periods: the path of the point of contact on the fixed plane, about the invariable line "
+                   "(+), in units in which the momental ellipsoid is $\\mathbf x\\cdot I\\mathbf x = 1$. It "
+                   "touches alternately the two circles (dashed) whose radii follow from $T$, $H$ and the moments, "
+                   "and it has no inflexion (Lamb Art. 46, footnote).")
 
 
 def conjugate_plane(results, I, chords=2000, seed=20) -> None:
