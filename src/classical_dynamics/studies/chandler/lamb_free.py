@@ -410,13 +410,15 @@ def _constraining_couples(results, I, spin_over_turn, phases=64):
         worst_along = max(worst_along, abs(Gm @ c_hat) / perp_expected)
         spread = max(spread, float(np.ptp(G[:, 2])) / scale_z)
     # over one turn of the body at a fixed phase the mean in-plane couple is (H_z(t0 + P) - H_z(t0))/P, and
-    # H_z = v(A cos^2 chi + B sin^2 chi): the mean is about A v' from chi0 = 0 and B v' from chi0 = pi/2, not
-    # (A + B) v'/2, however fast the spin: only the average over the phase gives Lamb's value
+    # H_z = v(A sin^2 chi + B cos^2 chi) (at chi = 0 the body's e2 is along z): the mean is about B v' from a turn
+    # starting at chi = 0 and A v' from chi = pi/2, not (A + B) v'/2, however fast the spin: only the average over
+    # the phase gives Lamb's value
     period, t0 = 2 * np.pi / n, 3.0
     for label, c0 in (("0", 0.0), ("90", 0.5 * np.pi)):
+        c0 -= n * t0                                           # the body's phase at t0 is chi = n t0 + chi0
         mean = (momentum(t0 + period, c0)[2] - momentum(t0, c0)[2]).real / period
         results.number(f"constraining_one_turn_ratio_chi0_{label}", mean / (0.5 * (A + B) * v_dot(t0 + period / 2)),
-                       "1", note=f"mean in-plane couple over one turn from $\\chi_0$ = {label}°, over "
+                       "1", note=f"mean in-plane couple over one turn from $\\chi$ = {label}°, over "
                                  "$\\tfrac12(A + B)\\dot v$")
     results.number("constraining_spin_over_turn", spin_over_turn, "1", note="$n/v_0$, moments " + _moments(I))
     results.number("constraining_in_plane_deviation", worst_z, "1",
