@@ -135,3 +135,22 @@ def test_art61_identities_and_the_torque_routine():
     assert n["solar_couple_torque_routine_deviation"] < 1e-14
     assert abs(n["lunar_mean_factor_relative_deviation"]) < 1e-13
     assert n["lunar_rate_quadrature_over_formula"] == pytest.approx(1.0, rel=1e-13)
+
+
+@pytest.mark.parametrize("period_years", [17.3, 18.6, 20.1])
+def test_node_period_is_fitted_not_assumed(period_years):
+    """The long nutation's period is found by least squares: a synthetic obliquity series with a known period,
+    a semi-annual term and a trend gives that period back, whatever it is."""
+    from classical_dynamics.models import earth
+    from classical_dynamics.studies.precession import full
+
+    t = np.arange(0.0, 100.0 * earth.JULIAN_YEAR_DAYS, 1.0)
+    P = period_years * earth.JULIAN_YEAR_DAYS
+    semi = lambda x: 4.0 * np.pi * x / 365.2422 + 0.3          # noqa: E731
+    eps = (1e-7 * t / t[-1] + 4.5e-5 * np.cos(2 * np.pi * t / P + 1.0) + 3e-6 * np.sin(semi(t))
+           + 1e-7 * np.cos(4 * np.pi * t / P))
+    args = {"18.6 yr": lambda x: 2 * np.pi * x / (18.6 * 365.25), "semi-annual": semi}
+    out = Numbers()
+    full._node_period(out, t, eps, args)
+    assert out.numbers["node_period_fitted_years"] == pytest.approx(period_years, rel=1e-6)
+    assert out.numbers["node_period_iau_years"] == pytest.approx(18.613, rel=1e-4)
