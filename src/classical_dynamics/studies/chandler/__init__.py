@@ -93,6 +93,18 @@ def check(path: Path, data: dict) -> None:
         if not C <= A + B:
             raise SceneError(path, "analysis.poinsot.moments", "C ≤ A + B (a physical body, Lamb Art. 25)",
                              body["moments"])
+    if analysis.get("lamb_symmetric") and effects:
+        raise SceneError(path, "analysis.lamb_symmetric", "the rigid symmetric Earth (no effects)", sorted(effects))
+    free = analysis.get("lamb_free_body")
+    if free is not None:
+        A, B, C = free["moments"]
+        if not (A < B < C and A + B >= C):
+            raise SceneError(path, "analysis.lamb_free_body.moments", "A < B < C with A + B ≥ C (a physical body "
+                             "with three unequal moments)", free["moments"])
+        a, b = free["plate_half_sides"]
+        if not a > b:
+            raise SceneError(path, "analysis.lamb_free_body.plate_half_sides", "[a, b] with a > b",
+                             free["plate_half_sides"])
 
 
 def _check_observation(path, obs):

@@ -111,6 +111,12 @@ def run(scene, results, quick):
         _dissipation_structure(results, model)
     if analysis.get("cones"):
         _cones(results, model, amplitude)
+    if analysis.get("lamb_symmetric"):
+        from . import lamb_free
+        lamb_free.symmetric_earth(results, model, amplitude)
+    if "lamb_free_body" in analysis:
+        from . import lamb_free
+        lamb_free.free_body(results, analysis["lamb_free_body"])
 
 
 def _sense(results, rate, y):

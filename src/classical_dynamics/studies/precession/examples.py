@@ -45,6 +45,8 @@ def run(scene, model, results) -> None:
         added_mass(results, analysis["added_mass"])
     if analysis.get("uniaxal_products"):
         uniaxal_products(results)
+    if "lamb_art61" in analysis:
+        lamb_art61(results, model, analysis["lamb_art61"])
 
 
 def polhode_circle(results, model, spec) -> None:
@@ -277,3 +279,83 @@ def uniaxal_products(results) -> None:
     results.number("uniaxal_products_sympy", int(all(sp.expand(x - y) == 0 for x, y in zip(products, lamb))), "1",
                    note="sympy: the products of $A\\mathbf 1 + (C - A)\\hat{\\mathbf n}\\hat{\\mathbf n}^T$ are "
                         "Lamb's (1 if all three agree)")
+
+
+def lamb_art61(results, model, spec) -> None:
+    """Lamb Art. 61: the Sun's couple (4), the lunar triangle (13)-(15) and the mean factor (16).
+
+    sympy: (4) from MacCullagh's couple (3 gamma S/r^3) s x I s with B = A, in Lamb's axes (x in the equator 90°
+    from the equinoxes, y along the line of equinoxes, z the polar axis: the averaged couple M of (5) then has its
+    axis along the line of equinoxes, as the precession needs); (14)-(15) from unit vectors; the mean over chi.
+    Numerically: the full rung's torque routine (models.precession.torque_body) against (4) at random l; the mean
+    factor by quadrature over chi of the triangle built from vectors; the secular lunar rate recomputed from it.
+    """
+    import sympy as sp
+    from scipy.integrate import quad
+
+    l, e, i, chi = sp.symbols("l epsilon i chi", real=True)
+    k3 = sp.Symbol("k3", positive=True)                      # 3 gamma S (C - A)/r^3 = 2 kappa
+    s = sp.Matrix([-sp.sin(l) * sp.cos(e), sp.cos(l), sp.sin(l) * sp.sin(e)])   # the Sun in Lamb's axes
+    couple = k3 * sp.Matrix([s[1] * s[2], -s[0] * s[2], 0])  # (3 gamma S/r^3) s x I s, B = A: (C - A)(s_y s_z, -s_x s_z, 0)
+    kappa = k3 / 2
+    lamb4 = sp.Matrix([kappa * sp.sin(e) * sp.sin(2 * l), kappa * sp.sin(e) * sp.cos(e) * (1 - sp.cos(2 * l)), 0])
+    residual = sp.simplify(sp.expand_trig(couple - lamb4))
+    results.number("sympy_solar_couple_residual", 0 if residual == sp.zeros(3, 1) else 1, "1",
+                   note="0: MacCullagh's couple with $B = A$ is Lamb's (4) identically in $l$, $\\varepsilon$")
+    # the torque routine of the spin-resolved rung: the Sun fixed at longitude l on a circle, the figure axis at
+    # the obliquity eps, body axes (equinox, in the equator, pole) = Lamb's (y, -x, z)
+    rng = np.random.default_rng(spec["seed"])
+    eps = model.obliquity
+    p = np.zeros(prec.N_PARAMS)
+    p[prec.H_] = model.H
+    p[prec.SUN], p[prec.SUN_K] = 1.0, 3.0                     # 3 gamma S/r^3 = 3 (units): kappa/C = 3H/2
+    q = np.array([np.cos(eps / 2), -np.sin(eps / 2), 0.0, 0.0])
+    worst = 0.0
+    out = np.empty(3)
+    kappa_over_C = 1.5 * model.H
+    for lon in rng.uniform(0.0, 2.0 * np.pi, spec["samples"]):
+        p[prec.SUN_L0] = lon
+        prec.torque_body(0.0, q, p, out)
+        L, M, N = -out[1], out[0], out[2]
+        ref = kappa_over_C * np.array([np.sin(eps) * np.sin(2 * lon), np.sin(eps) * np.cos(eps) * (1 - np.cos(2 * lon)),
+                                       0.0])
+        worst = max(worst, float(np.max(np.abs(np.array([L, M, N]) - ref)) / (kappa_over_C * np.sin(eps))))
+    results.number("solar_couple_torque_routine_deviation", worst, "1",
+                   note=f"the full rung's torque routine against (4) at {spec['samples']} random longitudes "
+                        "(largest difference over $\\kappa\\sin\\varepsilon$)")
+    # (13)-(15): Z the ecliptic pole, C the figure pole at eps, M the lunar orbit's pole at i, angle MZC = chi
+    Z = sp.Matrix([0, 0, 1])
+    C = sp.Matrix([sp.sin(e), 0, sp.cos(e)])
+    Mv = sp.Matrix([sp.sin(i) * sp.cos(chi), sp.sin(i) * sp.sin(chi), sp.cos(i)])
+    cos_MC = (Mv.T * C)[0]
+    # sin MC cos ZCM: the tangents at C toward Z and toward M, (C x Z).(C x M)/|C x Z|, |C x Z| = sin eps
+    sin_cos = (C.cross(Z).T * C.cross(Mv))[0] / sp.sin(e)
+    r14 = sp.simplify(cos_MC - (sp.cos(i) * sp.cos(e) + sp.sin(i) * sp.sin(e) * sp.cos(chi)))
+    r15 = sp.simplify(sin_cos - (sp.cos(i) * sp.sin(e) - sp.sin(i) * sp.cos(e) * sp.cos(chi)))
+    r13 = sp.simplify(cos_MC * sp.cos(e) + sp.sin(e) * sin_cos - sp.cos(i))
+    results.number("sympy_lunar_triangle_residual", int(r13 != 0) + int(r14 != 0) + int(r15 != 0), "1",
+                   note="0: (13), (14) and (15) hold identically (the triangle built from unit vectors)")
+    mean = sp.simplify(sp.integrate(sp.expand(cos_MC * sin_cos), (chi, 0, 2 * sp.pi)) / (2 * sp.pi))
+    r16 = sp.simplify(sp.expand_trig(mean - sp.sin(e) * sp.cos(e) * (3 * sp.cos(i) ** 2 - 1) / 2))
+    results.number("sympy_lunar_mean_factor_residual", 0 if r16 == 0 else 1, "1",
+                   note="0: the mean over $\\chi$ of $\\cos MC\\sin MC\\cos ZCM$ is "
+                        "$\\sin\\varepsilon\\cos\\varepsilon\\cdot\\tfrac12(3\\cos^2 i - 1)$")
+    inc = model.orbits.moon_i_rad
+    f = sp.lambdify(chi, (cos_MC * sin_cos).subs({e: eps, i: inc}), "numpy")
+    quadrature = quad(f, 0.0, 2.0 * np.pi, epsabs=0.0, epsrel=1e-13)[0] / (2.0 * np.pi)
+    closed = np.sin(eps) * np.cos(eps) * 0.5 * (3.0 * np.cos(inc) ** 2 - 1.0)
+    results.number("lunar_mean_factor_quadrature", quadrature / (np.sin(eps) * np.cos(eps)), "1",
+                   note=f"the mean by quadrature over $\\chi$ at $i$ = {np.degrees(inc):.4g}°, over "
+                        "$\\sin\\varepsilon\\cos\\varepsilon$")
+    results.number("lunar_mean_factor_relative_deviation", quadrature / closed - 1.0, "1",
+                   note="against $\\tfrac12(3\\cos^2 i - 1)\\sin\\varepsilon\\cos\\varepsilon$")
+    # the Moon's secular rate about the ecliptic pole: the rate about M (alpha cos MC) times sin MC cos ZCM
+    # over sin eps, averaged over chi
+    alpha_moon = model.alphas()[1]
+    rate = alpha_moon * quadrature / np.sin(eps)
+    results.number("lunar_rate_from_quadrature_arcsec_per_year",
+                   rate * earth.JULIAN_YEAR_DAYS / earth.ARCSEC, "″/yr",
+                   note="the Moon's secular rate with the factor by quadrature")
+    results.number("lunar_rate_quadrature_over_formula", rate / model.lunar_rate(), "1",
+                   note="over the secular rung's lunar rate (the factor (16) in closed form)")
+
