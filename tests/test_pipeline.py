@@ -5,7 +5,9 @@ import json
 import re
 import shutil
 import subprocess
+import sys
 import tarfile
+from pathlib import Path
 
 import pytest
 import yaml
@@ -233,3 +235,55 @@ def test_a_checkout_path_with_a_space_runs(tmp_path):
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
     summary = json.loads((repo / "results/chains/two_masses_three_springs/summary.json").read_text())
     assert summary["numbers"]
+
+
+def test_a_cut_short_result_is_refused_by_the_report_and_rerun_by_the_pipeline(scratch):
+    """A truncated summary.json: the report names it in one line; a dry run lists that scene (and what follows
+    from it) and nothing else; a kill's staging folder is read by nobody; the rerun restores the same bytes."""
+    summary = scratch / "results/chains/loaded_string/summary.json"
+    whole = summary.read_bytes()
+    summary.write_bytes(whole[:len(whole) // 2])
+    staging = scratch / "results/chains/.loaded_string.k1ll3d"
+    staging.mkdir()
+    (staging / "summary.json").write_text("{")
+    done = subprocess.run([sys.executable, "-m", "classical_dynamics", "report", "results", "/dev/null", "--quick"],
+                          cwd=scratch, env=run_env(scratch), capture_output=True, text=True)
+    assert done.returncode == 2 and "Traceback" not in done.stderr
+    assert done.stderr.strip() == (f"results/chains/loaded_string/summary.json: does not match its checksum in "
+                                   "provenance.json (truncated or edited); rebuild the scene")
+    out = snakemake(scratch, "-n", "--config", "quick=1")
+    assert job_counts(out.stdout) == {"scene": 1, "results_archive": 1, "report_html": 1, "report_pdf": 1, "all": 1}
+    assert "results/chains/loaded_string" in out.stdout
+    snakemake(scratch, "-c", "2", "--config", "quick=1")
+    assert summary.read_bytes() == whole
+    with tarfile.open(next((scratch / "results/dist").glob("*-results.tar.gz"))) as tar:
+        assert not any(".loaded_string.k1ll3d" in name for name in tar.getnames())
+
+
+@pytest.mark.parametrize("signal_name", ["SIGINT", "SIGKILL"])
+def test_a_build_killed_mid_job_resumes_to_the_same_results(scratch, signal_name):
+    """Kill a real build while a scene runs; the README's recovery (rerun; --unlock first after kill -9) gives
+    the same results files as the uninterrupted build."""
+    import os
+    import signal
+    import time
+    target = scratch / "results/chains/hanging_links"
+    before = {p.relative_to(target): p.read_bytes() for p in target.rglob("*") if p.is_file()}
+    shutil.rmtree(target)
+    log = scratch / "results/logs/chains/hanging_links.log"
+    log.unlink(missing_ok=True)
+    command = [str(Path(sys.executable).parent / "snakemake"), "-c", "1", "results/chains/hanging_links",
+               "--config", "quick=1"]
+    build = subprocess.Popen(command, cwd=scratch, env=run_env(scratch), stdout=subprocess.DEVNULL,
+                             stderr=subprocess.DEVNULL, start_new_session=True)
+    deadline = time.monotonic() + 120
+    while not log.exists() and time.monotonic() < deadline:    # the scene's job has started
+        time.sleep(0.05)
+    time.sleep(0.5)
+    os.killpg(build.pid, getattr(signal, signal_name))
+    build.wait(timeout=60)
+    if signal_name == "SIGKILL":
+        snakemake(scratch, "--unlock")
+    snakemake(scratch, "-c", "1", "results/chains/hanging_links", "--config", "quick=1")
+    after = {p.relative_to(target): p.read_bytes() for p in target.rglob("*") if p.is_file()}
+    assert after == before

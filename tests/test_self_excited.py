@@ -441,3 +441,96 @@ def test_inverse_map_keeps_its_digits_far_from_the_start():
     M = se.MiddleAxis.with_plane_parameters(BODY, 0.5, -0.2, 0.8, 0.3)
     for phi2 in (-30.0, -5.0, 0.0, 5.0, 30.0):
         assert M.to_plane(M.from_plane(phi2, 0.3))[0] == pytest.approx([phi2, 0.3], abs=1e-12)
+
+
+class _Numbers:
+    def __init__(self):
+        self.numbers, self.cases = {}, {}
+
+    def number(self, name, value, unit, **kw):
+        self.numbers[name] = value
+
+    def hard_case(self, name, description, measured, bound, unit=""):
+        self.cases[name] = (measured, bound)
+
+
+def test_lee_section_2_motions_on_eulers_equations():
+    from classical_dynamics.studies.self_excited import motions
+
+    m1 = 0.5
+    L = se.LargestAxis.with_plane_parameters(BODY, m1, 0.0, 1.0)
+    r = _Numbers()
+    motions.run(r, L, m1, se.singular_points(m1, 0.0, -3 * np.pi, 3 * np.pi))
+    n = r.numbers
+    assert n["general_solution_difference"] < 1e-10
+    assert n["euler_time_10pi"] == pytest.approx(n["quadrature_time_10pi"], rel=1e-9)
+    assert n["closed_orbit_period_euler"] == pytest.approx(n["closed_orbit_period_line_integral"], rel=1e-9)
+    assert n["closed_orbit_return"] < 1e-10
+    assert n["first_kind_rate_over_m"] == pytest.approx(1.0, rel=1e-3)
+    assert n["second_kind_closest"] < 1e-6
+    assert n["saddle_growth_rate"] == pytest.approx(n["saddle_growth_rate_lee"], rel=1e-3)
+    assert n["permanent_rotation_residual"] < 1e-14 and n["center_kick_largest"] < 1e-5
+    assert n["permanent_rotation_groebner_remainders"] == 0
+    assert "x_axis_angle_ratio_t100" not in n                     # |m1| < 1: no such claim here
+
+
+def test_beyond_one_the_x_axis_attracts_and_the_threshold_gives_m1_one():
+    from classical_dynamics.studies.self_excited import motions
+
+    L = se.LargestAxis.with_plane_parameters(BODY, 1.5, 0.0, 1.0)
+    r = _Numbers()
+    motions.run(r, L, 1.5, [])
+    threshold = r.numbers["x_axis_delta_threshold"]
+    assert se.LargestAxis(BODY, L.m, 0.0, threshold).m1 == pytest.approx(1.0, rel=1e-12)
+    assert r.numbers["x_axis_angle_ratio_t100"] < 0.1
+    assert "closed_orbit_period_euler" not in r.numbers           # no centers beyond |m1| = 1
+
+
+def test_the_groebner_check_can_fail():
+    import sympy as sp
+
+    p, q, r = sp.symbols("p q r")
+    a, b, c, m = sp.symbols("a b c m")
+    G = sp.groebner([a * q * r + m, b * r * p, c * p * q], p, q, r, order="lex", domain=sp.QQ.frac_field(a, b, c, m))
+    assert G.reduce(p)[1] == 0 and G.reduce(q)[1] != 0           # p = 0 is forced, q = 0 is not
+
+
+def test_motions_only_for_the_largest_axis_without_drag(tmp_path):
+    data = yaml.safe_load((ROOT / "workflow/scenes/self_excited/largest_perturbed_cycles.yaml").read_text())
+    data.setdefault("analysis", {})["motions"] = True
+    assert_refused(tmp_path, "self_excited", data, "analysis.motions")
+
+
+def test_motion_in_space_on_F_two_attitudes_agree_and_the_body_does_not_return():
+    from classical_dynamics.studies.self_excited import space
+
+    m1, nu = 0.5, 0.1
+    L = se.LargestAxis.with_plane_parameters(BODY, m1, -nu, 1.0)
+    sigma3 = np.arctan(-1.0 / (2.0 * nu))
+    w0 = L.from_plane(-sigma3, float(se.limit_cycle_p1(np.array([-sigma3]), m1, nu)[0]))
+    r = _Numbers()
+    xs, ls = space.run(r, L, BODY, w0)
+    n = r.numbers
+    # omega's period in the body: two turns of phi2 on F, Jacobi's form
+    assert n["space_omega_period"] == pytest.approx(2 * se.limit_cycle_period(m1, nu) / L.time_scale, rel=1e-10)
+    assert n["space_angles_vs_quaternion"] < 1e-10 and n["space_momentum_vs_torque"] < 1e-10
+    assert 0.1 < n["space_theta_min"] and n["space_theta_max"] < np.pi - 0.1
+    assert n["space_turn_after_period"] > 0.01
+    assert np.allclose(np.linalg.norm(xs, axis=1), 1.0, atol=1e-12) and np.allclose(np.linalg.norm(ls, axis=1), 1.0)
+
+
+def test_rotation_helpers_round_trip():
+    from classical_dynamics.studies.self_excited import space
+
+    R = space.angles_matrix(0.4, 1.1, -2.3)
+    assert np.allclose(space.quaternion_matrix(space.matrix_quaternion(R)), R, atol=1e-15)
+    assert space.rotation_angle(space.angles_matrix(0.0, 1e-9, 0.0)) == pytest.approx(1e-9, rel=1e-6)
+    for psi, theta in ((3.0, 0.2), (-2.9, 3.0)):       # traces below zero take the other branch
+        R = space.angles_matrix(psi, theta, 0.1)
+        assert np.allclose(space.quaternion_matrix(space.matrix_quaternion(R)), R, atol=1e-14)
+
+
+def test_motion_in_space_needs_the_limit_cycle(tmp_path):
+    data = yaml.safe_load((ROOT / "workflow/scenes/self_excited/largest_unperturbed.yaml").read_text())
+    data.setdefault("analysis", {})["motion_in_space"] = True
+    assert_refused(tmp_path, "self_excited", data, "analysis.motion_in_space")

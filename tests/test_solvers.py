@@ -349,3 +349,29 @@ def test_a_short_event_vector_leaves_later_steps_exact():
     assert sol.event_t.size == 10                     # x1 = cos t crosses zero at pi/2 + k pi, k = 0..9
     np.testing.assert_allclose(sol.event_t, np.pi / 2 + np.pi * np.arange(10), atol=1e-10)
     np.testing.assert_allclose(sol.y, exact, atol=1e-9)
+
+
+def test_lee_cases_every_closed_form_and_blow_up_time():
+    from classical_dynamics.studies.solvers import hard_cases
+
+    class Collect:
+        def __init__(self):
+            self.numbers, self.cases = {}, []
+
+        def number(self, name, value, unit, **kw):
+            self.numbers[name] = value
+
+        def hard_case(self, name, description, measured, bound, unit=""):
+            self.cases.append((name, measured, bound))
+
+    r = Collect()
+    hard_cases._lee_cases(r)
+    assert {n for n in r.numbers if n.endswith("_t_star")} == {f"lee_case_{c}_t_star" for c in ("i", "iii", "iv", "vi")}
+    assert r.numbers["lee_cases_worst_difference"] < 1e-10
+    # Lee's printed forms, typed here: (i) and (iv) with tan, (iii) with arcoth
+    k, w = np.sqrt(2.0), np.sqrt(0.18)
+    assert r.numbers["lee_case_i_t_star"] == pytest.approx((np.pi / 2 - np.arctan(0.5 / k)) / w, abs=1e-9)
+    k, w = np.sqrt(0.4 / 0.3), np.sqrt(0.12)
+    assert r.numbers["lee_case_iii_t_star"] == pytest.approx(np.arctanh(k / 2.0) / w, abs=1e-9)
+    k, w = np.sqrt(0.6), np.sqrt(0.15)
+    assert r.numbers["lee_case_iv_t_star"] == pytest.approx((np.arctan(0.4 / k) + np.pi / 2) / w, abs=1e-9)

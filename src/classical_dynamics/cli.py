@@ -132,10 +132,11 @@ def main(argv=None) -> int:
     p.add_argument("b", metavar="RESULTS_B")
     p.set_defaults(func=cmd_diff)
     args = parser.parse_args(argv)
+    from .io import ResultError
     from .verify import VerifyError
     try:
         return args.func(args)
-    except (SceneError, VerifyError) as error:
+    except (SceneError, VerifyError, ResultError) as error:
         print(error, file=sys.stderr)
         return 2
 

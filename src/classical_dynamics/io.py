@@ -6,6 +6,7 @@ so an interrupted build never leaves a half-written file that looks finished.
 
 from __future__ import annotations
 
+import hashlib
 import io as _io
 import json
 import math
@@ -110,3 +111,48 @@ def replace_directory(staging: Path, target: Path) -> None:
     if target.exists():
         shutil.rmtree(target)
     os.replace(staging, target)
+
+
+# --- results folders: whole or refused ---------------------------------------------------------------------------
+
+class ResultError(ValueError):
+    """A results folder that is incomplete or corrupted. str(error) is one line naming the file."""
+
+
+def file_digests(files: dict[str, bytes]) -> dict[str, str]:
+    """{name: sha256} of a results folder's files: provenance.json records them, written with them."""
+    return {name: hashlib.sha256(data).hexdigest() for name, data in sorted(files.items())}
+
+
+def is_staging(path: Path | str) -> bool:
+    """A folder or file being written (or left by a kill): hidden, never a result."""
+    return Path(path).name.startswith(".")
+
+
+def result_folders(study_dir: Path | str) -> list[Path]:
+    """The finished scene folders of results/<study>/ (staging folders and timings left out), sorted."""
+    return sorted(p.parent for p in Path(study_dir).glob("*/summary.json")
+                  if not is_staging(p.parent) and p.parent.name != "timings")
+
+
+def check_result_folder(folder: Path | str, deep: bool = True) -> dict:
+    """The folder's provenance, once every file it lists is there with its recorded SHA-256 (deep) or at least
+    summary.json is (not deep: what a dry run can afford); ResultError names the first file that is not."""
+    folder = Path(folder)
+    try:
+        provenance = json.loads((folder / "provenance.json").read_bytes())
+    except (OSError, ValueError) as error:
+        raise ResultError(f"{folder}/provenance.json: unreadable or not JSON ({error}); rebuild the scene") from None
+    digests = provenance.get("files") if isinstance(provenance, dict) else None
+    if not isinstance(digests, dict) or "summary.json" not in digests:
+        raise ResultError(f"{folder}/provenance.json: lists no file checksums (written by an older version or cut "
+                          "short); rebuild the scene")
+    for name in (sorted(digests) if deep else ["summary.json"]):
+        try:
+            data = (folder / name).read_bytes()
+        except OSError:
+            raise ResultError(f"{folder}/{name}: missing (listed in provenance.json); rebuild the scene") from None
+        if hashlib.sha256(data).hexdigest() != digests[name]:
+            raise ResultError(f"{folder}/{name}: does not match its checksum in provenance.json (truncated or "
+                              "edited); rebuild the scene")
+    return provenance

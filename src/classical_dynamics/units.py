@@ -33,7 +33,7 @@ REGISTRY: dict[str, Unit] = {
     # angle and angular rates
     "rad": Unit("rad"), "°": Unit("°", close_up=True), "°E": Unit("°E", close_up=True),
     "″": Unit("″", close_up=True), "mas": Unit("mas"), "″/yr": Unit("″/yr", close_up=True),
-    "mas/yr": Unit("mas/yr"), "mas/cy": Unit("mas/cy"), "″/cy": Unit("″/cy", close_up=True), "rad/s": Unit("rad s$^{-1}$"), "cycles/yr": Unit("cycles/yr"),
+    "mas/yr": Unit("mas/yr"), "mas/cy": Unit("mas/cy"), "″/cy": Unit("″/cy", close_up=True), "rad/s": Unit("rad s$^{-1}$"), "rad/d": Unit("rad d$^{-1}$"), "cycles/yr": Unit("cycles/yr"),
     # lengths
     "m": Unit("m"), "km": Unit("km"), "cm": Unit("cm"), "ft": Unit("ft"),
     # a couple in the British engineering units of Lamb's examples (foot-pound force)

@@ -49,7 +49,7 @@ def scenes_of(folder: Path) -> list[tuple[str, str]]:
     if not folder.is_dir():
         raise VerifyError(f"{folder}: not a folder")
     found = sorted((p.parent.parent.name, p.parent.name) for p in folder.glob("*/*/summary.json")
-                   if p.parent.name != "timings")
+                   if p.parent.name != "timings" and not io.is_staging(p.parent))
     if not found:
         raise VerifyError(f"{folder}: not a results folder (no <study>/<scene>/summary.json)")
     return found

@@ -4,6 +4,7 @@
 import sys
 from pathlib import Path
 
+from classical_dynamics.io import ResultError, check_result_folder
 from classical_dynamics.scenes import SceneError
 from classical_dynamics.scenes.loader import is_leftover
 from classical_dynamics.studies import STUDIES, validate
@@ -20,6 +21,19 @@ def scenes(study):
 
 def scene_outputs(study):
     return expand("results/{study}/{scene}", study=study, scene=scenes(study))
+
+
+def result_state(wc):
+    """'whole' for a scene folder that is absent or matches the checksums its provenance records, else why not:
+    a params value, so that Snakemake reruns a scene whose result was truncated or edited since it ran."""
+    folder = Path("results", wc.study, wc.scene)
+    if not folder.exists():
+        return "whole"
+    try:
+        check_result_folder(folder, deep=False)
+    except ResultError as error:
+        return f"corrupted: {error}"
+    return "whole"
 
 
 def code(*parts):

@@ -18,6 +18,7 @@ rule scene:
     params:
         python=PY,
         quick=QUICK,
+        result=result_state,
     log:
         "results/logs/{study}/{scene}.log",
     conda:

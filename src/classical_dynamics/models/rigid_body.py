@@ -44,3 +44,19 @@ def oscillator(t, y, p, out):
 def riccati(t, y, p, out):
     """p' = m + mu p^2 (Lee 1964, eq. 2.4), p = (m, mu)."""
     out[0] = p[0] + p[1] * y[0] * y[0]
+
+
+@rhs_function
+def free_attitude(t, y, p, out):
+    """Euler's equations and the attitude of a free body: y = (omega_body, q), p = (I1, I2, I3).
+
+    q is the unit quaternion taking body vectors to space (v_space = q v q*), so q' = q (0, omega)/2."""
+    w0, w1, w2 = y[0], y[1], y[2]
+    out[0] = (p[1] - p[2]) / p[0] * w1 * w2
+    out[1] = (p[2] - p[0]) / p[1] * w2 * w0
+    out[2] = (p[0] - p[1]) / p[2] * w0 * w1
+    a, b, c, d = y[3], y[4], y[5], y[6]
+    out[3] = 0.5 * (-b * w0 - c * w1 - d * w2)
+    out[4] = 0.5 * (a * w0 + c * w2 - d * w1)
+    out[5] = 0.5 * (a * w1 - b * w2 + d * w0)
+    out[6] = 0.5 * (a * w2 + b * w1 - c * w0)

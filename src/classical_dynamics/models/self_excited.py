@@ -172,6 +172,33 @@ def euler_largest(t, w, p, out):
 
 
 @rhs_function
+def euler_largest_phase(t, w, p, out):
+    """Lee (2.2) with Lee's auxiliary angle beside it, w = (p, q, r, phi), d phi = p dt; p = (a, b, c, m, mu, ...)."""
+    out[0] = p[0] * w[1] * w[2] + p[3]
+    if p[4] != 0.0:
+        out[0] += p[4] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2])
+    out[1] = -p[1] * w[2] * w[0]
+    out[2] = p[2] * w[0] * w[1]
+    out[3] = w[0]
+
+
+@rhs_function
+def euler_largest_attitude(t, w, p, out):
+    """Lee (2.2) and the attitude: w = (p, q, r, e0, e1, e2, e3), the unit quaternion e turning body vectors into
+    space, de/dt = e * (0, omega)/2; p = (a, b, c, m, mu)."""
+    out[0] = p[0] * w[1] * w[2] + p[3]
+    if p[4] != 0.0:
+        out[0] += p[4] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2])
+    out[1] = -p[1] * w[2] * w[0]
+    out[2] = p[2] * w[0] * w[1]
+    e0, e1, e2, e3, x, y, z = w[3], w[4], w[5], w[6], w[0], w[1], w[2]
+    out[3] = 0.5 * (-e1 * x - e2 * y - e3 * z)
+    out[4] = 0.5 * (e0 * x + e2 * z - e3 * y)
+    out[5] = 0.5 * (e0 * y + e3 * x - e1 * z)
+    out[6] = 0.5 * (e0 * z + e1 * y - e2 * x)
+
+
+@rhs_function
 def euler_smallest(t, w, p, out):
     """Lee (2.1) with the torque along z: p' = a q r, q' = -b r p, r' = c p q + m + mu |w|^2; p = (a, b, c, m, mu)."""
     out[0] = p[0] * w[1] * w[2]
@@ -179,6 +206,24 @@ def euler_smallest(t, w, p, out):
     out[2] = p[2] * w[0] * w[1] + p[3]
     if p[4] != 0.0:
         out[2] += p[4] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2])
+
+
+@rhs_function
+def euler_largest_yz(t, w, p, out):
+    """Lee §2.6: the torque along x is M + mu0 (q^2 + r^2): p' = a q r + m + mu (q^2 + r^2); p = (a, b, c, m, mu).
+    q and r obey (2.5) as before, and p the conservative plane (2.8) (mu1 = 0) with the same m1."""
+    out[0] = p[0] * w[1] * w[2] + p[3] + p[4] * (w[1] * w[1] + w[2] * w[2])
+    out[1] = -p[1] * w[2] * w[0]
+    out[2] = p[2] * w[0] * w[1]
+
+
+@rhs_function
+def euler_grammel(t, w, p, out):
+    """Lee §2.6, Grammel's torque M - mu0 p^2 along x: p' = a q r + m - mu p^2; p = (a, b, c, m, mu), mu > 0.
+    It reduces to the plane (2.25) with sigma1 = 0, mu1 = -mu/(2 sqrt(bc)), m1 = 2m/(delta^2 a sqrt(bc))."""
+    out[0] = p[0] * w[1] * w[2] + p[3] - p[4] * w[0] * w[0]
+    out[1] = -p[1] * w[2] * w[0]
+    out[2] = p[2] * w[0] * w[1]
 
 
 @rhs_function

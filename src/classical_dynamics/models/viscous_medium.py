@@ -30,6 +30,23 @@ def viscous_symmetric(t, w, p, out):
     out[2] = p[5] - p[2] * w[2]
 
 
+@rhs_function
+def viscous_modulated(t, w, p, out):
+    """Lee (5.3) with a torque fixed in direction in the body whose modulus changes, F_i = m_i F(t) (5.4);
+    p = (h, nu, mu, m1, m2, m3, kind, a, b): F = 1 + a sin(b t) (kind 0) or 1 - a e^{-b t} (kind 1)."""
+    F = 1.0 + p[7] * np.sin(p[8] * t) if p[6] == 0.0 else 1.0 - p[7] * np.exp(-p[8] * t)
+    out[0] = p[0] * w[1] * w[2] + p[3] * F - p[1] * w[0]
+    out[1] = -p[0] * w[0] * w[2] + p[4] * F - p[1] * w[1]
+    out[2] = p[5] * F - p[2] * w[2]
+
+
+def modulation(kind: int, a: float, b: float):
+    """F(t) of viscous_modulated, as a numpy function (for the quadratures)."""
+    if kind == 0:
+        return lambda t: 1.0 + a * np.sin(b * np.asarray(t, float))
+    return lambda t: 1.0 - a * np.exp(-b * np.asarray(t, float))
+
+
 def symmetric_axis(moments) -> tuple[float, float]:
     """(A, C) of a body with two equal moments A = B; C is the third (any order). None if none are equal."""
     m = [float(x) for x in moments]

@@ -44,10 +44,9 @@ class ResultsIndex:
         self.dir = Path(results_dir)
         self.summaries, self.provenance = {}, {}
         for study in STUDIES:
-            for path in sorted((self.dir / study).glob("*/summary.json")):
-                scene = path.parent.name
-                self.summaries[(study, scene)] = io.read_json(path)
-                self.provenance[(study, scene)] = io.read_json(path.parent / "provenance.json")
+            for folder in io.result_folders(self.dir / study):       # whole ones only: ResultError otherwise
+                self.provenance[(study, folder.name)] = io.check_result_folder(folder)
+                self.summaries[(study, folder.name)] = io.read_json(folder / "summary.json")
 
     def studies(self):
         present = {study for study, _ in self.summaries}

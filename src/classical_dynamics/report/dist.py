@@ -29,12 +29,17 @@ def results_archive_name(results_dir: Path, root: Path = Path(".")) -> Path:
 
 
 def archive_members(results_dir: Path, with_report: bool = True) -> list[Path]:
+    """The files to archive: nothing being written (hidden staging folders and files), and only scene folders
+    that match the checksums their provenance records (io.ResultError names the first that does not)."""
     results_dir = Path(results_dir)
     members = [results_dir / name for name in INCLUDE] if with_report else []
     for path in sorted(results_dir.rglob("*")):
         rel = path.relative_to(results_dir)
-        if path.is_file() and path.suffix in SUFFIXES and rel.parts[0] not in ("dist", "logs"):
+        if (path.is_file() and path.suffix in SUFFIXES and rel.parts[0] not in ("dist", "logs")
+                and not any(io.is_staging(part) for part in rel.parts)):
             members.append(path)
+    for folder in {p.parent for p in members if p.name == "summary.json"}:
+        io.check_result_folder(folder)
     return members
 
 
@@ -74,4 +79,7 @@ if __name__ == "__main__":
     parser.add_argument("results")
     parser.add_argument("archive")
     args = parser.parse_args()
-    make_archive(Path(args.results), Path(args.archive), with_report=False)
+    try:
+        make_archive(Path(args.results), Path(args.archive), with_report=False)
+    except io.ResultError as error:
+        raise SystemExit(f"{error}")

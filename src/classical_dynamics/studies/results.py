@@ -121,8 +121,7 @@ class Results:
         plt.close("all")
 
     def _result_files(self, provenance):
-        files = {"summary.json": io.dumps_json(self.summary()).encode(),
-                 "provenance.json": io.dumps_json(provenance).encode()}
+        files = {"summary.json": io.dumps_json(self.summary()).encode()}
         files.update({f"{k}.csv": io.csv_text(f).encode() for k, (f, _, _) in self.tables.items()})
         files.update({f"{k}.svg": io.svg_bytes(f) for k, (f, _) in self.figures.items()})
         if self.stability:                     # the hard cases as a table too: the report links it
@@ -130,6 +129,8 @@ class Results:
             files["hard_cases.csv"] = io.csv_text(pd.DataFrame(self.stability)).encode()
         files.update({f"{k}.csv": io.csv_text(data).encode()
                       for k, (data, _) in self._plotted(self.figures, self.tables).items()})
+        # provenance.json carries every other file's checksum: readers refuse a folder that does not match it
+        files["provenance.json"] = io.dumps_json({**provenance, "files": io.file_digests(files)}).encode()
         return files
 
     def _timing_files(self, timing_rows):

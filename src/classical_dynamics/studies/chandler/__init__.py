@@ -83,6 +83,28 @@ def check(path: Path, data: dict) -> None:
                              "work-precision reference is the closed form", sorted(effects))
     if analysis.get("cones") and effects:
         raise SceneError(path, "analysis.cones", "the rigid symmetric Earth (no effects)", sorted(effects))
+    if analysis.get("cone_rates") and effects:
+        raise SceneError(path, "analysis.cone_rates", "the rigid symmetric Earth (no effects)", sorted(effects))
+    body = analysis.get("poinsot")
+    if body is not None:
+        A, B, C = body["moments"]
+        if not A < B < C:
+            raise SceneError(path, "analysis.poinsot.moments", "A < B < C (Lamb Art. 48's order)", body["moments"])
+        if not C <= A + B:
+            raise SceneError(path, "analysis.poinsot.moments", "C ≤ A + B (a physical body, Lamb Art. 25)",
+                             body["moments"])
+    if analysis.get("lamb_symmetric") and effects:
+        raise SceneError(path, "analysis.lamb_symmetric", "the rigid symmetric Earth (no effects)", sorted(effects))
+    free = analysis.get("lamb_free_body")
+    if free is not None:
+        A, B, C = free["moments"]
+        if not (A < B < C and A + B >= C):
+            raise SceneError(path, "analysis.lamb_free_body.moments", "A < B < C with A + B ≥ C (a physical body "
+                             "with three unequal moments)", free["moments"])
+        a, b = free["plate_half_sides"]
+        if not a > b:
+            raise SceneError(path, "analysis.lamb_free_body.plate_half_sides", "[a, b] with a > b",
+                             free["plate_half_sides"])
 
 
 def _check_observation(path, obs):
@@ -121,6 +143,20 @@ def run(scene: Scene, quick: bool = False):
         observed.run(scene, results, quick)
     else:
         model.run(scene, results, quick)
+        _poinsot(scene, results)
         if "accuracy_cost" in scene.data.get("analysis", {}):
             accuracy.run(scene, results, quick)
     return results
+
+
+def _poinsot(scene, results):
+    """Lamb Arts. 25, 30, 46-48: Poinsot's kinematics (poinsot.py), where the scene asks for it."""
+    analysis = scene.data.get("analysis", {})
+    if not ("poinsot" in analysis or analysis.get("cone_rates")):
+        return
+    from . import model, poinsot
+    if "poinsot" in analysis:
+        poinsot.poinsot_body(results, analysis["poinsot"])
+    if analysis.get("cone_rates"):
+        _, amplitude, earth_model = model.setup(scene)
+        poinsot.cone_rates(results, earth_model, amplitude)

@@ -113,6 +113,12 @@ def run(scene, results, quick):
         _cones(results, model, amplitude)
         if not effects:
             _symmetric_integrals(results, model)
+    if analysis.get("lamb_symmetric"):
+        from . import lamb_free
+        lamb_free.symmetric_earth(results, model, amplitude)
+    if "lamb_free_body" in analysis:
+        from . import lamb_free
+        lamb_free.free_body(results, analysis["lamb_free_body"])
 
 
 def _sense(results, rate, y):

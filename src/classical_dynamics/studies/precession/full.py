@@ -103,6 +103,8 @@ def run(scene, model, results, quick):
             results.number(f"nutation_obliquity_{name}_first_order_arcsec", closed_eps / earth.ARCSEC, "″")
     results.number("fit_residual_longitude_mas", fp.residual_rms / earth.MAS, "mas",
                    note="rms of $\\psi$ after the line and the fitted terms")
+    if "18.6 yr" in args:
+        _node_period(results, t, eps, args)
 
     _invariants(results, ms, fe, span_years)
     e3 = rigid_body.rotate_to_space(qs, np.array([0.0, 0.0, 1.0]))
@@ -118,6 +120,40 @@ def run(scene, model, results, quick):
         _free_nutation(results, model, order)
     if analysis.get("effect_ladder"):
         _effect_ladder(results, model, scene, step, order, min(span_years, QUICK_SPAN_YEARS))
+
+
+def _node_period(results, t, eps, args):
+    """Lamb Art. 61: "the angle chi goes through its phases in about 19 years". The period of the long
+    nutation in obliquity fitted freely: the node's argument 2 pi t/P (and 2x it, and the 13.6-day term's
+    2L_moon - node) with P found by least squares, the other terms at their own arguments; against the
+    node's period from the IAU 2000 fundamental argument Omega (pyerfa)."""
+    import erfa
+    from scipy.optimize import minimize_scalar
+
+    fixed = {k: f for k, f in args.items() if k not in ("18.6 yr", "9.3 yr", "13.6-day")}
+    moon2 = None
+    if "13.6-day" in args and "fortnightly" in args:
+        moon2 = args["fortnightly"]                    # 2 L_moon
+
+    def terms(period_days):
+        node = lambda x: 2.0 * np.pi * x / period_days          # noqa: E731 (its phase is fitted)
+        free = dict(fixed, node=node, node2=lambda x: 2.0 * node(x))      # noqa: E731
+        if moon2 is not None:
+            free["lunar"] = lambda x: moon2(x) + node(x)        # noqa: E731 (the node regresses: -(-2 pi t/P))
+        return free
+
+    def residual(period_years):
+        return fitting.fit(t, eps, terms(period_years * earth.JULIAN_YEAR_DAYS)).residual_rms
+
+    best = minimize_scalar(residual, bounds=(14.0, 24.0), method="bounded", options={"xatol": 1e-7})
+    period = float(best.x)
+    step = 1e-3                                                  # Julian centuries
+    omega = np.unwrap([erfa.faom03(-step), erfa.faom03(step)])
+    iau = 2.0 * np.pi / abs(omega[1] - omega[0]) * 2.0 * step * 100.0
+    results.number("node_period_fitted_years", period, "yr",
+                   note="period of the long nutation in obliquity, fitted freely (least squares over the period)")
+    results.number("node_period_iau_years", iau, "yr", note="$2\\pi/|\\dot\\Omega|$, IAU 2000 (pyerfa faom03)")
+    results.number("node_period_fitted_over_iau_minus_one", period / iau - 1.0, "1")
 
 
 def _invariants(results, ms, fe, span_years):

@@ -35,7 +35,7 @@ def _numbers(data, prefix=""):
 
 def check(path: Path, data: dict) -> None:
     """Physical consistency the schema cannot express. Raises SceneError (one line)."""
-    from ...models.self_excited import Body, LargestAxis
+    from ...models.self_excited import Body, LargestAxis, limit_cycle_p1
 
     for field, value in _numbers(data):
         if not math.isfinite(value):
@@ -83,6 +83,13 @@ def check(path: Path, data: dict) -> None:
                          "moment)", sorted(effects))
     if L.m == 0.0 and "body_torque" in effects:
         raise SceneError(path, "effects.body_torque", "a plane that needs a constant torque (none here)", 0.0)
+    on_F = plane["nu"] > 0.0 and limit_cycle_p1([0.0], plane["m1"], plane["nu"]) is not None
+    if data.get("analysis", {}).get("motion_in_space") and (axis != "largest" or not on_F):
+        raise SceneError(path, "analysis.motion_in_space", "torque_axis: largest and a plane with the limit cycle F "
+                         "(the attitude starts on it)", [axis, plane["m1"], plane["nu"]])
+    if data.get("analysis", {}).get("motions") and (axis != "largest" or plane["nu"] != 0.0):
+        raise SceneError(path, "analysis.motions", "torque_axis: largest and nu = 0 (Lee §2.2-§2.4)",
+                         [axis, plane["nu"]])
     _check_range(path, data)
 
 

@@ -13,6 +13,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
+from ...io import ResultError
+
 GALLERY = "gallery"
 ROOT = Path(__file__).resolve().parents[4]
 
@@ -69,7 +71,12 @@ GROUPS = (
               ("largest_perturbed_reversed", "For $m_1 < -1$ with drag (Lee's Figure 2.19), $\\boldsymbol{\\omega}$ "
                "runs to the negative $x$-axis from every start."),
               ("largest_perturbed_strong", "For $m_1 > 1$ with drag (Lee's Figure 2.20) there are no singular "
-               "points, but $F$ and $F_1$ exist; above $F_1$, $\\boldsymbol{\\omega}$ tends to $F$."))),
+               "points, but $F$ and $F_1$ exist; above $F_1$, $\\boldsymbol{\\omega}$ tends to $F$."),
+              ("largest_perturbed_cycles/zoom", "One period of the first plane (Lee's Figure 2.12): the separatrix "
+               "$T_1$ out of the saddle $S_1$ crosses the vertical through the center at $f_1$, above the point "
+               "$f_2$ where $T_2$ into $S_2$ crosses it; so $T_1$ goes on to the vertical through $S_2$ ($g_1$) and "
+               "$T_2$ comes from the $\\varphi_2$-axis ($g_2$). Below $\\nu^*$ $f_1$ lies above $f_2$, above "
+               "$\\nu^*$ below it."))),
     Group("smallest", "largest",
           "The torque along the smallest axis $z$. Lee's title says “largest or smallest”: the same plane, "
           "Lee (2.10), serves, with $p$ and $r$, $a$ and $c$ exchanged. Euler's equations with the torque along $z$, integrated "
@@ -133,6 +140,19 @@ GROUPS = (
                "closed."),
               ("middle_plane_two_runaway", "Plane II, $m_3 > 0$ (Lee's Figure 3.5 (e)): no singular point; "
                "$\\boldsymbol{\\omega}$ runs to the $+y$ axis."))),
+    Group("middle_planes_unperturbed_more", "middle",
+          "More subcases of Lee's Figures 3.4 and 3.5 without drag, Lee (3.43) and (3.44): the positive torques of "
+          "Figure 3.4 (a)–(c) and the negative ones of Figure 3.5 (a)–(c) beside those of the previous figure, and "
+          "plane II without torque. " + EULER, (
+              ("middle_plane_one_unperturbed_unit", "Plane I, $m_3 = 1$ (Lee's Figure 3.4 (a)–(c)): the center at "
+               "$\\ln m_3 = 0$, every orbit closed."),
+              ("middle_plane_one_unperturbed_strong", "Plane I, $m_3 = 2$: the center at $\\ln 2$."),
+              ("middle_plane_two_force_free", "Plane II without torque (Lee's Figure 3.5 (d)): no singular point; "
+               "$q_1$ levels off at $+\\sqrt{2E}$ and $\\boldsymbol{\\omega}$ tends to the $y$ axis with finite "
+               "modulus."),
+              ("middle_plane_two_unperturbed_unit", "Plane II, $m_3 = -1$ (Lee's Figure 3.5 (a)–(c)): the center at "
+               "$-\\ln(-m_3) = 0$, every orbit closed."),
+              ("middle_plane_two_unperturbed_strong", "Plane II, $m_3 = -2$: the center at $-\\ln 2$."))),
     Group("middle_escape", "middle",
           "Phase planes for the torque along the middle axis in the planes of the separating polhodes with drag, "
           "where nothing turns the motion back or the drag alone stops it. " + EULER, (
@@ -180,7 +200,7 @@ def panel_title(letter, numbers):
 class Panel:
     letter: str
     scene: str
-    kind: str                  # "portrait" or "body_view"
+    kind: str                  # "portrait", "body_view" or "zoom" (one period of a plane, its own window)
     title: str
     text: str
     frame: object              # the scene's table
@@ -198,9 +218,12 @@ def panels(group, study_dir: Path, scenes):
         path = folder / f"{table or 'portrait'}.csv"
         if scene not in scenes or not path.exists() or not (folder / "summary.json").exists():
             continue
+        io.check_result_folder(folder)          # a portrait is redrawn only from a whole scene folder
         numbers = io.read_json(folder / "summary.json")["numbers"]
         letter = LETTERS[len(out)]
-        title = f"({letter}) seen along $z$" if table else panel_title(letter, numbers)
+        of = next((f"({p.letter})" for p in out if p.scene == scene and p.kind == "portrait"), panel_title("", numbers))
+        title = {"body_view": f"({letter}) seen along $z$", "zoom": f"({letter}) one period of {of}"}.get(
+            table, panel_title(letter, numbers))
         out.append(Panel(letter, scene, table or "portrait", title, text, pd.read_csv(path), numbers))
     return out
 
@@ -239,16 +262,29 @@ def grid_figure(group, found):
     columns, rows = layout(len(found))
     spare = columns * rows > len(found)
     height = min(MAX_HEIGHT_IN, rows * ROW_HEIGHT_IN + (0.0 if spare else LEGEND_HEIGHT_IN) + (0.5 if body else 0))
+    zoom = any(p.kind == "zoom" for p in found)          # a zoom keeps its own window: share by hand, not by subplots
     fig, axes = plt.subplots(rows, columns, figsize=(FULL_WIDTH_IN, height), layout="constrained", squeeze=False,
-                             sharex=share_x, sharey=share_y,
+                             sharex=share_x and not zoom, sharey=share_y and not zoom,
                              width_ratios=[2.6, 1.0] if body else None)
+    if zoom:
+        shared = [ax for ax, p in zip(axes.flat, found) if p.kind == "portrait"]
+        for ax in shared[1:]:
+            if share_x:
+                ax.sharex(shared[0])
+            if share_y:
+                ax.sharey(shared[0])
     elements = set()
     for k, (ax, panel) in enumerate(zip(axes.flat, found)):
         ax.grid(True, which="both", alpha=0.25, linewidth=0.6)
-        bottom, left = k + columns >= len(found), k % columns == 0
+        bottom, left = k + columns >= len(found) - zoom, k % columns == 0     # a zoom (last) has its own axes
         if panel.kind == "body_view":
             draw_seen_along_z(ax, panel.frame, small=True)
             elements.add("euler")
+        elif panel.kind == "zoom":
+            portrait.draw(ax, panel.frame, y_name, small=True)
+            portrait.axes_labels(ax, y_label, angle, portrait.window_of(panel.frame, y_name)[:2])
+            ax.set_ylim(-0.15 * portrait.window_of(panel.frame, y_name)[2], None)     # the upper half: T1, T2
+            elements |= set(panel.frame.element.unique())
         else:
             lo, hi, y_max = portrait.window_of(panel.frame, y_name)
             window = (min(w[0] for w in windows) if share_x else lo, max(w[1] for w in windows) if share_x else hi,
@@ -419,7 +455,127 @@ def build(study_dir: Path, scenes, quick=False):
                                "draws the scene's portrait")
                 results.number(f"grid_{panel.scene}", group.name, "", note="the grid that draws the scene's portrait")
     closed_forms(results)
+    body_views(results)
+    symbolic_checks(results)
     return results
+
+
+# Lee's Figures 3.1 and 3.2: the end of omega seen along y, on the hyperbolas (3.34), (3.35) and on the lines (3.38),
+# (3.39) of the planes of the separating polhodes; the parameters are those of middle_unperturbed and the two
+# unperturbed plane scenes, the conjugate cylinder that of middle_unperturbed with alpha1 and alpha2 exchanged.
+BODY_VIEW_CASES = (("a", "3.34", 0.5, (0.8, 0.3)), ("a", "3.35", None, (0.3, 0.8)),
+                   ("b", "3.38", 0.5, (0.6, 0.6)), ("b", "3.39", -0.5, (0.6, -0.6)))
+BODY_VIEW_COLOURS = ("#0072B2", "#D55E00")
+
+
+def body_view_data():
+    """Euler's equations from three starts on each cylinder, (p, r) at 121 times each; the closed-form curves."""
+    import numpy as np
+    import pandas as pd
+    from ...models import self_excited as se
+    from ...solvers.ode import Problem, solve
+    body = se.Body.from_moments(list(CLOSED_FORM_BODY))
+    a, c = body.a, body.c
+    rows, first = [], None
+    for panel, eq, m1, (al1, al2) in BODY_VIEW_CASES:
+        M = (se.MiddleAxis(body, first.m, 0.0, al1, al2) if m1 is None
+             else se.MiddleAxis.with_plane_parameters(body, m1, 0.0, al1, al2))
+        first = M if eq == "3.34" else first
+        for q0 in (0.4, 0.8, 1.2):
+            w0 = np.array([al1 * np.sqrt(a), q0, al2 * np.sqrt(c)])
+            t = np.linspace(0.0, 8.0, 121)
+            sol = solve(Problem(se.euler_middle, w0, (0.0, t[-1]), M.euler_parameters()), "dop853", rtol=1e-12,
+                        atol=1e-14, t_eval=t)
+            rows.append(pd.DataFrame({"panel": panel, "curve": f"euler ({eq})", "p": sol.y_eval[:, 0],
+                                      "r": sol.y_eval[:, 2]}))
+    u = np.linspace(-2.2, 2.2, 201)
+    h = np.sqrt(0.8**2 - 0.3**2)
+    for sign in (1, -1):
+        rows.append(pd.DataFrame({"panel": "a", "curve": "hyperbola (3.34)", "p": sign * h * np.sqrt(a) * np.cosh(u),
+                                  "r": h * np.sqrt(c) * np.sinh(u)}))
+        rows.append(pd.DataFrame({"panel": "a", "curve": "hyperbola (3.35)", "p": h * np.sqrt(a) * np.sinh(u),
+                                  "r": sign * h * np.sqrt(c) * np.cosh(u)}))
+        for panel in "ab":
+            p_line = np.linspace(-3.0, 3.0, 2)
+            rows.append(pd.DataFrame({"panel": panel, "curve": f"line {'(3.38)' if sign > 0 else '(3.39)'}",
+                                      "p": p_line, "r": sign * np.sqrt(c / a) * p_line}))
+    return pd.concat(rows, ignore_index=True)
+
+
+def body_view_figure(frame):
+    from matplotlib.lines import Line2D
+    from ..results import plt
+    from ...figure_style import FULL_WIDTH_IN
+    from ...solvers.workprecision import legend_below
+    fig, axes = plt.subplots(1, 2, figsize=(FULL_WIDTH_IN, 2.25), layout="constrained", sharey=True)
+    for ax, panel in zip(axes, "ab"):
+        part = frame[frame.panel == panel]
+        ax.grid(True, alpha=0.25, linewidth=0.6)
+        for curve, rows in part.groupby("curve", sort=False):
+            if curve.startswith("line"):
+                ax.plot(rows.p, rows.r, color="k" if panel == "b" else "0.6", lw=1.0 if panel == "b" else 0.7,
+                        ls="-" if panel == "b" else ":")
+            elif curve.startswith("hyperbola"):
+                ax.plot(rows.p, rows.r, color="k", lw=1.0)
+        euler = part[part.curve.str.startswith("euler")]
+        for k, (curve, rows) in enumerate(euler.groupby("curve", sort=True)):
+            ax.plot(rows.p, rows.r, ".", color=BODY_VIEW_COLOURS[k], ms=2.2)
+        ax.set_xlim(-2.0, 2.0)
+        ax.set_ylim(-2.0, 2.0)
+        ax.set_aspect("equal")
+        ax.set_xlabel("$p$ (rad per time unit)")
+    axes[0].set_ylabel("$r$ (rad per time unit)")
+    axes[0].set_title("(a) hyperbolas (3.34), (3.35)", loc="left")
+    axes[1].set_title("(b) planes I and II, (3.38), (3.39)", loc="left")
+    handles = [Line2D([], [], color="k", lw=1.0), Line2D([], [], color="0.6", lw=0.7, ls=":"),
+               Line2D([], [], ls="", marker=".", color=BODY_VIEW_COLOURS[0], ms=5),
+               Line2D([], [], ls="", marker=".", color=BODY_VIEW_COLOURS[1], ms=5)]
+    labels = ["closed form", "asymptotes", "Euler: (3.34) in (a), plane I in (b)",
+              "Euler: (3.35) in (a), plane II in (b)"]
+    legend_below(fig, handles, labels, ncol=4)
+    return fig
+
+
+def body_views(results):
+    """Lee's Figures 3.1 and 3.2 as one figure with its table."""
+    frame = body_view_data()
+    results.figure("body_views", body_view_figure(frame), "The end of $\\boldsymbol{\\omega}$ for the torque along the "
+                   "middle axis seen along $y$ (Lee's Figures 3.1 and 3.2), moments 3, 2.2, 1.2. (a) Unperturbed with "
+                   "$m_1 = 0.5$: Euler's equations from three spins $q_0$ = 0.4, 0.8, 1.2 on the cylinder "
+                   "$\\alpha = (0.8, 0.3)$ run on the hyperbola $p^2/a - r^2/c = 0.55$, Lee (3.34), and with "
+                   "$\\alpha_1$, $\\alpha_2$ exchanged on its conjugate $p^2/a - r^2/c = -0.55$, (3.35) (black: the "
+                   "closed forms). (b) For $|\\alpha_1| = |\\alpha_2|$ the hyperbolas degenerate into the lines "
+                   "$r = \\pm\\sqrt{c/a}\\,p$, planes I and II, Lee (3.38), (3.39), in which the separating polhodes "
+                   "lie: Euler's equations started in them (plane I, $m_3 = 0.5$; plane II, $m_3 = -0.5$) stay there.")
+    results.table("body_views", frame, "The curves and points of body_views.svg, panel by panel.",
+                  headers={"panel": "panel", "curve": "curve", "p": "$p$ (rad per time unit)",
+                           "r": "$r$ (rad per time unit)"})
+
+
+def symbolic_checks(results):
+    """Lee §3's k1, k2, mu_c and nu_c, and §4.1's series coefficients, by sympy (see symbolic.py)."""
+    import numpy as np
+    from . import symbolic
+    rng = np.random.default_rng(1964)
+    results.number("k_constants_mismatch", symbolic.k_constants(), "1", note="terms of (3.3) put into Euler's q "
+                   "equation that do not cancel against Lee's (3.8) with his m0, k1, k2 (sympy)")
+    factors, exceptions, samples, below = symbolic.mu_c_regimes(rng)
+    results.number("mu_c_factor_mismatch", factors, "1", note="of k1 − k2 = ½(α1 − α2)²(a + c)(|μ| − μc) and "
+                   "k1 + k2 = −½(α1 + α2)²(a + c)(|μ| + μc), those sympy does not confirm")
+    results.number("mu_c_regime_exceptions", exceptions, "1", note=f"of {samples} random bodies, cylinders and "
+                   f"drags |μ| in (0, 2μc) ({below} below μc), those breaking Lee's rule: below μc |k1| > |k2| and "
+                   "k1 < 0, above it |k2| > |k1| and k2 < 0")
+    identity, exact, largest, bodies = symbolic.nu_c(rng)
+    results.number("nu_c_identity_mismatch", identity, "1", note="a − b + c − abc simplified by sympy for symbolic "
+                   "A, B, C (0: the identity holds, so b < a + c and νc < ½)")
+    results.number("nu_c_exact", float(exact), "1", note=f"b/(2(a + c)) in exact arithmetic for the moments 3, 2.2, "
+                   f"1.2: {exact}")
+    results.number("nu_c_sweep_max", largest, "1", note=f"largest νc = b/(2(a + c)) over {bodies} random bodies "
+                   "A > B > C, A < B + C")
+    differ, total, _ = symbolic.lindstedt()
+    results.number("lindstedt_mismatch", len(differ), "1", note=f"of Lee's {total} printed coefficients of (4.6)–"
+                   "(4.8) (h1, θ2's three, h2, c0 … c3, h3), those that differ from a sympy Lindstedt–Poincaré "
+                   "expansion of (4.1) to third order" + (f": {', '.join(differ)}" if differ else ""))
 
 
 def main(argv=None) -> int:
@@ -458,4 +614,7 @@ def main(argv=None) -> int:
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    try:
+        raise SystemExit(main())
+    except ResultError as error:           # a scene folder cut short or edited, named in one line
+        raise SystemExit(f"{error}")

@@ -128,9 +128,15 @@ def run(scene, results, quick):
                          headers={"what": "computation", "seconds": "wall time (s)"})
 
     centers = [pt for pt in points if pt["type"] == "center"]
+    sphere = None
+    if data.get("analysis", {}).get("motion_in_space"):       # Lee §1.2, started on F
+        from . import space
+        sigma3 = np.arctan(-1.0 / (2.0 * nu))
+        on_F = float(se.limit_cycle_p1(np.array([-sigma3]), m1, nu)[0])
+        sphere = space.run(results, L, body, L.from_plane(-sigma3, on_F))
     if centers:
         amplitudes = data.get("analysis", {}).get("series_amplitudes", DEFAULT_AMPLITUDES)
-        _series(results, m1, nu, centers[0]["phi2"], amplitudes)
+        _series(results, m1, nu, centers[0]["phi2"], amplitudes, sphere)
         if nu == 0.0 or nu < (1.0 - 1e-9) * se.nu_star(m1):    # where the saddle's own loop encloses the center
             _separatrix_sides(results, m1, nu)
     if nu == 0.0 and abs(abs(m1) - 1.0) < 1e-12:
@@ -140,6 +146,9 @@ def run(scene, results, quick):
         _limit_cycle_period(results, m1, nu)
         if centers and nu > 0:
             _cylinder(results, m1, nu, points)
+    if data.get("analysis", {}).get("motions"):
+        from . import motions
+        motions.run(results, L, m1, points)
     if data.get("analysis", {}).get("accuracy_cost"):
         from . import accuracy
         if nu == 0.0 and centers:
@@ -149,6 +158,9 @@ def run(scene, results, quick):
     if data.get("analysis", {}).get("bifurcation"):
         _singular_point_bifurcation(results)
         _limit_cycle_bifurcation(results, m1, nu)
+    if not smallest:
+        from . import largest_cycles            # Lee §2.5 (Figure 2.12, the motions on and off F) and §2.6
+        largest_cycles.run(results, data, body, m1, nu, delta)
 
 
 def _eigenvalue_check(results, m1, nu, points):
@@ -279,7 +291,7 @@ def _period(m1, nu, phi_c, eta):
     return portrait.period(se.plane_largest, [m1, -nu, 1.0], [phi_c + eta, 0.0], span=60.0)
 
 
-def _series(results, m1, nu, phi_c, amplitudes):
+def _series(results, m1, nu, phi_c, amplitudes, sphere=None):
     """Lee §4.2: the series period against the measured one; the error must shrink like eta^4."""
     frame = portrait.series_check(
         results, lambda eta: _period(m1, nu, phi_c, eta), lambda eta: se.series_period(m1, nu, eta), amplitudes,
@@ -288,11 +300,24 @@ def _series(results, m1, nu, phi_c, amplitudes):
         "$2\\pi(1 - m_1^2)^{-1/4}(1 + h_2\\eta^2 + h_3\\eta^3)$, and their relative difference.")
     results.number("period_tau_linear", 2 * np.pi / (1 - m1**2) ** 0.25, "τ", note="2π(1 − m1²)^(−1/4)")
     slope = results.numbers["series_error_slope"]["value"]
-    fig, ax = new_figure(TEXT_WIDTH_IN / 2, 3.0)
-    portrait.series_figure(ax, frame, slope)
-    results.figure("series", fig, "The relative error of Lee's period series (§4.2) against the integrated period, "
-                   "by amplitude $\\eta$ (log-log), with the dashed reference slope $\\eta^4$, the first power the "
-                   f"series leaves out: the fitted slope is {format_number(slope, 3)}.")
+    if sphere is None:
+        fig, ax = new_figure(TEXT_WIDTH_IN / 2, 3.0)
+    else:                            # Lee §1.2 beside it: the same body's motion in space on the limit cycle F
+        fig = plt.figure(figsize=(TEXT_WIDTH_IN, 3.0), layout="constrained")
+        ax = fig.add_subplot(1, 2, 1)
+        ax.grid(True, which="both", alpha=0.25, linewidth=0.6)
+        from . import space
+        space.draw_sphere(fig.add_subplot(1, 2, 2, projection="3d"), *sphere)
+    portrait.series_figure(ax, frame, slope, ncol=1 if sphere is None else 2)
+    caption = ("The relative error of Lee's period series (§4.2) against the integrated period, by amplitude "
+               "$\\eta$ (log-log), with the dashed reference slope $\\eta^4$, the first power the series leaves out: "
+               f"the fitted slope is {format_number(slope, 3)}.")
+    if sphere is not None:
+        caption = ("Left: t" + caption[1:] + " Right: the motion in space (Lee §1.2) over four periods of "
+                   "$\\boldsymbol{\\omega}$ on the limit cycle $F$, attitude integrated as a quaternion: the body's "
+                   "$x$-axis (blue) and $\\mathbf{L}/|\\mathbf{L}|$ (green, starts marked) on the unit sphere. "
+                   "$\\boldsymbol{\\omega}$ is periodic in the body, the motion in space is not.")
+    results.figure("series", fig, caption)
 
 
 DEGENERATE_TAUS = (40.0, 100.0)     # where the approach to the degenerate point is measured

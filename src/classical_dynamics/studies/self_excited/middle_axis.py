@@ -25,6 +25,7 @@ from . import portrait
 from .largest_axis import INVARIANT_BOUND, OVERLAY_BOUND
 
 AMPLITUDES = (0.4, 0.2, 0.1, 0.05)
+COSH_AMPLITUDES = (0.2, 0.1, 0.05, 0.025)   # the cosh form's saddle loop is near: smaller amplitudes reach the η⁴ law
 
 
 LABELS = {"sinh": "m1", "cosh": "m2", "exp": "m3", "exp-": "m3", "rare": "2√(ac) m0"}
@@ -164,6 +165,7 @@ def run(scene, results, quick):
                  "the window's corners) and its curve number, in $(\\varphi_2, q_1)$.")
     if centers:
         _series(results, M, centers[0], nu)
+    _middle_checks(results, M, overlay_starts, centers)
     if "excursion" in data:
         from . import accuracy
         start = excursion_start(M, float(data["excursion"]["q0"]))
@@ -333,12 +335,31 @@ def _series(results, M, center, nu):
     F = _derivatives(M.m1, M.form, M.eps1, center)
     k_sq, beta2, beta3 = -F[1], F[2], F[3]
     which = {"sinh": "(4.13)", "cosh": "(4.14)", "exp": "(4.15)", "exp-": "(4.16)"}[M.form]
+    from . import middle_checks
+    middle_checks.theta_series(results, M, center, k_sq, beta2, beta3)
     portrait.series_check(
         results, lambda eta: portrait.period(se.plane_middle, M.plane_parameters(), [center + eta, 0.0]),
-        lambda eta: se.lyapunov_period(k_sq, beta2, beta3, -nu, eta), AMPLITUDES,
+        lambda eta: se.lyapunov_period(k_sq, beta2, beta3, -nu, eta),
+        COSH_AMPLITUDES if M.form == "cosh" else AMPLITUDES,
         f"Lee {which}: the period (in $\\tau$) of the oscillation about the center $\\varphi_{{2\\mathrm{{c}}}}$ "
         "started at $\\varphi_{2\\mathrm{c}} + \\eta$, integrated from the plane system and from the series "
         "$(2\\pi/k)(1 + h_2\\eta^2 + h_3\\eta^3)$, and their relative difference.")
+
+
+def _middle_checks(results, M, starts, centers):
+    """Lee (3.3)/(3.8), the planes (3.38)-(3.41), the center as a permanent rotation, the unstable middle axis and
+    plane I's escape for large q0 (see middle_checks)."""
+    from . import middle_checks
+    w0 = M.from_plane(*starts[0])
+    middle_checks.general_solution(results, M, w0, 12.0 / M.time_scale)
+    if M.form in ("exp", "exp-") and abs(M.alpha1) == abs(M.alpha2):
+        middle_checks.plane_departure(results, M, w0, 12.0 / M.time_scale)
+    if centers:
+        middle_checks.center_at_rest(results, M, centers[0])
+    if M.form == "sinh" and M.mu1 == 0.0:
+        middle_checks.middle_axis_unstable(results, M)
+    if M.form == "exp" and M.alpha1 == M.alpha2 and M.mu1 < 0 and centers:
+        middle_checks.large_q0(results, M)
 
 
 def _rare_escape(results, M):

@@ -50,7 +50,7 @@ def series_check(results, measured, series, amplitudes, caption):
     return frame
 
 
-def series_figure(ax, frame, slope):
+def series_figure(ax, frame, slope, ncol=1):
     """A period series' relative error against the amplitude (log-log), the fitted slope in the legend, and the
     dashed reference slope eta^4 through the points' centre, moved down by a factor 3 so both stay visible."""
     from matplotlib.ticker import FixedLocator, NullFormatter, NullLocator
@@ -68,7 +68,7 @@ def series_figure(ax, frame, slope):
     ax.xaxis.set_minor_formatter(NullFormatter())
     ax.set_xlabel("amplitude $\\eta$")
     ax.set_ylabel("relative error of the period")
-    ax.figure.legend(loc="outside lower center", ncol=1)
+    ax.figure.legend(loc="outside lower center", ncol=ncol)
 
 
 COUNTS = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}
@@ -151,7 +151,11 @@ ELEMENTS = {      # element: (plot keywords, legend label); the singular points 
     "limit_cycle_F1": ({"color": LIMIT_CYCLE_COLOUR, "lw": 1.4, "ls": "--"}, "$F_1$ (unstable limit cycle)"),
     "rest_line": ({"color": LIMIT_CYCLE_COLOUR, "lw": 1.6}, "line of rest points"),
     "euler": ({"color": EULER_COLOUR, "ls": "", "marker": ".", "ms": 3}, "Euler's equations, mapped"),
+    "separatrix_T": ({"color": "#009E73", "lw": 1.3}, "$T_1$, $T_2$ (integrated from the saddles)"),
+    "crossing": ({"color": "k", "ls": "", "marker": "s", "ms": 3.5, "mfc": "white"}, "$f_1$, $f_2$, $g_1$, $g_2$ "
+                 "(Lee's Figure 2.12)"),
 }
+CROSSING_NAMES = {1: "$f_1$", 2: "$f_2$", 3: "$g_1$", 4: "$g_2$"}      # the curve numbers of the crossings
 POINT_TYPES = ("saddle", "center", "degenerate")
 DIGITS = 5                    # decimals kept in the table: far below what a printed portrait resolves
 
@@ -246,6 +250,10 @@ def draw(ax, frame, y_name, window=None, small=False):
                 curve = curve.iloc[::2] if small else curve                  # dots: half of them suffice in a panel
             ax.plot(curve.phi2, curve[y_name], label=label if first and element != "trajectory" else None, **kw)
             first = False
+            if element == "crossing":
+                ax.annotate(CROSSING_NAMES[int(curve.curve.iloc[0])], (curve.phi2.iloc[0], curve[y_name].iloc[0]),
+                            xytext=(-11, 1) if curve.curve.iloc[0] <= 2 else (3, 2), textcoords="offset points",
+                            fontsize=7 if small else 8)            # f1, f2 left of C's vertical, g1, g2 right
     points = [{"phi2": row.phi2, "type": row.element} for row in frame[frame.element.isin(POINT_TYPES)].itertuples()]
     mark_points(ax, points, size=4.5 if small else 6)
     lo, hi, y_max = window or window_of(frame, y_name)

@@ -22,6 +22,7 @@ from ...solvers.timing import min_time
 from ...formatting import format_number, shortest
 from ..results import new_figures
 from .accuracy import publish
+from . import section5
 
 def _complex(w, sig=None) -> str:
     """0.3 + 0.4i (the source's digits, or sig figures), with a real minus."""
@@ -82,9 +83,18 @@ def run(scene, results, quick):
                       "digits) over its own bound (10⁻¹³ added for round-off), largest over $t$",
                       float(np.max(error / (bound[::every] + 1e-13))), 1.0)
     points = _asymptotics(results, V, ode, t_max)
-    fig = _figure(V, t, closed, ode, points)
-    results.figure("solution", fig, _caption(V, t_max))
-    if data.get("analysis", {}).get("special_functions"):
+    analysis = data.get("analysis", {})
+    panels, more = [], ""
+    for name, check in section5.PANELS.items():
+        if analysis.get(name):
+            extra, text = check(results, V)
+            panels, more = panels + extra, more + text
+    for name, check in section5.ANALYSES.items():
+        if analysis.get(name):
+            check(results, V)
+    fig = _figure(V, t, closed, ode, points, panels)
+    results.figure("solution", fig, _caption(V, t_max, more))
+    if analysis.get("special_functions"):
         special_function_costs(results, quick)
         solution_costs(results, V, quick)
         large_order(results, V)
@@ -103,10 +113,13 @@ def _asymptotics(results, V, ode, t_max):
         results.hard_case("limiting_rotation", f"Euler's equations at $t$ = {shortest(t_max)} against Theorem 3's "
                           "uniform rotation", gap, LIMIT_BOUND)
         pq_bound, r_bound = V.bounds()
-        ratio = max(float(np.max(np.abs(y[:, :2]))) / pq_bound, float(np.max(np.abs(y[:, 2]))) / r_bound)
+        later = y[1:]                       # Theorem 1 holds for t > 0: at t = 0, |r| = |r0| is its bound when m3 = 0
+        ratio = max(float(np.max(np.abs(later[:, :2]))) / pq_bound, float(np.max(np.abs(later[:, 2]))) / r_bound)
+        results.number("theorem_1_ratio", ratio, "1", note="Theorem 1: the larger of max |p|, |q| over δ + (|m1| + "
+                       "|m2|)/ν and max |r| over |r0| + |m3|/μ, for 0 < t ≤ t_max")
         results.hard_case("theorem_1_bounds", "Theorem 1: the largest $|p|$, $|q|$ over its bound "
-                          "$\\delta + (|m_1| + |m_2|)/\\nu$, and $|r|$ over $|r_0| + |m_3|/\\mu$ (the larger ratio)",
-                          ratio, 1.0)
+                          "$\\delta + (|m_1| + |m_2|)/\\nu$, and $|r|$ over $|r_0| + |m_3|/\\mu$ (the larger ratio, "
+                          "$t > 0$)", ratio, 1.0)
         kind = "stable focus" if V.g1 != 0.0 else "stable node"
         results.number("singular_points", [{"p": float(limit[0]), "q": float(limit[1]), "r": float(limit[2]),
                                             "type": kind}], "1/time", note="the uniform rotation all motions tend to")
@@ -135,8 +148,11 @@ def _asymptotics(results, V, ode, t_max):
     return []
 
 
-def _figure(V, t, closed, ode, points):
-    fig, (ax, bx) = new_figures(2, height=3.0)
+def _figure(V, t, closed, ode, points, panels=()):
+    fig, axes = new_figures(2 + len(panels), height=3.0)
+    ax, bx = axes[:2]
+    for draw, cx in zip(panels, axes[2:]):
+        draw(cx)
     for k, (name, color) in enumerate(zip("pqr", ("#000000", "#E69F00", "#56B4E9"))):
         ax.plot(t, closed[:, k], color=color, lw=1.0, label=f"${name}$, Lee's quadratures")
         ax.plot(ode.t_eval[::10], ode.y_eval[::10, k], ".", color=color, ms=3)
@@ -174,7 +190,7 @@ def _triple(values) -> str:
     return "(" + ", ".join(shortest(float(v)) for v in values) + ")"
 
 
-def _caption(V, t_max):
+def _caption(V, t_max, more=""):
     what = {"I": "Case I: straight lines to $(m_1/\\nu, m_2/\\nu, 0)$", "II": "Case II: $m_3 = 0$, $r_0 \\ne 0$",
             "III": "Case III: $m_3 \\ne 0$", "III (g = 0)": "Case III with $r_0 = m_3/\\mu$, elementary",
             "IV": "Case IV: $h = 0$"}
@@ -182,9 +198,10 @@ def _caption(V, t_max):
                 else "without friction")
     return (f"Lee §5, {what[V.case]}; {friction}, $h$ = {shortest(V.h)}, $(m_1, m_2, m_3)$ = {_triple(V.m)}, "
             f"$\\boldsymbol{{\\omega}}_0$ = {_triple(V.omega0)}, $t \\le$ {shortest(t_max)}. Left: $p$, $q$, $r$ "
-            "against $t$ from Lee's quadrature solution (lines) and from Euler's equations integrated (dots). Right: "
+            "against $t$ from Lee's quadrature solution (lines) and from Euler's equations integrated (dots). "
+            f"{'Second panel' if more else 'Right'}: "
             "the end of $\\boldsymbol{\\omega}$ projected on the equatorial plane, $(p, q)$ on equal axes"
-            f"{_extra_starts(V)[1]}.")
+            f"{_extra_starts(V)[1]}{more}.")
 
 
 X_POINTS = (0.5, 2.0, 10.0, 30.0)

@@ -25,6 +25,7 @@ def run(scene, results, quick):
     _separatrix(results, numerics.get("separatrix_one_minus_m", 1e-10), quick)
     _intermediate_axis(results)
     _blow_up(results)
+    _lee_cases(results)
     _numerical_damping(results)
     _energy_kept(results)
     _rotations(results)
@@ -121,6 +122,38 @@ def _blow_up(results):
                    note="m = 0.5, mu = -0.2, p0 = -2")
     results.hard_case("blow_up", "Blow-up reported with its time (status “blow-up”, not NaN, not a hang): "
                       "relative difference to the closed-form blow-up time $t^*$", worst, 1e-9)
+
+
+# Lee (2.4): the six cases of p' = m + mu p^2 (q0 = r0 = 0), each start chosen inside its case.
+LEE_CASES = (("i", 0.6, 0.3, 0.5), ("ii", 0.5, -0.2, 0.3), ("iii_tanh", -0.4, 0.3, 0.2), ("iii", -0.4, 0.3, 2.0),
+             ("iv", -0.3, -0.5, 0.4), ("v", 0.7, 0.0, -1.0), ("vi", 0.0, 0.7, 1.5))
+LEE_CASE_SPAN = 3.0                  # time units, or 0.9 t* where the case blows up sooner
+
+
+def _lee_cases(results):
+    """Each closed form of Lee (2.4) against DOP853 (relative tolerance 1e-12) on 31 times of [0, min(3, 0.9 t*)],
+    the difference relative to max(|p|, |p0|, k) (p may pass zero); and where p leaves every bound, the time the
+    run stops (|p| passes 1e12, within 1e-12 of the pole) as the measured blow-up time."""
+    worst = 0.0
+    for name, m, mu, p0 in LEE_CASES:
+        t_star = ref.riccati_blow_up_time(m, mu, p0)
+        span = min(LEE_CASE_SPAN, 0.9 * t_star)
+        t = np.linspace(0.0, span, 31)
+        sol = solve(Problem(rhs.riccati, [p0], (0.0, span), [m, mu]), "dop853", rtol=1e-12, atol=1e-14, t_eval=t)
+        closed = ref.riccati(m, mu, p0, t)
+        k = np.sqrt(abs(m / mu)) if m and mu else 0.0
+        scale = np.maximum(np.abs(closed), max(abs(p0), k))
+        difference = float(np.max(np.abs(sol.y_eval[:, 0] - closed) / scale))
+        worst = max(worst, difference)
+        results.number(f"lee_case_{name}_closed_form_difference", difference, "1",
+                       note=f"m = {m}, mu = {mu}, p0 = {p0}: largest |p − closed form|/max(|p|, |p0|, k) on [0, {span:.4g}]")
+        if np.isfinite(t_star):
+            run = solve(Problem(rhs.riccati, [p0], (0.0, 2 * t_star), [m, mu]), "dop853", rtol=1e-12, atol=1e-14)
+            results.number(f"lee_case_{name}_t_star", run.t if run.status == "blow-up" else np.inf, "time units",
+                           note=f"m = {m}, mu = {mu}, p0 = {p0}: where the run stops, |p| past 10^12")
+    results.number("lee_cases_worst_difference", worst, "1", note="the largest of the seven runs' differences")
+    results.hard_case("lee_cases", "The closed forms of Lee (2.4), cases (i)–(vi), against the integrated "
+                      "$\\dot p = m + \\mu p^2$ (largest relative difference)", worst, 1e-10)
 
 
 def _numerical_damping(results):

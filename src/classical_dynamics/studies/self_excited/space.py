@@ -1,0 +1,168 @@
+"""Lee §1.2: the motion of the body in space. Lee follows omega in the body only; the attitude follows from the
+kinematic equations (1.2) by quadratures, and a periodic omega in the body need not make a periodic motion in space.
+
+Here the attitude is integrated twice, independently: as a unit quaternion beside Euler's equations, and as Euler's
+angles (psi, theta, phi) from (1.2), z-x-z convention, the body-to-space matrix Rz(psi) Rx(theta) Rz(phi) and
+    p = psi' sin(theta) sin(phi) + theta' cos(phi),  q = psi' sin(theta) cos(phi) - theta' sin(phi),
+    r = psi' cos(theta) + phi'.
+The angular momentum in space must change by the integral of the torque turned into space (Gauss-Legendre on the
+quaternion's samples); after one period of omega in the body the body has not come back.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...models import self_excited as se
+from ...solvers.ode import Events, Problem, solve
+from ...solvers.runge_kutta import rhs_function
+from . import motions
+
+RTOL, ATOL = 1e-13, 1e-15
+PERIODS = 4                    # periods of omega drawn and checked
+START_ANGLES = (0.0, 1.2, 0.0)  # Euler's angles at t = 0: body z 1.2 rad from space Z, off the poles of (1.2)
+GAUSS_NODES = 8
+
+
+@rhs_function
+def euler_largest_angles(t, w, p, out):
+    """Lee (2.2) and the kinematic equations (1.2) solved for the angles: w = (p, q, r, psi, theta, phi)."""
+    out[0] = p[0] * w[1] * w[2] + p[3]
+    if p[4] != 0.0:
+        out[0] += p[4] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2])
+    out[1] = -p[1] * w[2] * w[0]
+    out[2] = p[2] * w[0] * w[1]
+    s, c = np.sin(w[5]), np.cos(w[5])
+    out[3] = (w[0] * s + w[1] * c) / np.sin(w[4])
+    out[4] = w[0] * c - w[1] * s
+    out[5] = w[2] - out[3] * np.cos(w[4])
+
+
+def _rz(a):
+    c, s = np.cos(a), np.sin(a)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+def _rx(a):
+    c, s = np.cos(a), np.sin(a)
+    return np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
+
+
+def angles_matrix(psi, theta, phi):
+    return _rz(psi) @ _rx(theta) @ _rz(phi)
+
+
+def quaternion_matrix(e):
+    """Body-to-space matrix of the unit quaternion e = (e0, e1, e2, e3)."""
+    e0, e1, e2, e3 = e / np.linalg.norm(e)
+    return np.array([[1 - 2 * (e2**2 + e3**2), 2 * (e1 * e2 - e0 * e3), 2 * (e1 * e3 + e0 * e2)],
+                     [2 * (e1 * e2 + e0 * e3), 1 - 2 * (e1**2 + e3**2), 2 * (e2 * e3 - e0 * e1)],
+                     [2 * (e1 * e3 - e0 * e2), 2 * (e2 * e3 + e0 * e1), 1 - 2 * (e1**2 + e2**2)]])
+
+
+def matrix_quaternion(R):
+    """The unit quaternion of a rotation matrix (Shepperd's choice of the largest diagonal term)."""
+    t = np.trace(R)
+    if t > 0:
+        s = 2.0 * np.sqrt(1.0 + t)
+        return np.array([0.25 * s, (R[2, 1] - R[1, 2]) / s, (R[0, 2] - R[2, 0]) / s, (R[1, 0] - R[0, 1]) / s])
+    i = int(np.argmax(np.diag(R)))
+    j, k = (i + 1) % 3, (i + 2) % 3
+    s = 2.0 * np.sqrt(1.0 + R[i, i] - R[j, j] - R[k, k])
+    e = np.empty(4)
+    e[0] = (R[k, j] - R[j, k]) / s
+    e[1 + i] = 0.25 * s
+    e[1 + j] = (R[j, i] + R[i, j]) / s
+    e[1 + k] = (R[k, i] + R[i, k]) / s
+    return e
+
+
+def rotation_angle(R):
+    """The angle of a rotation matrix, from |R - I|_F = 2 sqrt(2) sin(angle/2) (arccos of the trace would lose half
+    the digits near 0)."""
+    return float(2.0 * np.arcsin(min(1.0, np.linalg.norm(R - np.eye(3)) / (2.0 * np.sqrt(2.0)))))
+
+
+def run(results, L: se.LargestAxis, body: se.Body, w0: np.ndarray):
+    """Attitude from w0 over PERIODS periods of omega in the body; returns the curves for the sphere panel."""
+    a, b, c = L.body.a, L.body.b, L.body.c
+    params = np.array([a, b, c, L.m, L.mu, 2.0 * np.pi / np.sqrt(b * c)])     # phi1 advances 2 pi: omega returns
+    first = solve(Problem(se.euler_largest_phase, np.r_[w0, 0.0], (0.0, 1e3), params), "dop853", rtol=RTOL,
+                  atol=ATOL, events=Events(motions.phase_reaches, 1, (1,), (True,)))
+    T = float(first.t)
+    results.number("space_omega_period", T, "time units", note="ω returns in the body: φ1 = √(bc)∫p dt advances 2π")
+    results.number("space_omega_return", float(np.linalg.norm(first.y[:3] - w0) / np.linalg.norm(w0)), "1",
+                   note="|ω(T) − ω(0)|/|ω(0)|")
+    span = PERIODS * T
+    x, wts = np.polynomial.legendre.leggauss(GAUSS_NODES)
+    edges = np.linspace(0.0, span, 80 * PERIODS + 1)
+    nodes = (0.5 * (edges[:-1, None] + edges[1:, None]) + 0.5 * np.diff(edges)[:, None] * x).ravel()
+    t = np.unique(np.r_[edges, nodes, np.linspace(0.0, span, 801)])
+    R0 = angles_matrix(*START_ANGLES)
+    e0 = matrix_quaternion(R0)
+    P = params[:5]
+    quat = solve(Problem(se.euler_largest_attitude, np.r_[w0, e0], (0.0, span), P), "dop853", rtol=RTOL, atol=ATOL,
+                 t_eval=t)
+    ang = solve(Problem(euler_largest_angles, np.r_[w0, START_ANGLES], (0.0, span), P), "dop853", rtol=RTOL,
+                atol=ATOL, t_eval=t)
+    Rq = np.array([quaternion_matrix(e) for e in quat.y_eval[:, 3:]])
+    Ra = np.array([angles_matrix(*y) for y in ang.y_eval[:, 3:]])
+    angle_gap = max(rotation_angle(A.T @ B) for A, B in zip(Rq, Ra))
+    theta = ang.y_eval[:, 4]
+    results.number("space_angles_vs_quaternion", angle_gap, "rad", note="largest rotation between the attitude "
+                   "from Euler's angles (1.2) and from the quaternion, over four periods of ω")
+    results.number("space_theta_min", float(theta.min()), "rad", note="θ stays off the poles of (1.2)")
+    results.number("space_theta_max", float(theta.max()), "rad")
+
+    w = quat.y_eval[:, :3]
+    moments = np.array([body.A, body.B, body.C])
+    Ls = np.einsum("nij,nj->ni", Rq, w * moments)
+    torque = np.zeros_like(w)
+    torque[:, 0] = body.A * (L.m + L.mu * np.sum(w * w, axis=1))
+    Ms = np.einsum("nij,nj->ni", Rq, torque)
+    index = {v: i for i, v in enumerate(t)}
+    gain = np.zeros(3)
+    worst = 0.0
+    for k in range(len(edges) - 1):
+        chunk = nodes[k * GAUSS_NODES:(k + 1) * GAUSS_NODES]
+        gain += 0.5 * (edges[k + 1] - edges[k]) * np.sum(wts[:, None] * Ms[[index[s] for s in chunk]], axis=0)
+        change = Ls[index[edges[k + 1]]] - Ls[0]
+        worst = max(worst, float(np.linalg.norm(change - gain) / np.linalg.norm(Ls[index[edges[k + 1]]])))
+    results.number("space_momentum_vs_torque", worst, "1", note="largest |L(t) − L(0) − ∫R M dt|/|L(t)| in space, "
+                   "the torque integrated by Gauss–Legendre on the quaternion's attitude")
+    after = next(i for i, s in enumerate(t) if s >= T - 1e-12)
+    # one period exactly: integrate to T alone
+    one = solve(Problem(se.euler_largest_attitude, np.r_[w0, e0], (0.0, T), P), "dop853", rtol=RTOL, atol=ATOL)
+    turn = rotation_angle(quaternion_matrix(one.y[3:]) @ R0.T)
+    results.number("space_turn_after_period", turn, "rad", note="rotation of the body in space after one period of "
+                   "ω in the body (0 if the motion in space were periodic)")
+    L0, L1 = Ls[0] / np.linalg.norm(Ls[0]), Ls[after] / np.linalg.norm(Ls[after])
+    results.number("space_momentum_direction_turn", float(np.arccos(np.clip(L0 @ L1, -1, 1))), "rad",
+                   note="angle between L/|L| at 0 and after one period of ω (sample nearest)")
+    xs = Rq[:, :, 0]
+    ls = Ls / np.linalg.norm(Ls, axis=1)[:, None]
+    keep = np.isin(t, np.linspace(0.0, span, 801))
+    return xs[keep], ls[keep]
+
+
+def draw_sphere(ax, xs, ls):
+    """The unit sphere (faint meridians), the body's x-axis and L/|L| in space, their starts marked."""
+    u = np.linspace(0.0, 2 * np.pi, 73)
+    for lat in np.linspace(-60, 60, 5) * np.pi / 180:
+        ax.plot(np.cos(lat) * np.cos(u), np.cos(lat) * np.sin(u), np.full_like(u, np.sin(lat)), color="0.85", lw=0.4)
+    for lon in np.linspace(0, np.pi, 7)[:-1]:
+        ax.plot(np.cos(u) * np.cos(lon), np.cos(u) * np.sin(lon), np.sin(u), color="0.85", lw=0.4)
+    ax.plot(*xs.T, color="#0072B2", lw=0.9, label="body $x$-axis in space")
+    ax.plot(*ls.T, color="#009E73", lw=2.0, label="$\\mathbf{L}/|\\mathbf{L}|$ in space")
+    ax.scatter(*xs[0], color="#0072B2", s=12, marker="o")
+    ax.scatter(*ls[0], color="#009E73", s=12, marker="s")
+    for k, name in enumerate("XYZ"):
+        tip = np.zeros(3)
+        tip[k] = 1.15
+        ax.plot(*np.c_[np.zeros(3), tip], color="0.4", lw=0.6)
+        ax.text(*(1.1 * tip), f"${name}$", color="0.2", ha="center", va="center")
+    ax.set_box_aspect((1, 1, 1), zoom=1.2)
+    for set_lim in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
+        set_lim(-1.0, 1.0)
+    ax.set_axis_off()
+    ax.view_init(elev=20, azim=-50)

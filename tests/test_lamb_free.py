@@ -1,0 +1,156 @@
+"""Lamb's free body (Arts. 48-55, Examples X, XIII.11), the notes' free precession, and Art. 61's identities."""
+
+import numpy as np
+import pytest
+import yaml
+
+from classical_dynamics.scenes import SceneError
+from classical_dynamics.studies import validate
+from classical_dynamics.studies.chandler import lamb_free as lf
+
+from .conftest import ROOT
+
+SCHEMA = ROOT / "workflow" / "schemas" / "chandler.schema.yaml"
+I = np.array([1.0, 2.0, 2.5])
+
+
+class Numbers:
+    def __init__(self):
+        self.numbers = {}
+
+    def number(self, name, value, unit, **kw):
+        self.numbers[name] = value
+
+
+def test_every_symbolic_statement_is_an_identity():
+    assert lf.symbolic_residuals() == dict.fromkeys(lf.symbolic_residuals(), 0)
+
+
+def test_a_wrong_formula_is_not_an_identity():
+    """The sympy check can fail: Ex. X.4 with the wrong sign of 2T/H^2 leaves a residual."""
+    import sympy as sp
+    A, B, C, p, q, r = lf.A_, lf.B_, lf.C_, lf.p_, lf.q_, lf.r_
+    H2 = A**2 * p**2 + B**2 * q**2 + C**2 * r**2
+    n = sp.Matrix([A * p, B * q, C * r]) / sp.sqrt(H2)
+    total = sum((1 - n[i] ** 2) / (A, B, C)[i] for i in range(3))
+    wrong = 1 / A + 1 / B + 1 / C + (A * p**2 + B * q**2 + C * r**2) / H2
+    assert sp.simplify(total - wrong) != 0
+
+
+def test_polhode_period_against_the_integration_both_sides_of_the_separatrix():
+    """4K(k)/lambda: one period returns omega to its start, about either axis, and near the separatrix."""
+    for w0 in ([0.9, 0.3, 0.2], [0.2, 0.3, 0.9], [0.6, 0.5, 0.6 * np.sqrt(1.0 / 2.5) + 1e-4]):
+        w0 = np.array(w0)
+        period, k2 = lf.polhode_period(I, w0)
+        assert 0.0 < k2 < 1.0
+        _, w, _ = lf.integrate(I, w0, period, samples=3)
+        assert np.max(np.abs(w[-1] - w0)) < 1e-8
+        _, w, _ = lf.integrate(I, w0, 0.5 * period, samples=3)
+        assert np.max(np.abs(w[-1] - w0)) > 1e-3
+
+
+def test_criterion_10_agrees_with_the_integration_even_near_the_separatrix():
+    out = Numbers()
+    lf._polhode_side(out, I, 300, 7)
+    assert out.numbers["polhode_side_agreements"] == 300
+    assert 0 < out.numbers["polhode_side_round_least"] < 300
+
+
+def test_poinsot_geometry_holds_and_moves():
+    out = Numbers()
+    lf._poinsot(out, I)
+    n = out.numbers
+    for name in ("section_area_max_relative_deviation", "poinsot_sum_max_relative_deviation",
+                 "gyration_normal_angle_rad", "gyration_perpendicular_times_omega_drift",
+                 "plane_rate_max_relative_deviation"):
+        assert n[name] < 1e-11, name
+    assert n["gyration_omega_range"] > 0.01 and n["plane_rate_range"] > 0.05      # the motion is not trivial
+    # the differenced azimuth agrees to the differences' own error (second order in the step)
+    assert n["plane_rate_differences_max_relative_deviation"] < 1e-4
+
+
+def test_plate_turns_to_the_other_diagonal_after_half_a_period():
+    out = Numbers()
+    lf._plate(out, 3.0, 1.0)
+    assert abs(out.numbers["plate_time_relative_error"]) < 1e-10
+    assert out.numbers["plate_angle_from_other_diagonal_rad"] < 1e-10
+
+
+def test_constraining_couples_are_lambs_on_the_phase_average_only():
+    out = Numbers()
+    lf._constraining_couples(out, I, 50.0)
+    n = out.numbers
+    assert n["constraining_in_plane_deviation"] < 1e-10 and n["constraining_perpendicular_deviation"] < 1e-12
+    # over one turn from a given phase: near 2B/(A + B) and 2A/(A + B), not 1
+    assert n["constraining_one_turn_ratio_chi0_0"] == pytest.approx(2 * I[1] / (I[0] + I[1]), rel=1e-2)
+    assert n["constraining_one_turn_ratio_chi0_90"] == pytest.approx(2 * I[0] / (I[0] + I[1]), rel=1e-2)
+    # a body symmetric about OC has no phase to average: one turn gives (A + B) v'/2 already
+    out = Numbers()
+    lf._constraining_couples(out, np.array([2.0, 2.0, 2.5]), 50.0)
+    assert out.numbers["constraining_one_turn_ratio_chi0_0"] == pytest.approx(1.0, rel=1e-2)
+
+
+@pytest.mark.parametrize("moments, prograde", [((0.9, 0.9, 1.0), True), ((1.0, 1.0, 0.5), False)])
+def test_notes_body_frequency_turns_at_minus_omega_b(moments, prograde):
+    """Oblate: the pole turns with the spin; prolate: against it. Either way at -Omega_b, Omega_b = (I1 - I3)w3/I1."""
+    Ib = np.array(moments)
+    w3 = 1.0
+    t, w, _ = lf.integrate(Ib, np.array([0.05, 0.0, w3]), 5.0, samples=501)
+    rate = np.polyfit(t, np.unwrap(np.arctan2(w[:, 1], w[:, 0])), 1)[0]
+    omega_b = (Ib[0] - Ib[2]) * w3 / Ib[0]
+    assert rate / omega_b == pytest.approx(-1.0, rel=1e-9)
+    assert (rate * w3 > 0) == prograde
+
+
+def _scene(tmp_path, **free):
+    data = yaml.safe_load((ROOT / "workflow" / "scenes" / "chandler" / "triaxial.yaml").read_text())
+    data["analysis"]["lamb_free_body"].update(free)
+    path = tmp_path / "scene.yaml"
+    path.write_text(yaml.safe_dump(data, allow_unicode=True))
+    return path
+
+
+@pytest.mark.parametrize("change, field", [({"moments": [2.0, 1.0, 2.5]}, "lamb_free_body.moments"),
+                                           ({"moments": [1.0, 1.2, 3.0]}, "lamb_free_body.moments"),
+                                           ({"plate_half_sides": [1.0, 2.0]}, "lamb_free_body.plate_half_sides")])
+def test_bad_free_body_is_refused_in_one_line(tmp_path, change, field):
+    path = _scene(tmp_path, **change)
+    with pytest.raises(SceneError) as error:
+        validate("chandler", path, SCHEMA)
+    assert field in str(error.value) and "\n" not in str(error.value)
+
+
+def test_art61_identities_and_the_torque_routine():
+    from classical_dynamics.models import precession as prec
+    from classical_dynamics.studies.precession import examples
+
+    model = prec.assemble(0.00327, np.radians(23.45), prec.CONSTANTS["lamb1920"](),
+                          {"solar_torque": None, "lunar_torque": None, "lunar_inclination": None,
+                           "node_regression": None})
+    out = Numbers()
+    examples.lamb_art61(out, model, {"samples": 20, "seed": 3})
+    n = out.numbers
+    assert n["sympy_solar_couple_residual"] == 0 and n["sympy_lunar_triangle_residual"] == 0
+    assert n["sympy_lunar_mean_factor_residual"] == 0
+    assert n["solar_couple_torque_routine_deviation"] < 1e-14
+    assert abs(n["lunar_mean_factor_relative_deviation"]) < 1e-13
+    assert n["lunar_rate_quadrature_over_formula"] == pytest.approx(1.0, rel=1e-13)
+
+
+@pytest.mark.parametrize("period_years", [17.3, 18.6, 20.1])
+def test_node_period_is_fitted_not_assumed(period_years):
+    """The long nutation's period is found by least squares: a synthetic obliquity series with a known period,
+    a semi-annual term and a trend gives that period back, whatever it is."""
+    from classical_dynamics.models import earth
+    from classical_dynamics.studies.precession import full
+
+    t = np.arange(0.0, 100.0 * earth.JULIAN_YEAR_DAYS, 1.0)
+    P = period_years * earth.JULIAN_YEAR_DAYS
+    semi = lambda x: 4.0 * np.pi * x / 365.2422 + 0.3          # noqa: E731
+    eps = (1e-7 * t / t[-1] + 4.5e-5 * np.cos(2 * np.pi * t / P + 1.0) + 3e-6 * np.sin(semi(t))
+           + 1e-7 * np.cos(4 * np.pi * t / P))
+    args = {"18.6 yr": lambda x: 2 * np.pi * x / (18.6 * 365.25), "semi-annual": semi}
+    out = Numbers()
+    full._node_period(out, t, eps, args)
+    assert out.numbers["node_period_fitted_years"] == pytest.approx(period_years, rel=1e-6)
+    assert out.numbers["node_period_iau_years"] == pytest.approx(18.613, rel=1e-4)

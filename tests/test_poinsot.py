@@ -1,0 +1,133 @@
+"""Poinsot's kinematics (chandler/poinsot.py) and Lamb's inertia examples (precession/examples.py)."""
+
+import numpy as np
+import pytest
+import yaml
+from scipy.integrate import solve_ivp
+
+from classical_dynamics.models import earth, wobble
+from classical_dynamics.scenes import SceneError
+from classical_dynamics.studies import validate
+from classical_dynamics.studies.chandler import poinsot
+from classical_dynamics.studies.precession import examples
+
+from .conftest import ROOT
+
+SCHEMA = ROOT / "workflow" / "schemas" / "chandler.schema.yaml"
+
+
+class Recorder:
+    def __init__(self):
+        self.numbers, self.hard = {}, {}
+
+    def number(self, name, value, unit, note=None, **kw):
+        self.numbers[name] = value
+
+    def hard_case(self, name, description, measured, bound, unit=""):
+        self.hard[name] = (measured, bound)
+
+    def figure(self, name, fig, caption):
+        self.figures = {**getattr(self, "figures", {}), name: caption}
+
+
+def test_attitude_turns_the_body_the_right_way():
+    """A spin about the body's z axis at rate 1: after time t the body's x axis points at (cos t, sin t, 0)."""
+    t, w, q = poinsot._integrate([1.0, 2.0, 3.0], [0.0, 0.0, 1.0], 1.3, 3)
+    x = poinsot._to_space(q, np.tile([1.0, 0.0, 0.0], (3, 1)))
+    assert x[-1] == pytest.approx([np.cos(1.3), np.sin(1.3), 0.0], abs=1e-12)
+
+
+def _scipy_radius_extremes(I, w0, span=60.0):
+    """The herpolhode's radius from omega alone, by scipy's DOP853: |x|^2 - (2T/H^2), x = omega/sqrt(2T)."""
+    I = np.asarray(I, float)
+    f = lambda t, w: [(I[1] - I[2]) / I[0] * w[1] * w[2], (I[2] - I[0]) / I[1] * w[2] * w[0],
+                      (I[0] - I[1]) / I[2] * w[0] * w[1]]
+    sol = solve_ivp(f, (0, span), w0, method="DOP853", rtol=1e-12, atol=1e-14, t_eval=np.linspace(0, span, 60001))
+    w = sol.y.T
+    T2, H2 = np.sum(I * w0**2), np.sum((I * w0) ** 2)
+    rho = np.sqrt(np.sum(w**2, axis=1) / T2 - T2 / H2)
+    return rho.min(), rho.max()
+
+
+@pytest.mark.parametrize("w0", [[1.0, 0.3, 1.0], [1.0, 0.2, 0.3]])     # about the greatest, the least axis
+def test_herpolhode_circles_closed_form_against_scipy(w0):
+    I = [1.0, 2.0, 2.5]
+    lo, hi = poinsot.herpolhode_radii(I, w0)
+    slo, shi = _scipy_radius_extremes(I, np.asarray(w0))
+    assert lo < hi
+    assert lo == pytest.approx(slo, rel=1e-6) and hi == pytest.approx(shi, rel=1e-6)
+
+
+def test_symmetric_body_herpolhode_is_a_circle():
+    lo, hi = poinsot.herpolhode_radii([1.0, 1.0, 2.0], [0.3, 0.1, 1.0])
+    assert lo == pytest.approx(hi, rel=1e-12)
+
+
+def test_poinsot_body_numbers():
+    r = Recorder()
+    poinsot.poinsot_body(r, {"moments": [1.0, 2.0, 2.5], "omega": [1.0, 0.3, 1.0], "span": 40.0, "samples": 40001,
+                             "source": "test"})
+    n = r.numbers
+    assert n["poinsot_plane_error"] < 1e-10
+    assert n["herpolhode_bounds_error"] < 1e-8
+    assert n["herpolhode_curvature_ratio"] > 0.1
+    assert n["rolling_arc_difference"] < 1e-5
+    assert n["conjugate_midplane_error"] < 1e-13
+    assert n["momentum_parallel_only_on_axes"] == 1 and n["invariable_cone_sympy"] == 1
+    assert 0 <= n["triangle_least_margin"] < 1e-3          # flat bodies come near the bound, none beyond it
+    assert n["hnw_triangle_margin"] < 0
+    assert n["invariable_planes_residual"] < 1e-9
+    assert "herpolhode" in r.figures and "$" in r.figures["herpolhode"]
+
+
+def test_cone_rates_signs_and_forms():
+    """On the oblate Earth the plane ZOC turns prograde once a day; Euler's chi' is negative (J runs prograde
+    in the body); both agree with Lamb Art. 47 (3)."""
+    model = wobble.assemble(earth.H_MHB2000, {})
+    r = Recorder()
+    poinsot.cone_rates(r, model, 0.1 * earth.ARCSEC)
+    n = r.numbers
+    assert n["psi_dot_measured"] > 0 > n["chi_dot_measured"]
+    assert n["cone_rates_error"] < 1e-10
+    assert n["no_slip_cones_ratio"] == pytest.approx(1.0, rel=1e-10)
+
+
+def _scene(tmp_path, moments):
+    data = yaml.safe_load((ROOT / "workflow" / "scenes" / "chandler" / "triaxial.yaml").read_text())
+    data["analysis"]["poinsot"]["moments"] = moments
+    path = tmp_path / "bad.yaml"
+    path.write_text(yaml.safe_dump(data, allow_unicode=True))
+    return path
+
+
+@pytest.mark.parametrize("moments,expected", [([0.5, 2.0, 3.0], "C ≤ A + B"), ([2.0, 1.0, 2.5], "A < B < C")])
+def test_unphysical_poinsot_body_refused(tmp_path, moments, expected):
+    path = _scene(tmp_path, moments)
+    with pytest.raises(SceneError) as error:
+        validate("chandler", path, SCHEMA)
+    assert "analysis.poinsot.moments" in str(error.value) and expected in str(error.value)
+
+
+def test_sphere_has_no_couple():
+    """A uniform sphere attracts as a point: no couple about its centre (quadrature)."""
+    N = examples._spheroid_couple(1.0, 1.0, 10.0, [0.5, 0.0, np.sqrt(0.75)])
+    assert np.linalg.norm(N) < 1e-14
+
+
+def test_least_axis_follows_the_least_moment():
+    r = Recorder()
+    examples.least_axis_stable(r, {"moments": [3.0, 1.0, 2.0], "start_offset_rad": 1e-3, "span": 100.0})
+    assert r.numbers["stable_equilibria"] == 2 and r.numbers["stable_equilibria_on_least_axis"] == 1
+    assert r.numbers["libration_growth_least"] < 1.5 < 100 < r.numbers["libration_growth_others"]
+
+
+def test_inertia_examples():
+    r = Recorder()
+    examples.whirling_helix(r, {"slope_deg": 60, "bead_steps_rad": [0.1, 0.05, 0.02]})
+    examples.added_mass(r, {"moments": [1.0, 2.0, 3.0], "seed": 3, "epsilons": [1e-2, 1e-3, 1e-4]})
+    examples.uniaxal_products(r)
+    n = r.numbers
+    assert n["helix_sympy"] == 1 and n["uniaxal_products_sympy"] == 1
+    assert n["helix_bead_order"] == pytest.approx(2.0, abs=0.02)
+    assert n["added_mass_moment_order"] == pytest.approx(2.0, abs=0.05)
+    assert n["added_mass_axis_order"] == pytest.approx(2.0, abs=0.05)

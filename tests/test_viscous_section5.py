@@ -1,0 +1,117 @@
+"""Lee §5 checks of studies/self_excited/section5.py: the time-dependent torque's quadratures, Cases I and IV, the
+spiral, the hyperbola of permanent rotations, the reduction formulas (5.32)-(5.37) and Re w."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import mpmath
+import numpy as np
+import pytest
+
+from classical_dynamics.models.viscous_medium import ViscousMedium, modulation, viscous_modulated
+from classical_dynamics.solvers import sine_cosine_integrals as sc
+from classical_dynamics.solvers.ode import Problem, solve
+from classical_dynamics.studies.self_excited import section5 as s5
+
+V3 = ViscousMedium.from_moments(2.5, 1.0, 0.3, 0.5, (0.4, -0.2, 0.3), (0.5, 0.8, 2.0))
+V2 = replace(V3, m=(0.4, -0.2, 0.0))
+FREE2 = replace(V2, nu=0.0, mu=0.0)
+
+
+class Numbers:
+    def __init__(self):
+        self.n, self.hard = {}, []
+
+    def number(self, name, value, unit, **kw):
+        self.n[name] = value
+
+    def hard_case(self, name, description, measured, bound, unit=""):
+        self.hard.append((name, measured, bound))
+
+
+@pytest.mark.parametrize("kind, a, b", [(0, 0.5, 2.0), (1, 1.0, 1.0)])
+@pytest.mark.parametrize("V", [V3, replace(V3, nu=0.0, mu=0.0)])
+def test_time_dependent_quadratures_against_eulers_equations(V, kind, a, b):
+    t = 7.0
+    ode = solve(Problem(viscous_modulated, list(V.omega0), (0.0, t), np.r_[V.parameters(), kind, a, b]), "dop853",
+                rtol=1e-13, atol=1e-15).y
+    q = s5._quadratures(V, modulation(kind, a, b), t)
+    assert np.max(np.abs(q["general"] - ode)) < 1e-10
+    assert np.max(np.abs(q["fixed"] - ode)) < 1e-10
+    assert np.max(np.abs(q["principal"] - ode)) > 1e-2          # m2 < 0: the principal arctan is the wrong angle
+
+
+def test_constant_modulus_reduces_to_the_constant_torque_solution():
+    """F = 1 (a = 0): the time-dependent quadratures equal the model's constant-torque solution (si, ci)."""
+    q = s5._quadratures(V3, modulation(0, 0.0, 1.0), 5.0)
+    assert np.max(np.abs(q["fixed"] - V3.closed_form([5.0])[0][0])) < 1e-10
+
+
+def test_case_one_and_four_are_straight_and_reach_the_point():
+    r = Numbers()
+    s5.case_one(r, V2)
+    s5.case_four(r, V3)
+    for name in ("case_one_lee_vs_ode", "case_one_line_distance", "case_one_frictionless_gap", "case_four_lee_vs_ode",
+                 "case_four_line_distance", "case_four_frictionless_gap", "case_four_space_line_distance_equal_drags"):
+        assert r.n[name] < 1e-11, name
+    assert r.n["case_one_limit_gap"] < 1e-8 and r.n["case_four_limit_gap"] < 1e-8
+    assert r.n["case_one_r_max"] == 0.0
+    assert r.n["case_four_space_line_distance"] > 0.1            # nu != mu: curved in space
+
+
+def test_lee_linear_formula_is_not_the_integrator():
+    """A wrong drag in Lee's (5.18) must be caught: the check compares two independent things."""
+    t = np.linspace(0.0, 10.0, 11)
+    V1 = replace(V2, omega0=(0.5, 0.8, 0.0))
+    y = s5._euler(V1, V1.omega0, t)
+    assert np.max(np.abs(s5._lee_linear(V1, V1.omega0, t) - y)) < 1e-12
+    assert np.max(np.abs(s5._lee_linear(replace(V1, nu=0.31), V1.omega0, t) - y)) > 1e-3
+
+
+def test_spiral_rates_and_hyperbola():
+    r = Numbers()
+    s5.spiral(r, V3)
+    assert abs(r.n["spiral_decay_rate"] / V3.nu - 1) < 1e-8
+    assert abs(r.n["spiral_turn_rate"] / V3.g1 - 1) < 1e-8
+    panels, _ = s5.singular_curve(r, FREE2)
+    assert r.n["singular_curve_drift"] < 1e-12
+    assert abs(r.n["singular_curve_k"] + np.hypot(0.4, 0.2) / FREE2.h) < 1e-14
+    assert r.n["circle_center_fit_gap"] < 1e-10 and len(panels) == 1
+
+
+def test_a_point_off_the_hyperbola_moves():
+    """The drift check can fail: a point beside the curve runs round a circle."""
+    pt = np.array([-0.2 / (0.6 * 2.0) + 0.1, -0.4 / (0.6 * 2.0), 2.0])
+    y = s5._euler(FREE2, pt, np.linspace(0.0, 5.0, 11))
+    assert np.max(np.abs(y - pt)) > 0.05
+
+
+@pytest.mark.parametrize("K", [1, 2, 3, 4, 5])
+@pytest.mark.parametrize("x", [0.3, 3.0])
+def test_reduction_formulas_and_the_printed_sign(K, x):
+    w = K + complex(0.6, 0.72)
+    with mpmath.workdps(40):
+        si, ci = s5.lee_reduction(x, w)
+        ref_si, ref_ci = sc.reference(x, w, dps=40)
+        assert abs(si - ref_si) < 1e-30 * abs(ref_si) and abs(ci - ref_ci) < 1e-30 * abs(ref_ci)
+        if K in (3, 5):                                     # P != 0 for K odd only from K = 3
+            wrong, _ = s5.lee_reduction(x, w, ocr_sign=True)
+            assert abs(wrong - ref_si) > 1e-3 * abs(ref_si)
+
+
+def test_reduction_a_b_and_re_w():
+    r = Numbers()
+    s5.reduction_formulas(r, V3)
+    assert r.n["reduction_A_B_error"] < 1e-25 and r.n["reduction_relative_error"] < 1e-30
+    s5.re_w(r, V3)
+    assert r.n["re_w_formula"] == pytest.approx(1.6, rel=1e-15)
+    assert 1.0 < r.n["re_w_elongated_min"] < r.n["re_w_elongated_max"] < 2.0 < r.n["re_w_disc_min"]
+    assert r.n["re_w_disc_max"] == pytest.approx(3.0, rel=1e-15)
+
+
+@pytest.mark.parametrize("s", [0.3, 7.0, 30.0])
+def test_gauss_rule_of_xi_against_quad(s):
+    from scipy import integrate
+    f = lambda u: (1.0 + 0.5 * np.sin(2.0 * u)) * (1.0 - np.exp(-0.5 * (s - u)))     # noqa: E731
+    assert abs(s5._gauss(f, s) - integrate.quad(f, 0.0, s, epsabs=1e-15, epsrel=1e-14, limit=200)[0]) < 1e-13 * s
