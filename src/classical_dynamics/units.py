@@ -43,6 +43,8 @@ REGISTRY: dict[str, Unit] = {
     "time": Unit("time units"), "time units": Unit("time units"), "1/time": Unit("per time unit"), "1/time²": Unit("per time unit squared"),
     "g/l": Unit("$g/l$"), "√(g/l)": Unit("$\\sqrt{g/l}$"), "√(l/g)": Unit("$\\sqrt{l/g}$"), "√(k/m)": Unit("$\\sqrt{k/m}$"),
     "k/m": Unit("$k/m$"), "μ": Unit("$\\mu$"),
+    "n": Unit("$n$"), "a": Unit("$a$"), "k": Unit("$k$"), "Ω²": Unit("$\\Omega^2$"), "1/(A n)": Unit("$1/An$"),
+    "√(T/σ)/a": Unit("$\\sqrt{T/\\sigma}/a$"),
     "x/l from the free end": Unit("of the length from the free end"),
     # counted things
     "particles": Unit("particles", word=True, singular="particle"),

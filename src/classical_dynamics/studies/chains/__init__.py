@@ -19,7 +19,8 @@ __all__ = ["TITLE", "EFFECTS", "check", "run"]     # the interface every study m
 _EFFECT_ENDS = {"gravity": {"fixed-free"}, "rotation": {"fixed-free"}}
 _LINKS_EFFECTS = {"gravity"}
 _PARTICLE_ONLY_ANALYSES = {"accuracy_cost", "time_domain", "dispersion", "large_n", "separation",
-                           "rayleigh_symmetric", "constraint", "forced", "friction", "initial_value", "parabola_type", "ring_waves", "continuum_limit"}
+                           "rayleigh_symmetric", "constraint", "forced", "friction", "initial_value", "parabola_type", "ring_waves", "continuum_limit",
+                           "stability", "revolving"}
 # an analysis that needs an effect: the response needs a force, the decay a dissipation
 _ANALYSIS_NEEDS = {"forced": "forcing", "friction": "friction"}
 _NOT_RESTORING = {"forcing", "friction"}
@@ -89,6 +90,9 @@ def check(path: Path, data: dict) -> None:
         values = effects.get(name, {}).get(field)
         if isinstance(values, list) and n is not None and len(values) != n:
             raise SceneError(path, f"effects.{name}.{field}", f"one value per particle, {n}", len(values))
+    if analysis.get("stability") and (set(effects) != {"springs"} or masses is not None):
+        raise SceneError(path, "analysis.stability", "equal particles on springs only (the examples are built "
+                         "from their k and m)", sorted(effects))
     if analysis.get("separation") and (n != 2 or masses is not None):
         raise SceneError(path, "analysis.separation", "two equal particles (Lamb Art. 90 Ex. 1)", n)
     if analysis.get("rayleigh_symmetric") and (n != 3 or ends != "fixed-fixed"):
@@ -97,7 +101,7 @@ def check(path: Path, data: dict) -> None:
     for name in analysis:
         if name in _PARTICLE_ONLY_ANALYSES and model != "particles":
             raise SceneError(path, f"analysis.{name}", "a particle chain (chain.model: particles)", model)
-    for name in ("rayleigh", "spectral_check"):
+    for name in ("rayleigh", "spectral_check", "galerkin", "membrane"):
         if name in analysis and (model != "continuum" or set(effects) != {"gravity"}):
             raise SceneError(path, f"analysis.{name}", "a continuous hanging chain (model continuum, gravity)",
                              model)
@@ -105,6 +109,12 @@ def check(path: Path, data: dict) -> None:
             set(effects) != {"gravity"} or masses is not None):
         raise SceneError(path, "analysis", "a uniform hanging chain (gravity only, equal masses) for "
                          "accuracy_cost, large_n and time_domain", sorted(effects))
+    if "galerkin" in analysis and max(analysis["galerkin"]["elements"]) > 100_000:
+        raise SceneError(path, "analysis.galerkin.elements", "at most 100000 elements (a sparse solve each)",
+                         max(analysis["galerkin"]["elements"]))
+    if "membrane" in analysis and analysis["membrane"]["points"] % 2 == 0:
+        raise SceneError(path, "analysis.membrane.points", "an odd number (no collocation point at the centre)",
+                         analysis["membrane"]["points"])
     beta = analysis.get("rayleigh")
     if beta is not None and beta["beta_min"] >= beta["beta_max"]:
         raise SceneError(path, "analysis.rayleigh.beta_max", f"a number > beta_min = {beta['beta_min']}",
@@ -124,8 +134,8 @@ def _check_ring(path, chain, effects, analysis):
     if isinstance(effects["springs"]["k_n_per_m"], list):
         raise SceneError(path, "effects.springs.k_n_per_m", "one stiffness for every spring of the ring",
                          effects["springs"]["k_n_per_m"])
-    if set(analysis) != {"ring_waves"}:
-        raise SceneError(path, "analysis", "ring_waves only for a ring", sorted(analysis))
+    if "ring_waves" not in analysis or set(analysis) - {"ring_waves", "gyroscopic"}:
+        raise SceneError(path, "analysis", "ring_waves (and gyroscopic) only for a ring", sorted(analysis))
     if chain["n"] > 2000:
         raise SceneError(path, "chain.n", "at most 2000 beads (a dense eigenproblem of 4n unknowns)", chain["n"])
 

@@ -77,6 +77,12 @@ def run(scene, results, quick):
         _rayleigh(results, analysis["rayleigh"], (j[0] / 2) ** 2, quick)
     if "mcmahon_check" in analysis:
         _high_index_zeros(results, analysis["mcmahon_check"]["k_max"])
+    if "galerkin" in analysis:           # Lamb Art. 100: the same chain from Hamilton's principle
+        from . import stability
+        stability.hamilton_chain(results, analysis["galerkin"]["elements"])
+    if "membrane" in analysis:           # the drum of the lecture notes: Bessel's equation again, all m
+        from . import stability
+        stability.drum(results, analysis["membrane"]["points"])
 
 
 def _mode_shape_figure(results, j):

@@ -155,6 +155,13 @@ def run(scene, results, quick):
         _continuum_limit(results, chain, effects, ends, analysis["continuum_limit"]["n_values"])
     if "initial_value" in analysis:
         small_oscillations.initial_value(results, built, analysis["initial_value"])
+    if analysis.get("stability"):
+        from . import stability
+        stability.equilibrium(results, built)
+        stability.ball_modes(results)
+    if analysis.get("revolving"):
+        from . import stability
+        stability.revolving(results)
     if shapes is not None and analysis.get("mode_shapes") and "gravity" in effects:
         _mode_shapes(results, shapes, n, k)
     if "convergence" in analysis:

@@ -139,6 +139,9 @@ def run_ring(scene, results, quick):
                   "rest in space. The deviation is from Lamb's relative speeds.",
                   headers={"s": "$s$", "relative_1": "wave 1", "relative_2": "wave 2", "space_2": "wave 2 in space",
                            "lamb_space_2": "Lamb", "deviation": "deviation"})
+    if "gyroscopic" in scene.data["analysis"]:      # Lamb Art. 99: kinetic stability, secular instability
+        from . import stability
+        stability.gyroscopic(results, scene.data["analysis"]["gyroscopic"])
 
 
 # --- The triangle: three equal atoms on three equal springs ------------------------------------------------

@@ -157,3 +157,90 @@ def formula_is_exact(formula, roots) -> bool:
 
 def evaluate(expressions, values) -> np.ndarray:
     return np.array([float(sp.N(e.subs(values), 30)) for e in expressions])
+
+
+# --- Lamb's stability (Arts. 92, 99; Exs. XIV.16, 18): the references of studies/chains/stability.py ------
+
+def equal_root_minors():
+    """Lamb Art. 92: three particles m on a closed ring of springs k, each tied down by k: K = k(I + L).
+    Delta(lambda) = det(K - lambda M) has a double root; every first minor (the adjugate) vanishes there.
+    Returns (all minors zero, the multiplicity)."""
+    lam = sp.Symbol("lambda")
+    L = sp.Matrix([[2, -1, -1], [-1, 2, -1], [-1, -1, 2]])
+    K, M = k * (sp.eye(3) + L), m1 * sp.eye(3)
+    roots = sp.roots(sp.Poly((K - lam * M).det(), lam))
+    double, multiplicity = max(roots.items(), key=lambda item: item[1])
+    adjugate = (K - double * M).adjugate().applyfunc(sp.simplify)
+    return adjugate == sp.zeros(3, 3), int(multiplicity)
+
+
+def kinetic_stability():
+    """Lamb Art. 99 (1)-(3): a1 q1'' + beta q2' + c1 q1 = 0, a2 q2'' - beta q1' + c2 q2 = 0. Returns whether
+    (3) is the discriminant of (2) in lambda^2, and whether the system's determinant is (2)."""
+    a1, a2, c1, c2, beta, lam, x = sp.symbols("a1 a2 c1 c2 beta lambda x")
+    system = sp.Matrix([[a1 * lam**2 + c1, beta * lam], [-beta * lam, a2 * lam**2 + c2]]).det()
+    printed2 = a1 * a2 * lam**4 + (a1 * c2 + a2 * c1 + beta**2) * lam**2 + c1 * c2
+    quadratic = sp.Poly(printed2.subs(lam**2, x), x)
+    A, B, C = quadratic.all_coeffs()
+    printed3 = beta**4 + 2 * beta**2 * (a1 * c2 + a2 * c1) + (a1 * c2 - a2 * c1) ** 2
+    return sp.expand(B**2 - 4 * A * C - printed3) == 0, sp.expand(system - printed2) == 0
+
+
+def gyroscopic_first_order_rho():
+    """Lamb Art. 99 (7)-(10): with a dashpot eps on both coordinates (a1 = a2 = 1, c1 = c2 = c), the root
+    i sigma moves by rho = -eps (dDelta/deps)/(dDelta/dlambda) at first order; real. In symbols c, beta,
+    epsilon, sigma (no assumptions, so that a string substitutes)."""
+    c, beta, eps, sigma, lam = sp.symbols("c beta epsilon sigma lambda")
+    delta = (lam**2 + eps * lam + c) ** 2 + beta**2 * lam**2
+    rho = -eps * sp.diff(delta, eps).subs(eps, 0) / sp.diff(delta, lam).subs(eps, 0)
+    return sp.simplify(rho.subs(lam, sp.I * sigma))
+
+
+def bowl_relative_equilibrium() -> bool:
+    """Lamb Art. 99 Ex. 2: in the bowl turning at omega the effective potential per unit mass is
+    -g a cos theta - omega^2 a^2 sin^2 theta / 2; its stationary point off the bottom is cos theta = g/(a omega^2),
+    a minimum, and the bottom is then a maximum (omega^2 > g/a)."""
+    g, a, w, th = sp.symbols("g a omega theta", positive=True)
+    U = -g * a * sp.cos(th) - w**2 * a**2 * sp.sin(th) ** 2 / 2
+    dU = sp.diff(U, th)
+    cone = sp.acos(g / (a * w**2))
+    stationary = sp.simplify(dU.subs(th, cone)) == 0
+    curvature = sp.simplify(sp.diff(U, th, 2).subs(th, cone) - w**2 * a**2 * sp.sin(cone) ** 2) == 0
+    bottom = sp.simplify(sp.diff(U, th, 2).subs(th, 0) - (g * a - w**2 * a**2)) == 0
+    return bool(stationary and curvature and bottom)
+
+
+def exponential_force_bounds():
+    """Lamb Ex. XIV.16: a circular orbit under an attraction f(r) is stable while d(r^3 f)/dr > 0. The roots
+    (over a) of d(r^3 f)/dr for f = e^{-r/a}/r^2 (printed bound a) and e^{-r/a}/r (the OCR's reading), each
+    checked to be the only sign change (positive below, negative above)."""
+    r, a = sp.symbols("r a", positive=True)
+    bounds = []
+    for power in (2, 1):
+        d = sp.diff(r**3 * sp.exp(-r / a) / r**power, r)
+        (root,) = sp.solve(d, r)
+        assert d.subs(r, root / 2) > 0 and d.subs(r, 2 * root) < 0
+        bounds.append(sp.simplify(root / a))
+    return tuple(bounds)
+
+
+REVOLVING = sp.symbols("M m a b mu", positive=True)
+
+
+def revolving_string():
+    """Lamb Ex. XIV.18: particles M, m at a and a + b from O on a light string, revolving in a plane with
+    angular momentum mu. phi the first link's angle (cyclic), psi the second's relative to it; Routh's
+    reduction: the Routhian's kinetic part in psi and the effective potential mu^2/(2 A(psi)). Returns sigma^2,
+    whether it is mu^2/[Mab(Ma^2 + m(a + b)^2)], and sigma^2/Omega^2 for M = m, a = b."""
+    M, m, a, b, mu = REVOLVING
+    psi = sp.Symbol("psi")
+    A = (M + m) * a**2 + m * b**2 + 2 * m * a * b * sp.cos(psi)      # p_phi = A phi' + B psi'
+    B = m * b**2 + m * a * b * sp.cos(psi)
+    inertia = (m * b**2 - B**2 / A).subs(psi, 0)                       # the Routhian's coefficient of psi'^2/2
+    potential = mu**2 / (2 * A)
+    assert sp.simplify(sp.diff(potential, psi).subs(psi, 0)) == 0     # the straight form is a steady motion
+    sigma2 = sp.simplify(sp.diff(potential, psi, 2).subs(psi, 0) / inertia)
+    printed = mu**2 / (M * a * b * (M * a**2 + m * (a + b) ** 2))
+    omega = sp.Symbol("Omega", positive=True)
+    equal = sp.simplify((sigma2 / omega**2).subs(mu, omega * (M * a**2 + m * (a + b) ** 2)).subs({M: m, b: a}))
+    return sigma2, sp.simplify(sigma2 - printed) == 0, equal

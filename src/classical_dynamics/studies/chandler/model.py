@@ -111,6 +111,8 @@ def run(scene, results, quick):
         _dissipation_structure(results, model)
     if analysis.get("cones"):
         _cones(results, model, amplitude)
+        if not effects:
+            _symmetric_integrals(results, model)
     if analysis.get("lamb_symmetric"):
         from . import lamb_free
         lamb_free.symmetric_earth(results, model, amplitude)
@@ -167,6 +169,31 @@ def _dissipation_structure(results, model, tilt_deg=10.0, periods=20):
                       1e-12)
     results.hard_case("dissipation_energy_falls", "… and the energy never rises (largest rise / total fall)",
                       rise / fall, 1e-6)
+
+
+def _symmetric_integrals(results, model, tilt_deg=10.0, periods=20):
+    """Handbook (2.162)-(2.163): for the free symmetric body T = I1 A^2/2 + I3 w3^2/2 and L^2 = I1^2 A^2 +
+    I3^2 w3^2, so the wobble's angular speed A and the spin w3 follow from T and L^2. On a 10 degree wobble (at
+    0.1 arcsec A^2 is below what T and L^2 resolve), against A = |(w1, w2)| and w3 along a DOP853 run."""
+    params = model.parameters()
+    I1, I3 = params[wobble.A_C], 1.0
+    if params[wobble.B_C] != I1:
+        raise ValueError("(2.162)-(2.163) are for a symmetric body")
+    y0 = np.array([np.sin(np.radians(tilt_deg)), 0.0, np.cos(np.radians(tilt_deg))])
+    span = periods * model.wobble_period_solar_days()
+    sol = solve(Problem(wobble.liouville, y0, (0.0, span), params), "dop853", rtol=1e-13, atol=1e-16,
+                t_eval=np.linspace(0.0, span, 2001))
+    y = sol.y_eval
+    T = 0.5 * (I1 * y0[0] ** 2 + I1 * y0[1] ** 2 + I3 * y0[2] ** 2)
+    L2 = (I1 * y0[0]) ** 2 + (I1 * y0[1]) ** 2 + (I3 * y0[2]) ** 2
+    A = np.sqrt((2 * T * I3 - L2) / (I1 * (I3 - I1)))           # (2.162)-(2.163) solved for A and w3
+    w3 = np.sqrt((L2 - 2 * T * I1) / (I3 * (I3 - I1)))
+    wobble_speed = np.hypot(y[:, 0], y[:, 1])
+    deviation = max(float(np.max(np.abs(wobble_speed / A - 1))), float(np.max(np.abs(y[:, 2] / w3 - 1))))
+    results.number("symmetric_T_L2_recovery", deviation, "1",
+                   note=f"$A$ and $\\omega_3$ from $T$ and $L^2$ by (2.162)-(2.163) against $|(\\omega_1, "
+                        f"\\omega_2)|$ and $\\omega_3$ along a {shortest(tilt_deg)}° wobble, {periods} periods "
+                        "(largest relative difference)")
 
 
 def _polhode(results, t, m, period, damped, triaxial=False):

@@ -27,6 +27,8 @@ def run(scene, results, quick):
     _blow_up(results)
     _lee_cases(results)
     _numerical_damping(results)
+    _energy_kept(results)
+    _rotations(results)
 
 
 def _separatrix(results, one_minus_m, quick):
@@ -204,3 +206,67 @@ def _numerical_damping(results):
                    "after 100 periods, by adaptive method, at two relative tolerances. Every method changes the "
                    "energy, most of them by losing it; BDF loses the most. A physical quality factor $Q$ must be "
                    "measured well above this numerical floor.")
+
+
+def _energy_kept(results):
+    """The oscillator's energy is a first integral (notes: L has no t; handbook Ex. 2.5: H has no t). The
+    implicit midpoint rule keeps every quadratic first integral of a linear system exactly (up to rounding), so
+    E, kept by it over 100 periods, is one; sympy checks Hamilton's equations give m x'' + k x = 0, dH/dt = 0."""
+    import sympy as sp
+    x, p, m, k, t = sp.symbols("x p m k t", positive=True)
+    H = p**2 / (2 * m) + k * x**2 / 2
+    xdot, pdot = sp.diff(H, p), -sp.diff(H, x)
+    newton = sp.simplify(m * sp.diff(xdot, p) * pdot + k * x) == 0          # m x'' = m (d/dt)(p/m) = p' = -k x
+    conserved = sp.simplify(sp.diff(H, x) * xdot + sp.diff(H, p) * pdot) == 0 and sp.diff(H, t) == 0
+    results.number("spring_hamilton_equations_exact", int(newton and conserved), "1",
+                   note="1: Hamilton's equations of $H = p^2/2m + kx^2/2$ give $m\\ddot x + kx = 0$, and "
+                        "$dH/dt = \\partial H/\\partial t = 0$ (sympy)")
+    mass, stiffness = 2.0, 3.0
+    omega = np.sqrt(stiffness / mass)
+    for name, A, z0, energy in (
+            ("lagrangian", np.array([[0.0, 1.0], [-stiffness / mass, 0.0]]), np.array([1.0, 0.3]),
+             lambda z: 0.5 * mass * z[1] ** 2 + 0.5 * stiffness * z[0] ** 2),
+            ("hamiltonian", np.array([[0.0, 1 / mass], [-stiffness, 0.0]]), np.array([1.0, 0.6]),
+             lambda z: z[1] ** 2 / (2 * mass) + 0.5 * stiffness * z[0] ** 2)):
+        h = 2 * np.pi / omega / 20
+        step = np.linalg.solve(np.eye(2) - 0.5 * h * A, np.eye(2) + 0.5 * h * A)     # implicit midpoint
+        z, e0, worst = z0.copy(), energy(z0), 0.0
+        for _ in range(100 * 20):
+            z = step @ z
+            worst = max(worst, abs(energy(z) / e0 - 1))
+        variables = "$x$, $\\dot x$" if name == "lagrangian" else "$x$, $p$"
+        results.number(f"oscillator_{name}_midpoint_energy_change", float(worst), "1",
+                       note="largest relative change of $E$ over 100 periods, 20 implicit midpoint steps a period "
+                            f"({variables}; $m$ = 2, $k$ = 3)")
+
+
+def _rotations(results, seed=22):
+    """Handbook 2.2.1.1: Tr A = 1 + 2 cos phi in any axes; Ex. 2.2: the printed R, its axis and its angle.
+    scipy's Rotation (quaternions) is the reference for the angle and the axis."""
+    from scipy.spatial.transform import Rotation
+    rotations = Rotation.random(1000, random_state=seed)
+    others = Rotation.random(1000, random_state=seed + 1)
+    R, B = rotations.as_matrix(), others.as_matrix()
+    phi = rotations.magnitude()
+    trace = np.trace(R, axis1=1, axis2=2)
+    similar = np.trace(B @ R @ np.transpose(B, (0, 2, 1)), axis1=1, axis2=2)
+    worst = float(max(np.max(np.abs(trace - (1 + 2 * np.cos(phi)))), np.max(np.abs(similar - (1 + 2 * np.cos(phi))))))
+    results.number("rotation_trace_identity", worst, "1",
+                   note="largest $|\\mathrm{Tr}\\,R - (1 + 2\\cos\\varphi)|$ over 1000 random rotations, also "
+                        "after $R \\to BRB^{\\mathsf T}$ ($\\varphi$ from scipy's quaternions)")
+    r6 = np.sqrt(6.0)
+    printed = np.array([[3, r6, 1], [-r6, 2, r6], [1, -r6, 3]]) / 4
+    results.number("ex2_2_orthogonality", float(np.max(np.abs(printed @ printed.T - np.eye(3)))), "1",
+                   note="largest entry of $RR^{\\mathsf T} - 1$, the handbook's $R$")
+    lam, vectors = np.linalg.eig(printed)
+    axis = np.real(vectors[:, np.argmin(np.abs(lam - 1))])
+    expected = np.array([1.0, 0.0, 1.0]) / np.sqrt(2)
+    results.number("ex2_2_axis_misalignment", float(1 - abs(axis @ expected) / np.linalg.norm(axis)), "1",
+                   note="$1 - |\\cos|$ of the angle between the eigenvector of eigenvalue 1 and $(1, 0, 1)/\\sqrt2$")
+    rotvec = Rotation.from_matrix(printed).as_rotvec()
+    results.number("ex2_2_rotvec_misalignment", float(1 - abs(rotvec @ expected) / np.linalg.norm(rotvec)), "1",
+                   note="the same for scipy's rotation vector")
+    results.number("ex2_2_angle_deg", float(np.degrees(Rotation.from_matrix(printed).magnitude())), "°",
+                   note="scipy's rotation angle of the handbook's $R$")
+    results.number("ex2_2_angle_from_trace_deg", float(np.degrees(np.arccos((np.trace(printed) - 1) / 2))), "°",
+                   note="$\\arccos((\\mathrm{Tr}\\,R - 1)/2)$")

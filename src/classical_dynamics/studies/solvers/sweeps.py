@@ -60,6 +60,13 @@ def run(scene, results, quick):
     frame = wp.sweep(case, entries, repeats=repeats, budget_s=0.5 if quick else 2.0)
     orders = wp.fitted_orders(frame)
     accuracy = frame.drop(columns=["seconds", "runs"])
+    if scene.data["problem"] == "hnw_rigid_body":     # handbook (2.154)-(2.155): T and L^2 kept, to DOP853's accuracy
+        run = wp.adaptive(case, "dop853").run(1e-12, True)     # its own run: a quick build's sweep stops at 1e-9
+        for invariant, label in (("energy", "$T$"), ("casimir", "$L^2$")):
+            values = case.invariants[invariant](run.y_steps)
+            results.number(f"dop853_rtol_1e-12_{invariant}_drift",
+                           float(np.max(np.abs(values - values[0])) / abs(values[0])), "1",
+                           note=f"largest relative drift of {label} at the steps of DOP853, rtol $10^{{-12}}$")
     headers = accuracy_headers(scene.data["problem"])
     name = NAMES[case.name]
     results.table("accuracy", accuracy, f"The {name}: the error against the exact elliptic-function solution, by "

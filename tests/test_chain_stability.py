@@ -1,0 +1,136 @@
+"""Lamb's stability (studies/chains/stability.py) and the handbook checks added beside it: each computation
+against its closed form, and the cases that must fail when the physics is wrong."""
+
+import numpy as np
+import pytest
+import yaml
+from scipy.special import jn_zeros
+
+from classical_dynamics.scenes import SceneError
+from classical_dynamics.studies import validate
+from classical_dynamics.studies.chains import stability, symbolic
+
+from .conftest import SCHEMA
+
+
+class Recorder:
+    def __init__(self):
+        self.values, self.hard = {}, {}
+
+    def number(self, name, value, unit, **_):
+        self.values[name] = value
+
+    def hard_case(self, name, description, measured, bound, unit=""):
+        self.hard[name] = (measured, bound)
+
+
+def test_sympy_references():
+    assert symbolic.equal_root_minors() == (True, 2)
+    assert symbolic.kinetic_stability() == (True, True)
+    assert symbolic.bowl_relative_equilibrium()
+    assert symbolic.exponential_force_bounds() == (1, 2)
+    sigma2, printed, equal = symbolic.revolving_string()
+    assert printed and equal == 5
+
+
+def test_equal_roots_bounded_but_a_jordan_block_grows():
+    rng = np.random.default_rng(0)
+    L = np.array([[2.0, -1, -1], [-1, 2, -1], [-1, -1, 2]])
+    assert stability._bounded(np.eye(3) + L, np.eye(3), 2 * np.pi, 500, rng) - 1 < 1e-10
+    growth = stability._bounded(np.array([[1.0, 1.0], [0.0, 1.0]]), np.eye(2), 2 * np.pi, 500, rng)
+    assert growth > 100                       # secular: the amplitude grows as t
+
+
+def test_gyroscopic_switch_secular_instability_and_bowl():
+    r = Recorder()
+    stability.gyroscopic(r, {"beta": 3.0, "epsilon": 1e-4, "bowl_friction": 0.1})
+    v = r.values
+    assert abs(v["kinetic_switch_beta"] - 2.0) < 1e-10
+    assert v["kinetic_positive_c_unstable_count"] == 0 and v["kinetic_mixed_c_stable_count"] == 0
+    slower, faster = v["secular_real_parts_c_negative"]
+    assert slower > 0 > faster                            # the slower mode grows: secular instability
+    assert max(v["secular_real_parts_c_positive"]) < 0   # positive c: both decay
+    assert v["secular_vs_first_order_c_negative"] < 1e-6
+    assert abs(v["bowl_switch_omega_over_n"] - 1.0) < 1e-10
+    assert np.allclose(v["bowl_space_rates_frictionless"], [-1.0, 1.0], atol=1e-12)
+    assert v["bowl_growing_mode_space_rate"] > 0 and v["bowl_growing_real_part"] > 0
+
+
+def test_revolving_examples():
+    r = Recorder()
+    stability.revolving(r)
+    assert abs(r.values["exponential_force_switch"] - 1.0) < 1e-10
+    assert abs(r.values["exponential_force_switch_ocr_reading"] - 2.0) < 1e-10
+    assert r.values["revolving_sigma2_fitted_vs_formula"] < 1e-8
+
+
+def test_ball_modes_are_conjugate_and_fixed_axes():
+    r = Recorder()
+    stability.ball_modes(r, seed=3)
+    assert r.values["ball_conjugate_inertia"] < 1e-13 and r.values["ball_conjugate_potential"] < 1e-13
+    assert r.values["ball_mode_axis_fixed"] < 1e-10
+
+
+def test_hamilton_chain_converges_at_order_two_to_the_j0_zeros():
+    r = Recorder()
+    stability.hamilton_chain(r, [250, 500, 1000, 2000])
+    assert abs(r.values["galerkin_order"] - 2.0) < 0.02
+    assert r.values["galerkin_richardson_error"] < r.values["galerkin_finest_error"] / 100
+
+
+def test_drum_collocation_finds_the_bessel_zeros_not_their_roots():
+    r = Recorder()
+    stability.drum(r, 41)
+    computed = np.array(r.values["drum_frequencies_collocation"])
+    assert abs(computed[0] - jn_zeros(0, 1)[0]) < 1e-12
+    assert abs(computed[0] - 1.551) > 0.8                 # the notes' 1.551 is sqrt(j01), not a frequency
+    assert r.values["drum_collocation_vs_bessel"] < 1e-12
+    assert [tuple(x) for x in r.values["drum_modes_mn"][:4]] == [(0, 1), (1, 1), (2, 1), (0, 2)]
+
+
+RING = {"title": "ring", "chain": {"model": "ring", "n": 16, "length_m": 1.0, "mass_kg": 1.0},
+        "effects": {"rotation": {"omega_rad_per_s": 1.0}, "springs": {"k_n_per_m": 1.0e4}},
+        "analysis": {"ring_waves": {"s_max": 4}}}
+CONTINUUM = {"title": "c", "chain": {"model": "continuum", "length_m": 1.0, "mass_kg": 1.0},
+             "effects": {"gravity": {"g_m_per_s2": 9.81}}}
+
+
+@pytest.mark.parametrize("data,field,expected", [
+    ({**RING, "analysis": {"gyroscopic": {"beta": 3.0, "epsilon": 1e-4, "bowl_friction": 0.1}}}, "analysis",
+     "ring_waves"),
+    ({**RING, "analysis": {"ring_waves": {"s_max": 4}, "gyroscopic": {"beta": 1.5, "epsilon": 1e-4,
+                                                                      "bowl_friction": 0.1}}},
+     "analysis.gyroscopic.beta", "> 2"),
+    ({**CONTINUUM, "analysis": {"membrane": {"points": 40}}}, "analysis.membrane.points", "odd"),
+    ({**CONTINUUM, "analysis": {"galerkin": {"elements": [1000, 1000000]}}}, "analysis.galerkin.elements",
+     "at most 100000"),
+    ({"title": "t", "chain": {"model": "particles", "n": 4, "ends": "fixed-free", "length_m": 1.0, "mass_kg": 1.0},
+      "effects": {"gravity": {"g_m_per_s2": 9.81}}, "analysis": {"stability": True}}, "analysis.stability",
+     "springs"),
+])
+def test_bad_stability_scenes(tmp_path, data, field, expected):
+    path = tmp_path / "scene.yaml"
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(SceneError) as error:
+        validate("chains", path, SCHEMA)
+    assert str(error.value).startswith(f"{path}: field '{field}'") and expected in str(error.value)
+
+
+def test_rotation_checks_and_kept_energy():
+    from classical_dynamics.studies.solvers import hard_cases
+    r = Recorder()
+    hard_cases._rotations(r)
+    hard_cases._energy_kept(r)
+    v = r.values
+    assert v["rotation_trace_identity"] < 1e-14
+    assert v["ex2_2_axis_misalignment"] < 1e-15 and abs(v["ex2_2_angle_deg"] - 60.0) < 1e-12
+    assert v["spring_hamilton_equations_exact"] == 1
+    assert v["oscillator_hamiltonian_midpoint_energy_change"] < 1e-12
+
+
+def test_reciprocal_theorem_needs_the_reversal():
+    from classical_dynamics.studies.solvers import heavy_top, top_model
+    r = Recorder()
+    heavy_top._reciprocal(r, top_model.Top(1.0, 0.5, 1.0), 6.0, np.radians(60.0))
+    assert r.values["reciprocal_relative_difference"] < 1e-6
+    assert r.values["reciprocal_unreversed_relative_difference"] > 0.1
