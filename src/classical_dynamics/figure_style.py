@@ -12,6 +12,7 @@ from cycler import cycler
 TEXT_WIDTH_IN = 174 / 25.4          # A4 less 18 mm margins: the widest a figure prints
 FULL_WIDTH_IN = TEXT_WIDTH_IN - 0.2  # a full-width figure: room for the saved SVG's pad and labels past the axes
 MAX_HEIGHT_IN = 95 / 25.4           # print.css caps a figure's height at 95 mm
+PAIR_WIDTH_IN = 0.4 * TEXT_WIDTH_IN  # print.css: a figure paired with a table (.pair) takes 40 % of the width
 MIN_FONT_PT = 7.0                   # the smallest text allowed at print size
 
 # Okabe & Ito (2008), colour-blind safe; yellow last: it is faint on white.

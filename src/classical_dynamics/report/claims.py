@@ -44,6 +44,18 @@ class ClaimResult:
     def anchor(self) -> str:
         return f"claim-{self.study}-{self.id}"
 
+    @property
+    def compares_a_printed_value(self) -> bool:
+        """The source prints a number (not 0, not a statement) that ours is checked against."""
+        value = self.source.get("value")
+        return isinstance(value, (int, float)) and not isinstance(value, bool) and value != 0
+
+    @property
+    def brief_in_print(self) -> bool:
+        """Counted, not listed, in the PDF: it holds, must hold, is no key result, and checks a formula or
+        statement of the source (source value 0 or text) rather than a value the source prints."""
+        return self.passed and self.must_hold and not self.headline and not self.compares_a_printed_value
+
 
 def _pick(value, spec):
     if "index" in spec:

@@ -15,7 +15,7 @@ from ...models import self_excited as se
 from ...solvers.ode import Events, Problem, solve, solve_batch
 from ...solvers.timing import min_time
 from ...formatting import format_number, shortest
-from ...figure_style import TEXT_WIDTH_IN
+from ...figure_style import PAIR_WIDTH_IN, TEXT_WIDTH_IN
 from ..results import new_figure, plt
 from . import portrait
 
@@ -300,24 +300,27 @@ def _series(results, m1, nu, phi_c, amplitudes, sphere=None):
         "$2\\pi(1 - m_1^2)^{-1/4}(1 + h_2\\eta^2 + h_3\\eta^3)$, and their relative difference.")
     results.number("period_tau_linear", 2 * np.pi / (1 - m1**2) ** 0.25, "τ", note="2π(1 − m1²)^(−1/4)")
     slope = results.numbers["series_error_slope"]["value"]
-    if sphere is None:
-        fig, ax = new_figure(TEXT_WIDTH_IN / 2, 3.0)
-    else:                            # Lee §1.2 beside it: the same body's motion in space on the limit cycle F
-        fig = plt.figure(figsize=(TEXT_WIDTH_IN, 3.0), layout="constrained")
-        ax = fig.add_subplot(1, 2, 1)
-        ax.grid(True, which="both", alpha=0.25, linewidth=0.6)
+    fig, ax = new_figure(PAIR_WIDTH_IN, 2.9)              # printed beside its table
+    portrait.series_figure(ax, frame, slope, ncol=1)
+    results.figure("series", fig, (
+        "The relative error of Lee's period series (§4.2) against the integrated period, by amplitude "
+        "$\\eta$ (log-log), with the dashed reference slope $\\eta^4$, the first power the series leaves out: "
+        f"the fitted slope is {format_number(slope, 3)}."))
+    if sphere is not None:           # Lee §1.2: the frames and angles of (1.2), and this body's motion in space
         from . import space
+        fig = plt.figure(figsize=(TEXT_WIDTH_IN, 2.6), layout="constrained")
+        space.draw_frames(fig.add_subplot(1, 2, 1, projection="3d"))
         space.draw_sphere(fig.add_subplot(1, 2, 2, projection="3d"), *sphere)
-    portrait.series_figure(ax, frame, slope, ncol=1 if sphere is None else 2)
-    caption = ("The relative error of Lee's period series (§4.2) against the integrated period, by amplitude "
-               "$\\eta$ (log-log), with the dashed reference slope $\\eta^4$, the first power the series leaves out: "
-               f"the fitted slope is {format_number(slope, 3)}.")
-    if sphere is not None:
-        caption = ("Left: t" + caption[1:] + " Right: the motion in space (Lee §1.2) over four periods of "
-                   "$\\boldsymbol{\\omega}$ on the limit cycle $F$, attitude integrated as a quaternion: the body's "
-                   "$x$-axis (blue) and $\\mathbf{L}/|\\mathbf{L}|$ (green, starts marked) on the unit sphere. "
-                   "$\\boldsymbol{\\omega}$ is periodic in the body, the motion in space is not.")
-    results.figure("series", fig, caption)
+        results.figure("space", fig, (
+            "Left: the frames and angles of Lee's Figures 1.1 and 1.2: space axes $X$, $Y$, $Z$ (grey), body axes "
+            "$x$, $y$, $z$ along the moments $A$, $B$, $C$ (blue), the line of nodes $N$ and Euler's angles "
+            "$\\psi$, $\\theta$, $\\varphi$ of (1.2) (z-x-z: the body turned by "
+            "$R_z(\\psi)R_x(\\theta)R_z(\\varphi)$; " + ", ".join(f"{np.degrees(a):.0f}°" for a in space.FRAME_ANGLES)
+            + " here, chosen to show each). Right: the motion in "
+            "space (Lee §1.2) over four periods of $\\boldsymbol{\\omega}$ on the limit cycle $F$, the attitude "
+            "integrated as a quaternion: the body's $x$-axis (blue) and $\\mathbf{L}/|\\mathbf{L}|$ (green, starts "
+            "marked) on the unit sphere. $\\boldsymbol{\\omega}$ is periodic in the body, the motion in space is "
+            "not."))
 
 
 DEGENERATE_TAUS = (40.0, 100.0)     # where the approach to the degenerate point is measured

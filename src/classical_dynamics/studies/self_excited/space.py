@@ -166,3 +166,43 @@ def draw_sphere(ax, xs, ls):
         set_lim(-1.0, 1.0)
     ax.set_axis_off()
     ax.view_init(elev=20, azim=-50)
+
+
+FRAME_ANGLES = (np.radians(55.0), np.radians(40.0), np.radians(35.0))   # (psi, theta, phi), chosen to show each
+
+
+def _arc(u, v, radius, n=30):
+    """Points on the arc from unit vector u towards unit vector v (in their plane), at the given radius."""
+    v_perp = v - (u @ v) * u
+    v_perp /= np.linalg.norm(v_perp)
+    angle = np.arccos(np.clip(u @ v, -1.0, 1.0))
+    s = np.linspace(0.0, angle, n)[:, None]
+    return radius * (np.cos(s) * u + np.sin(s) * v_perp)
+
+
+def draw_frames(ax, angles=FRAME_ANGLES):
+    """Lee's Figures 1.1 and 1.2: the space frame OXYZ, the body frame Oxyz = Rz(psi) Rx(theta) Rz(phi) OXYZ, the
+    line of nodes ON (where the body's xy-plane cuts the XY-plane) and the three Euler angles of (1.2)."""
+    psi, theta, phi = angles
+    R = angles_matrix(psi, theta, phi)
+    node = _rz(psi)[:, 0]                                   # the line of nodes: X turned by psi about Z
+    space_axes, body_axes = np.eye(3), R.T                  # rows: X, Y, Z and x, y, z in space
+    for axis, name in zip(space_axes, "XYZ"):
+        ax.plot(*np.c_[np.zeros(3), axis], color="0.45", lw=0.9)
+        ax.text(*(1.12 * axis), f"${name}$", color="0.25", ha="center", va="center")
+    for axis, name in zip(body_axes, "xyz"):
+        ax.plot(*np.c_[np.zeros(3), axis], color="#0072B2", lw=1.4)
+        ax.text(*(1.12 * axis), f"${name}$", color="#0072B2", ha="center", va="center")
+    ax.plot(*np.c_[-0.9 * node, 0.9 * node], color="#D55E00", lw=0.8, ls="--")
+    ax.text(*(1.0 * node), "$N$", color="#D55E00", ha="left", va="bottom")
+    for (u, v, r, name) in ((space_axes[0], node, 0.45, "\\psi"), (space_axes[2], body_axes[2], 0.55, "\\theta"),
+                            (node, body_axes[0], 0.6, "\\varphi")):
+        arc = _arc(u, v, r)
+        ax.plot(*arc.T, color="#D55E00", lw=0.9)
+        ax.text(*(1.15 * arc[len(arc) // 2]), f"${name}$", color="#D55E00", ha="center", va="center")
+    ax.set_xlim(-0.8, 0.8)
+    ax.set_ylim(-0.8, 0.8)
+    ax.set_zlim(-0.25, 1.1)
+    ax.set_box_aspect((1.6, 1.6, 1.35), zoom=1.25)        # equal scales on the three axes: true angles
+    ax.set_axis_off()
+    ax.view_init(elev=18, azim=-28)

@@ -13,6 +13,7 @@ import pandas as pd
 
 from ...solvers.ode import Events, Problem, solve
 from ...solvers.timing import min_time
+from ...figure_style import PAIR_WIDTH_IN
 from ...provenance import software_stamp
 from ..results import new_figure
 from . import top_model as tm
@@ -150,7 +151,7 @@ def _general(results, top, n, alpha, nutations, rtol):
     # the figure: the path of the apex over a first few nutations, between the circles of the two roots
     t_fig = np.linspace(0.0, min(T, np.pi / apsidal * nut.period), 1601)       # one turn in azimuth
     k = tm.axis_in_space(_run(top, y0, t_fig[-1], rtol, t_eval=t_fig, events=False).y_eval)
-    fig, ax = new_figure(width=3.0, height=2.7)
+    fig, ax = new_figure(width=PAIR_WIDTH_IN, height=2.7)     # printed beside its table
     ring = np.linspace(0, 2 * np.pi, 361)
     for u, style, label in ((nut.u2, "--", "$\\theta_1$"), (nut.u1, ":", "$\\theta_2$")):
         r = np.sqrt(1 - u * u)
