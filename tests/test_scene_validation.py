@@ -195,3 +195,33 @@ def test_a_physical_check_that_overflows_is_one_line(tmp_path):
 def test_editor_leftovers_are_not_scenes(name, leftover):
     from classical_dynamics.scenes.loader import is_leftover
     assert is_leftover(Path(name)) is leftover
+
+
+def test_validation_is_remembered_until_scene_schema_or_code_change(tmp_path):
+    """Each parse of the Snakefile validates only what changed; a scene that fails is never remembered."""
+    from classical_dynamics.scenes.validated import validate_all
+    scenes_dir = tmp_path / "scenes"
+    scenes_dir.mkdir()
+    schema = tmp_path / "schema.yaml"
+    schema.write_bytes(SCHEMA.read_bytes())
+    a, b = write(scenes_dir, GOOD, "a.yaml"), write(scenes_dir, GOOD, "b.yaml")
+    record, seen = tmp_path / "record.json", []
+
+    def counting(study, scene, schema_path):
+        seen.append(Path(scene).name)
+        return validate(study, scene, schema_path)
+
+    def run():
+        seen.clear()
+        validate_all([("chains", a, schema), ("chains", b, schema)], counting, record)
+        return sorted(seen)
+    assert run() == ["a.yaml", "b.yaml"]
+    assert run() == []                                   # nothing changed: nothing validated
+    b.write_text(b.read_text() + "# a comment\n")
+    assert run() == ["b.yaml"]
+    schema.write_text(schema.read_text() + "\n")
+    assert run() == ["a.yaml", "b.yaml"]
+    a.write_text(yaml.safe_dump(edited(**{"chain.n": 0})))
+    for _ in range(2):                                   # refused every time, not remembered
+        with pytest.raises(SceneError):
+            run()

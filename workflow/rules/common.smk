@@ -7,6 +7,7 @@ from pathlib import Path
 from classical_dynamics.io import ResultError, check_result_folder
 from classical_dynamics.scenes import SceneError
 from classical_dynamics.scenes.loader import is_leftover
+from classical_dynamics.scenes.validated import validate_all
 from classical_dynamics.studies import STUDIES, validate
 
 PY = sys.executable
@@ -51,15 +52,15 @@ SHARED_CODE = code("solvers", "models", "scenes", "io.py", "provenance.py", "cli
 
 # Validate every scene of every study before any job is scheduled: a bad scene stops the
 # build with one line (file, field, expectation) and nothing under results/ is touched.
-for _study in STUDIES:
-    for _scene in sorted(Path("workflow/scenes", _study).glob("*")):
-        if is_leftover(_scene):            # an editor's swap or backup file
-            continue
-        try:
-            validate(_study, _scene, f"workflow/schemas/{_study}.schema.yaml")
-        except SceneError as _error:
-            sys.stderr.write(f"{_error}\n")
-            sys.exit(1)
-        except Exception as _error:        # a fault of ours, not the user's; still one line, naming the file
-            sys.stderr.write(f"{_scene}: could not be validated ({type(_error).__name__}: {_error})\n")
-            sys.exit(1)
+# A scene valid with its present bytes, schema and code is not validated again (scenes/validated.py).
+try:
+    validate_all([(_study, _scene, Path(f"workflow/schemas/{_study}.schema.yaml"))
+                  for _study in STUDIES for _scene in sorted(Path("workflow/scenes", _study).glob("*"))
+                  if not is_leftover(_scene)],          # an editor's swap or backup file
+                 validate, Path(".snakemake/validated-scenes.json"))
+except SceneError as _error:
+    sys.stderr.write(f"{_error}\n")
+    sys.exit(1)
+except Exception as _error:        # a fault of ours, not the user's; still one line
+    sys.stderr.write(f"a scene could not be validated ({type(_error).__name__}: {_error})\n")
+    sys.exit(1)
