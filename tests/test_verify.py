@@ -169,7 +169,7 @@ def test_the_snakemake_target_verifies_and_writes_only_its_log(built, sandbox):
     from .conftest import snakemake
 
     repo = checkout_copy(sandbox / "repo")
-    for name in ("pyproject.toml",):                # workflow/ (with its Snakefile) is in the checkout
+    for name in ("Snakefile", "pyproject.toml"):
         shutil.copy2(ROOT / name, repo / name)
     done = snakemake(repo, "-c", "1", "verify", "--config", f"archive={built['archive']}")
     assert "OK: all" in done.stdout + done.stderr

@@ -11,20 +11,20 @@
 configfile: "workflow/config.yaml"
 
 
-include: "rules/common.smk"
-include: "rules/scenes.smk"
+include: "workflow/rules/common.smk"
+include: "workflow/rules/scenes.smk"
 # Precession of the equinoxes: Lamb's secular formula, the averaged axis, the spin-resolved Earth
-include: "rules/precession.smk"
+include: "workflow/rules/precession.smk"
 # The Chandler wobble: Euler's rigid Earth, Lamb's elastic Earth, damping, excitation, the IERS data
-include: "rules/chandler.smk"
+include: "workflow/rules/chandler.smk"
 # Vibrations of chains: the hanging chain, discrete chains, strings, springs, rotating chains
-include: "rules/chains.smk"
+include: "workflow/rules/chains.smk"
 # The self-excited rigid body (Lee 1964): phase planes under a body-fixed torque
-include: "rules/self_excited.smk"
+include: "workflow/rules/self_excited.smk"
 # The solver layer: what accuracy costs, against scipy's solve_ivp
-include: "rules/solvers.smk"
-include: "rules/report.smk"
-include: "rules/dist.smk"
+include: "workflow/rules/solvers.smk"
+include: "workflow/rules/report.smk"
+include: "workflow/rules/dist.smk"
 
 
 rule all:
