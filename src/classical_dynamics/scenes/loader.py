@@ -56,6 +56,7 @@ class Scene:
     data: dict
     sha256: str
     effects: dict = field(default_factory=dict)
+    estimate: object = None         # scenes.cost.Estimate, once the study has costed the scene
 
     @property
     def title(self) -> str:

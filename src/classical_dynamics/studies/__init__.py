@@ -1,13 +1,15 @@
-"""The four studies. Each module exposes TITLE, EFFECTS, check(path, data) and run(scene, quick)."""
+"""The five studies. Each module exposes TITLE, EFFECTS, check(path, data), cost(data) and run(scene, quick)."""
 
 from __future__ import annotations
 
+import dataclasses
 import importlib
 from pathlib import Path
 
 import yaml
 
-from ..scenes import Scene, load_scene
+from ..scenes import Scene, SceneError, load_scene
+from ..scenes.cost import Budget, check_budget
 
 STUDIES = {
     "precession": "classical_dynamics.studies.precession",
@@ -28,7 +30,14 @@ def load_schema(schema_path: Path | str) -> dict:
     return yaml.safe_load(Path(schema_path).read_text(encoding="utf-8"))
 
 
-def validate(study: str, scene_path: Path | str, schema_path: Path | str) -> Scene:
-    """Fully validate one scene file of a study (schema, effects, physics); raise SceneError."""
+def validate(study: str, scene_path: Path | str, schema_path: Path | str, budget: Budget | None = None) -> Scene:
+    """Fully validate one scene file of a study (schema, effects, physics, cost within the budget); raise
+    SceneError. The scene returned carries its cost estimate, from which its job's limits follow."""
     module = study_module(study)
-    return load_scene(scene_path, study, load_schema(schema_path), module.EFFECTS.names(), module.check)
+    scene = load_scene(scene_path, study, load_schema(schema_path), module.EFFECTS.names(), module.check)
+    try:
+        works = module.cost(scene.data)
+    except (ArithmeticError, ValueError, TypeError) as exc:       # sizes too large to even estimate
+        raise SceneError(scene_path, "(values)", "sizes the machine can hold", f"{type(exc).__name__}: {exc}") from None
+    estimate = check_budget(scene_path, scene.data, works, budget or Budget.from_file())
+    return dataclasses.replace(scene, estimate=estimate)

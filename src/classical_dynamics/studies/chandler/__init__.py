@@ -12,9 +12,10 @@ from pathlib import Path
 
 from ...models.wobble import EFFECTS, b_minus_a_over_c
 from ...scenes import Scene, SceneError
+from .cost import cost
 
 TITLE = "The Chandler wobble"
-__all__ = ["TITLE", "EFFECTS", "check", "run"]
+__all__ = ["TITLE", "EFFECTS", "check", "cost", "run"]
 
 
 def check(path: Path, data: dict) -> None:

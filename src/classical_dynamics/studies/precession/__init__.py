@@ -11,9 +11,10 @@ from pathlib import Path
 
 from ...models.precession import EFFECTS
 from ...scenes import Scene, SceneError
+from .cost import cost
 
 TITLE = "Precession of the equinoxes"
-__all__ = ["TITLE", "EFFECTS", "check", "run"]
+__all__ = ["TITLE", "EFFECTS", "check", "cost", "run"]
 
 MAX_STEP_HOURS = 24.0
 

@@ -16,9 +16,10 @@ from pathlib import Path
 
 from ...models.self_excited import EFFECTS
 from ...scenes import Scene, SceneError
+from .cost import cost
 
 TITLE = "The self-excited rigid body"
-__all__ = ["TITLE", "EFFECTS", "check", "run"]
+__all__ = ["TITLE", "EFFECTS", "check", "cost", "run"]
 
 
 def _numbers(data, prefix=""):

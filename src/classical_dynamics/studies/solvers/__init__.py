@@ -12,10 +12,11 @@ from __future__ import annotations
 from pathlib import Path
 
 from ...scenes import EffectRegistry, Scene, SceneError
+from .cost import cost
 from . import top_model
 
 TITLE = "The solver layer"
-__all__ = ["TITLE", "EFFECTS", "check", "run"]
+__all__ = ["TITLE", "EFFECTS", "check", "cost", "run"]
 EFFECTS = EffectRegistry("solvers")           # the test problems have none; the heavy top has gravity
 top_model.register(EFFECTS)
 

@@ -1,0 +1,5 @@
+"""Bad scenes of the precession study (see __init__.py)."""
+
+from . import DELETE, BadScene  # noqa: F401
+
+CASES: list[BadScene] = []

@@ -1,0 +1,112 @@
+"""Issue 19: malformed, oversized and hostile scenes are refused before anything runs, in one line naming the
+file and the field, in well under 2 s; through Snakemake, results/ stays byte-identical."""
+
+import hashlib
+import time
+from collections import Counter
+from pathlib import Path
+
+import pytest
+
+from classical_dynamics.scenes import SceneError
+from classical_dynamics.scenes.cost import Budget
+from classical_dynamics.studies import validate
+
+from .bad_scenes import KINDS, ROOT, all_cases
+from .conftest import snakemake
+
+CASES = all_cases()
+BUDGET = Budget.from_file(ROOT / "workflow/config.yaml")
+
+
+def refuse(case, folder: Path) -> tuple[str, float]:
+    """The one-line refusal of a case, and the seconds it took."""
+    path = case.write(folder)
+    start = time.perf_counter()
+    with pytest.raises(SceneError) as error:
+        validate(case.study, path, ROOT / "workflow/schemas" / f"{case.study}.schema.yaml", BUDGET)
+    return str(error.value), time.perf_counter() - start
+
+
+def test_the_suite_covers_every_study_and_kind():
+    assert len(CASES) >= 120
+    by_study, by_kind = Counter(c.study for c in CASES), Counter(c.kind for c in CASES)
+    assert set(by_kind) == set(KINDS), by_kind
+    assert all(by_study[study] >= 20 for study in ("precession", "chandler", "chains", "self_excited", "solvers"))
+
+
+@pytest.mark.parametrize("case", CASES, ids=[c.id for c in CASES])
+def test_a_bad_scene_is_refused_in_one_line_naming_its_field(tmp_path, case):
+    validate(case.study, next((ROOT / "workflow/scenes" / case.study).glob("*.yaml")),
+             ROOT / "workflow/schemas" / f"{case.study}.schema.yaml", BUDGET)           # imports and caches warm
+    message, seconds = refuse(case, tmp_path)
+    assert "\n" not in message
+    assert message.startswith(f"{tmp_path / case.name}: field '{case.field}"), message
+    assert seconds < 2, f"{seconds:.2f} s to refuse"
+
+
+def _digest(folder: Path) -> str:
+    digest = hashlib.sha256()
+    for path in sorted(p for p in folder.rglob("*") if p.is_file()):
+        digest.update(str(path.relative_to(folder)).encode() + b"\0" + path.read_bytes())
+    return digest.hexdigest()
+
+
+def test_snakemake_refuses_one_of_each_kind_and_touches_nothing(built_repo):
+    """Snakemake validates every scene when it reads the Snakefile: one case of each kind, each study in turn,
+    through `snakemake -n` on a built copy: exit 1, one line naming the file, results/ byte-identical."""
+    studies = ("precession", "chandler", "chains", "self_excited", "solvers")
+    picked = [next(c for c in CASES if c.kind == kind and c.study == studies[i % len(studies)])
+              for i, kind in enumerate(KINDS)]
+    before = _digest(built_repo / "results")
+    for case in picked:
+        folder = built_repo / "workflow/scenes" / case.study
+        path = case.write(folder)
+        try:
+            result = snakemake(built_repo, "-n", check=False, timeout=120)
+        finally:
+            path.rmdir() if path.is_dir() and not path.is_symlink() else path.unlink()
+        assert result.returncode == 1, case.id
+        lines = [line for line in result.stderr.splitlines() if line.strip()]
+        assert lines == [lines[-1]] and f"workflow/scenes/{case.study}/{case.name}: field '{case.field}" in lines[-1], \
+            (case.id, result.stderr[-2000:])
+        assert _digest(built_repo / "results") == before, case.id
+
+
+def _unbounded(schema, where="") -> list[str]:
+    """Every field of a schema that takes a number without both bounds, a list without maxItems, or free text
+    without maxLength."""
+    found = []
+    if isinstance(schema, dict):
+        kinds = schema.get("type", [])
+        kinds = kinds if isinstance(kinds, list) else [kinds]
+        if {"number", "integer"} & set(kinds):
+            if not ({"minimum", "exclusiveMinimum"} & set(schema) and {"maximum", "exclusiveMaximum"} & set(schema)):
+                found.append(f"{where}: a number without both bounds")
+        if "array" in kinds and "maxItems" not in schema:
+            found.append(f"{where}: a list without maxItems")
+        if "string" in kinds and "maxLength" not in schema and "pattern" not in schema:
+            found.append(f"{where}: text without maxLength")
+        for key, value in schema.items():
+            found += _unbounded(value, f"{where}.{key}" if where else key)
+    elif isinstance(schema, list):
+        for i, value in enumerate(schema):
+            found += _unbounded(value, f"{where}.{i}")
+    return found
+
+
+@pytest.mark.parametrize("study", ["precession", "chandler", "chains", "self_excited", "solvers"])
+def test_every_number_a_schema_takes_is_bounded(study):
+    """Finite ranges on every float (and integer), a length on every list and text: 1e300 never reaches a model."""
+    import yaml
+    schema = yaml.safe_load((ROOT / "workflow/schemas" / f"{study}.schema.yaml").read_text())
+    assert _unbounded(schema) == []
+
+
+def test_shipped_scenes_fit_the_default_budget():
+    """Every shipped scene is costed, within the budget of workflow/config.yaml, with a positive estimate."""
+    for study in ("precession", "chandler", "chains", "self_excited", "solvers"):
+        for path in sorted((ROOT / "workflow/scenes" / study).glob("*.yaml")):
+            scene = validate(study, path, ROOT / "workflow/schemas" / f"{study}.schema.yaml", BUDGET)
+            assert 0 < scene.estimate.seconds <= BUDGET.seconds, path
+            assert scene.estimate.memory_limit_mb <= BUDGET.memory_mb + 1000, path
