@@ -157,6 +157,8 @@ def test_a_bad_scene_stops_the_build_and_touches_nothing(scratch, text, field):
     assert len(lines) == 1 and field in lines[0]
     assert tree_digest(scratch / "results") == before
     snakemake(scratch, "--unlock")                      # runs no job: the bad scene does not stand in its way
+    other = snakemake(scratch, "-n", "solvers", "results/precession/lamb_1920" if study != "precession" else "chains")
+    assert "note: not needed by this command, and not valid either: " in other.stderr and field in other.stderr
 
 
 def test_a_failing_must_hold_claim_fails_the_build_naming_it(scratch):

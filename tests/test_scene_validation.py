@@ -11,6 +11,7 @@ import yaml
 
 from classical_dynamics.models.chains import EFFECTS, particle_chain
 from classical_dynamics.scenes import SceneError
+from classical_dynamics.scenes.cost import Budget
 from classical_dynamics.studies import load_schema, validate
 
 from .conftest import ROOT, SCHEMA
@@ -207,13 +208,13 @@ def test_validation_is_remembered_until_scene_schema_or_code_change(tmp_path):
     a, b = write(scenes_dir, GOOD, "a.yaml"), write(scenes_dir, GOOD, "b.yaml")
     record, seen = tmp_path / "record.json", []
 
-    def counting(study, scene, schema_path):
+    def counting(study, scene, schema_path, budget):
         seen.append(Path(scene).name)
-        return validate(study, scene, schema_path)
+        return validate(study, scene, schema_path, budget)
 
-    def run():
+    def run(budget=Budget()):
         seen.clear()
-        validate_all([("chains", a, schema), ("chains", b, schema)], counting, record)
+        validate_all([("chains", a, schema), ("chains", b, schema)], counting, record, budget)
         return sorted(seen)
     assert run() == ["a.yaml", "b.yaml"]
     assert run() == []                                   # nothing changed: nothing validated
@@ -221,7 +222,39 @@ def test_validation_is_remembered_until_scene_schema_or_code_change(tmp_path):
     assert run() == ["b.yaml"]
     schema.write_text(schema.read_text() + "\n")
     assert run() == ["a.yaml", "b.yaml"]
+    assert run(Budget(seconds=1e4)) == ["a.yaml", "b.yaml"]       # a new budget: every scene costed again
     a.write_text(yaml.safe_dump(edited(**{"chain.n": 0})))
     for _ in range(2):                                   # refused every time, not remembered
         with pytest.raises(SceneError):
             run()
+
+
+def test_a_bad_scene_stops_only_the_commands_that_need_it():
+    """`snakemake chains` does not need a precession scene; the report, dist and a bare `snakemake` need all."""
+    from classical_dynamics.scenes.targets import needed_scenes
+
+    class Job:
+        rulename, wildcards_dict = "scene", {"study": "chains", "scene": "loaded_string"}
+    scenes = {"chains": {"loaded_string", "spring_chain"}, "precession": {"lamb_1920"}}
+    assert needed_scenes([], [], scenes)("precession", "lamb_1920")
+    for targets in (["report"], ["dist"], ["results/report.pdf"], ["chains", "all"]):
+        assert needed_scenes(targets, [], scenes)("precession", "lamb_1920"), targets
+    for targets, jobs in ((["chains"], []), (["results/chains/loaded_string"], []),
+                          (["results/chains/timings/loaded_string/run.csv"], []),
+                          (["results/logs/chains/loaded_string.log"], []), ([], [Job()])):
+        needed = needed_scenes(targets, jobs, scenes)
+        assert needed("chains", "loaded_string") and not needed("precession", "lamb_1920"), targets
+    assert not needed_scenes(["results/chains/loaded_string"], [], scenes)("chains", "spring_chain")
+    assert needed_scenes(["results/chains/unknown_product"], [], scenes)("chains", "spring_chain")
+
+
+@pytest.mark.parametrize("limit,says", [("--time-limit-min=0.02", "ran past its time limit of 1.2 s"),
+                                        ("--memory-limit-mb=120", "past its memory limit of 120 MB")])
+def test_a_job_past_its_limit_is_stopped_in_one_line_and_writes_nothing(tmp_path, limit, says):
+    scene = ROOT / "workflow/scenes/chains/hanging_particles.yaml"
+    result = subprocess.run([sys.executable, "-m", "classical_dynamics", "run", "chains", str(SCHEMA), str(scene),
+                             str(tmp_path / "out"), str(tmp_path / "timings"), limit],
+                            capture_output=True, text=True, timeout=120)
+    assert result.returncode == 3
+    assert result.stderr.count("\n") == 1 and says in result.stderr and result.stderr.startswith(str(scene))
+    assert list(tmp_path.iterdir()) == []

@@ -39,6 +39,16 @@ def cmd_validate(args) -> int:
 
 
 def cmd_run(args) -> int:
+    if args.time_limit_min or args.memory_limit_mb:
+        from .limits import run_limited
+        return run_limited(lambda: _guarded(_run, args), args.scene, 60 * (args.time_limit_min or float("inf")),
+                           args.memory_limit_mb or float("inf"))
+    return _run(args)
+
+
+def _run(args) -> int:
+    import resource
+
     from . import provenance
     from .studies import study_module, validate
 
@@ -55,6 +65,8 @@ def cmd_run(args) -> int:
         "wall_seconds": round(wall, 3), "cpu_seconds": round(cpu, 3),
     }
     timing = {"study": args.study, "scene": scene.name, "wall_seconds": wall, "cpu_seconds": cpu,
+              "max_rss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
+              "estimated_seconds": scene.estimate.seconds, "estimated_memory_mb": scene.estimate.memory_mb,
               "started": started, "cpu_model": record["machine"]["cpu_model"], "cores": record["machine"]["cores"]}
     results.write(Path(args.out_dir), Path(args.timings_dir), record, timing)
     return 0
@@ -104,6 +116,8 @@ def main(argv=None) -> int:
     p.add_argument("out_dir")
     p.add_argument("timings_dir")
     p.add_argument("--quick", action="store_true")
+    p.add_argument("--time-limit-min", type=float, help="stop the job past this wall time, minutes")
+    p.add_argument("--memory-limit-mb", type=float, help="stop the job past this resident memory")
     p.set_defaults(func=cmd_run)
     p = sub.add_parser("report", help="render the HTML and PDF report from results/")
     p.add_argument("results")
@@ -132,13 +146,22 @@ def main(argv=None) -> int:
     p.add_argument("b", metavar="RESULTS_B")
     p.set_defaults(func=cmd_diff)
     args = parser.parse_args(argv)
+    return _guarded(args.func, args)
+
+
+def _guarded(func, args) -> int:
+    """func(args), with a user's mistake (a bad scene, archive or result) and exhausted memory as one line."""
     from .io import ResultError
     from .verify import VerifyError
     try:
-        return args.func(args)
+        return func(args)
     except (SceneError, VerifyError, ResultError) as error:
         print(error, file=sys.stderr)
         return 2
+    except MemoryError:
+        print(f"{getattr(args, 'scene', args.command)}: stopped: out of memory (see budget: in workflow/config.yaml)",
+              file=sys.stderr)
+        return 3
 
 
 if __name__ == "__main__":

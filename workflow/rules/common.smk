@@ -7,12 +7,15 @@ from pathlib import Path
 from classical_dynamics.io import ResultError, check_result_folder
 from classical_dynamics.scenes import SceneError
 from classical_dynamics.scenes.loader import is_leftover
+from classical_dynamics.scenes.cost import Budget
+from classical_dynamics.scenes.targets import needed_scenes
 from classical_dynamics.scenes.validated import validate_all
 from classical_dynamics.studies import STUDIES, validate
 
 PY = sys.executable
 QUICK = "--quick" if int(config.get("quick", 0)) else ""
 PACKAGE = Path("src/classical_dynamics")
+VALIDATED = Path(".snakemake/validated-scenes.json")
 
 
 def scenes(study):
@@ -50,19 +53,42 @@ SHARED_CODE = code("solvers", "models", "scenes", "io.py", "provenance.py", "cli
                    "units.py", "studies/__init__.py", "studies/results.py", "figure_style.py")
 
 
-# Validate every scene of every study before any job is scheduled: a bad scene stops the
-# build with one line (file, field, expectation) and nothing under results/ is touched.
-# A scene valid with its present bytes, schema and code is not validated again (scenes/validated.py).
-# `snakemake --unlock` runs no job, so a bad scene does not stand in its way.
+def _command_line():
+    """(targets, target jobs, whether it runs jobs) of the Snakemake command that reads this file."""
+    from snakemake.cli import get_argument_parser
+    try:
+        args, _ = get_argument_parser().parse_known_args(sys.argv[1:])
+    except BaseException:                   # not the snakemake command line (the API, a test): assume everything
+        return [], [], True
+    runs = not (args.unlock or args.cleanup_metadata or args.list_rules or args.list_target_rules)
+    return list(args.targets or []), list(args.target_jobs or []), runs
+
+
+# Validate the scenes this command needs before any job is scheduled: a bad scene stops the build with one line
+# (file, field, expectation) and nothing under results/ is touched; one that this command does not need (a broken
+# precession scene under `snakemake chains`) gets a one-line note. A scene valid with its present bytes, schema,
+# code and budget is not validated again (scenes/validated.py). `--unlock` runs no job and validates nothing.
+ESTIMATES = {}
+_targets, _target_jobs, _runs = _command_line()
+_needed = needed_scenes(_targets, _target_jobs, {study: set(scenes(study)) for study in STUDIES})
 try:
-    if "--unlock" not in sys.argv:
-        validate_all([(_study, _scene, Path(f"workflow/schemas/{_study}.schema.yaml"))
-                      for _study in STUDIES for _scene in sorted(Path("workflow/scenes", _study).glob("*"))
-                      if not is_leftover(_scene)],          # an editor's swap or backup file
-                     validate, Path(".snakemake/validated-scenes.json"))
+    BUDGET = Budget.from_config(config.get("budget"))
+    if _runs:
+        ESTIMATES, _unneeded = validate_all(
+            [(_study, _scene, Path(f"workflow/schemas/{_study}.schema.yaml"))
+             for _study in STUDIES for _scene in sorted(Path("workflow/scenes", _study).glob("*"))
+             if not is_leftover(_scene)],     # an editor's swap or backup file
+            validate, VALIDATED, BUDGET, optional=lambda study, scene: not _needed(study, scene.stem))
+        for _error in _unneeded:
+            sys.stderr.write(f"note: not needed by this command, and not valid either: {_error}\n")
 except SceneError as _error:
     sys.stderr.write(f"{_error}\n")
     sys.exit(1)
 except Exception as _error:        # a fault of ours, not the user's; still one line
     sys.stderr.write(f"a scene could not be validated ({type(_error).__name__}: {_error})\n")
     sys.exit(1)
+
+
+def limits(wc):
+    """The job's Estimate (scenes/cost.py), from which its time and memory limits follow."""
+    return ESTIMATES[Path("workflow/scenes", wc.study, f"{wc.scene}.yaml").as_posix()]

@@ -19,10 +19,14 @@ rule scene:
         python=PY,
         quick=QUICK,
         result=result_state,
+    resources:
+        runtime=lambda wc: -(-limits(wc).time_limit_s // 60),     # minutes, as Snakemake and Slurm count them
+        mem_mb=lambda wc: limits(wc).memory_limit_mb,
     log:
         "results/logs/{study}/{scene}.log",
     conda:
         "../envs/pipeline.yaml"
     shell:
         "{params.python:q} -m classical_dynamics run {wildcards.study:q} {input.schema:q} {input.scene:q}"
-        " {output.results:q} {output.timings:q} {params.quick} > {log:q} 2>&1"
+        " {output.results:q} {output.timings:q} {params.quick}"
+        " --time-limit-min {resources.runtime} --memory-limit-mb {resources.mem_mb} > {log:q} 2>&1"

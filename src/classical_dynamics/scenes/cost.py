@@ -36,9 +36,9 @@ class Work:
 
 @dataclass(frozen=True)
 class Budget:
-    """The most one scene may cost: workflow/config.yaml, `budget:`."""
-    seconds: float = 1800.0
-    memory_mb: float = 8000.0
+    """The most one scene may cost: workflow/config.yaml, `budget:` (these defaults are its values)."""
+    seconds: float = 900.0
+    memory_mb: float = 6000.0
 
     @classmethod
     def from_config(cls, config: dict | None) -> "Budget":
@@ -47,10 +47,15 @@ class Budget:
         if unknown:
             raise SceneError("workflow/config.yaml", f"budget.{sorted(unknown)[0]}", "seconds or memory_mb",
                              None, has_got=False)
-        budget = cls(**{key: float(value) for key, value in config.items()})
-        if not (budget.seconds > 0 and budget.memory_mb > 0):
-            raise SceneError("workflow/config.yaml", "budget", "positive seconds and memory_mb", config)
-        return budget
+        values = {}
+        for key, value in config.items():
+            try:
+                values[key] = float(value)
+            except (TypeError, ValueError):
+                values[key] = math.nan
+            if not 0 < values[key] < math.inf:
+                raise SceneError("workflow/config.yaml", f"budget.{key}", "a positive number", value)
+        return cls(**values)
 
     @classmethod
     def from_file(cls, path: Path | str = "workflow/config.yaml") -> "Budget":

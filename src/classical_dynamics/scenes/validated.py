@@ -1,9 +1,9 @@
 """Scene validation remembered between parses of the Snakefile.
 
-A scene is validated again only when its bytes, its schema or the package's code change: Snakemake parses the
-Snakefile for every command (a dry run, --unlock, each job on a cluster), and validating every scene each time cost
-seconds. The record, {scene file: SHA-256 of scene, schema and code}, lives in .snakemake/; a scene that fails is
-never recorded, so it fails again on the next parse.
+A scene is validated again only when its bytes, its schema, the package's code or the budget change: Snakemake
+parses the Snakefile for every command (a dry run, --unlock, each job on a cluster), and validating every scene
+each time cost seconds. The record, {scene file: {digest, estimated seconds and MB}}, lives in .snakemake/; a scene
+that fails is never recorded, so it fails again on the next parse.
 """
 
 from __future__ import annotations
@@ -14,36 +14,51 @@ from pathlib import Path
 from typing import Callable, Iterable
 
 from .. import io
-from .loader import read_bytes
+from .cost import Budget, Estimate
+from .loader import SceneError, read_bytes
 
 PACKAGE = Path(__file__).resolve().parents[1]
 
 
 def code_digest() -> str:
-    """SHA-256 of every module of the package: the physical checks live in the studies' code."""
+    """SHA-256 of every module of the package: the physical checks and cost estimates live in the studies' code."""
     digest = hashlib.sha256()
     for path in sorted(PACKAGE.rglob("*.py")):
         digest.update(path.relative_to(PACKAGE).as_posix().encode() + b"\0" + path.read_bytes())
     return digest.hexdigest()
 
 
-def validate_all(scenes: Iterable[tuple[str, Path, Path]], validate: Callable, record: Path) -> None:
-    """validate(study, scene, schema) for every scene not recorded as valid with its present bytes; the first
-    SceneError propagates (the scenes validated before it are still recorded)."""
+def validate_all(scenes: Iterable[tuple[str, Path, Path]], validate: Callable, record: Path,
+                 budget: Budget, optional: Callable[[str, Path], bool] = lambda study, scene: False
+                 ) -> tuple[dict[str, Estimate], list[SceneError]]:
+    """({scene file: Estimate}, errors) after validate(study, scene, schema, budget) for every scene not recorded
+    as valid with its present bytes. The first SceneError of a scene not optional(study, scene) propagates (the
+    scenes validated before it are still recorded); those of optional scenes are returned."""
     try:
         known = json.loads(Path(record).read_text(encoding="utf-8"))
     except (OSError, ValueError):
         known = {}
-    code, schemas, valid = code_digest(), {}, {}
+    code, schemas, valid, errors = code_digest() + repr(budget), {}, {}, []
     try:
         for study, scene, schema in scenes:
             if schema not in schemas:
                 schemas[schema] = hashlib.sha256(Path(schema).read_bytes()).hexdigest()
             key = Path(scene).as_posix()
             digest = hashlib.sha256(read_bytes(scene) + (schemas[schema] + code).encode()).hexdigest()
-            if known.get(key) != digest:
-                validate(study, scene, schema)
-            valid[key] = digest
+            entry = known.get(key)
+            if not (isinstance(entry, dict) and entry.get("digest") == digest):
+                try:
+                    estimate = validate(study, scene, schema, budget).estimate
+                except SceneError as error:
+                    if not optional(study, Path(scene)):
+                        raise
+                    errors.append(error)
+                    continue
+                entry = {"digest": digest, "seconds": estimate.seconds, "memory_mb": estimate.memory_mb}
+            valid[key] = entry
     finally:
-        if valid != known:
-            io.atomic_write_text(record, json.dumps(valid, indent=1, sort_keys=True) + "\n")
+        merged = {**known, **valid}             # scenes not needed by this command keep their record
+        merged = {key: entry for key, entry in merged.items() if Path(key).exists()}
+        if merged != known:
+            io.atomic_write_text(record, json.dumps(merged, indent=1, sort_keys=True) + "\n")
+    return {key: Estimate(entry["seconds"], entry["memory_mb"]) for key, entry in valid.items()}, errors

@@ -108,6 +108,8 @@ class Results:
         for target, files in ((out_dir, self._result_files(provenance)),
                               (timings_dir, self._timing_files(timing_rows))):
             target.parent.mkdir(parents=True, exist_ok=True)
+            for leftover in target.parent.glob(f".{target.name}.*"):     # staged by a run that was killed
+                shutil.rmtree(leftover, ignore_errors=True)
             staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.", dir=target.parent))
             for name, data in files.items():
                 (staging / name).write_bytes(data)       # ordinary permissions: the folder is new

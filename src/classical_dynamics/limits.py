@@ -1,0 +1,71 @@
+"""A job run under a time and a memory limit: the scene's own estimate with room to spare (scenes/cost.py).
+
+The work runs in a forked child; the parent only watches the wall clock and the child's resident memory, every
+0.1 s, and stops it with one line when it passes either. A watcher outside the work is the only kind that can stop
+a numba loop holding the interpreter, and resident memory (not address space, which numba and BLAS reserve by the
+gigabyte) is what exhausts a machine.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import sys
+import time
+from typing import Callable
+
+POLL_S = 0.1
+
+
+def resident_mb(pid: int) -> float:
+    """A process's resident memory (VmRSS), MB; 0 once it is gone."""
+    try:
+        with open(f"/proc/{pid}/status", encoding="ascii") as status:
+            for line in status:
+                if line.startswith("VmRSS:"):
+                    return int(line.split()[1]) / 1024
+    except (OSError, ValueError):
+        pass
+    return 0.0
+
+
+def run_limited(work: Callable[[], int], what: str, time_limit_s: float, memory_limit_mb: float) -> int:
+    """work() in a child process; its exit status, or 3 with one line on stderr if it passed a limit."""
+    sys.stdout.flush()
+    sys.stderr.flush()
+    pid = os.fork()
+    if pid == 0:                                        # the child: do the work, never return into the caller
+        status = 1
+        try:
+            status = work()
+        except SystemExit as exit_:
+            status = exit_.code if isinstance(exit_.code, int) else 1
+        finally:
+            sys.stdout.flush()
+            sys.stderr.flush()
+            os._exit(status)
+
+    def forward(signum, _frame):                        # Ctrl-C or Snakemake stopping the job: stop the work too
+        os.kill(pid, signum)
+    previous = {sig: signal.signal(sig, forward) for sig in (signal.SIGINT, signal.SIGTERM)}
+    start, reason = time.monotonic(), None
+    try:
+        while True:
+            done, status = os.waitpid(pid, os.WNOHANG)
+            if done:
+                return os.waitstatus_to_exitcode(status) if status else 0
+            elapsed, memory = time.monotonic() - start, resident_mb(pid)
+            if elapsed > time_limit_s:
+                reason = f"ran past its time limit of {time_limit_s:g} s"
+            elif memory > memory_limit_mb:
+                reason = f"used {memory:.0f} MB, past its memory limit of {memory_limit_mb:g} MB"
+            if reason:
+                os.kill(pid, signal.SIGKILL)
+                os.waitpid(pid, 0)
+                print(f"{what}: stopped: it {reason} (limits are set from the scene's estimated cost; "
+                      f"see budget: in workflow/config.yaml)", file=sys.stderr)
+                return 3
+            time.sleep(POLL_S)
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
