@@ -58,6 +58,7 @@ def test_snakemake_refuses_one_of_each_kind_and_touches_nothing(built_repo):
     studies = ("precession", "chandler", "chains", "self_excited", "solvers")
     picked = [next(c for c in CASES if c.kind == kind and c.study == studies[i % len(studies)])
               for i, kind in enumerate(KINDS)]
+    picked += [next(c for c in CASES if c.id == f"{study}-alias-bomb") for study in studies]   # once each study
     before = _digest(built_repo / "results")
     for case in picked:
         folder = built_repo / "workflow/scenes" / case.study

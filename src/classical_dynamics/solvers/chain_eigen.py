@@ -17,6 +17,8 @@ import numpy as np
 import scipy.linalg as sla
 
 METHODS = ("dense", "tridiagonal", "tridiagonal_select", "pliability")
+# the largest n each method is timed at in the accuracy-cost sweep (the dense one grows as n^3)
+SOLVER_LIMITS = {"dense": 2048, "tridiagonal": 8192, "tridiagonal_select": 131072, "pliability": 131072}
 
 
 def symmetric_tridiagonal(s, d, m, ends: str):

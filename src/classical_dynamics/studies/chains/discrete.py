@@ -18,7 +18,7 @@ from ..results import new_figure, plt
 from . import small_oscillations, symbolic
 
 
-SOLVER_LIMITS = {"dense": 2048, "tridiagonal": 8192, "tridiagonal_select": 131072, "pliability": 131072}
+SOLVER_LIMITS = chain_eigen.SOLVER_LIMITS
 
 # What the reader sees: each frequency unit typeset, each solver and scheme by name and in one colour in
 # every figure (Okabe-Ito).
