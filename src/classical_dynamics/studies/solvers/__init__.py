@@ -12,7 +12,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from ...scenes import EffectRegistry, Scene, SceneError
-from .cost import cost
+from ...scenes.cost import check_step
+from .cost import HNW_PERIOD, SWEEP_SPAN, cost
 from . import top_model
 
 TITLE = "The solver layer"
@@ -39,6 +40,10 @@ def check(path: Path, data: dict) -> None:
     if problem == "detest_b5" and any(m.startswith("splitting") for m in numerics.get("methods", [])):
         raise SceneError(path, "numerics.methods", "methods for a general ODE (splitting needs a rigid body)",
                          numerics["methods"])
+    for i, h in enumerate(numerics.get("steps", [])):
+        check_step(path, f"numerics.steps.{i}", h, SWEEP_SPAN)
+    if problem == "long_horizon" and "step" in numerics:
+        check_step(path, "numerics.step", numerics["step"], numerics.get("max_periods", 1) * HNW_PERIOD)
     if problem in ("hnw_rigid_body", "detest_b5"):
         for key in ("methods", "tolerances"):
             if key not in numerics:
