@@ -1,5 +1,47 @@
-"""Bad scenes of the self_excited study (see __init__.py)."""
+"""Bad scenes of the self-excited-body study (see __init__.py)."""
 
-from . import DELETE, BadScene  # noqa: F401
+from . import DELETE, BadScene
 
-CASES: list[BadScene] = []
+LARGEST, MIDDLE, VISCOUS = "largest_perturbed_cycles.yaml", "middle_perturbed.yaml", "viscous_constant_torque.yaml"
+EXCURSION = "middle_near_critical.yaml"
+
+
+def _case(id_, kind, field, base, **set_):
+    return BadScene(f"self_excited-{id_}", "self_excited", kind, field, base=base,
+                    set={k.replace("__", "."): v for k, v in set_.items()})
+
+
+CASES = [
+    # the issue's cases: tau_max and t_max of 1e15, a window of +-1e300, alpha of 1e308
+    _case("tau-max-1e15", "range", "portrait.tau_max", LARGEST, portrait={"tau_max": 1e15}),
+    _case("t-max-1e15", "range", "viscous.t_max", VISCOUS, viscous__t_max=1e15),
+    _case("phi2-range-1e300", "range", "portrait.phi2_range.1", LARGEST, portrait={"phi2_range": [-1e300, 1e300]}),
+    _case("alpha-1e308", "range", "plane.alpha.1", MIDDLE, plane__alpha=[1e308, 1e308]),
+    _case("delta-1e300", "range", "plane.delta", LARGEST, plane__delta=1e300),
+    _case("m1-1e300", "range", "plane.m1", LARGEST, plane__m1=1e300),
+    _case("omega0-1e300", "range", "viscous.omega0.2", VISCOUS, viscous__omega0=[0.5, 0.8, 1e300]),
+    _case("torque-minus-1e300", "range", "viscous.torque.0", VISCOUS, viscous__torque=[-1e300, 0.0, 0.5]),
+    _case("moments-1e300", "range", "body.moments.0", LARGEST, body__moments=[1e300, 2.2, 1.2]),
+    _case("q0-1e300", "range", "excursion.q0", MIDDLE, excursion={"q0": 1e300}),
+    # over the budget
+    _case("tau-max-10000-fast", "cost", "portrait.tau_max", LARGEST, portrait={"tau_max": 10000.0, "p1_max": 100.0}),
+    _case("wide-window-long", "cost", "portrait.tau_max", LARGEST,
+          portrait={"phi2_range": [-100.0, 100.0], "tau_max": 1000.0, "p1_max": 50.0}),
+    _case("t-max-1e6", "cost", "viscous.t_max", VISCOUS, viscous__t_max=1e6),
+    _case("t-max-fast-spin", "cost", "viscous.t_max", VISCOUS, viscous__t_max=1e5,
+          viscous__omega0=[0.5, 0.8, 1000.0]),
+    # the schema's shape
+    _case("two-moments", "schema", "body.moments", LARGEST, body__moments=[3.0, 2.2]),
+    _case("axis-unknown", "schema", "torque_axis", LARGEST, torque_axis="diagonal"),
+    _case("nu-text", "schema", "plane.nu", LARGEST, plane__nu="strong"),
+    _case("no-moments", "schema", "body.moments", LARGEST, body__moments=DELETE),
+    _case("negative-moment", "schema", "body.moments.2", LARGEST, body__moments=[3.0, 2.2, -1.2]),
+    # physics
+    _case("not-a-body", "physics", "body.moments", LARGEST, body__moments=[4.0, 2.5, 1.0]),
+    _case("equal-moments-plane", "physics", "body.moments", LARGEST, body__moments=[3.0, 3.0, 1.2]),
+    _case("no-cylinder", "physics", "plane.delta", LARGEST, plane__delta=DELETE),
+    _case("alpha-both-zero", "physics", "plane.alpha", MIDDLE, plane__alpha=[0.0, 0.0]),
+    _case("window-reversed", "physics", "portrait.phi2_range", LARGEST, portrait={"phi2_range": [3.0, -3.0]}),
+    _case("viscous-not-symmetric", "physics", "body.moments", VISCOUS, body__moments=[1.0, 2.0, 3.0]),
+    _case("excursion-on-largest", "physics", "excursion", LARGEST, excursion={"q0": 1.0}),
+]
