@@ -12,6 +12,7 @@ from pathlib import Path
 
 from ...models.wobble import EFFECTS, b_minus_a_over_c
 from ...scenes import Scene, SceneError
+from ...scenes.cost import check_step
 from .cost import cost
 
 TITLE = "The Chandler wobble"
@@ -79,6 +80,9 @@ def check(path: Path, data: dict) -> None:
                          "longest", random["periods_days"])
     cost = analysis.get("accuracy_cost")
     if cost is not None:
+        span_days = analysis.get("span_years", 100.0) * 365.25
+        for i, h in enumerate(cost["steps"]):
+            check_step(path, f"analysis.accuracy_cost.steps.{i}", h, span_days)
         if set(effects) - {"triaxiality"}:
             raise SceneError(path, "analysis.accuracy_cost", "a free rigid body (no effects but triaxiality): the "
                              "work-precision reference is the closed form", sorted(effects))
@@ -123,6 +127,7 @@ def _check_observation(path, obs):
     if not obs["window_years"] <= end_value - start:
         raise SceneError(path, "observation.window_years", f"a window no longer than the span "
                          f"({end_value - start:.2f} years)", obs["window_years"])
+    check_step(path, "observation.step_years", obs["step_years"], end_value)     # windows start at calendar years
     if obs["compare"]["k2"] >= _k_s():
         raise SceneError(path, "observation.compare.k2", f"a Love number below k_s = {_k_s():.4f}",
                          obs["compare"]["k2"])
