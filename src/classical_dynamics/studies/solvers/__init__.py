@@ -23,6 +23,9 @@ top_model.register(EFFECTS)
 
 
 def check(path: Path, data: dict) -> None:
+    import math
+
+    from .cost import DOP853_MAX_STEPS, LONG_DOP853_PER_TIME
     numerics = data.get("numerics", {})
     problem = data["problem"]
     effects = data.get("effects") or {}
@@ -35,15 +38,37 @@ def check(path: Path, data: dict) -> None:
         if "top" not in data:
             raise SceneError(path, "top", "the top's moments A, C and its spin", None, has_got=False)
         top = data["top"]
-        if top["C"] > 2 * top["A"]:
-            raise SceneError(path, "top.C", f"C <= A + B = 2A = {2 * top['A']:g} (a real body)", top["C"])
-    if problem == "detest_b5" and any(m.startswith("splitting") for m in numerics.get("methods", [])):
-        raise SceneError(path, "numerics.methods", "methods for a general ODE (splitting needs a rigid body)",
+        A, C, spin, Mgh = top["A"], top["C"], top["spin"], effects["gravity"]["Mgh"]
+        if C > 2 * A:
+            raise SceneError(path, "top.C", f"C <= A + B = 2A = {2 * A:g} (a real body)", C)
+        # steady precession at the top's inclination and at 30, 60, 120 degrees (heavy_top._general_start and
+        # _steady) needs (C n)^2 >= 4 A Mgh cos(alpha); the disturbed precession (_oscillation) runs at spin 6
+        cos_alpha = max(math.cos(math.radians(top["inclination_deg"])), math.cos(math.radians(30.0)))
+        if (C * spin) ** 2 < 4 * A * Mgh * cos_alpha:
+            raise SceneError(path, "top.spin", f"a spin of at least sqrt(4 A Mgh cos alpha)/C = "
+                             f"{math.sqrt(4 * A * Mgh * cos_alpha) / C:.4g} (no steady precession below it, at the "
+                             "top's inclination or 30 degrees)", spin)
+        if (6.0 * C) ** 2 < 4 * A * Mgh * math.cos(math.radians(30.0)):
+            raise SceneError(path, "top.C", f"C of at least sqrt(4 A Mgh cos 30)/6 = "
+                             f"{math.sqrt(4 * A * Mgh * math.cos(math.radians(30.0))) / 6:.4g} (the disturbed "
+                             "steady precession runs at spin 6)", C)
+    if problem in ("detest_b5", "heavy_top") and any(m.startswith("splitting") for m in numerics.get("methods", [])):
+        raise SceneError(path, "numerics.methods", "methods for a general ODE (splitting needs a free rigid body)",
                          numerics["methods"])
     for i, h in enumerate(numerics.get("steps", [])):
         check_step(path, f"numerics.steps.{i}", h, SWEEP_SPAN)
-    if problem == "long_horizon" and "step" in numerics:
-        check_step(path, "numerics.step", numerics["step"], numerics.get("max_periods", 1) * HNW_PERIOD)
+    if problem == "long_horizon":
+        for key, what in (("max_periods", "periods"), ("step", "the splitting's step"), ("rtol", "DOP853's rtol")):
+            if key not in numerics:
+                raise SceneError(path, f"numerics.{key}", f"a number ({what})", None, has_got=False)
+        check_step(path, "numerics.step", numerics["step"], numerics["max_periods"] * HNW_PERIOD)
+        # DOP853's steps (1 % from the measured law): past ode.solve's limit it stops and leaves NaN behind
+        per_period = HNW_PERIOD * LONG_DOP853_PER_TIME * (1e-6 / numerics["rtol"]) ** (1 / 8)
+        most = 0.9 * DOP853_MAX_STEPS / per_period
+        if numerics["max_periods"] > most:
+            raise SceneError(path, "numerics.max_periods", f"at most {most:.3g} periods at rtol "
+                             f"{numerics['rtol']:g} (DOP853 would stop at its {DOP853_MAX_STEPS:.0e} steps)",
+                             numerics["max_periods"])
     if problem in ("hnw_rigid_body", "detest_b5"):
         for key in ("methods", "tolerances"):
             if key not in numerics:
