@@ -94,7 +94,7 @@ def check_budget(path, data: dict, works: list[Work], budget: Budget) -> Estimat
     if memory_mb > budget.memory_mb:
         worst = max(works, key=lambda w: w.memory_mb)
         raise SceneError(path, worst.field, f"a scene of at most {budget.memory_mb:g} MB (budget.memory_mb in "
-                         f"workflow/config.yaml), not an estimated {memory_mb:.3g} MB"
+                         f"workflow/config.yaml), not an estimated {_megabytes(memory_mb)}"
                          + (f" ({worst.what})" if worst.what else ""), _value(data, worst.field))
     return Estimate(seconds=seconds, memory_mb=memory_mb)
 
@@ -107,16 +107,21 @@ def check_step(path, field: str, step: float, span: float, got=None) -> None:
 
 
 def count(value: float, unit: str) -> str:
-    """'2.0e10 integration steps': a size for the refusal line."""
-    return f"{value:.2g} {unit}"
+    """'2e10 integration steps', '400 samples': a size for the refusal line."""
+    text = f"{value:.2g}" if value >= 1e5 else f"{value:.0f}"
+    return f"{text.replace('e+0', 'e').replace('e+', 'e')} {unit}"
+
+
+def _megabytes(mb: float) -> str:
+    return f"{mb:.0f} MB" if mb < 1e4 else f"{mb / 1e3:.3g} GB".replace("e+0", "e").replace("e+", "e")
 
 
 def _duration(seconds: float) -> str:
     if seconds < 3600:
-        return f"{seconds:.3g} s"
+        return f"{seconds:.0f} s"
     if seconds < 86400 * 365:
         return f"{seconds / 3600:.3g} h"
-    return f"{seconds / (86400 * 365.25):.2g} years"
+    return f"{seconds / (86400 * 365.25):.2g} years".replace("e+0", "e").replace("e+", "e")
 
 
 def _value(data, dotted: str):
