@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+import functools
 import importlib
 from pathlib import Path
 
@@ -27,7 +28,14 @@ def study_module(study: str):
 
 
 def load_schema(schema_path: Path | str) -> dict:
-    return yaml.safe_load(Path(schema_path).read_text(encoding="utf-8"))
+    path = Path(schema_path)
+    return _schema(path.resolve(), path.stat().st_mtime_ns)
+
+
+@functools.lru_cache(maxsize=16)
+def _schema(path: Path, mtime_ns: int) -> dict:
+    """A schema read once per process (validating every scene read it 94 times: 5 s), again if it changes."""
+    return yaml.load(path.read_text(encoding="utf-8"), Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
 
 
 def validate(study: str, scene_path: Path | str, schema_path: Path | str, budget: Budget | None = None) -> Scene:

@@ -14,12 +14,20 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from ...models.self_excited import EFFECTS
 from ...scenes import Scene, SceneError
 from .cost import cost
 
 TITLE = "The self-excited rigid body"
 __all__ = ["TITLE", "EFFECTS", "check", "cost", "run"]
+
+
+def __getattr__(name):
+    # The model's registry (it compiles with numba) only when asked for: every parse of the Snakefile imports
+    # .gallery, and numba's import and cached compiles cost 1.5 s.
+    if name == "EFFECTS":
+        from ...models.self_excited import EFFECTS
+        return EFFECTS
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def _numbers(data, prefix=""):
