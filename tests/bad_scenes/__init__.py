@@ -60,6 +60,12 @@ class BadScene:
         return data
 
 
+def case(study: str, id_: str, kind: str, field: str, base: str, **set_) -> BadScene:
+    """A shipped scene of `study` with fields changed: a__b=v sets a.b, a__0=v the first item of a."""
+    return BadScene(f"{study}-{id_}", study, kind, field, base=base,
+                    set={key.replace("__", "."): value for key, value in set_.items()})
+
+
 def all_cases() -> list[BadScene]:
     from . import chains, chandler, generic, precession, self_excited, solvers
     cases = [case for module in (generic, precession, chandler, chains, self_excited, solvers)

@@ -1,15 +1,14 @@
 """Bad scenes of the chains study (see __init__.py)."""
 
-from . import DELETE, BadScene
+from functools import partial
+
+from . import DELETE, case
 
 HP, TD, RING, LINKS = "hanging_particles.yaml", "hanging_time_domain.yaml", "rotating_ring.yaml", "hanging_links.yaml"
 STR3, FORCED, FRICTION = "three_particles_string.yaml", "three_particles_forced.yaml", "three_particles_friction.yaml"
 
 
-def _case(id_, kind, field, base, **set_):
-    return BadScene(f"chains-{id_}", "chains", kind, field, base=base, set={k.replace("__", "."): v
-                                                                            for k, v in set_.items()})
-
+_case = partial(case, "chains")
 
 CASES = [
     # the issue's cases: ten million particles or links, ~10^10 RATTLE steps

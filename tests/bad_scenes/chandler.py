@@ -1,15 +1,14 @@
 """Bad scenes of the Chandler-wobble study (see __init__.py)."""
 
-from . import DELETE, BadScene
+from functools import partial
+
+from . import DELETE, case
 
 OBSERVED, RIGID, EXCITED, TRIAXIAL, RETARDING, DAMPED = ("observed.yaml", "rigid_modern.yaml", "excited.yaml",
                                                          "triaxial.yaml", "retarding.yaml", "damped.yaml")
 
 
-def _case(id_, kind, field, base, **set_):
-    return BadScene(f"chandler-{id_}", "chandler", kind, field, base=base,
-                    set={k.replace("__", "."): v for k, v in set_.items()})
-
+_case = partial(case, "chandler")
 
 CASES = [
     # the issue's cases: windows stepped by 1e-30 years; a run at the schema's old limits

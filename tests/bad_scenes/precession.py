@@ -1,15 +1,14 @@
 """Bad scenes of the precession study (see __init__.py)."""
 
-from . import DELETE, BadScene
+from functools import partial
+
+from . import DELETE, case
 
 CENTURY, MILLENNIUM, SUN, CYCLE, LAMB, SECULAR = ("full_century.yaml", "full_millennium.yaml", "full_sun.yaml",
                                                   "averaged_cycle.yaml", "lamb_1920.yaml", "secular_modern.yaml")
 
 
-def _case(id_, kind, field, base, **set_):
-    return BadScene(f"precession-{id_}", "precession", kind, field, base=base,
-                    set={k.replace("__", "."): v for k, v in set_.items()})
-
+_case = partial(case, "precession")
 
 CASES = [
     # the issue's cases: a step double precision cannot take; a span at the schema's limit with a small step

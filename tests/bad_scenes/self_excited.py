@@ -1,15 +1,14 @@
 """Bad scenes of the self-excited-body study (see __init__.py)."""
 
-from . import DELETE, BadScene
+from functools import partial
+
+from . import DELETE, case
 
 LARGEST, MIDDLE, VISCOUS = "largest_perturbed_cycles.yaml", "middle_perturbed.yaml", "viscous_constant_torque.yaml"
 EXCURSION = "middle_near_critical.yaml"
 
 
-def _case(id_, kind, field, base, **set_):
-    return BadScene(f"self_excited-{id_}", "self_excited", kind, field, base=base,
-                    set={k.replace("__", "."): v for k, v in set_.items()})
-
+_case = partial(case, "self_excited")
 
 CASES = [
     # the issue's cases: tau_max and t_max of 1e15, a window of +-1e300, alpha of 1e308

@@ -1,6 +1,8 @@
 """Bad scenes of the solver-layer study (see __init__.py)."""
 
-from . import DELETE, BadScene
+from functools import partial
+
+from . import DELETE, case
 
 HNW, DETEST, LONG, HARD, TOP, INERTIA = ("hnw_rigid_body.yaml", "detest_b5.yaml", "long_horizon.yaml",
                                          "hard_cases.yaml", "heavy_top.yaml", "inertia.yaml")
@@ -10,10 +12,7 @@ THIRTY_TOLERANCES = [round(10.0 ** (-3 - 9 * i / 29), 14) for i in range(30)]   
 SLENDER = {"top__A": 20.0, "top__C": 1.0, "effects__gravity__Mgh": 0.5, "top__spin": 30.0}   # A/C = 20
 
 
-def _case(id_, kind, field, base, **set_):
-    return BadScene(f"solvers-{id_}", "solvers", kind, field, base=base, set={k.replace("__", "."): v
-                                                                              for k, v in set_.items()})
-
+_case = partial(case, "solvers")
 
 CASES = [
     # the issue's cases: steps of 1e-30 (numba then failed with "Int value is too large"), 1 - m of 1e-300,
