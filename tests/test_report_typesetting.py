@@ -107,6 +107,18 @@ def test_html_shows_no_raw_markup(browser_texts):
 
 
 @pytest.mark.slow
+def test_pdf_links_name_no_path_of_this_machine(built_repo):
+    """Links to the data beside the report stay relative (as in the HTML): a file:// link would carry this
+    machine's paths into the cited archive and make its bytes depend on where it was built."""
+    urls = subprocess.run(["pdfinfo", "-url", str(built_repo / "results/report.pdf")], capture_output=True,
+                          text=True, check=True).stdout.splitlines()[1:]
+    targets = [line.split()[-1] for line in urls]
+    assert len(targets) > 100
+    assert [t for t in targets if t.startswith("file:") or str(built_repo) in t] == []
+    assert any(t.endswith(".csv") and not t.startswith(("/", "http")) for t in targets)
+
+
+@pytest.mark.slow
 def test_pdf_shows_no_raw_markup(pdf_text):
     assert findings(pdf_text, RAW) == {}
     assert findings(pdf_text, {"e-notation": PROSE_ONLY["e-notation"]}) == {}

@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import os
 import sys
 import tempfile
+import urllib.parse
 from pathlib import Path
 
 from .. import io
@@ -31,6 +33,15 @@ def _keep_whole_lines(split_first_line):
     return split
 
 
+def _relative(target: str, folder: Path) -> str:
+    """A file:// link as a path relative to the report's folder; any other link as it is."""
+    if not target.startswith("file://"):
+        return target
+    parts = urllib.parse.urlsplit(target)
+    relative = Path(os.path.relpath(urllib.parse.unquote(parts.path), folder)).as_posix()
+    return relative + (f"#{parts.fragment}" if parts.fragment else "")
+
+
 def html_to_pdf(html_path: Path, pdf_path: Path) -> None:
     import weasyprint
     from weasyprint.layout import inline
@@ -38,7 +49,13 @@ def html_to_pdf(html_path: Path, pdf_path: Path) -> None:
     if not getattr(inline.split_first_line, "keeps_whole_lines", False):
         inline.split_first_line = _keep_whole_lines(inline.split_first_line)
         inline.split_first_line.keeps_whole_lines = True
-    document = weasyprint.HTML(filename=str(html_path), media_type="print")
+    document = weasyprint.HTML(filename=str(html_path), media_type="print").render(pdf_variant=None)
+    # Links to the data beside the report stay relative, as in the HTML: WeasyPrint resolves them to file:// URLs
+    # of this machine, which would put its paths in the PDF and make the archive depend on where it was built.
+    folder = Path(html_path).resolve().parent
+    for page in document.pages:
+        page.links = [(kind, _relative(target, folder) if kind == "external" else target, rectangle, box)
+                      for kind, target, rectangle, box in page.links]
     with tempfile.TemporaryDirectory() as tmp:
         target = Path(tmp) / "report.pdf"
         document.write_pdf(str(target), pdf_variant=None)
