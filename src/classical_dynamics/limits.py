@@ -53,7 +53,7 @@ def run_limited(work: Callable[[], int], what: str, time_limit_s: float, memory_
         while True:
             done, status = os.waitpid(pid, os.WNOHANG)
             if done:
-                return os.waitstatus_to_exitcode(status) if status else 0
+                return os.waitstatus_to_exitcode(status)
             elapsed, memory = time.monotonic() - start, resident_mb(pid)
             if elapsed > time_limit_s:
                 reason = f"ran past its time limit of {time_limit_s:g} s"

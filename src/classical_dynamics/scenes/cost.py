@@ -17,7 +17,8 @@ from pathlib import Path
 
 import yaml
 
-from .loader import SceneError
+from ..models.earth import JULIAN_YEAR_DAYS
+from .loader import SceneError, lookup
 
 EPS = 2.220446049250313e-16          # double precision: 1 + EPS is the next number after 1
 BASE_MEMORY_MB = 1000                # the interpreter with numpy, scipy, numba and matplotlib loaded: 200-320 MB seen
@@ -83,27 +84,27 @@ def check_budget(path, data: dict, works: list[Work], budget: Budget) -> Estimat
     """The scene's Estimate; a SceneError naming the field that costs most if the total is over the budget."""
     for work in works:
         if not (math.isfinite(work.seconds) and math.isfinite(work.memory_mb)):
-            raise SceneError(path, work.field, "a size the machine can hold", _value(data, work.field))
+            raise SceneError(path, work.field, "a size the machine can hold", lookup(data, work.field))
     seconds = sum(w.seconds for w in works)
     memory_mb = max((w.memory_mb for w in works), default=0.0)
     if seconds > budget.seconds:
         worst = max(works, key=lambda w: w.seconds)
         raise SceneError(path, worst.field, f"a scene of at most {budget.seconds:g} s (budget.seconds in "
                          f"workflow/config.yaml), not an estimated {_duration(seconds)}"
-                         + (f" ({worst.what})" if worst.what else ""), _value(data, worst.field))
+                         + (f" ({worst.what})" if worst.what else ""), lookup(data, worst.field))
     if memory_mb > budget.memory_mb:
         worst = max(works, key=lambda w: w.memory_mb)
         raise SceneError(path, worst.field, f"a scene of at most {budget.memory_mb:g} MB (budget.memory_mb in "
                          f"workflow/config.yaml), not an estimated {_megabytes(memory_mb)}"
-                         + (f" ({worst.what})" if worst.what else ""), _value(data, worst.field))
+                         + (f" ({worst.what})" if worst.what else ""), lookup(data, worst.field))
     return Estimate(seconds=seconds, memory_mb=memory_mb)
 
 
-def check_step(path, field: str, step: float, span: float, got=None) -> None:
+def check_step(path, field: str, step: float, span: float) -> None:
     """Refuse a step that double precision cannot take: t + step == t well before the end of the span."""
     if not step > 64 * EPS * abs(span):
         raise SceneError(path, field, f"a step of at least {64 * EPS * abs(span):.3g} (64 ulp of the span "
-                         f"{span:g}: double precision cannot advance time by less)", step if got is None else got)
+                         f"{span:g}: double precision cannot advance time by less)", step)
 
 
 def count(value: float, unit: str) -> str:
@@ -121,13 +122,4 @@ def _duration(seconds: float) -> str:
         return f"{seconds:.0f} s"
     if seconds < 86400 * 365:
         return f"{seconds / 3600:.3g} h"
-    return f"{seconds / (86400 * 365.25):.2g} years".replace("e+0", "e").replace("e+", "e")
-
-
-def _value(data, dotted: str):
-    for part in dotted.split("."):
-        try:
-            data = data[int(part)] if isinstance(data, list) else data[part]
-        except (KeyError, IndexError, ValueError, TypeError):
-            return None
-    return data
+    return f"{seconds / (86400 * JULIAN_YEAR_DAYS):.2g} years".replace("e+0", "e").replace("e+", "e")

@@ -205,7 +205,7 @@ def load_scene(path: Path | str, study: str, schema: dict, known_effects: Iterab
         _reject_non_finite(data)
     except ValueError as exc:
         field_name = str(exc)
-        raise SceneError(path, field_name, "a finite number", _lookup(data, field_name)) from None
+        raise SceneError(path, field_name, "a finite number", lookup(data, field_name)) from None
     known = sorted(known_effects)
     effects = data.get("effects")
     if isinstance(effects, dict):
@@ -235,7 +235,11 @@ def _depth_first(error):
     return (-len(error.absolute_path), *jsonschema.exceptions.relevance(error))
 
 
-def _lookup(data, dotted: str):
+def lookup(data, dotted: str):
+    """The value at a dotted field ("analysis.steps.0") of a scene, or None where there is none."""
     for part in dotted.split("."):
-        data = data[int(part)] if isinstance(data, list) else data[part]
+        try:
+            data = data[int(part)] if isinstance(data, list) else data[part]
+        except (KeyError, IndexError, ValueError, TypeError):
+            return None
     return data

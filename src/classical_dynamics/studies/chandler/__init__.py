@@ -80,7 +80,7 @@ def check(path: Path, data: dict) -> None:
                          "longest", random["periods_days"])
     cost = analysis.get("accuracy_cost")
     if cost is not None:
-        span_days = analysis.get("span_years", 100.0) * 365.25
+        span_days = analysis.get("span_years", 100.0) * earth.JULIAN_YEAR_DAYS
         for i, h in enumerate(cost["steps"]):
             check_step(path, f"analysis.accuracy_cost.steps.{i}", h, span_days)
         if set(effects) - {"triaxiality"}:

@@ -8,9 +8,9 @@ sum over its terms costing ~0.16 us a term a step. Results are sampled every 2 d
 
 from __future__ import annotations
 
+from ...models.earth import JULIAN_YEAR_DAYS as YEAR_DAYS
 from ...scenes.cost import Work, count
 
-YEAR_DAYS = 365.25
 SAMPLE_DAYS = 2.0
 BYTES_PER_SAMPLE = 150.0
 RIGID_STEPS_PER_YEAR = 37.0         # at rtol 1e-12

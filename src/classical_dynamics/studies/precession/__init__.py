@@ -11,6 +11,7 @@ from pathlib import Path
 
 from ...models.precession import EFFECTS
 from ...scenes import Scene, SceneError
+from ...models.earth import JULIAN_YEAR_DAYS
 from ...scenes.cost import check_step
 from .cost import cost
 
@@ -41,7 +42,7 @@ def check(path: Path, data: dict) -> None:
         if step is None:
             raise SceneError(path, "analysis.step_hours", "a step in hours for the full (spin-resolved) rung",
                              None)
-        check_step(path, "analysis.step_hours", step, analysis["span_years"] * 365.25 * 24.0)
+        check_step(path, "analysis.step_hours", step, analysis["span_years"] * JULIAN_YEAR_DAYS * 24.0)
         if step > MAX_STEP_HOURS:
             raise SceneError(path, "analysis.step_hours", f"at most {MAX_STEP_HOURS:g} hours (the full rung "
                              "resolves the daily spin)", step)
@@ -62,7 +63,7 @@ def check(path: Path, data: dict) -> None:
                          "weight", gyro["radii_of_gyration_ft"])
     spec = analysis.get("accuracy_cost")
     for i, h in enumerate(spec["steps_hours"] if spec else []):
-        check_step(path, f"analysis.accuracy_cost.steps_hours.{i}", h, spec["span_years"] * 365.25 * 24.0)
+        check_step(path, f"analysis.accuracy_cost.steps_hours.{i}", h, spec["span_years"] * JULIAN_YEAR_DAYS * 24.0)
     windows = analysis.get("aliasing_windows_years")
     if windows and max(windows) > analysis["span_years"]:
         raise SceneError(path, "analysis.aliasing_windows_years", f"windows no longer than span_years = "

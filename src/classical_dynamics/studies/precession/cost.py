@@ -8,9 +8,9 @@ whole 26 000-year cycle in 0.1 s. A daily sample of the full run holds ~300 byte
 
 from __future__ import annotations
 
+from ...models.earth import JULIAN_YEAR_DAYS as YEAR_DAYS
 from ...scenes.cost import Work, count
 
-YEAR_DAYS = 365.25
 S_PER_STEP = 4e-6
 BYTES_PER_SAMPLE = 300.0
 RK_STEPS_PER_DAY = 8.0               # DOP853 on the spinning Earth at rtol 1e-8 (calibrated on full_century)

@@ -13,7 +13,8 @@ from pathlib import Path
 
 from ...scenes import EffectRegistry, Scene, SceneError
 from ...scenes.cost import check_step
-from .cost import HNW_PERIOD, SWEEP_SPAN, cost
+from ...solvers.references import HNW_PERIOD
+from .cost import SWEEP_SPAN, cost
 from . import top_model
 
 TITLE = "The solver layer"

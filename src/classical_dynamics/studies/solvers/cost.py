@@ -13,8 +13,8 @@ from __future__ import annotations
 import math
 
 from ...scenes.cost import Work, count
+from ...solvers.references import HNW_PERIOD
 
-HNW_PERIOD = 4.8319                     # references.HNW_PERIOD
 SWEEP_SPAN = 20.0                       # the sweeps run t in [0, 20]
 CONSERVATIVE = 1.5                      # on every sweep's and run's time: estimates above, not below, a build
 
