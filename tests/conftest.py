@@ -39,11 +39,28 @@ def snakemake(repo: Path, *args, check=True, timeout=1200):
 
 
 @pytest.fixture(scope="session")
-def built_repo(tmp_path_factory):
-    """A copy of the repository with a complete quick build (shared by the end-to-end tests)."""
-    repo = copy_repository(tmp_path_factory.mktemp("built") / "repo")
-    snakemake(repo, "-c", "2", "--config", "quick=1")
+def built_repo(tmp_path_factory, worker_id):
+    """A copy of the repository with a complete quick build, shared by the end-to-end tests: built once per test
+    session, by whichever pytest-xdist worker asks first, while the others wait on a file lock."""
+    from filelock import FileLock
+
+    shared = tmp_path_factory.getbasetemp()
+    if worker_id != "master":               # each worker has its own basetemp; their parent is the session's
+        shared = shared.parent
+    repo, done = shared / "built" / "repo", shared / "built" / "done"
+    with FileLock(str(shared / "built.lock")):
+        if not done.exists():
+            shutil.rmtree(repo.parent, ignore_errors=True)          # a build that failed in another worker
+            snakemake(copy_repository(repo), "-c", "2", "--config", "quick=1")
+            done.touch()
     return repo
+
+
+def pytest_collection_modifyitems(items):
+    """Tests that need the shared build run last: while one worker builds it, the others run everything else."""
+    def needs_build(item):
+        return bool({"built_repo", "scratch"} & set(getattr(item, "fixturenames", ())))
+    items.sort(key=needs_build)                                  # stable: the order within each group is kept
 
 
 def assert_refused(tmp_path: Path, study: str, data: dict, field: str) -> None:

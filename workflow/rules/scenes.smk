@@ -19,6 +19,8 @@ rule scene:
         python=PY,
         quick=QUICK,
         result=result_state,
+    # Longest first (by the scene's cost estimate), so the heaviest scene does not start last and run alone.
+    priority: lambda wc: round(limits(wc).seconds, 1)
     resources:
         runtime=lambda wc: -(-limits(wc).time_limit_s // 60),     # minutes, as Snakemake and Slurm count them
         mem_mb=lambda wc: limits(wc).memory_limit_mb,

@@ -143,17 +143,19 @@ def _check_ring(path, chain, effects, analysis):
 
 def run(scene: Scene, quick: bool = False):
     from ..results import Results          # imported here so that validation stays light
-    from . import continuum, discrete, time_domain
 
     results = Results("chains", scene.name, scene.title)
     model = scene.data["chain"]["model"]
     if model == "continuum":
+        from . import continuum
         continuum.run(scene, results, quick)
     elif model in ("ring", "triangle"):
         from . import planar
         (planar.run_ring if model == "ring" else planar.run_triangle)(scene, results, quick)
     else:
+        from . import discrete
         discrete.run(scene, results, quick)
         if "time_domain" in scene.data.get("analysis", {}):
+            from . import time_domain            # numba: only the scenes that integrate in time
             time_domain.run(scene, results, quick)
     return results

@@ -15,7 +15,10 @@ from ...solvers.special import bessel_j0_zeros, laguerre_lowest_zero_asymptotic,
 from ...solvers.timing import min_time
 from ...figure_style import FULL_WIDTH_IN
 from ..results import new_figure, plt
-from . import small_oscillations, symbolic
+from ...lazy import lazy_module
+from . import small_oscillations
+
+symbolic = lazy_module(f"{__package__}.symbolic")     # sympy, for the scenes that ask for a closed form
 
 
 SOLVER_LIMITS = chain_eigen.SOLVER_LIMITS

@@ -16,7 +16,9 @@ from scipy.integrate import solve_ivp
 
 from ...figure_style import FULL_WIDTH_IN
 from ..results import new_figure
-from . import symbolic
+from ...lazy import lazy_module
+
+symbolic = lazy_module(f"{__package__}.symbolic")     # sympy, for the scenes that ask for a closed form
 
 
 def _matrices(built):

@@ -17,7 +17,9 @@ import scipy.linalg as sla
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from . import symbolic
+from ...lazy import lazy_module
+
+symbolic = lazy_module(f"{__package__}.symbolic")     # sympy, for the scenes that ask for a closed form
 
 
 def _state(K, M, B=None, G=None):
