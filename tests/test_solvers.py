@@ -1,5 +1,6 @@
 """The solver layer against exact solutions, and its hard cases."""
 
+import time
 import mpmath
 import numpy as np
 import pytest
@@ -375,3 +376,29 @@ def test_lee_cases_every_closed_form_and_blow_up_time():
     assert r.numbers["lee_case_iii_t_star"] == pytest.approx(np.arctanh(k / 2.0) / w, abs=1e-9)
     k, w = np.sqrt(0.6), np.sqrt(0.15)
     assert r.numbers["lee_case_iv_t_star"] == pytest.approx((np.arctan(0.4 / k) + np.pi / 2) / w, abs=1e-9)
+
+
+def test_min_time_stops_once_two_runs_agree_and_ignores_a_slow_first_run():
+    """A first call that compiles (slow) is not the minimum; the repeats stop when the two fastest agree."""
+    from classical_dynamics.solvers.timing import min_time
+    calls = []
+
+    def work():
+        calls.append(1)
+        time.sleep(0.2 if len(calls) == 1 else 0.03)
+        return len(calls)
+
+    seconds, result, runs = min_time(work, repeats=10, budget_s=5.0)
+    assert 0.03 <= seconds < 0.2 and runs == len(calls) == result
+    assert runs <= 4                  # the slow first run, then two or three that agree: not ten
+
+
+def test_min_time_keeps_to_its_budget_when_runs_disagree():
+    from classical_dynamics.solvers.timing import min_time
+    delays = iter([0.01, 0.05, 0.02, 0.08, 0.04, 0.12, 0.06, 0.16, 0.09, 0.2, 0.11])
+
+    def work():
+        time.sleep(next(delays))
+
+    seconds, _, runs = min_time(work, repeats=10, budget_s=0.1)
+    assert 0.01 <= seconds < 0.02 and runs < 11        # stopped by the budget (0.1 s after the first run)

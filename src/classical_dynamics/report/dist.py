@@ -67,7 +67,7 @@ def make_archive(results_dir: Path, archive: Path, with_report: bool = True) -> 
         info = tarfile.TarInfo(f"{prefix}/SHA256SUMS")
         info.size, info.mtime, info.mode = len(manifest), 0, 0o644
         tar.addfile(info, _io.BytesIO(manifest))
-    compressed = gzip.compress(buffer.getvalue(), mtime=0)
+    compressed = gzip.compress(buffer.getvalue(), compresslevel=6, mtime=0)     # 9 takes twice as long for 1 % less
     io.atomic_write_bytes(archive, compressed)
     archive_sum = hashlib.sha256(compressed).hexdigest()
     sums = archive.parent / ("SHA256SUMS" if with_report else f"{prefix}.SHA256SUMS")
