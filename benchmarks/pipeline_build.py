@@ -43,14 +43,17 @@ def snakemake(tree: Path, *args: str) -> float:
     return timed(tree, str(BIN / "snakemake"), *args)
 
 
-def floor(jobs: int, folder: Path) -> float:
-    """A no-op dry run of a Snakefile with `jobs` jobs and no work: what Snakemake itself costs (min of 3)."""
+def floor(jobs: int, folder: Path, pending: int = 0) -> float:
+    """A dry run of a Snakefile with `jobs` jobs that do no work, `pending` of them not yet run: what Snakemake
+    itself costs for as many jobs (min of 3)."""
     folder.mkdir(parents=True)
     (folder / "Snakefile").write_text(
         f"N = {jobs}\n"
         "rule all:\n    input: expand('out/{i}', i=range(N))\n"
         "rule one:\n    output: 'out/{i}'\n    shell: 'touch {output}'\n")
     subprocess.run([str(BIN / "snakemake"), "-c", "1", "-q"], cwd=folder, check=True, capture_output=True)
+    for i in range(pending):
+        (folder / "out" / str(i)).unlink()
     return min(timed(folder, str(BIN / "snakemake"), "-n") for _ in range(3))
 
 
@@ -125,18 +128,18 @@ def measure(tree: Path, scratch: Path, args) -> dict:
     scene = tree / "workflow/scenes/chains/loaded_string.yaml"
     scene.write_text(scene.read_text().replace("newton: 1.0", "newton: 1.5"))
     row["after editing one scene (s)"] = snakemake(tree, "-c", "all", *config)
-    if args.sweep:
+    if args.sweep:               # the sweep's scenes not yet run: the dry run lists them, as the floor's does
         add_sweep(tree, args.sweep)
-        row[f"dry run, {args.sweep} scenes added, first (s)"] = snakemake(tree, "-n", *config)
-        row[f"dry run, {args.sweep} scenes added, again (s)"] = min(snakemake(tree, "-n", *config)
-                                                                     for _ in range(2))
-        row[f"Snakemake floor, {jobs + args.sweep} jobs (s)"] = sweep_floor = floor(jobs + args.sweep,
-                                                                                    scratch / "floor_sweep")
-        row["sweep dry run / floor"] = row[f"dry run, {args.sweep} scenes added, again (s)"] / sweep_floor
+        row["sweep: dry run, scenes validated (s)"] = snakemake(tree, "-n", *config)
+        row["sweep: dry run again (s)"] = again = min(snakemake(tree, "-n", *config) for _ in range(2))
+        row["sweep: Snakemake floor (s)"] = sweep_floor = floor(jobs + args.sweep, scratch / "floor_sweep",
+                                                                pending=args.sweep)
+        row["sweep: dry run / floor"] = again / sweep_floor
     restore(tree)
     if not args.no_tests:
         row["test suite (s)"] = timed(tree, sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider")
     row["jobs"] = jobs
+    row["sweep: jobs"] = jobs + args.sweep
     print(f"  {tree.name}: longest job {longest}", flush=True)
     return row
 
@@ -149,7 +152,8 @@ def worktree(rev: str, path: Path) -> Path:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--baseline", default="b99490e", help="the commit to compare with (default b99490e)")
+    parser.add_argument("--baseline", default="b99490e",
+                        help="the commit to compare with (default b99490e; none: this commit alone)")
     parser.add_argument("--rev", default="HEAD", help="the commit measured (default HEAD)")
     parser.add_argument("--quick", action="store_true", help="the reduced build (quick=1)")
     parser.add_argument("--sweep", type=int, default=1000, help="scenes in the generated sweep (0: none)")
@@ -159,7 +163,8 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         trees = {}
         try:
-            for label, rev in (("baseline", args.baseline), ("this", args.rev)):
+            revisions = (("baseline", args.baseline), ("this", args.rev))
+            for label, rev in revisions[args.baseline == "none":]:
                 name = subprocess.run(["git", "rev-parse", "--short", rev], cwd=ROOT, check=True,
                                       capture_output=True, text=True).stdout.strip()
                 trees[label] = worktree(rev, Path(tmp) / name)
@@ -168,14 +173,14 @@ def main() -> None:
         finally:
             for tree in trees.values():
                 subprocess.run(["git", "worktree", "remove", "--force", str(tree)], cwd=ROOT, capture_output=True)
-    base, this = columns["baseline"], columns["this"]
+    base, this = columns.get("baseline", {}), columns["this"]
     print(f"\nmachine: {os.cpu_count()} cores; build: {'quick' if args.quick else 'full'}; "
-          f"baseline {trees['baseline'].name}, this {trees['this'].name}")
+          f"baseline {trees['baseline'].name if base else 'none'}, this {trees['this'].name}")
     print(f"{'':44s}{'baseline':>10s}{'this':>10s}{'baseline / this':>17s}")
     for key in this:
         b, t = base.get(key), this[key]
-        ratio = f"{b / t:17.2f}" if b and t and "/" not in key and key != "jobs" else ""
-        fmt = (lambda v: f"{v:10.0f}") if key == "jobs" else (lambda v: f"{v:10.2f}")
+        ratio = f"{b / t:17.2f}" if b and t and "/" not in key and "jobs" not in key else ""
+        fmt = (lambda v: f"{v:10.0f}") if "jobs" in key else (lambda v: f"{v:10.2f}")
         print(f"{key:44s}{fmt(b) if b is not None else '':>10s}{fmt(t)}{ratio}")
 
 

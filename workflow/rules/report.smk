@@ -31,12 +31,12 @@ rule report_html:
         gallery=rules.self_excited_gallery.output.results,
         archive=RESULTS_ARCHIVE,
         templates=sorted(str(p) for p in Path("report").rglob("*") if p.is_file()),
-        code=code("report", "formatting.py", "units.py"),
     output:
         "results/report.html",
     params:
         python=PY,
         quick=QUICK,
+        code=code_digest("report", "formatting.py", "units.py"),
     log:
         "results/logs/report_html.log",
     conda:

@@ -11,7 +11,6 @@ rule scene:
     input:
         scene="workflow/scenes/{study}/{scene}.yaml",
         schema="workflow/schemas/{study}.schema.yaml",
-        code=lambda wc: SHARED_CODE + code(f"studies/{wc.study}"),
     output:
         results=directory("results/{study}/{scene}"),
         timings=directory("results/{study}/timings/{scene}"),
@@ -19,6 +18,7 @@ rule scene:
         python=PY,
         quick=QUICK,
         result=result_state,
+        code=lambda wc: code_digest(*SHARED_CODE, f"studies/{wc.study}"),
     # Longest first (by the scene's cost estimate), so the heaviest scene does not start last and run alone.
     priority: lambda wc: round(limits(wc).seconds, 1)
     resources:

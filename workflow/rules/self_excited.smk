@@ -11,13 +11,13 @@ rule self_excited_gallery:
     it redraws each portrait scene's saved table)."""
     input:
         scenes=expand("results/self_excited/{scene}", scene=GALLERY_SCENES),
-        code=SHARED_CODE + code("studies/self_excited"),
     output:
         results=directory("results/self_excited/gallery"),
         timings=directory("results/self_excited/timings/gallery"),
     params:
         python=PY,
         quick=QUICK,
+        code=code_digest(*SHARED_CODE, "studies/self_excited"),
     log:
         "results/logs/self_excited/gallery.log",
     conda:
