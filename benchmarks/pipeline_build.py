@@ -179,8 +179,9 @@ def main() -> None:
     print(f"{'':44s}{'baseline':>10s}{'this':>10s}{'baseline / this':>17s}")
     for key in this:
         b, t = base.get(key), this[key]
-        ratio = f"{b / t:17.2f}" if b and t and "/" not in key and "jobs" not in key else ""
-        fmt = (lambda v: f"{v:10.0f}") if "jobs" in key else (lambda v: f"{v:10.2f}")
+        count = key.endswith("jobs")
+        ratio = f"{b / t:17.2f}" if b and t and "/" not in key and not count else ""
+        fmt = (lambda v: f"{v:10.0f}") if count else (lambda v: f"{v:10.2f}")
         print(f"{key:44s}{fmt(b) if b is not None else '':>10s}{fmt(t)}{ratio}")
 
 
