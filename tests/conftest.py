@@ -19,6 +19,15 @@ def copy_repository(target: Path) -> Path:
         if source.is_file():
             (target / rel).parent.mkdir(parents=True, exist_ok=True)
             shutil.copy2(source, target / rel)
+    # Compiled code travels with the sources it was compiled from (bytecode, numba's cache): each entry is checked
+    # against its source file's time and size, which copy2 keeps, so the copy starts as warm as the checkout
+    # (cold, the first parse alone compiles runge_kutta's typed loops: 9 s). It changes no result.
+    for cached in (ROOT / "src").glob("**/__pycache__/*"):
+        try:
+            (target / cached.relative_to(ROOT)).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(cached, target / cached.relative_to(ROOT))
+        except FileNotFoundError:           # replaced meanwhile by a compile in another test worker
+            pass
     return target
 
 
