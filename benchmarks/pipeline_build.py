@@ -26,11 +26,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 BIN = Path(sys.executable).parent
-
-
-def env_for(tree: Path) -> dict:
-    """Run the tree's own package, not the editable install of this checkout."""
-    return {**os.environ, "PYTHONPATH": str(tree / "src")}
+sys.path.insert(0, str(ROOT))
+from tests.conftest import run_env as env_for  # noqa: E402  (each tree runs its own package)
 
 
 def timed(tree: Path, *command: str) -> float:

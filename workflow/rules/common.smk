@@ -2,10 +2,10 @@
 # before anything runs. (Rules live in their own files: Snakemake's linter wants them apart.)
 
 import functools
-import hashlib
 import sys
 from pathlib import Path
 
+from classical_dynamics import provenance
 from classical_dynamics.io import ResultError, check_result_folder
 from classical_dynamics.scenes import SceneError
 from classical_dynamics.scenes.loader import is_leftover
@@ -16,7 +16,6 @@ from classical_dynamics.studies import STUDIES, validate
 
 PY = sys.executable
 QUICK = "--quick" if int(config.get("quick", 0)) else ""
-PACKAGE = Path("src/classical_dynamics")
 VALIDATED = Path(".snakemake/validated-scenes.json")
 
 
@@ -42,24 +41,9 @@ def result_state(wc):
     return "whole"
 
 
-def code(*parts):
-    """Source files a result depends on."""
-    files = []
-    for part in parts:
-        path = PACKAGE / part
-        files += sorted(str(p) for p in path.rglob("*.py")) if path.is_dir() else [str(path)]
-    return files
-
-
-@functools.lru_cache(maxsize=None)
-def code_digest(*parts):
-    """SHA-256 of the source files under `parts`, as a params value: changing the code a result depends on
-    reruns it (Snakemake's params trigger). As inputs, the ~50 files of every scene job cost the DAG 53,000
-    file checks for a sweep of 1,000 scenes; as one value per study, one read of each file per parse."""
-    digest = hashlib.sha256()
-    for name in code(*parts):
-        digest.update(f"{name}\0".encode() + Path(name).read_bytes() + b"\0")
-    return digest.hexdigest()[:16]
+# A result's code as a params value: Snakemake's params trigger reruns it when that code changes. (As inputs, the
+# ~50 source files of every scene job cost the DAG 53,000 file checks for a sweep of 1,000 scenes.)
+code_digest = functools.lru_cache(maxsize=None)(provenance.code_digest)
 
 
 SHARED_CODE = ("solvers", "models", "scenes", "io.py", "provenance.py", "cli.py", "formatting.py", "units.py",

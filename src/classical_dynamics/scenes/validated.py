@@ -14,19 +14,9 @@ from pathlib import Path
 from typing import Callable, Iterable
 
 from .. import io
+from ..provenance import code_digest
 from .cost import Budget, Estimate
 from .loader import SceneError, read_bytes
-
-PACKAGE = Path(__file__).resolve().parents[1]
-
-
-def code_digest() -> str:
-    """SHA-256 of every module of the package: the physical checks and cost estimates live in the studies' code."""
-    digest = hashlib.sha256()
-    for path in sorted(PACKAGE.rglob("*.py")):
-        digest.update(path.relative_to(PACKAGE).as_posix().encode() + b"\0" + path.read_bytes())
-    return digest.hexdigest()
-
 
 def validate_all(scenes: Iterable[tuple[str, Path, Path]], validate: Callable, record: Path,
                  budget: Budget, optional: Callable[[str, Path], bool] = lambda study, scene: False
@@ -38,6 +28,7 @@ def validate_all(scenes: Iterable[tuple[str, Path, Path]], validate: Callable, r
         known = json.loads(Path(record).read_text(encoding="utf-8"))
     except (OSError, ValueError):
         known = {}
+    # the whole package: the physical checks and cost estimates live in the studies' code
     code, schemas, valid, errors = code_digest() + repr(budget), {}, {}, []
     try:
         for study, scene, schema in scenes:

@@ -17,21 +17,17 @@ YOSHIDA = (1.0 / (2.0 - 2.0 ** (1.0 / 3.0)), -(2.0 ** (1.0 / 3.0)) / (2.0 - 2.0 
 
 
 @njit(cache=True)
-def _rotate_m(m, axis, I, h):
-    """Exact flow of m_axis^2 / (2 I_axis) for time h on m: a rotation by -theta about e_axis."""
+def _rotate_axis(m, q, axis, I, h):
+    """Exact flow of m_axis^2 / (2 I_axis) for time h, on m (body) and the attitude quaternion q. With q None
+    (the invariants need no attitude) numba compiles the attitude away: 1.7 times as fast."""
     theta = m[axis] / I[axis] * h
     c, s = np.cos(theta), np.sin(theta)
     j, k = (axis + 1) % 3, (axis + 2) % 3
     mj, mk = m[j], m[k]
-    m[j] = c * mj + s * mk              # m' = m x omega_axis e_axis
+    m[j] = c * mj + s * mk              # m' = m x omega_axis e_axis: a rotation by -theta about e_axis
     m[k] = -s * mj + c * mk
-
-
-@njit(cache=True)
-def _rotate_axis(m, q, axis, I, h):
-    """The same flow on m and on the attitude quaternion q."""
-    theta = m[axis] / I[axis] * h       # m[axis] is left as it is by its own rotation
-    _rotate_m(m, axis, I, h)
+    if q is None:
+        return
     # q <- q * (cos(theta/2), sin(theta/2) e_axis)
     ch, sh = np.cos(0.5 * theta), np.sin(0.5 * theta)
     w, x, y, z = q[0], q[1], q[2], q[3]
@@ -123,26 +119,6 @@ def integrate_torqued(I, m0, q0, h, n_steps, order, sample_every, torque, p):
 
 
 @njit(cache=True)
-def _free_step_m(m, I, h):
-    """free_step without the attitude, for the invariants (which need none): 1.7 times as fast."""
-    _rotate_m(m, 0, I, 0.5 * h)
-    _rotate_m(m, 1, I, 0.5 * h)
-    _rotate_m(m, 2, I, h)
-    _rotate_m(m, 1, I, 0.5 * h)
-    _rotate_m(m, 0, I, 0.5 * h)
-
-
-@njit(cache=True)
-def _free_composed_m(m, I, h, order):
-    if order == 2:
-        _free_step_m(m, I, h)
-    else:
-        _free_step_m(m, I, YOSHIDA[0] * h)
-        _free_step_m(m, I, YOSHIDA[1] * h)
-        _free_step_m(m, I, YOSHIDA[0] * h)
-
-
-@njit(cache=True)
 def invariant_errors(I, m0, h, n_steps, order, block):
     """Largest relative energy and Casimir errors over every step of each block of `block` steps.
 
@@ -156,7 +132,7 @@ def invariant_errors(I, m0, h, n_steps, order, block):
     dH = np.zeros(n_blocks)
     dC = np.zeros(n_blocks)
     for i in range(n_steps):
-        _free_composed_m(m, I, h, order)
+        free_composed(m, None, I, h, order)
         H = 0.5 * (m[0] ** 2 / I[0] + m[1] ** 2 / I[1] + m[2] ** 2 / I[2])
         C = m[0] ** 2 + m[1] ** 2 + m[2] ** 2
         b = i // block

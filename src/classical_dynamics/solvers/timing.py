@@ -17,20 +17,17 @@ MIN_SPENT_S = 0.05
 def min_time(func, *, repeats: int = 10, budget_s: float = 2.0, warmup: bool = True):
     """(minimum wall time in s, result, runs timed).
 
-    At most 1 + repeats runs (the first stands for the warm-up; warmup=False: at most repeats); after the first
-    two, stops once the two fastest agree within SPREAD (and MIN_SPENT_S is spent) or budget_s is spent.
+    At most repeats runs, and one more standing for the warm-up (warmup=True; budget_s counts after it). Stops
+    once the two fastest agree within SPREAD (and MIN_SPENT_S is spent) or budget_s is spent.
     """
-    most = repeats + 1 if warmup else repeats
+    first = 1 if warmup else 0                  # runs before the budget starts counting
     times, result = [], None
-    while len(times) < max(most, 2 if warmup else 1):
+    while len(times) < repeats + first:
         start = time.perf_counter()
         result = func()
         times.append(time.perf_counter() - start)
-        if len(times) < (2 if warmup else 1):
-            continue
-        spent = sum(times)
-        first, second = sorted(times)[:2] if len(times) > 1 else (times[0], float("inf"))
-        after_warmup = spent - times[0] if warmup else spent
-        if (second <= first * (1 + SPREAD) and spent >= MIN_SPENT_S) or after_warmup >= budget_s:
+        fastest = sorted(times)[:2]
+        confirmed = len(fastest) == 2 and fastest[1] <= fastest[0] * (1 + SPREAD) and sum(times) >= MIN_SPENT_S
+        if len(times) > first and (confirmed or sum(times[first:]) >= budget_s):
             break
     return min(times), result, len(times)

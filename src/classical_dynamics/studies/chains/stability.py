@@ -17,9 +17,7 @@ import scipy.linalg as sla
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from ...lazy import lazy_module
-
-symbolic = lazy_module(f"{__package__}.symbolic")     # sympy, for the scenes that ask for a closed form
+from . import symbolic
 
 
 def _state(K, M, B=None, G=None):
