@@ -378,27 +378,55 @@ def test_lee_cases_every_closed_form_and_blow_up_time():
     assert r.numbers["lee_case_iv_t_star"] == pytest.approx((np.arctan(0.4 / k) + np.pi / 2) / w, abs=1e-9)
 
 
-def test_min_time_stops_once_two_runs_agree_and_ignores_a_slow_first_run():
+class _Clock:
+    """A perf_counter that moves only when the work says it took time: min_time's stopping rule, not this
+    machine's load, decides each test (a sleep overshoots by milliseconds on a busy machine)."""
+
+    def __init__(self):
+        self.now = 0.0
+
+    def perf_counter(self):
+        return self.now
+
+
+def test_min_time_stops_once_two_runs_agree_and_ignores_a_slow_first_run(monkeypatch):
     """A first call that compiles (slow) is not the minimum; the repeats stop when the two fastest agree."""
-    from classical_dynamics.solvers.timing import min_time
-    calls = []
+    from classical_dynamics.solvers import timing
+    clock = _Clock()
+    monkeypatch.setattr(timing, "time", clock)
+    delays = iter([0.2, 0.030, 0.0305, 0.03, 0.03, 0.03, 0.03, 0.03, 0.03, 0.03, 0.03])
 
     def work():
-        calls.append(1)
-        time.sleep(0.2 if len(calls) == 1 else 0.03)
-        return len(calls)
+        clock.now += next(delays)
+        return clock.now
 
-    seconds, result, runs = min_time(work, repeats=10, budget_s=5.0)
-    assert 0.03 <= seconds < 0.2 and runs == len(calls) == result
-    assert runs <= 4                  # the slow first run, then two or three that agree: not ten
+    seconds, result, runs = timing.min_time(work, repeats=10, budget_s=5.0)
+    assert seconds == pytest.approx(0.03) and result == pytest.approx(0.2605)
+    assert runs == 3                  # the slow first run, then two that agree within 5 %: not ten
 
 
-def test_min_time_keeps_to_its_budget_when_runs_disagree():
-    from classical_dynamics.solvers.timing import min_time
+def test_min_time_repeats_until_the_two_fastest_agree(monkeypatch):
+    from classical_dynamics.solvers import timing
+    clock = _Clock()
+    monkeypatch.setattr(timing, "time", clock)
+    delays = iter([0.2, 0.03, 0.04, 0.035, 0.0301, 0.05])
+
+    def work():
+        clock.now += next(delays)
+
+    seconds, _, runs = timing.min_time(work, repeats=10, budget_s=5.0)
+    assert seconds == pytest.approx(0.03) and runs == 5       # 0.03 and 0.0301 are the first two within 5 %
+
+
+def test_min_time_keeps_to_its_budget_when_runs_disagree(monkeypatch):
+    from classical_dynamics.solvers import timing
+    clock = _Clock()
+    monkeypatch.setattr(timing, "time", clock)
     delays = iter([0.01, 0.05, 0.02, 0.08, 0.04, 0.12, 0.06, 0.16, 0.09, 0.2, 0.11])
 
     def work():
-        time.sleep(next(delays))
+        clock.now += next(delays)
 
-    seconds, _, runs = min_time(work, repeats=10, budget_s=0.1)
-    assert 0.01 <= seconds < 0.02 and runs < 11        # stopped by the budget (0.1 s after the first run)
+    seconds, _, runs = timing.min_time(work, repeats=10, budget_s=0.1)
+    # stopped by the budget: 0.1 s counted after the first run is passed by the third (0.05 + 0.02 + 0.08)
+    assert seconds == pytest.approx(0.01) and runs == 4

@@ -5,7 +5,9 @@ import functools
 import sys
 from pathlib import Path
 
-from classical_dynamics import provenance
+from snakemake_interface_executor_plugins.settings import ExecMode
+
+from classical_dynamics import jobserver, provenance
 from classical_dynamics.io import ResultError, check_result_folder
 from classical_dynamics.scenes import SceneError
 from classical_dynamics.scenes.loader import is_leftover
@@ -89,3 +91,18 @@ except Exception as _error:        # a fault of ours, not the user's; still one 
 def limits(wc):
     """The job's Estimate (scenes/cost.py), from which its time and memory limits follow."""
     return ESTIMATES[Path("workflow/scenes", wc.study, f"{wc.scene}.yaml").as_posix()]
+
+
+# Local jobs run as forked children of one warm process that has imported numpy, scipy, matplotlib, numba and the
+# solvers once (classical_dynamics/jobserver.py): about a second less a job. Jobs of a cluster run start their own.
+onstart:
+    if workflow.local_exec and workflow.exec_mode == ExecMode.DEFAULT:
+        jobserver.start()
+
+
+onsuccess:
+    jobserver.stop()
+
+
+onerror:
+    jobserver.stop()

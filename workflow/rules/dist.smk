@@ -19,7 +19,8 @@ rule dist:
     conda:
         "../envs/pipeline.yaml"
     shell:
-        "{params.python:q} -m classical_dynamics dist results {output.archive:q} > {log:q} 2>&1"
+        "{params.python:q} -m classical_dynamics.jobserver"
+        " classical_dynamics dist results {output.archive:q} > {log:q} 2>&1"
 
 
 rule verify:

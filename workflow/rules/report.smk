@@ -22,7 +22,8 @@ rule results_archive:
     conda:
         "../envs/pipeline.yaml"
     shell:
-        "{params.python:q} -m classical_dynamics.report.dist results {output.archive:q} > {log:q} 2>&1"
+        "{params.python:q} -m classical_dynamics.jobserver"
+        " classical_dynamics.report.dist results {output.archive:q} > {log:q} 2>&1"
 
 
 rule report_html:
@@ -42,7 +43,8 @@ rule report_html:
     conda:
         "../envs/pipeline.yaml"
     shell:
-        "{params.python:q} -m classical_dynamics report results {output:q} {params.quick} 2>&1 | tee {log:q}"
+        "{params.python:q} -m classical_dynamics.jobserver"
+        " classical_dynamics report results {output:q} {params.quick} 2>&1 | tee {log:q}"
 
 
 rule report_pdf:
@@ -57,7 +59,8 @@ rule report_pdf:
     conda:
         "../envs/pipeline.yaml"
     shell:
-        "{params.python:q} -m classical_dynamics.report.pdf {input:q} {output:q} > {log:q} 2>&1"
+        "{params.python:q} -m classical_dynamics.jobserver"
+        " classical_dynamics.report.pdf {input:q} {output:q} > {log:q} 2>&1"
 
 
 rule report:

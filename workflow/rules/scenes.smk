@@ -29,6 +29,7 @@ rule scene:
     conda:
         "../envs/pipeline.yaml"
     shell:
-        "{params.python:q} -m classical_dynamics run {wildcards.study:q} {input.schema:q} {input.scene:q}"
+        "{params.python:q} -m classical_dynamics.jobserver"
+        " classical_dynamics run {wildcards.study:q} {input.schema:q} {input.scene:q}"
         " {output.results:q} {output.timings:q} {params.quick}"
         " --time-limit-min {resources.runtime} --memory-limit-mb {resources.mem_mb} > {log:q} 2>&1"

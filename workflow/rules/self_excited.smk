@@ -23,7 +23,8 @@ rule self_excited_gallery:
     conda:
         "../envs/pipeline.yaml"
     shell:
-        "{params.python:q} -m classical_dynamics.studies.self_excited.gallery results/self_excited"
+        "{params.python:q} -m classical_dynamics.jobserver"
+        " classical_dynamics.studies.self_excited.gallery results/self_excited"
         " {output.results:q} {output.timings:q} {input.scenes:q} {params.quick} > {log:q} 2>&1"
 
 
