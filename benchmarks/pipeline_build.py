@@ -8,7 +8,7 @@ load; the ratios between the two columns, taken minutes apart, are what to read.
 
 Rows: the full build from clean (Snakemake's own log gives its elapsed time), its longest job; a no-op dry run
 beside Snakemake's floor (a Snakefile with as many jobs and no work); one job's overhead (the interpreter and
-its imports: the process's wall time less the work it records in run.csv); the rebuild after editing one
+its imports, or the job server's fork: the job's wall time less the same work in a warm process); the rebuild after editing one
 scene; a dry run with a generated sweep of scenes added, beside the floor for as many jobs; and the test
 suite (`python -m pytest`, as `make test` runs it).
 """
@@ -92,8 +92,22 @@ def job_overhead(tree: Path) -> float:
     work = min(float(subprocess.run([sys.executable, "-c", WORK, scene, schema], cwd=tree, env=env_for(tree),
                                     check=True, capture_output=True, text=True).stdout) for _ in range(3))
     with tempfile.TemporaryDirectory() as tmp:
-        walls = [timed(tree, sys.executable, "-m", "classical_dynamics", "run", "chains", schema, scene,
-                       f"{tmp}/r{i}", f"{tmp}/t{i}", "--quick") for i in range(4)]
+        command = [sys.executable, "-m", "classical_dynamics"]
+        server = None
+        if (tree / "src/classical_dynamics/jobserver.py").exists():     # a local run's jobs go through it
+            socket_path = f"{tmp}/jobs.sock"
+            server = subprocess.Popen([sys.executable, "-m", "classical_dynamics.jobserver", "--serve", socket_path,
+                                       str(os.getpid())], cwd=tree, env=env_for(tree))
+            command = [sys.executable, "-m", "classical_dynamics.jobserver", "classical_dynamics"]
+            os.environ["CLASSICAL_DYNAMICS_JOBSERVER"] = socket_path
+        try:
+            walls = [timed(tree, *command, "run", "chains", schema, scene, f"{tmp}/r{i}", f"{tmp}/t{i}", "--quick")
+                     for i in range(4)]
+        finally:
+            os.environ.pop("CLASSICAL_DYNAMICS_JOBSERVER", None)
+            if server:
+                server.terminate()
+                server.wait()
     return min(walls[1:]) - work
 
 

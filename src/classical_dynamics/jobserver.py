@@ -34,9 +34,12 @@ _MAX_REQUEST = 1 << 20
 def run_module(module: str, args: list[str]) -> int:
     """`python -m module args...` in this process; its exit status."""
     import runpy
+    import warnings
     sys.argv = [module, *args]
     try:
-        runpy.run_module(module, run_name="__main__", alter_sys=True)
+        with warnings.catch_warnings():     # the server imported it already: runpy runs it afresh, as python -m
+            warnings.filterwarnings("ignore", "'.*' found in sys.modules after import of package", RuntimeWarning)
+            runpy.run_module(module, run_name="__main__", alter_sys=True)
     except SystemExit as exit_:
         code = exit_.code
         if code is None:
@@ -83,11 +86,23 @@ def client(argv: list[str]) -> int:
 
 # ---------------------------------------------------------------------------------------------------- the server
 
-# What nearly every job imports: loaded once here, shared by every child (copy-on-write).
+# What the jobs import: loaded once here, shared by every child (copy-on-write). Every module of the packages
+# below (sympy for the closed forms among them), and the report's HTML. Not WeasyPrint: one job, the PDF, uses it.
 WARM = ("classical_dynamics.cli", "numpy", "scipy.integrate", "scipy.special", "scipy.linalg", "scipy.optimize",
-        "matplotlib", "matplotlib.pyplot", "jsonschema", "yaml", "classical_dynamics.studies",
-        "classical_dynamics.solvers.runge_kutta", "classical_dynamics.solvers.rigid_body",
-        "classical_dynamics.studies.results", "classical_dynamics.limits")
+        "matplotlib", "matplotlib.pyplot", "jsonschema", "yaml", "sympy", "classical_dynamics.report.build")
+WARM_PACKAGES = ("classical_dynamics.solvers", "classical_dynamics.models", "classical_dynamics.scenes",
+                 "classical_dynamics.studies")
+
+
+def _warm_up() -> None:
+    import importlib
+    import pkgutil
+    for name in WARM:
+        importlib.import_module(name)
+    for name in WARM_PACKAGES:
+        package = importlib.import_module(name)
+        for module in pkgutil.walk_packages(package.__path__, f"{name}."):
+            importlib.import_module(module.name)
 
 
 def _child(request: dict, fds: list[int]) -> None:
@@ -119,7 +134,6 @@ def _child(request: dict, fds: list[int]) -> None:
 
 def serve(path: str, parent: int) -> None:
     """Serve jobs on the socket at path until told to stop (SIGTERM) or until process parent is gone."""
-    import importlib
     import select
 
     listener = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
@@ -128,24 +142,27 @@ def serve(path: str, parent: int) -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)     # Ctrl-C reaches the jobs through their clients
     stopping = []
     signal.signal(signal.SIGTERM, lambda *_: stopping.append(True))
-    for name in WARM:
-        importlib.import_module(name)
+    # A child's exit wakes the loop at once (its status goes to its client without waiting for a timeout).
+    wake, woken = os.pipe()
+    os.set_blocking(wake, False)
+    os.set_blocking(woken, False)
+    signal.set_wakeup_fd(woken)
+    signal.signal(signal.SIGCHLD, lambda *_: None)
+    _warm_up()
     jobs: dict[int, socket.socket] = {}                 # child pid -> its client's connection
     try:
         while not (stopping or os.getppid() != parent) or jobs:
-            watched = list(jobs.values()) + ([] if stopping else [listener])
-            try:
-                ready = select.select(watched, [], [], 0.2)[0]
-            except InterruptedError:
-                ready = []
-            for sock in ready:
-                if sock is listener:
+            watched = [wake, *jobs.values()] + ([] if stopping else [listener])
+            for ready in select.select(watched, [], [], 1.0)[0]:
+                if ready is wake:
+                    os.read(wake, 4096)
+                elif ready is listener:
                     conn, _ = listener.accept()
-                    pid = _start(conn, listener, jobs)
+                    pid = _start(conn, [listener, wake, woken, *jobs.values()])
                     if pid:
                         jobs[pid] = conn
-                elif not sock.recv(1):          # the client is gone (killed): so is its job
-                    pid = next(p for p, c in jobs.items() if c is sock)
+                elif not ready.recv(1):         # the client is gone (killed): so is its job
+                    pid = next(p for p, c in jobs.items() if c is ready)
                     try:
                         os.killpg(pid, signal.SIGKILL)
                     except ProcessLookupError:
@@ -153,14 +170,16 @@ def serve(path: str, parent: int) -> None:
             _reap(jobs)
     finally:
         listener.close()
-        try:
-            os.unlink(path)
-        except OSError:
-            pass
+        for remove in (os.unlink, os.rmdir):      # the socket and the folder start() made for it
+            try:
+                remove(path if remove is os.unlink else os.path.dirname(path))
+            except OSError:
+                pass
 
 
-def _start(conn: socket.socket, listener: socket.socket, jobs: dict) -> int:
-    """Fork the child for the request on conn; its pid, or 0 if the request was unreadable."""
+def _start(conn: socket.socket, inherited: list) -> int:
+    """Fork the child for the request on conn; its pid, or 0 if the request was unreadable. The child closes
+    what it inherited of the server's (its sockets and pipe)."""
     try:
         data, fds, _, _ = socket.recv_fds(conn, _MAX_REQUEST, 3)
         while not data.endswith(b"\n"):            # one line of JSON; the client then only waits
@@ -178,10 +197,9 @@ def _start(conn: socket.socket, listener: socket.socket, jobs: dict) -> int:
     sys.stderr.flush()
     pid = os.fork()
     if pid == 0:
-        listener.close()
-        conn.close()
-        for other in jobs.values():
-            other.close()
+        signal.set_wakeup_fd(-1)
+        for item in [conn, *inherited]:
+            item.close() if isinstance(item, socket.socket) else os.close(item)
         _child(request, fds)
     for fd in fds:
         os.close(fd)
@@ -225,16 +243,13 @@ def start() -> None:
 
 
 def stop() -> None:
-    """Stop the server start() started, once the jobs it runs are done."""
-    import shutil
+    """Stop the server start() started, once the jobs it runs are done (it removes its socket and folder)."""
     global _server
-    path = os.environ.pop(ENV, None)
+    os.environ.pop(ENV, None)
     if _server is not None:
         _server.terminate()
         _server.wait()
         _server = None
-    if path:
-        shutil.rmtree(os.path.dirname(path), ignore_errors=True)
 
 
 if __name__ == "__main__":
