@@ -45,6 +45,7 @@ bench: venv
 	$(BIN)/python benchmarks/precession_cycle.py
 	$(BIN)/python benchmarks/sine_cosine_integrals.py
 	$(BIN)/python benchmarks/pipeline_build.py
+	$(BIN)/python benchmarks/pipeline_scaling.py
 	$(BIN)/python benchmarks/bad_input.py
 
 dist: venv

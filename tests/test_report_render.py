@@ -54,6 +54,20 @@ def test_html_has_resolved_numbering(built_repo):
     assert eqs == [str(i) for i in range(1, len(eqs) + 1)]
 
 
+def test_the_appendix_shows_the_measured_scaling_with_its_origin(built_repo):
+    """The cost-against-scenes figure and its slopes come from the benchmark's saved file, named with its commit."""
+    import json
+
+    from classical_dynamics.formatting import format_number
+    data = json.loads((built_repo / "benchmarks/results/pipeline_scaling.json").read_text())
+    text = (built_repo / "results/report.html").read_text()
+    section = text[text.index("How the cost grows with the number of scenes"):text.index('id="provenance-scenes"')]
+    assert 'id="fig:pipeline-scaling"' in section and data["commit"][:10] in section
+    for key in ("build_s_per_scene", "report_html_s_per_scene", "report_pdf_s_per_scene"):
+        assert format_number(data["slopes"][key], 2) in section, key
+    assert format_number(data["slopes"]["dry_run_s_per_1000_scenes"], 2) in section
+
+
 def test_pdf_pages(built_repo, tmp_path):
     pdf = built_repo / "results/report.pdf"
     subprocess.run(["pdftoppm", "-png", "-r", "40", str(pdf), str(tmp_path / "page")], check=True)

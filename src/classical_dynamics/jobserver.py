@@ -14,7 +14,9 @@ the same either way. The child is its own process group: a signal to the client 
 job) is passed on, and if the client disappears the server kills the group. The server stops when Snakemake
 stops it or exits.
 
-The client imports nothing but the standard library: its own start is about 20 ms.
+A child's environment and folder are its client's; its modules are the server's, imported when the run started
+(as Snakemake's code digests were taken when it parsed). The client imports nothing but the standard library:
+a cheap scene takes 0.10 s through the server against 1.4 s in its own interpreter.
 """
 
 from __future__ import annotations
@@ -148,9 +150,9 @@ def serve(path: str, parent: int) -> None:
     os.set_blocking(woken, False)
     signal.set_wakeup_fd(woken)
     signal.signal(signal.SIGCHLD, lambda *_: None)
-    _warm_up()
     jobs: dict[int, socket.socket] = {}                 # child pid -> its client's connection
     try:
+        _warm_up()          # should an import fail, waiting clients see the server gone and run their jobs alone
         while not (stopping or os.getppid() != parent) or jobs:
             watched = [wake, *jobs.values()] + ([] if stopping else [listener])
             for ready in select.select(watched, [], [], 1.0)[0]:

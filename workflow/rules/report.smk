@@ -32,6 +32,7 @@ rule report_html:
         gallery=rules.self_excited_gallery.output.results,
         archive=RESULTS_ARCHIVE,
         templates=sorted(str(p) for p in Path("report").rglob("*") if p.is_file()),
+        measured=sorted(str(p) for p in Path("benchmarks/results").glob("*") if p.is_file()),     # its appendix
     output:
         "results/report.html",
     params:

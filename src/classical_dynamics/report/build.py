@@ -132,7 +132,7 @@ class Report:
         self.env.filters["math"] = lambda text: Markup(render_text(str(text)))
         self.env.globals.update(
             num=self.num, value=self.value, shortest=shortest, claim_digits=self.claim_digits, unit=unit_html, label_number=self.numbering.label, fig=self.fig, table=self.table, eq=self.eq, ref=self.ref, cite=self.cite,
-            claims=self.claims, stability=self.stability, scenes=self.scenes_table,
+            benchmark_fig=self.benchmark_fig, claims=self.claims, stability=self.stability, scenes=self.scenes_table,
             summary=self.index.summary, rebuild=self.rebuild, study_scenes=self.index.scenes,
             all_claims=self.all_claims, claim=self.claim, provenance_json=self.provenance_json, ledger=self.ledger,
             cited=lambda study, scene: self.cited.get((study, scene), {}))
@@ -219,6 +219,20 @@ class Report:
             f'<figcaption><span class="label">Figure {number}.</span> {caption}{note} '
             f'<span class="source">{links}<span class="rebuild">; rebuild: <code>{self.rebuild(study, scene)}</code></span>.'
             f'</span>'
+            f'</figcaption></figure>')
+
+    def benchmark_fig(self, name: str, label: str, caption: str):
+        """A figure a benchmark measured and saved beside its data in benchmarks/results/ (not a build result:
+        its caption says where and when it was measured)."""
+        data = (self.root / "benchmarks" / "results" / f"{name}.svg").read_bytes()
+        uri = "data:image/svg+xml;base64," + base64.b64encode(data).decode("ascii")
+        number = self.numbering.label(label)
+        alt = html.escape(plain_text(caption), quote=True)
+        return Markup(
+            f'<figure id="{label}" class="figure"><img src="{uri}" alt="{alt}">'
+            f'<figcaption><span class="label">Figure {number}.</span> {render_text(caption)} Measured times. '
+            f'<span class="source">data: <code>benchmarks/results/{name}.json</code>'
+            f'<span class="rebuild">; remeasure: <code>python benchmarks/{name}.py</code></span>.</span>'
             f'</figcaption></figure>')
 
     def _scene_file(self, study, scene) -> str:
@@ -358,9 +372,17 @@ class Report:
             "commit_date": date,
             "results_packages": first.get("packages", {}), "results_commit": first.get("commit", "unknown"),
             "build_times": dict(build_times), "provenance": self.index.provenance,
+            "scaling": self._benchmark("pipeline_scaling"),
             "bibliography": lambda: [(i + 1, k, Markup(format_entry(self.citations.entries[k])))
                                      for i, k in enumerate(self.citations.order)],
         }
+
+    def _benchmark(self, name: str):
+        """A benchmark's saved measurement (benchmarks/results/<name>.json and .svg), or None if it has none."""
+        path = self.root / "benchmarks" / "results" / f"{name}.json"
+        if not (path.is_file() and path.with_suffix(".svg").is_file()):
+            return None
+        return json.loads(path.read_text(encoding="utf-8"))
 
     def render(self) -> str:
         template = self.env.get_template("report.html.j2")
