@@ -1,6 +1,5 @@
 """The solver layer against exact solutions, and its hard cases."""
 
-import time
 import mpmath
 import numpy as np
 import pytest
@@ -388,45 +387,41 @@ class _Clock:
     def perf_counter(self):
         return self.now
 
+    def work(self, delays):
+        """A function that takes the given times, one per call; it returns the clock's reading."""
+        delays = iter(delays)
 
-def test_min_time_stops_once_two_runs_agree_and_ignores_a_slow_first_run(monkeypatch):
-    """A first call that compiles (slow) is not the minimum; the repeats stop when the two fastest agree."""
+        def work():
+            self.now += next(delays)
+            return self.now
+        return work
+
+
+@pytest.fixture
+def clock(monkeypatch):
     from classical_dynamics.solvers import timing
-    clock = _Clock()
-    monkeypatch.setattr(timing, "time", clock)
-    delays = iter([0.2, 0.030, 0.0305, 0.03, 0.03, 0.03, 0.03, 0.03, 0.03, 0.03, 0.03])
+    fake = _Clock()
+    monkeypatch.setattr(timing, "time", fake)
+    return fake
 
-    def work():
-        clock.now += next(delays)
-        return clock.now
 
-    seconds, result, runs = timing.min_time(work, repeats=10, budget_s=5.0)
+def test_min_time_stops_once_two_runs_agree_and_ignores_a_slow_first_run(clock):
+    """A first call that compiles (slow) is not the minimum; the repeats stop when the two fastest agree."""
+    from classical_dynamics.solvers.timing import min_time
+    seconds, result, runs = min_time(clock.work([0.2, 0.030, 0.0305] + [0.03] * 8), repeats=10, budget_s=5.0)
     assert seconds == pytest.approx(0.03) and result == pytest.approx(0.2605)
     assert runs == 3                  # the slow first run, then two that agree within 5 %: not ten
 
 
-def test_min_time_repeats_until_the_two_fastest_agree(monkeypatch):
-    from classical_dynamics.solvers import timing
-    clock = _Clock()
-    monkeypatch.setattr(timing, "time", clock)
-    delays = iter([0.2, 0.03, 0.04, 0.035, 0.0301, 0.05])
-
-    def work():
-        clock.now += next(delays)
-
-    seconds, _, runs = timing.min_time(work, repeats=10, budget_s=5.0)
+def test_min_time_repeats_until_the_two_fastest_agree(clock):
+    from classical_dynamics.solvers.timing import min_time
+    seconds, _, runs = min_time(clock.work([0.2, 0.03, 0.04, 0.035, 0.0301, 0.05]), repeats=10, budget_s=5.0)
     assert seconds == pytest.approx(0.03) and runs == 5       # 0.03 and 0.0301 are the first two within 5 %
 
 
-def test_min_time_keeps_to_its_budget_when_runs_disagree(monkeypatch):
-    from classical_dynamics.solvers import timing
-    clock = _Clock()
-    monkeypatch.setattr(timing, "time", clock)
-    delays = iter([0.01, 0.05, 0.02, 0.08, 0.04, 0.12, 0.06, 0.16, 0.09, 0.2, 0.11])
-
-    def work():
-        clock.now += next(delays)
-
-    seconds, _, runs = timing.min_time(work, repeats=10, budget_s=0.1)
+def test_min_time_keeps_to_its_budget_when_runs_disagree(clock):
+    from classical_dynamics.solvers.timing import min_time
+    delays = [0.01, 0.05, 0.02, 0.08, 0.04, 0.12, 0.06, 0.16, 0.09, 0.2, 0.11]
+    seconds, _, runs = min_time(clock.work(delays), repeats=10, budget_s=0.1)
     # stopped by the budget: 0.1 s counted after the first run is passed by the third (0.05 + 0.02 + 0.08)
     assert seconds == pytest.approx(0.01) and runs == 4
