@@ -63,6 +63,11 @@ def test_the_appendix_shows_the_measured_scaling_with_its_origin(built_repo):
     text = (built_repo / "results/report.html").read_text()
     section = text[text.index("How the cost grows with the number of scenes"):text.index('id="provenance-scenes"')]
     assert 'id="fig:pipeline-scaling"' in section and data["commit"][:10] in section
+    links = re.findall(r'<a href="([^"#]+)"', section)
+    assert {"../benchmarks/results/pipeline_scaling.svg", "../benchmarks/results/pipeline_scaling.json",
+            "../benchmarks/pipeline_scaling.py"} <= set(links)
+    for link in links:
+        assert (built_repo / "results" / link).resolve().is_file(), link
     for key in ("build_s_per_scene", "report_html_s_per_scene", "report_pdf_s_per_scene"):
         assert format_number(data["slopes"][key], 2) in section, key
     assert format_number(data["slopes"]["dry_run_s_per_1000_scenes"], 2) in section
@@ -70,11 +75,15 @@ def test_the_appendix_shows_the_measured_scaling_with_its_origin(built_repo):
 
 def test_pdf_pages(built_repo, tmp_path):
     pdf = built_repo / "results/report.pdf"
-    subprocess.run(["pdftoppm", "-png", "-r", "40", str(pdf), str(tmp_path / "page")], check=True)
+    subprocess.run(["pdftoppm", "-png", "-r", "72", str(pdf), str(tmp_path / "page")], check=True)
     pages = sorted(tmp_path.glob("page-*.png"))
     assert len(pages) >= 10
-    inked = [np.asarray(Image.open(p).convert("L")).min() < 100 for p in pages]
-    assert all(inked)
+
+    def body(page):             # the page less its running header and page number (grey: ink of their own)
+        image = np.asarray(Image.open(page).convert("L"))
+        return image[int(0.06 * len(image)):int(0.94 * len(image))]
+    inked = [body(p).min() < 100 for p in pages]                # no page is empty but for header and number
+    assert all(inked), [p.name for p, ink in zip(pages, inked) if not ink]
     text = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True, text=True, check=True).stdout
     html = (built_repo / "results/report.html").read_text()
     for number in re.findall(r'<span class="label">Figure (\d+)\.</span>', html):

@@ -228,10 +228,12 @@ class Report:
         uri = "data:image/svg+xml;base64," + base64.b64encode(data).decode("ascii")
         number = self.numbering.label(label)
         alt = html.escape(plain_text(caption), quote=True)
+        folder = "../benchmarks/results"               # relative to report.html in results/, as scene files are
         return Markup(
-            f'<figure id="{label}" class="figure"><img src="{uri}" alt="{alt}">'
+            f'<figure id="{label}" class="figure benchmark"><img src="{uri}" alt="{alt}">'
             f'<figcaption><span class="label">Figure {number}.</span> {render_text(caption)} Measured times. '
-            f'<span class="source">data: <code>benchmarks/results/{name}.json</code>'
+            f'<span class="source"><a href="{folder}/{name}.svg">SVG</a> · <a href="{folder}/{name}.json">data (JSON)'
+            f'</a> · measured by <a href="../benchmarks/{name}.py"><code>benchmarks/{name}.py</code></a>'
             f'<span class="rebuild">; remeasure: <code>python benchmarks/{name}.py</code></span>.</span>'
             f'</figcaption></figure>')
 
