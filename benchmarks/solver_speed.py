@@ -6,7 +6,7 @@ specialize=True compiles that loop for the one right-hand side (a second or so, 
 1. HNW rigid body, time to reach error 1e-10 at t = 20: this library's best adaptive method against
    scipy's solve_ivp DOP853, and against a hand-written compiled fixed-step order-8 loop (the RHS
    inlined, the step the largest that reaches 1e-10): the limit for this problem; and against the same
-   method written by hand with its error control (the RHS inlined, ours' norm and controller, no calls):
+   method written by hand with its error control (the RHS inlined, ours' error norm, no calls):
    the limit for an adaptive DOP853, which pays for its error estimate and its rejected steps.
 2. A batch of 1000 trajectories in one compiled call against 1000 calls one at a time (ours, and
    solve_ivp's).
@@ -64,8 +64,9 @@ def hand_written_dop853(y0, h, n, A, B, C):
 
 @njit(cache=True)
 def hand_written_adaptive_dop853(y0, t1, h, rtol, atol, A, B, C, E5, E3):
-    """DOP853 with error control as ours does it (the same stages, embedded estimates, norm and controller), the
-    HNW right-hand side written in, no calls: the fair limit for an adaptive method. (steps, rejected, y)."""
+    """DOP853 with error control (ours' stages, embedded estimates and norm; its controller's safety factor and
+    limits, from a given first step), the HNW right-hand side written in, no calls: the fair limit for an
+    adaptive method. (steps, rejected, y)."""
     y = y0.copy()
     y_new = np.empty(3)
     K = np.zeros((13, 3))

@@ -24,7 +24,7 @@ def sha256_file(path: Path | str) -> str:
     return hashlib.sha256(Path(path).read_bytes()).hexdigest()
 
 
-@lru_cache(maxsize=1)
+@lru_cache(maxsize=None)          # a process reads its sources once (a parse asks for each study's digest per job)
 def code_digest(*parts: str) -> str:
     """SHA-256 of the package's modules under `parts` (folders or files relative to the package; all of them
     if none): what a result or a scene's validation depends on besides its own inputs."""
@@ -37,6 +37,7 @@ def code_digest(*parts: str) -> str:
     return digest.hexdigest()
 
 
+@lru_cache(maxsize=1)
 def package_versions() -> dict[str, str]:
     versions = {}
     for name in KEY_PACKAGES:

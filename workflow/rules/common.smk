@@ -1,7 +1,6 @@
 # Shared by every study: the list of studies, scene discovery, and validation of every scene
 # before anything runs. (Rules live in their own files: Snakemake's linter wants them apart.)
 
-import functools
 import sys
 from pathlib import Path
 
@@ -43,9 +42,10 @@ def result_state(wc):
     return "whole"
 
 
-# A result's code as a params value: Snakemake's params trigger reruns it when that code changes. (As inputs, the
-# ~50 source files of every scene job cost the DAG 53,000 file checks for a sweep of 1,000 scenes.)
-code_digest = functools.lru_cache(maxsize=None)(provenance.code_digest)
+# A result's code as a params value (provenance.code_digest): Snakemake's params trigger reruns it when that code
+# changes. (As inputs, the ~50 source files of every scene job cost the DAG 53,000 file checks for a sweep of
+# 1,000 scenes.)
+code_digest = provenance.code_digest
 
 
 SHARED_CODE = ("solvers", "models", "scenes", "io.py", "provenance.py", "cli.py", "formatting.py", "units.py",

@@ -76,8 +76,23 @@ class ResultsIndex:
 
     def svg_uri(self, study, scene, name, timing=False):
         folder = self.dir / study / ("timings/" + scene if timing else scene)
-        data = (folder / f"{name}.svg").read_bytes()
-        return "data:image/svg+xml;base64," + base64.b64encode(data).decode("ascii")
+        return svg_data_uri((folder / f"{name}.svg").read_bytes())
+
+
+def svg_data_uri(svg: bytes) -> str:
+    """An SVG file as a data: URI: the report carries its figures inside it."""
+    return "data:image/svg+xml;base64," + base64.b64encode(svg).decode("ascii")
+
+
+def figure_html(label: str, number, uri: str, alt: str, caption: str, source: str, rebuild: str,
+                kind: str = "figure") -> Markup:
+    """A numbered figure: the image, its caption, then where it comes from and how to make it again."""
+    return Markup(
+        f'<figure id="{label}" class="{kind}"><img src="{uri}" alt="{alt}">'
+        f'<figcaption><span class="label">Figure {number}.</span> {caption} '
+        f'<span class="source">{source}<span class="rebuild">; {rebuild}</span>.'
+        f'</span>'
+        f'</figcaption></figure>')
 
 
 def unit_html(key, value=None) -> Markup:
@@ -214,28 +229,19 @@ class Report:
         links = (f'<a href="{folder}/{meta["file"]}">SVG</a>'
                  + (f' · <a href="{folder}/{data}">data (CSV)</a>' if data else "")
                  + f' · scene <a href="../{self._scene_file(study, scene)}"><code>{study}/{scene}</code></a>')
-        return Markup(
-            f'<figure id="{label}" class="figure"><img src="{uri}" alt="{alt}">'
-            f'<figcaption><span class="label">Figure {number}.</span> {caption}{note} '
-            f'<span class="source">{links}<span class="rebuild">; rebuild: <code>{self.rebuild(study, scene)}</code></span>.'
-            f'</span>'
-            f'</figcaption></figure>')
+        return figure_html(label, number, uri, alt, caption + note, links,
+                           f"rebuild: <code>{self.rebuild(study, scene)}</code>")
 
     def benchmark_fig(self, name: str, label: str, caption: str):
         """A figure a benchmark measured and saved beside its data in benchmarks/results/ (not a build result:
         its caption says where and when it was measured)."""
-        data = (self.root / "benchmarks" / "results" / f"{name}.svg").read_bytes()
-        uri = "data:image/svg+xml;base64," + base64.b64encode(data).decode("ascii")
-        number = self.numbering.label(label)
-        alt = html.escape(plain_text(caption), quote=True)
         folder = "../benchmarks/results"               # relative to report.html in results/, as scene files are
-        return Markup(
-            f'<figure id="{label}" class="figure benchmark"><img src="{uri}" alt="{alt}">'
-            f'<figcaption><span class="label">Figure {number}.</span> {render_text(caption)} Measured times. '
-            f'<span class="source"><a href="{folder}/{name}.svg">SVG</a> · <a href="{folder}/{name}.json">data (JSON)'
-            f'</a> · measured by <a href="../benchmarks/{name}.py"><code>benchmarks/{name}.py</code></a>'
-            f'<span class="rebuild">; remeasure: <code>python benchmarks/{name}.py</code></span>.</span>'
-            f'</figcaption></figure>')
+        uri = svg_data_uri((self.root / "benchmarks" / "results" / f"{name}.svg").read_bytes())
+        links = (f'<a href="{folder}/{name}.svg">SVG</a> · <a href="{folder}/{name}.json">data (JSON)</a>'
+                 f' · measured by <a href="../benchmarks/{name}.py"><code>benchmarks/{name}.py</code></a>')
+        return figure_html(label, self.numbering.label(label), uri, html.escape(plain_text(caption), quote=True),
+                           render_text(caption) + " Measured times.", links,
+                           f"remeasure: <code>python benchmarks/{name}.py</code>", kind="figure benchmark")
 
     def _scene_file(self, study, scene) -> str:
         """The input a results folder was computed from, relative to the checkout: its scene file, or for a step
