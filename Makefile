@@ -1,16 +1,18 @@
 # Two commands on a fresh machine:  make report   and   make test
-# Everything runs from .venv, installed from the pinned requirements.lock.
+# Everything runs from .venv, installed from the lock files (pinned, with hashes): requirements/pipeline.lock for
+# the report, requirements/test.lock for what the tests add.
 
 PYTHON    ?= python3
 VENV      := .venv
 BIN       := $(VENV)/bin
 STAMP     := $(VENV)/.installed
+TEST_STAMP := $(VENV)/.installed-test
 CORES     ?= all
 # Debian packages: pango and fonts for WeasyPrint (PDF); chromium and poppler for the tests.
 DEBS_REPORT := libpango-1.0-0 libpangoft2-1.0-0 fonts-dejavu-core
 DEBS_TEST   := $(DEBS_REPORT) chromium poppler-utils
 
-.PHONY: report test venv lock bench dist clean system-report system-test
+.PHONY: report test test-slurm venv venv-test lock bench dist clean system-report system-test
 
 report: venv system-report
 	$(BIN)/snakemake --cores $(CORES)
@@ -18,16 +20,26 @@ report: venv system-report
 	@echo "HTML: $(CURDIR)/results/report.html"
 	@echo "PDF:  $(CURDIR)/results/report.pdf"
 
-test: venv system-test
+test: venv-test system-test
 	$(BIN)/python -m pytest
 
-venv: $(STAMP)
+# The pipeline through a real Slurm cluster started on this machine (tools/local-slurm; as root, it installs it).
+test-slurm: venv-test system-test
+	tools/local-slurm up
+	$(BIN)/python -m pytest -m slurm
 
-$(STAMP): requirements.lock pyproject.toml
+venv: $(STAMP)
+venv-test: $(TEST_STAMP)
+
+$(STAMP): requirements/pipeline.lock pyproject.toml
 	test -d $(VENV) || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade "pip>=24"
-	$(BIN)/python -m pip install --quiet --require-virtualenv -r requirements.lock
+	$(BIN)/python -m pip install --quiet --require-virtualenv --require-hashes -r requirements/pipeline.lock
 	$(BIN)/python -m pip install --quiet --require-virtualenv --no-deps --no-build-isolation -e .
+	touch $@
+
+$(TEST_STAMP): $(STAMP) requirements/test.lock
+	$(BIN)/python -m pip install --quiet --require-virtualenv --require-hashes -r requirements/test.lock
 	touch $@
 
 # Installs missing Debian packages when run as root; otherwise says what to install.
@@ -39,7 +51,7 @@ system-report system-test: system-%:
 	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null; \
 	  else echo "Missing Debian packages:$$missing  (sudo apt-get install$$missing)"; exit 1; fi; fi
 
-bench: venv
+bench: venv-test
 	$(BIN)/python benchmarks/solver_speed.py
 	$(BIN)/python benchmarks/chandler_wobble.py
 	$(BIN)/python benchmarks/precession_cycle.py
@@ -51,10 +63,11 @@ bench: venv
 dist: venv
 	$(BIN)/snakemake --cores 1 dist
 
-# Re-pin after changing dependencies in pyproject.toml.
-lock: venv
-	{ echo "# Every Python package the project installs, pinned (pip freeze of a working .venv, Python 3.11)."; \
-	  echo "# Regenerate: make lock"; $(BIN)/python -m pip freeze --all --exclude-editable | grep -v "^pip=="; } > requirements.lock
+# Re-pin after changing dependencies in pyproject.toml (pip-tools, in a venv of its own).
+lock:
+	test -d .venv-lock || $(PYTHON) -m venv .venv-lock
+	.venv-lock/bin/python -m pip install --quiet pip-tools
+	.venv-lock/bin/python tools/lock.py
 
 clean:
 	rm -rf results .snakemake

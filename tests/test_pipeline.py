@@ -25,9 +25,10 @@ def tree_digest(folder):
 
 
 def result_files(repo):
-    """The deterministic results: everything under results/<study>/<scene>/ except provenance."""
+    """The deterministic results: everything under results/<study>/<scene>/ except provenance (and Snakemake's
+    benchmark files, results/benchmarks/, which are timings)."""
     return {k: v for k, v in tree_digest(repo / "results").items()
-            if re.match(r"^[a-z_]+/(?!timings/)[a-z0-9_]+/", k) and not k.endswith("provenance.json")}
+            if re.match(r"^(?!benchmarks/)[a-z_]+/(?!timings/)[a-z0-9_]+/", k) and not k.endswith("provenance.json")}
 
 
 def job_counts(dry_run_output):
@@ -100,6 +101,22 @@ def test_every_hard_case_holds_in_the_quick_build(built_repo):
 def test_nothing_to_do_after_a_build(built_repo):
     out = snakemake(built_repo, "-n", "--config", "quick=1")
     assert "Nothing to be done" in out.stdout + out.stderr
+
+
+def test_another_environment_marks_nothing_stale(built_repo, tmp_path):
+    """Jobs call `python3` by name: Snakemake run from another environment (same packages, another path, as on a
+    cluster node or after moving the venv) finds nothing to do after the build."""
+    other = tmp_path / "env"
+    (other / "bin").mkdir(parents=True)
+    (other / "pyvenv.cfg").write_text((Path(sys.prefix) / "pyvenv.cfg").read_text())
+    (other / "lib").symlink_to(Path(sys.prefix) / "lib")
+    (other / "bin" / "python3").symlink_to(Path(sys.executable).resolve())
+    probe = subprocess.run([other / "bin" / "python3", "-c", "import sys, snakemake; print(sys.prefix)"],
+                           capture_output=True, text=True, check=True)
+    assert probe.stdout.strip() == str(other)
+    out = subprocess.run([other / "bin" / "python3", "-m", "snakemake", "-n", "--config", "quick=1"],
+                         cwd=built_repo, env=run_env(built_repo), capture_output=True, text=True, timeout=300)
+    assert "Nothing to be done" in out.stdout + out.stderr, out.stdout[-3000:] + out.stderr[-3000:]
 
 
 def test_lint_reports_nothing(built_repo):

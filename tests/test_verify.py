@@ -169,8 +169,7 @@ def test_the_snakemake_target_verifies_and_writes_only_its_log(built, sandbox):
     from .conftest import snakemake
 
     repo = checkout_copy(sandbox / "repo")
-    for name in ("Snakefile", "pyproject.toml"):
-        shutil.copy2(ROOT / name, repo / name)
+    shutil.copy2(ROOT / "pyproject.toml", repo / "pyproject.toml")
     done = snakemake(repo, "-c", "1", "verify", "--config", f"archive={built['archive']}")
     assert "OK: all" in done.stdout + done.stderr
     assert listing(repo / "results") == ["logs", "logs/verify.log"]

@@ -232,6 +232,12 @@ def _reap(jobs: dict) -> None:
 _server: "subprocess.Popen | None" = None
 
 
+def put_interpreter_first_on_path() -> None:
+    """Put this interpreter's folder first on PATH (for the jobs started from this process): rules call `python3`
+    by name, which is then the interpreter that runs Snakemake, as activating its environment would make it."""
+    os.environ["PATH"] = os.pathsep.join([os.path.dirname(sys.executable), os.environ.get("PATH", "")])
+
+
 def start() -> None:
     """Start a server for the jobs of this process (the Snakemake run whose `onstart:` calls it): its socket's path
     goes into this process's environment, which Snakemake's local jobs inherit."""

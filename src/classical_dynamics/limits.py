@@ -8,6 +8,7 @@ gigabyte) is what exhausts a machine.
 
 from __future__ import annotations
 
+import math
 import os
 import select
 import signal
@@ -77,3 +78,11 @@ def run_limited(work: Callable[[], int], what: str, time_limit_s: float, memory_
         os.close(exited)
         for sig, handler in previous.items():
             signal.signal(sig, handler)
+
+
+def rule_resources(peak: dict) -> dict:
+    """What a job that is not a scene asks a scheduler for, from its rule's measured peak (workflow/resources.yaml):
+    twice the memory and 200 MB more, four times the time and at least 5 minutes (a node slower or busier than
+    the one measured, a report that has grown since)."""
+    return {"mem_mb": 100 * math.ceil((2 * peak["max_rss_mb"] + 200) / 100),
+            "runtime": max(5, math.ceil(4 * peak["seconds"] / 60))}

@@ -4,10 +4,12 @@
 import sys
 from pathlib import Path
 
+import yaml
 from snakemake_interface_executor_plugins.settings import ExecMode
 
 from classical_dynamics import jobserver, provenance
 from classical_dynamics.io import ResultError, check_result_folder
+from classical_dynamics.limits import rule_resources
 from classical_dynamics.scenes import SceneError
 from classical_dynamics.scenes.loader import is_leftover
 from classical_dynamics.scenes.cost import Budget
@@ -15,7 +17,10 @@ from classical_dynamics.scenes.targets import needed_scenes
 from classical_dynamics.scenes.validated import validate_all
 from classical_dynamics.studies import STUDIES, validate
 
-PY = sys.executable
+# Jobs call `python3` by name, never a path fixed when this file was read (which would fail on a node where the
+# path differs, and mark every result stale under another interpreter): the environment Snakemake runs in comes
+# first on their PATH, as activating it would. Each job's provenance records the versions it ran with.
+jobserver.put_interpreter_first_on_path()
 QUICK = "--quick" if int(config.get("quick", 0)) else ""
 VALIDATED = Path(".snakemake/validated-scenes.json")
 
@@ -93,12 +98,29 @@ def limits(wc):
     return ESTIMATES[Path("workflow/scenes", wc.study, f"{wc.scene}.yaml").as_posix()]
 
 
+# A scene estimated under this many seconds is light: on a cluster, light scenes run in batches (a group; the
+# slurm profile says how many to a batch), since the scheduler's few seconds a job would outweigh them.
+LIGHT_SCENE_S = 30
+LIGHT_SCENES = "light_scenes"
+
+# The jobs that are not scenes ask for memory and time from their measured peaks, with room to spare.
+MEASURED = yaml.safe_load(Path("workflow/resources.yaml").read_text())["rules"]
+
+
+def measured(rule):
+    """mem_mb and runtime (minutes) over the measured peak of a job that is not a scene."""
+    return rule_resources(MEASURED[rule])
+
+
 # Local jobs run as forked children of one warm process that has imported numpy, scipy, matplotlib, numba and the
 # solvers once (classical_dynamics/jobserver.py): about 1.3 s less a job, for 2.6 s of imports once, so it is
-# started for four jobs or more. Jobs of a cluster run start their own interpreter.
+# started for four jobs or more. Jobs of a cluster run start their own interpreter, as do jobs in an environment
+# of their own (--use-conda) and all jobs with `--config jobserver=0` (so that Snakemake's benchmark files
+# measure each job's own memory).
 onstart:
     served = sum("classical_dynamics.jobserver" in (job.rule.shellcmd or "") for job in workflow.dag.needrun_jobs())
-    if workflow.local_exec and workflow.exec_mode == ExecMode.DEFAULT and served >= 4:
+    wanted = int(config.get("jobserver", 1)) and not workflow.deployment_settings.deployment_method
+    if wanted and workflow.local_exec and workflow.exec_mode == ExecMode.DEFAULT and served >= 4:
         jobserver.start()
 
 

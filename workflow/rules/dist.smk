@@ -12,27 +12,37 @@ rule dist:
     output:
         archive=ARCHIVE,
         sums="results/dist/SHA256SUMS",
-    params:
-        python=PY,
+    threads: 1
+    resources:
+        **measured("dist"),
     log:
         "results/logs/dist.log",
     conda:
         "../envs/pipeline.yaml"
+    benchmark:
+        "results/benchmarks/dist.tsv"
     shell:
-        "{params.python:q} -m classical_dynamics.jobserver"
+        "python3 -m classical_dynamics.jobserver"
         " classical_dynamics dist results {output.archive:q} > {log:q} 2>&1"
+
+
+localrules:
+    verify,
 
 
 rule verify:
     """Rebuild the archive's scenes with this checkout and compare every number with it (always runs:
     no output; nothing is written but the log). Another archive: --config archive=PATH."""
     params:
-        python=PY,
         archive=config.get("archive", ARCHIVE),
     threads: workflow.cores
+    # It reruns every scene of the archive, `threads` at a time, here and never as a cluster job.
+    resources:
+        mem_mb=lambda wc, threads: threads * max(e.memory_limit_mb for e in ESTIMATES.values()),
+        runtime=lambda wc, threads: -(-sum(e.time_limit_s for e in ESTIMATES.values()) // (60 * threads)),
     log:
         "results/logs/verify.log",
     conda:
         "../envs/pipeline.yaml"
     shell:
-        "{params.python:q} -m classical_dynamics verify {params.archive:q} --cores {threads} 2>&1 | tee {log:q}"
+        "python3 -m classical_dynamics verify {params.archive:q} --cores {threads} 2>&1 | tee {log:q}"

@@ -15,14 +15,17 @@ rule results_archive:
     output:
         archive=RESULTS_ARCHIVE,
         sums=RESULTS_ARCHIVE.removesuffix(".tar.gz") + ".SHA256SUMS",
-    params:
-        python=PY,
+    threads: 1
+    resources:
+        **measured("results_archive"),
     log:
         "results/logs/results_archive.log",
     conda:
         "../envs/pipeline.yaml"
+    benchmark:
+        "results/benchmarks/results_archive.tsv"
     shell:
-        "{params.python:q} -m classical_dynamics.jobserver"
+        "python3 -m classical_dynamics.jobserver"
         " classical_dynamics.report.dist results {output.archive:q} > {log:q} 2>&1"
 
 
@@ -36,15 +39,19 @@ rule report_html:
     output:
         "results/report.html",
     params:
-        python=PY,
         quick=QUICK,
         code=code_digest("report", "formatting.py", "units.py"),
+    threads: 1
+    resources:
+        **measured("report_html"),
     log:
         "results/logs/report_html.log",
     conda:
         "../envs/pipeline.yaml"
+    benchmark:
+        "results/benchmarks/report_html.tsv"
     shell:
-        "{params.python:q} -m classical_dynamics.jobserver"
+        "python3 -m classical_dynamics.jobserver"
         " classical_dynamics report results {output:q} {params.quick} 2>&1 | tee {log:q}"
 
 
@@ -53,14 +60,17 @@ rule report_pdf:
         "results/report.html",
     output:
         "results/report.pdf",
-    params:
-        python=PY,
+    threads: 1
+    resources:
+        **measured("report_pdf"),
     log:
         "results/logs/report_pdf.log",
     conda:
         "../envs/pipeline.yaml"
+    benchmark:
+        "results/benchmarks/report_pdf.tsv"
     shell:
-        "{params.python:q} -m classical_dynamics.jobserver"
+        "python3 -m classical_dynamics.jobserver"
         " classical_dynamics.report.pdf {input:q} {output:q} > {log:q} 2>&1"
 
 

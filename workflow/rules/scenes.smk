@@ -15,21 +15,26 @@ rule scene:
         results=directory("results/{study}/{scene}"),
         timings=directory("results/{study}/timings/{scene}"),
     params:
-        python=PY,
         quick=QUICK,
         result=result_state,
         code=lambda wc: code_digest(*SHARED_CODE, f"studies/{wc.study}"),
     # Longest first (by the scene's cost estimate), so the heaviest scene does not start last and run alone.
     priority: lambda wc: round(limits(wc).seconds, 1)
+    threads: 1
     resources:
         runtime=lambda wc: -(-limits(wc).time_limit_s // 60),     # minutes, as Snakemake and Slurm count them
         mem_mb=lambda wc: limits(wc).memory_limit_mb,
+    # On a cluster, light scenes run in batches (the slurm profile's group-components), so that the scheduler's
+    # few seconds a job do not outweigh them; heavier ones are jobs of their own. Locally, groups are ignored.
+    group: lambda wc: LIGHT_SCENES if limits(wc).seconds < LIGHT_SCENE_S else None
     log:
         "results/logs/{study}/{scene}.log",
     conda:
         "../envs/pipeline.yaml"
+    benchmark:
+        "results/benchmarks/{study}/{scene}.tsv"
     shell:
-        "{params.python:q} -m classical_dynamics.jobserver"
+        "python3 -m classical_dynamics.jobserver"
         " classical_dynamics run {wildcards.study:q} {input.schema:q} {input.scene:q}"
         " {output.results:q} {output.timings:q} {params.quick}"
         " --time-limit-min {resources.runtime} --memory-limit-mb {resources.mem_mb} > {log:q} 2>&1"

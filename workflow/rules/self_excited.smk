@@ -15,15 +15,19 @@ rule self_excited_gallery:
         results=directory("results/self_excited/gallery"),
         timings=directory("results/self_excited/timings/gallery"),
     params:
-        python=PY,
         quick=QUICK,
         code=code_digest(*SHARED_CODE, "studies/self_excited"),
+    threads: 1
+    resources:
+        **measured("self_excited_gallery"),
     log:
         "results/logs/self_excited/gallery.log",
     conda:
         "../envs/pipeline.yaml"
+    benchmark:
+        "results/benchmarks/self_excited_gallery.tsv"
     shell:
-        "{params.python:q} -m classical_dynamics.jobserver"
+        "python3 -m classical_dynamics.jobserver"
         " classical_dynamics.studies.self_excited.gallery results/self_excited"
         " {output.results:q} {output.timings:q} {input.scenes:q} {params.quick} > {log:q} 2>&1"
 

@@ -1,0 +1,95 @@
+"""Pin every package, with hashes, in two lock files: requirements/pipeline.lock (what `make report` and the cluster's
+jobs need: pyproject's dependencies and what the editable install builds with) and requirements/test.lock (only what
+the tests add: pyproject's `test` extra; it starts with `-r pipeline.lock`). Then write workflow/envs/pipeline.yaml,
+the conda environment of `snakemake --use-conda`, with the pipeline's pins (tests/test_locks.py checks they agree).
+
+    python tools/lock.py            # after changing dependencies in pyproject.toml (needs pip-tools)
+
+pip-compile keeps the versions already pinned unless a dependency asks otherwise; `--upgrade` moves them on.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+FOLDER = ROOT / "requirements"
+OPTIONS = ["--quiet", "--generate-hashes", "--allow-unsafe", "--strip-extras", "--no-emit-index-url",
+           "--no-emit-find-links", "--no-header"]
+HEADER = ("# {what}\n# Pinned with hashes for Python %d.%d by tools/lock.py (pip-compile); install with "
+          "pip install -r {name}\n" % sys.version_info[:2])
+
+
+def compile_(output: Path, *sources: str, extra: list[str] = (), upgrade: bool = False) -> None:
+    command = [sys.executable, "-m", "piptools", "compile", *OPTIONS, *extra, "-o", str(output), *sources]
+    subprocess.run(command + (["--upgrade"] if upgrade else []), cwd=ROOT, check=True)
+
+
+def blocks(text: str) -> dict[str, str]:
+    """{normalized name: its lines} of a pip-compile output (a pin, its hashes and its 'via' lines)."""
+    found, name = {}, None
+    for line in text.splitlines(keepends=True):
+        match = re.match(r"^([A-Za-z0-9][A-Za-z0-9._-]*)==", line)
+        if match:
+            name = re.sub(r"[-_.]+", "-", match.group(1)).lower()
+            found[name] = ""
+        if name and not line.startswith("#"):
+            found[name] += line
+    return found
+
+
+def write_conda_environment(pins: dict[str, str]) -> None:
+    """workflow/envs/pipeline.yaml: Python and WeasyPrint's system libraries and fonts from conda-forge, then the
+    lock's pins with pip (without hashes: pip's hash mode refuses the editable install of this package)."""
+    lines = [ENVIRONMENT] + [f"      - {block.split()[0]}\n" for block in pins.values()] + ["      - -e ../..\n"]
+    (ROOT / "workflow" / "envs" / "pipeline.yaml").write_text("".join(lines))
+
+
+ENVIRONMENT = """\
+# The software every rule runs with under `snakemake --use-conda`: Python and WeasyPrint's system libraries and
+# fonts from conda-forge, then the pins of requirements/pipeline.lock and this package. Written by tools/lock.py.
+channels:
+  - conda-forge
+dependencies:
+  - python=3.11
+  - pip
+  - pango
+  - fonts-conda-forge
+  - pip:
+"""
+
+
+def main() -> int:
+    upgrade = "--upgrade" in sys.argv[1:]
+    pipeline = FOLDER / "pipeline.lock"
+    with tempfile.TemporaryDirectory() as scratch:
+        draft = Path(scratch) / "pipeline.lock"
+        if pipeline.exists():
+            shutil.copy(pipeline, draft)                # pip-compile prefers the pins in its output file
+        compile_(draft, "pyproject.toml", "requirements/build.in", upgrade=upgrade)
+        pipeline.write_text(HEADER.format(what="What the pipeline runs with (make report, a cluster's jobs).",
+                                          name="requirements/pipeline.lock") + draft.read_text())
+        everything = Path(scratch) / "everything.lock"
+        shutil.copy(draft, everything)                  # the tests' packages agree with the pipeline's pins
+        compile_(everything, "pyproject.toml", "requirements/build.in", extra=["--extra", "test"])
+        shared = blocks(draft.read_text())
+        added = {name: lines for name, lines in blocks(everything.read_text()).items() if name not in shared}
+        moved = [name for name, lines in blocks(everything.read_text()).items()
+                 if name in shared and lines.split()[0] != shared[name].split()[0]]
+        if moved:
+            raise SystemExit(f"the test extra moves pipeline pins: {', '.join(moved)}")
+        (FOLDER / "test.lock").write_text(
+            HEADER.format(what="What the tests add to the pipeline's packages (make test).",
+                          name="requirements/test.lock") + "-r pipeline.lock\n\n" + "".join(added.values()))
+    write_conda_environment(shared)
+    print(f"{pipeline.relative_to(ROOT)}: {len(shared)} packages; requirements/test.lock: {len(added)} more")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
