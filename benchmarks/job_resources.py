@@ -75,6 +75,12 @@ def main(argv=None) -> int:
         print(f"{name:<44} {job['seconds']:>8.1f} {job['max_rss_mb']:>8.0f} {asked}")
     total = sum(job["seconds"] for job in jobs.values())
     print(f"{len(jobs)} jobs, {total:.0f} s in all")
+    served = [name for name, job in jobs.items() if job["max_rss_mb"] < 50]     # a client's, not its job's
+    if served:
+        print(f"{len(served)} jobs measured under 50 MB: run through the local job server, their memory is not "
+              "theirs; build again with --config jobserver=0", file=sys.stderr)
+        if args.write:
+            return 1
     if args.write:
         commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT, capture_output=True,
                                 text=True).stdout.strip()
