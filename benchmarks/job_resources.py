@@ -32,17 +32,20 @@ from classical_dynamics.limits import rule_resources  # noqa: E402
 RESOURCES = ROOT / "workflow" / "resources.yaml"
 
 
+def used(path: Path) -> dict:
+    """A job's seconds and peak resident memory (MB) from its Snakemake benchmark file."""
+    with path.open() as handle:
+        row = next(csv.DictReader(handle, delimiter="\t"))
+    rss = row["max_rss"]
+    return {"seconds": float(row["s"]), "max_rss_mb": float(rss) if rss not in ("", "NA", "-") else float("nan")}
+
+
 def measured(benchmarks: Path) -> dict[str, dict]:
     """{job: {"rule", "seconds", "max_rss_mb"}} from Snakemake's benchmark files under `benchmarks`."""
     jobs = {}
     for path in sorted(benchmarks.rglob("*.tsv")):
-        with path.open() as handle:
-            row = next(csv.DictReader(handle, delimiter="\t"))
         rel = path.relative_to(benchmarks).with_suffix("")
-        rss = row["max_rss"]
-        jobs[rel.as_posix()] = {"rule": "scene" if len(rel.parts) == 2 else rel.name,
-                                "seconds": float(row["s"]),
-                                "max_rss_mb": float(rss) if rss not in ("", "NA", "-") else float("nan")}
+        jobs[rel.as_posix()] = {"rule": "scene" if len(rel.parts) == 2 else rel.name, **used(path)}
     return jobs
 
 

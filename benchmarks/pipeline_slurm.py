@@ -11,7 +11,6 @@ job (sacct), which leaves out the wait for the first status check. About 12 minu
 
 from __future__ import annotations
 
-import csv
 import re
 import subprocess
 import sys
@@ -21,6 +20,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
+from benchmarks.job_resources import used  # noqa: E402
 from tests.conftest import copy_repository, snakemake  # noqa: E402
 
 SCENE = "chains/loaded_string"
@@ -34,8 +34,7 @@ def timed(repo: Path, *args) -> tuple[float, str]:
 
 
 def own_seconds(repo: Path) -> float:
-    with (repo / "results" / "benchmarks" / f"{SCENE}.tsv").open() as handle:
-        return float(next(csv.DictReader(handle, delimiter="\t"))["s"])
+    return used(repo / "results" / "benchmarks" / f"{SCENE}.tsv")["seconds"]
 
 
 def slurm_elapsed(job_id: str) -> float:

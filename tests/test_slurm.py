@@ -5,12 +5,12 @@ results, every job asks for at least what it used, and a job that fails on the c
 Run by `make test-slurm` (which starts the cluster; CI does), not by `make test`: `pytest -m slurm`.
 """
 
-import csv
 import re
 import subprocess
-from pathlib import Path
 
 import pytest
+
+from benchmarks.job_resources import used
 
 from .conftest import copy_repository, snakemake
 from .test_pipeline import result_files
@@ -43,13 +43,6 @@ def asked(dry_run: str) -> dict[str, dict]:
             asks[benchmark] = {"mem_mb": float(fields["mem_mb"]), "runtime": float(fields["runtime"])}
             benchmark = None
     return asks
-
-
-def used(tsv: Path) -> dict:
-    """A job's seconds and peak resident memory (MB) from its Snakemake benchmark file."""
-    with tsv.open() as handle:
-        row = next(csv.DictReader(handle, delimiter="\t"))
-    return {"seconds": float(row["s"]), "max_rss_mb": float(row["max_rss"])}
 
 
 def test_the_quick_build_on_slurm_is_the_local_one(cluster, built_repo, tmp_path):
