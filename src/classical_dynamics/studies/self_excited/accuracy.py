@@ -25,6 +25,7 @@ from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
 from ...formatting import format_number, power_of_ten, shortest
 from ..results import new_figure
+from .bounds import EXCURSION_PERIODS
 from .portrait import param_text
 
 SEPARATRIX_OFFSET = 1e-6
@@ -103,7 +104,6 @@ def limit_cycle(results, m1, nu, quick):
 
 def huge_excursion(results, M, start, quick):
     """start: middle_axis.excursion_start."""
-    from .middle_axis import EXCURSION_PERIODS
     w0, T, _, sizes = start
     scale = float(sizes.max())
 

@@ -17,11 +17,10 @@ from ...solvers.timing import min_time
 from ...formatting import format_number, shortest
 from ...figure_style import PAIR_WIDTH_IN, TEXT_WIDTH_IN
 from ..results import new_figure, plt
-from . import portrait
+from . import accuracy, portrait
+from .bounds import INVARIANT_BOUND, OVERLAY_BOUND
 
-OVERLAY_BOUND = 1e-8          # hard case: Euler's equations mapped into the plane against the plane system
 OVERLAY_P1_MAX = 100.0        # beyond it the samples (every 0.05 in tau) could not follow the phase of (q, r)
-INVARIANT_BOUND = 1e-8        # hard case: relative spread of E or C1 along the plane's trajectories
 CYLINDER_BOUND = 1e-10        # hard case: relative spread of q^2/b + r^2/c along Euler's equations
 BLOW_UP_BOUND = portrait.BLOW_UP_BOUND
 DEFAULT_AMPLITUDES = (0.4, 0.2, 0.1, 0.05)
@@ -150,7 +149,6 @@ def run(scene, results, quick):
         from . import motions
         motions.run(results, L, m1, points)
     if data.get("analysis", {}).get("accuracy_cost"):
-        from . import accuracy
         if nu == 0.0 and centers:
             accuracy.separatrix(results, m1, quick)
         if cycles:

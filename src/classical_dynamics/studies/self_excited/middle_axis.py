@@ -21,8 +21,8 @@ from ...formatting import format_number, shortest
 from ...figure_style import TEXT_WIDTH_IN
 from ...solvers.workprecision import legend_below
 from ..results import new_figure
-from . import portrait
-from .largest_axis import INVARIANT_BOUND, OVERLAY_BOUND
+from . import accuracy, portrait
+from .bounds import EXCURSION_PERIODS, INVARIANT_BOUND, OVERLAY_BOUND
 
 AMPLITUDES = (0.4, 0.2, 0.1, 0.05)
 COSH_AMPLITUDES = (0.2, 0.1, 0.05, 0.025)   # the cosh form's saddle loop is near: smaller amplitudes reach the η⁴ law
@@ -167,7 +167,6 @@ def run(scene, results, quick):
         _series(results, M, centers[0], nu)
     _middle_checks(results, M, overlay_starts, centers)
     if "excursion" in data:
-        from . import accuracy
         start = excursion_start(M, float(data["excursion"]["q0"]))
         _excursion(results, M, start)
         accuracy.huge_excursion(results, M, start, quick)
@@ -467,9 +466,6 @@ def _runaway(results, M):
         results.hard_case("force_free_limit", "No torque in a plane of the separating polhodes: $q_1$ tends to the "
                           "finite limit $\\pm\\sqrt{2E}$ ($|q_1 - \\text{limit}|$ at $\\tau = 60$)",
                           abs(float(sol.y_eval[-1, 1]) - limit), RUNAWAY_BOUND)
-
-
-EXCURSION_PERIODS = 10
 
 
 def turning_points(M, y0):
