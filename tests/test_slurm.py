@@ -78,3 +78,14 @@ def test_a_job_failing_on_slurm_is_reported_with_its_log(cluster, tmp_path):
     assert "past its memory limit of 10 MB" in (repo / "results/logs/chains/loaded_string.log").read_text()
     assert re.search(r"SLURM jobid \d+ \(log: \S+\.log\)", log)            # Slurm's own log of the job, named
     assert not (repo / scene).exists()
+
+
+def test_a_site_without_accounting_reads_job_states_from_squeue(cluster, built_repo, tmp_path):
+    """The README's setting for a cluster without accounting: job states from squeue (this cluster keeps a
+    finished job visible for MinJobAge = 300 s, at least three times the profile's first status check)."""
+    repo = copy_repository(tmp_path / "repo")
+    scene = "results/chains/loaded_string"
+    done = snakemake(repo, *PROFILE, scene, "--slurm-status-command", "squeue", "--config", "quick=1", timeout=900)
+    assert "submitted with SLURM jobid" in done.stdout + done.stderr
+    assert {k: v for k, v in result_files(repo).items() if k.startswith("chains/loaded_string/")} == {
+        k: v for k, v in result_files(built_repo).items() if k.startswith("chains/loaded_string/")} != {}

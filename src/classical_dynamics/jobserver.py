@@ -229,7 +229,7 @@ def _reap(jobs: dict) -> None:
         conn.close()
 
 
-_server: "subprocess.Popen | None" = None
+_server = None          # the server's subprocess.Popen while one runs (subprocess is imported only to start it)
 
 
 def put_interpreter_first_on_path() -> None:

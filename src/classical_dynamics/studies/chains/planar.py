@@ -4,7 +4,7 @@ equal atoms, the classical ozone molecule (lecture notes).
 Both assemble the same stiffness: a spring between beads i and j, along the unit vector e, of length l under
 tension T, adds k e e^T + (T/l)(1 - e e^T) (the stretched spring resists sideways motion by its tension).
 
-The ring: 
+The ring:
 The chain is n beads of mass m on a circle of radius a, joined by stiff springs k (inextensible as k grows),
 turning at omega with no external force. In the rotating frame the small motions obey
 M x'' + G x' + (K - omega^2 M) x = 0, G = 2 m omega J the Coriolis terms, K the springs' stiffness about the

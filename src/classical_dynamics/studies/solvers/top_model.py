@@ -102,7 +102,7 @@ class Top:
 
     def state(self, theta, theta_dot, phi_dot, omega3, phi=0.0, psi=0.0):
         """The body-frame state from Euler's angles and rates (spin omega_3 = psi' + phi' cos theta)."""
-        st, ct, sp, cp = np.sin(theta), np.cos(theta), np.sin(psi), np.cos(psi)
+        st, sp, cp = np.sin(theta), np.sin(psi), np.cos(psi)
         w = [phi_dot * st * sp + theta_dot * cp, phi_dot * st * cp - theta_dot * sp, omega3]
         R = rotation(phi, theta, psi)
         return np.array(w + list(R[2, :]) + list(R[0, :]))          # e_z and e_x in body components
