@@ -77,9 +77,9 @@ def main() -> int:
         everything = Path(scratch) / "everything.lock"
         shutil.copy(draft, everything)                  # the tests' packages agree with the pipeline's pins
         compile_(everything, "pyproject.toml", "requirements/build.in", extra=["--extra", "test"])
-        shared = blocks(draft.read_text())
-        added = {name: lines for name, lines in blocks(everything.read_text()).items() if name not in shared}
-        moved = [name for name, lines in blocks(everything.read_text()).items()
+        shared, together = blocks(draft.read_text()), blocks(everything.read_text())
+        added = {name: lines for name, lines in together.items() if name not in shared}
+        moved = [name for name, lines in together.items()
                  if name in shared and lines.split()[0] != shared[name].split()[0]]
         if moved:
             raise SystemExit(f"the test extra moves pipeline pins: {', '.join(moved)}")

@@ -107,7 +107,7 @@ LIGHT_SCENES = "light_scenes"
 MEASURED = yaml.safe_load(Path("workflow/resources.yaml").read_text())["rules"]
 
 
-def measured(rule):
+def measured_resources(rule):
     """mem_mb and runtime (minutes) over the measured peak of a job that is not a scene."""
     return rule_resources(MEASURED[rule])
 

@@ -14,7 +14,7 @@ rule dist:
         sums="results/dist/SHA256SUMS",
     threads: 1
     resources:
-        **measured("dist"),
+        **measured_resources("dist"),
     log:
         "results/logs/dist.log",
     conda:

@@ -17,7 +17,7 @@ rule results_archive:
         sums=RESULTS_ARCHIVE.removesuffix(".tar.gz") + ".SHA256SUMS",
     threads: 1
     resources:
-        **measured("results_archive"),
+        **measured_resources("results_archive"),
     log:
         "results/logs/results_archive.log",
     conda:
@@ -43,7 +43,7 @@ rule report_html:
         code=code_digest("report", "formatting.py", "units.py"),
     threads: 1
     resources:
-        **measured("report_html"),
+        **measured_resources("report_html"),
     log:
         "results/logs/report_html.log",
     conda:
@@ -62,7 +62,7 @@ rule report_pdf:
         "results/report.pdf",
     threads: 1
     resources:
-        **measured("report_pdf"),
+        **measured_resources("report_pdf"),
     log:
         "results/logs/report_pdf.log",
     conda:

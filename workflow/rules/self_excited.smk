@@ -19,7 +19,7 @@ rule self_excited_gallery:
         code=code_digest(*SHARED_CODE, "studies/self_excited"),
     threads: 1
     resources:
-        **measured("self_excited_gallery"),
+        **measured_resources("self_excited_gallery"),
     log:
         "results/logs/self_excited/gallery.log",
     conda:
