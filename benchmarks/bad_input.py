@@ -52,8 +52,7 @@ def main() -> int:
     args = parser.parse_args()
     budget, cases = Budget.from_file(ROOT / "workflow/config.yaml"), all_cases()
     for study in sorted({c.study for c in cases}):                        # warm imports and caches
-        validate(study, next((ROOT / "workflow/scenes" / study).glob("*.yaml")),
-                 ROOT / "workflow/schemas" / f"{study}.schema.yaml", budget)
+        validate(study, next((ROOT / "workflow/scenes" / study).glob("*.yaml")), budget)
     rows, tally = [], defaultdict(lambda: [0, 0, 0.0, 0.0, 0, 0.0])
     scratch = None
     if args.snakemake:
@@ -66,7 +65,7 @@ def main() -> int:
             reset_peak()
             start = time.perf_counter()
             try:
-                validate(case.study, path, ROOT / "workflow/schemas" / f"{case.study}.schema.yaml", budget)
+                validate(case.study, path, budget)
                 message = None
             except SceneError as error:
                 message = str(error)

@@ -74,7 +74,7 @@ WORK = """
 import sys, tempfile, time
 from pathlib import Path
 from classical_dynamics.studies import study_module, validate
-scene, module = validate("chains", sys.argv[1], sys.argv[2]), study_module("chains")
+scene, module = validate("chains", *sys.argv[1:]), study_module("chains")      # the baseline also takes a schema
 with tempfile.TemporaryDirectory() as tmp:
     for attempt in range(2):                        # the first imports and compiles what the work uses
         start = time.perf_counter()
@@ -89,7 +89,8 @@ def job_overhead(tree: Path) -> float:
     process that has already done it once: interpreter start, the imports it uses, validation, provenance
     (min of 3, the compiled-code cache filled)."""
     scene, schema = "workflow/scenes/chains/two_masses_three_springs.yaml", "workflow/schemas/chains.schema.yaml"
-    work = min(float(subprocess.run([sys.executable, "-c", WORK, scene, schema], cwd=tree, env=env_for(tree),
+    schema = [schema] if (tree / schema).exists() else []     # before the schemas moved into the package
+    work = min(float(subprocess.run([sys.executable, "-c", WORK, scene, *schema], cwd=tree, env=env_for(tree),
                                     check=True, capture_output=True, text=True).stdout) for _ in range(3))
     with tempfile.TemporaryDirectory() as tmp:
         command = [sys.executable, "-m", "classical_dynamics"]
@@ -101,7 +102,7 @@ def job_overhead(tree: Path) -> float:
             command = [sys.executable, "-m", "classical_dynamics.jobserver", "classical_dynamics"]
             os.environ["CLASSICAL_DYNAMICS_JOBSERVER"] = socket_path
         try:
-            walls = [timed(tree, *command, "run", "chains", schema, scene, f"{tmp}/r{i}", f"{tmp}/t{i}", "--quick")
+            walls = [timed(tree, *command, "run", "chains", *schema, scene, f"{tmp}/r{i}", f"{tmp}/t{i}", "--quick")
                      for i in range(4)]
         finally:
             os.environ.pop("CLASSICAL_DYNAMICS_JOBSERVER", None)

@@ -92,9 +92,9 @@ def slopes(dry: list[dict], built: list[dict]) -> dict:
 def draw(data: dict) -> bytes:
     from classical_dynamics import io
     from classical_dynamics.figure_style import FULL_WIDTH_IN
-    from classical_dynamics.studies.results import plt
+    from classical_dynamics.studies.results import subplots
 
-    fig, (left, right) = plt.subplots(1, 2, figsize=(FULL_WIDTH_IN, 2.6), layout="constrained")
+    fig, (left, right) = subplots(1, 2, figsize=(FULL_WIDTH_IN, 2.6))
     dry, built, fits = data["dry_runs"], data["builds"], data["slopes"]
     n = [r["scenes_added"] for r in dry]
     left.plot(n, [r["dry_run_s"] for r in dry], "o-",
@@ -111,9 +111,7 @@ def draw(data: dict) -> bytes:
     right.set(xlabel="scenes added to a quick build", ylabel="wall time (s)", ylim=(0, None),
               title="build and report")
     right.legend()
-    data_bytes = io.svg_bytes(fig)
-    plt.close(fig)
-    return data_bytes
+    return io.svg_bytes(fig)
 
 
 def main() -> None:

@@ -6,8 +6,10 @@ from pathlib import Path
 
 import pytest
 
+from classical_dynamics.studies import STUDIES
+
 ROOT = Path(__file__).resolve().parents[1]
-SCHEMA = ROOT / "workflow" / "schemas" / "chains.schema.yaml"
+SCHEMA = STUDIES["chains"].schema
 
 
 def copy_repository(target: Path) -> Path:
@@ -82,6 +84,6 @@ def assert_refused(tmp_path: Path, study: str, data: dict, field: str) -> None:
     path = tmp_path / "bad.yaml"
     path.write_text(yaml.safe_dump(data))
     with pytest.raises(SceneError) as err:
-        validate(study, path, ROOT / "workflow" / "schemas" / f"{study}.schema.yaml")
+        validate(study, path)
     message = str(err.value)
     assert field in message and "bad.yaml" in message and "\n" not in message

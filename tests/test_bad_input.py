@@ -11,7 +11,7 @@ import pytest
 
 from classical_dynamics.scenes import SceneError
 from classical_dynamics.scenes.cost import Budget
-from classical_dynamics.studies import validate
+from classical_dynamics.studies import STUDIES, validate
 
 from .bad_scenes import KINDS, ROOT, all_cases
 from .conftest import snakemake
@@ -25,7 +25,7 @@ def refuse(case, folder: Path) -> tuple[str, float]:
     path = case.write(folder)
     start = time.perf_counter()
     with pytest.raises(SceneError) as error:
-        validate(case.study, path, ROOT / "workflow/schemas" / f"{case.study}.schema.yaml", BUDGET)
+        validate(case.study, path, BUDGET)
     return str(error.value), time.perf_counter() - start
 
 
@@ -38,8 +38,7 @@ def test_the_suite_covers_every_study_and_kind():
 
 @pytest.mark.parametrize("case", CASES, ids=[c.id for c in CASES])
 def test_a_bad_scene_is_refused_in_one_line_naming_its_field(tmp_path, case):
-    validate(case.study, next((ROOT / "workflow/scenes" / case.study).glob("*.yaml")),
-             ROOT / "workflow/schemas" / f"{case.study}.schema.yaml", BUDGET)           # imports and caches warm
+    validate(case.study, next((ROOT / "workflow/scenes" / case.study).glob("*.yaml")), BUDGET)           # imports and caches warm
     message, seconds = refuse(case, tmp_path)
     assert "\n" not in message
     assert message.startswith(f"{tmp_path / case.name}: field '{case.field}"), message
@@ -104,7 +103,7 @@ def _unbounded(schema, where="") -> list[str]:
 def test_every_number_a_schema_takes_is_bounded(study):
     """Finite ranges on every float (and integer), a length on every list and text: 1e300 never reaches a model."""
     import yaml
-    schema = yaml.safe_load((ROOT / "workflow/schemas" / f"{study}.schema.yaml").read_text())
+    schema = yaml.safe_load((STUDIES[study].schema).read_text())
     assert _unbounded(schema) == []
 
 
@@ -112,6 +111,6 @@ def test_shipped_scenes_fit_the_default_budget():
     """Every shipped scene is costed, within the budget of workflow/config.yaml, with a positive estimate."""
     for study in ("precession", "chandler", "chains", "self_excited", "solvers"):
         for path in sorted((ROOT / "workflow/scenes" / study).glob("*.yaml")):
-            scene = validate(study, path, ROOT / "workflow/schemas" / f"{study}.schema.yaml", BUDGET)
+            scene = validate(study, path, BUDGET)
             assert 0 < scene.estimate.seconds <= BUDGET.seconds, path
             assert scene.estimate.memory_limit_mb <= BUDGET.memory_mb + 1000, path

@@ -11,9 +11,10 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
+from classical_dynamics.report import assets  # noqa: E402
 from classical_dynamics.report.bib import Citations, format_entry, read_bib  # noqa: E402
 
-BIB = ROOT / "report" / "references.bib"
+BIB = assets.BIBLIOGRAPHY
 ENTRIES = read_bib(BIB)
 
 
@@ -103,7 +104,7 @@ def test_citations_are_numbered_in_order_of_first_use():
     assert citations.cite(second) == 1
     assert citations.cite(third) == 3
     assert citations.order == [second, first, third]
-    with pytest.raises(KeyError, match="citation 'no_such_key' is not in report/references.bib"):
+    with pytest.raises(KeyError, match="citation 'no_such_key' is not in the report's references.bib"):
         citations.cite("no_such_key")
     assert citations.order == [second, first, third]
 

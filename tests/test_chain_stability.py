@@ -10,7 +10,6 @@ from classical_dynamics.scenes import SceneError
 from classical_dynamics.studies import validate
 from classical_dynamics.studies.chains import stability, symbolic
 
-from .conftest import SCHEMA
 
 
 class Recorder:
@@ -112,7 +111,7 @@ def test_bad_stability_scenes(tmp_path, data, field, expected):
     path = tmp_path / "scene.yaml"
     path.write_text(yaml.safe_dump(data))
     with pytest.raises(SceneError) as error:
-        validate("chains", path, SCHEMA)
+        validate("chains", path)
     assert str(error.value).startswith(f"{path}: field '{field}'") and expected in str(error.value)
 
 

@@ -11,13 +11,13 @@ from classical_dynamics.models import earth, wobble
 from classical_dynamics.scenes import SceneError
 from classical_dynamics.solvers import references as ref
 from classical_dynamics.solvers.ode import Problem, solve
-from classical_dynamics.studies import load_schema, validate
+from classical_dynamics.studies import STUDIES, load_schema, validate
 from classical_dynamics.studies.chandler import model as wobble_model
 from classical_dynamics.studies.chandler import polar_motion as pm
 
 from .conftest import ROOT
 
-SCHEMA = ROOT / "workflow" / "schemas" / "chandler.schema.yaml"
+SCHEMA = STUDIES["chandler"].schema
 YEAR = earth.JULIAN_YEAR_DAYS
 AMP = 0.1 * earth.ARCSEC              # a 0.1" wobble, 5e-7 rad
 
@@ -261,7 +261,7 @@ BAD = [
 def test_bad_scene_one_line(tmp_path, base, changes, field, expected):
     path = scene(tmp_path, base, **changes)
     with pytest.raises(SceneError) as error:
-        validate("chandler", path, SCHEMA)
+        validate("chandler", path)
     message = str(error.value)
     assert "\n" not in message and str(path) in message
     assert f"field '{field}'" in message and expected in message
@@ -270,7 +270,7 @@ def test_bad_scene_one_line(tmp_path, base, changes, field, expected):
 def test_cli_refuses_a_window_outside_the_series_and_creates_nothing(tmp_path):
     path = scene(tmp_path, OBS, observation__end_year=2100)
     out = tmp_path / "results" / "chandler" / "scene"
-    result = subprocess.run([sys.executable, "-m", "classical_dynamics", "run", "chandler", str(SCHEMA), str(path),
+    result = subprocess.run([sys.executable, "-m", "classical_dynamics", "run", "chandler", str(path),
                              str(out), str(tmp_path / "results" / "chandler" / "timings" / "scene")],
                             capture_output=True, text=True)
     assert result.returncode != 0 and result.stderr.strip().count("\n") == 0
@@ -280,7 +280,7 @@ def test_cli_refuses_a_window_outside_the_series_and_creates_nothing(tmp_path):
 
 def test_shipped_scenes_are_valid_and_registry_matches_schema():
     for path in sorted((ROOT / "workflow" / "scenes" / "chandler").glob("*.yaml")):
-        validate("chandler", path, SCHEMA)
+        validate("chandler", path)
     schema = load_schema(SCHEMA)
     assert sorted(schema["properties"]["effects"]["properties"]) == wobble.EFFECTS.names()
 
@@ -333,4 +333,4 @@ def test_retarding_scene_needs_oblate_and_prolate(tmp_path):
     path = tmp_path / "bad.yaml"
     path.write_text(yaml.safe_dump(scene, allow_unicode=True))
     with pytest.raises(SceneError):
-        validate("chandler", path, SCHEMA)
+        validate("chandler", path)

@@ -7,12 +7,11 @@ import matplotlib.pyplot as plt  # noqa: E402
 import pytest  # noqa: E402
 
 from classical_dynamics import io  # noqa: E402
-from classical_dynamics.report import claims  # noqa: E402
+from classical_dynamics.report import assets, claims  # noqa: E402
 from classical_dynamics.report.bib import read_bib  # noqa: E402
 from classical_dynamics.report.numbering import Numbering  # noqa: E402
 from classical_dynamics.formatting import format_number, shortest, sig_for_tolerance  # noqa: E402
 
-from .conftest import ROOT  # noqa: E402
 
 
 def test_atomic_write_leaves_nothing_half_written(tmp_path):
@@ -110,7 +109,7 @@ def test_numbering_resolves_forward_references():
 
 
 def test_bibliography_has_the_required_sources():
-    entries = read_bib(ROOT / "report" / "references.bib")
+    entries = read_bib(assets.BIBLIOGRAPHY)
     for key in ("lamb1920", "lee1964", "chandler1891", "bizouard2019", "capitaine2003", "bernoulli1738",
                 "rayleigh1877"):
         assert key in entries and entries[key].get("year")

@@ -48,7 +48,7 @@ def test_a_job_gets_the_same_streams_and_status_with_and_without_the_server(serv
     path, pid = server
     bad = tmp_path / "bad.yaml"
     bad.write_text("title: [unclosed\n")
-    args = ("classical_dynamics", "run", "chains", "workflow/schemas/chains.schema.yaml", str(bad),
+    args = ("classical_dynamics", "run", "chains", str(bad),
             str(tmp_path / "out"), str(tmp_path / "timings"))
     served, alone = through(path, *args), through(path, *args, env_server=False)
     assert served.returncode == alone.returncode == 2

@@ -10,7 +10,6 @@ from classical_dynamics.studies.chandler import lamb_free as lf
 
 from .conftest import ROOT
 
-SCHEMA = ROOT / "workflow" / "schemas" / "chandler.schema.yaml"
 I = np.array([1.0, 2.0, 2.5])
 
 
@@ -116,7 +115,7 @@ def _scene(tmp_path, **free):
 def test_bad_free_body_is_refused_in_one_line(tmp_path, change, field):
     path = _scene(tmp_path, **change)
     with pytest.raises(SceneError) as error:
-        validate("chandler", path, SCHEMA)
+        validate("chandler", path)
     assert field in str(error.value) and "\n" not in str(error.value)
 
 

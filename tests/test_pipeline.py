@@ -148,6 +148,109 @@ def test_a_new_scene_file_is_picked_up_with_no_rule_edit(scratch):
     assert "short_string" in (scratch / "results/report.html").read_text()
 
 
+# A study of its own, written as the README says: a study package (code, schema, chapter, claims), a scenes folder,
+# one line in the registry.
+PENDULUM = {
+    "__init__.py": '''"""A throwaway study: the small oscillations of a simple pendulum."""
+import math
+
+from ...scenes.cost import Work
+from ...scenes.effects import EffectRegistry
+from ..results import Results
+
+EFFECTS = EffectRegistry("pendulum")
+
+
+@EFFECTS.register("gravity", "force", "uniform gravity")
+def gravity(params, context):
+    return params["g_m_per_s2"]
+
+
+def check(path, data):
+    pass
+
+
+def cost(data):
+    return [Work("pendulum", 0.01)]
+
+
+def run(scene, quick):
+    g = EFFECTS.assemble(scene.data["effects"], None)["gravity"]
+    results = Results("pendulum", scene.name, scene.data["title"])
+    results.number("period_s", 2 * math.pi * math.sqrt(scene.data["pendulum"]["length_m"] / g), "s")
+    return results
+''',
+    "schema.yaml": """\
+$schema: "https://json-schema.org/draft/2020-12/schema"
+type: object
+additionalProperties: false
+required: [title, pendulum, effects]
+properties:
+  title: {type: string, minLength: 1, maxLength: 200}
+  pendulum:
+    type: object
+    additionalProperties: false
+    required: [length_m]
+    properties:
+      length_m: {type: number, minimum: 1.0e-3, maximum: 1.0e+3}
+  effects:
+    type: object
+    additionalProperties: false
+    required: [gravity]
+    properties:
+      gravity:
+        type: object
+        additionalProperties: false
+        required: [g_m_per_s2]
+        properties:
+          g_m_per_s2: {type: number, minimum: 0.1, maximum: 100}
+""",
+    "chapter.html.j2": """\
+<section id="pendulum" class="chapter">
+<h2>{{ study_title("pendulum") }}</h2>
+<p>A pendulum of one metre swings with a period of {{ num("pendulum/one_metre", "period_s") }}.</p>
+{{ m.claims_table("pendulum", "tab:pendulum-claims") }}
+</section>
+""",
+    "claims.yaml": """\
+- id: seconds_pendulum
+  statement: 'Period of a pendulum one metre long'
+  source: {value: 2.006, text: "2.006", cite: lamb1920, where: "a test"}
+  computed: {scene: one_metre, number: period_s}
+  unit: s
+  check: {absolute: 5.0e-4}
+  must_hold: true
+""",
+}
+
+
+def test_a_new_study_is_one_package_one_scenes_folder_and_one_registry_line(scratch):
+    package = scratch / "src/classical_dynamics/studies/pendulum"
+    package.mkdir()
+    for name, text in PENDULUM.items():
+        (package / name).write_text(text)
+    (scratch / "workflow/scenes/pendulum").mkdir()
+    (scratch / "workflow/scenes/pendulum/one_metre.yaml").write_text(
+        "title: One metre\npendulum: {length_m: 1.0}\neffects: {gravity: {g_m_per_s2: 9.81}}\n")
+    registry = scratch / "src/classical_dynamics/studies/registry.py"
+    text = registry.read_text()
+    line = '    Study("precession", "Precession of the equinoxes"),\n'
+    assert line in text
+    registry.write_text(text.replace(line, '    Study("pendulum", "The simple pendulum"),\n' + line))  # chapter 1
+
+    out = snakemake(scratch, "-n", "--config", "quick=1")
+    assert job_counts(out.stdout) == {"scene": 1, "results_archive": 1, "report_html": 1, "report_pdf": 1, "all": 1}
+    assert "results/pendulum/one_metre" in snakemake(scratch, "-n", "pendulum", "--config", "quick=1").stdout
+    snakemake(scratch, "-c", "2", "results/report.html", "--config", "quick=1")
+    summary = json.loads((scratch / "results/pendulum/one_metre/summary.json").read_text())
+    assert summary["numbers"]["period_s"]["value"] == pytest.approx(2 * 3.141592653589793 * (1 / 9.81) ** 0.5)
+    page = (scratch / "results/report.html").read_text()
+    chapters = [c for c in re.findall(r'<section id="([a-z_]+)" class="chapter"', page) if c != "introduction"]
+    assert chapters == ["pendulum", "precession", "chandler", "chains", "self_excited", "solvers"]
+    assert "The simple pendulum" in page and "Period of a pendulum one metre long" in page
+    assert "pendulum" in snakemake(scratch, "--list-rules").stdout.split()
+
+
 @pytest.mark.parametrize("text,field", [
     ("title: x\nchain: {model: particles, n: 3, length_m: -1, mass_kg: 1}\neffects: {gravity: {g_m_per_s2: 9.8}}\n",
      "chain.length_m"),
@@ -180,7 +283,7 @@ def test_a_bad_scene_stops_the_build_and_touches_nothing(scratch, text, field):
 
 
 def test_a_failing_must_hold_claim_fails_the_build_naming_it(scratch):
-    claims = scratch / "report/claims/chains.yaml"
+    claims = scratch / "src/classical_dynamics/studies/chains/claims.yaml"
     text = claims.read_text()
     block = re.search(r"- id: lamb_gravest_period\n.*?(?=\n- id:)", text, re.S).group(0)
     assert "check: {absolute: 5.0e-4}" in block
@@ -263,6 +366,29 @@ def test_a_checkout_path_with_a_space_runs(tmp_path):
     assert summary["numbers"]
 
 
+def test_the_workflow_runs_from_another_directory(tmp_path):
+    """snakemake -s <checkout>/workflow/Snakefile -d <elsewhere>: results/ and .snakemake/ are made there, everything
+    else is read beside the Snakefile and from the package; the checkout gets nothing."""
+    repo, elsewhere = copy_repository(tmp_path / "checkout"), tmp_path / "elsewhere"
+    (tmp_path / "cwd").mkdir()
+    command = [str(Path(sys.executable).parent / "snakemake"), "-s", str(repo / "workflow/Snakefile"),
+               "-d", str(elsewhere), "--config", "quick=1"]
+    scene = "results/chains/two_masses_three_springs"
+    done = subprocess.run(command + ["-c", "1", scene], cwd=tmp_path / "cwd", env=run_env(repo),
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+    provenance = json.loads((elsewhere / scene / "provenance.json").read_text())
+    assert (elsewhere / provenance["scene_file"]).resolve() == repo / "workflow/scenes/chains/two_masses_three_springs.yaml"
+    assert not (repo / "results").exists() and not (repo / ".snakemake").exists()
+    assert not any((tmp_path / "cwd").iterdir())
+    plan = subprocess.run(command + ["-n"], cwd=tmp_path / "cwd", env=run_env(repo), capture_output=True, text=True,
+                          timeout=300)
+    assert plan.returncode == 0, plan.stderr[-2000:]
+    counts = job_counts(plan.stdout)
+    assert counts["report_html"] == counts["report_pdf"] == 1
+    assert counts["scene"] == len(list((repo / "workflow/scenes").glob("*/*.yaml"))) - 1       # all but the one built
+
+
 def test_a_cut_short_result_is_refused_by_the_report_and_rerun_by_the_pipeline(scratch):
     """A truncated summary.json: the report names it in one line; a dry run lists that scene (and what follows
     from it) and nothing else; a kill's staging folder is read by nobody; the rerun restores the same bytes."""
@@ -275,7 +401,7 @@ def test_a_cut_short_result_is_refused_by_the_report_and_rerun_by_the_pipeline(s
     done = subprocess.run([sys.executable, "-m", "classical_dynamics", "report", "results", "/dev/null", "--quick"],
                           cwd=scratch, env=run_env(scratch), capture_output=True, text=True)
     assert done.returncode == 2 and "Traceback" not in done.stderr
-    assert done.stderr.strip() == (f"results/chains/loaded_string/summary.json: does not match its checksum in "
+    assert done.stderr.strip() == ("results/chains/loaded_string/summary.json: does not match its checksum in "
                                    "provenance.json (truncated or edited); rebuild the scene")
     out = snakemake(scratch, "-n", "--config", "quick=1")
     assert job_counts(out.stdout) == {"scene": 1, "results_archive": 1, "report_html": 1, "report_pdf": 1, "all": 1}

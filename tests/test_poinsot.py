@@ -13,7 +13,6 @@ from classical_dynamics.studies.precession import examples
 
 from .conftest import ROOT
 
-SCHEMA = ROOT / "workflow" / "schemas" / "chandler.schema.yaml"
 
 
 class Recorder:
@@ -104,7 +103,7 @@ def _scene(tmp_path, moments):
 def test_unphysical_poinsot_body_refused(tmp_path, moments, expected):
     path = _scene(tmp_path, moments)
     with pytest.raises(SceneError) as error:
-        validate("chandler", path, SCHEMA)
+        validate("chandler", path)
     assert "analysis.poinsot.moments" in str(error.value) and expected in str(error.value)
 
 

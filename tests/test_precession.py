@@ -12,7 +12,6 @@ from classical_dynamics.studies.precession import averaged, fitting, full, secul
 
 from .conftest import ROOT, assert_refused
 
-SCHEMA = ROOT / "workflow" / "schemas" / "precession.schema.yaml"
 YEAR = earth.JULIAN_YEAR_DAYS
 EPS0 = 84381.406 * earth.ARCSEC
 ALL = ("solar_torque", "lunar_torque", "orbit_eccentricity", "lunar_inclination", "node_regression")
@@ -63,12 +62,12 @@ def test_lamb_ratio_and_the_mass_convention():
 
 def test_inverse_problem_returns_lamb_ellipticity(tmp_path):
     from classical_dynamics.studies.results import Results
-    scene = validate("precession", ROOT / "workflow/scenes/precession/lamb_1920.yaml", SCHEMA)
+    scene = validate("precession", ROOT / "workflow/scenes/precession/lamb_1920.yaml")
     results = Results("precession", scene.name, scene.title)
     secular.run(scene, results)
     assert results.numbers["H_from_observed_rate"]["value"] == pytest.approx(0.00327, rel=0.005)
     # and with today's constants, from IAU 2006's psi_A: within 0.1 % of P03's H
-    scene = validate("precession", ROOT / "workflow/scenes/precession/secular_modern.yaml", SCHEMA)
+    scene = validate("precession", ROOT / "workflow/scenes/precession/secular_modern.yaml")
     results = Results("precession", scene.name, scene.title)
     secular.run(scene, results)
     assert results.numbers["H_from_observed_rate"]["value"] == pytest.approx(earth.H_P03, rel=1e-3)
@@ -372,9 +371,9 @@ def test_bad_scenes_name_the_field(tmp_path, change, field):
 def test_the_good_scene_and_every_shipped_scene_validate(tmp_path):
     path = tmp_path / "good.yaml"
     path.write_text(yaml.safe_dump(GOOD))
-    validate("precession", path, SCHEMA)
+    validate("precession", path)
     for scene in sorted((ROOT / "workflow/scenes/precession").glob("*.yaml")):
-        validate("precession", scene, SCHEMA)
+        validate("precession", scene)
 
 
 def test_lamb_examples_from_the_model():

@@ -13,13 +13,16 @@ from pathlib import Path
 import pytest
 import yaml
 
+from classical_dynamics.report import assets
 from classical_dynamics.report.citation import citation
 from classical_dynamics.report.claims import ClaimFailure, ClaimResult, require
 from classical_dynamics.report.navigation import add_navigation, number_sections
+from classical_dynamics.studies import STUDIES
 
 from .test_report_typesetting import CHROMIUM, FLAGS
 
 ROOT = Path(__file__).resolve().parents[1]
+CLAIMS = {study: assets.claims_file(study) for study in STUDIES}
 PAGE_BUDGET = 60                                  # A4 pages, issue 16
 
 
@@ -271,12 +274,12 @@ def _ledger(tmp_path, entry):
 def test_a_ledger_statement_must_map_to_one_thing_that_exists(tmp_path, entry, message):
     from classical_dynamics.report.ledger import LedgerError, read_ledger
     with pytest.raises(LedgerError, match=message):
-        read_ledger(_ledger(tmp_path, entry), ROOT / "report" / "claims")
+        read_ledger(_ledger(tmp_path, entry), CLAIMS)
 
 
 def test_the_ledgers_map_every_statement(tmp_path):
     from classical_dynamics.report.ledger import read_ledger
-    sources = read_ledger(ROOT / "report" / "ledger", ROOT / "report" / "claims")
+    sources = read_ledger(assets.LEDGER, CLAIMS)
     for source in sources:
         assert source.statements, source.key
         assert all(s.kind != "out_of_scope" or len(s.target) > 20 for s in source.statements)   # a real reason

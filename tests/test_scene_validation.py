@@ -74,7 +74,7 @@ BAD = [
 def test_bad_scene_gives_one_line_naming_file_and_field(tmp_path, case, data, field, expected):
     path = write(tmp_path, data)
     with pytest.raises(SceneError) as error:
-        validate("chains", path, SCHEMA)
+        validate("chains", path)
     message = str(error.value)
     assert "\n" not in message
     assert message.startswith(f"{path}: field '{field}'")
@@ -84,34 +84,34 @@ def test_bad_scene_gives_one_line_naming_file_and_field(tmp_path, case, data, fi
 def test_broken_yaml(tmp_path):
     path = write(tmp_path, "title: x\nchain: {model: particles, n: 3\n")
     with pytest.raises(SceneError) as error:
-        validate("chains", path, SCHEMA)
+        validate("chains", path)
     assert "\n" not in str(error.value) and "YAML at line" in str(error.value) and str(path) in str(error.value)
 
 
 def test_duplicate_key_is_refused(tmp_path):
     path = write(tmp_path, "title: a\ntitle: b\nchain: {model: continuum, length_m: 1}\neffects: {gravity: {g_m_per_s2: 9.8}}\n")
     with pytest.raises(SceneError, match="given twice"):
-        validate("chains", path, SCHEMA)
+        validate("chains", path)
 
 
 def test_yaml_tags_are_not_code(tmp_path):
     path = write(tmp_path, "title: !!python/object/apply:os.system ['echo hacked']\n")
     with pytest.raises(SceneError, match="valid YAML"):
-        validate("chains", path, SCHEMA)
+        validate("chains", path)
 
 
 @pytest.mark.parametrize("name", ["Bad-Name.yaml", "timings.yaml", "x.yml"])
 def test_scene_names_are_restricted(tmp_path, name):
     path = write(tmp_path, GOOD, name)
     with pytest.raises(SceneError, match="file name"):
-        validate("chains", path, SCHEMA)
+        validate("chains", path)
 
 
 def test_shipped_scenes_are_valid():
     scenes = sorted((ROOT / "workflow" / "scenes" / "chains").glob("*.yaml"))
     assert len(scenes) >= 8
     for path in scenes:
-        validate("chains", path, SCHEMA)
+        validate("chains", path)
 
 
 def test_schema_and_registry_name_the_same_effects():
@@ -122,7 +122,7 @@ def test_schema_and_registry_name_the_same_effects():
 def test_cli_run_refuses_a_bad_scene_and_creates_nothing(tmp_path):
     path = write(tmp_path, edited(chain__length_m=-1.0))
     out, timings = tmp_path / "results" / "chains" / "scene", tmp_path / "results" / "chains" / "timings" / "scene"
-    result = subprocess.run([sys.executable, "-m", "classical_dynamics", "run", "chains", str(SCHEMA), str(path),
+    result = subprocess.run([sys.executable, "-m", "classical_dynamics", "run", "chains", str(path),
                              str(out), str(timings)], capture_output=True, text=True)
     assert result.returncode != 0
     assert result.stderr.strip().count("\n") == 0
@@ -159,7 +159,7 @@ def test_hostile_scene_files_are_refused_quickly_in_one_line(tmp_path, case, tex
     path.write_bytes(text if isinstance(text, bytes) else text.encode())
     start = time.perf_counter()
     with pytest.raises(SceneError) as error:
-        validate("chains", path, SCHEMA)
+        validate("chains", path)
     assert time.perf_counter() - start < 2
     message = str(error.value)
     assert "\n" not in message and message.startswith(f"{path}: field '{field}")
@@ -177,7 +177,7 @@ def test_a_scene_that_is_not_a_regular_file_is_refused_without_reading_it(tmp_pa
     else:
         path.symlink_to("/dev/zero")        # reading it would never end
     with pytest.raises(SceneError, match=r"field '\(file\)': expected a regular file"):
-        validate("chains", path, SCHEMA)
+        validate("chains", path)
 
 
 def test_a_physical_check_that_overflows_is_one_line(tmp_path):
@@ -186,7 +186,7 @@ def test_a_physical_check_that_overflows_is_one_line(tmp_path):
     path = tmp_path / "scene.yaml"
     path.write_text(scene.replace("alpha: [0.8, 0.3]", "alpha: [1.0e+308, 1.0e+308]"))
     with pytest.raises(SceneError) as error:
-        validate("self_excited", path, ROOT / "workflow/schemas/self_excited.schema.yaml")
+        validate("self_excited", path)
     assert "\n" not in str(error.value) and str(error.value).startswith(f"{path}: field '")
 
 
@@ -208,9 +208,9 @@ def test_validation_is_remembered_until_scene_schema_or_code_change(tmp_path):
     a, b = write(scenes_dir, GOOD, "a.yaml"), write(scenes_dir, GOOD, "b.yaml")
     record, seen = tmp_path / "record.json", []
 
-    def counting(study, scene, schema_path, budget):
+    def counting(study, scene, budget):
         seen.append(Path(scene).name)
-        return validate(study, scene, schema_path, budget)
+        return validate(study, scene, budget)
 
     def run(budget=Budget()):
         seen.clear()
@@ -252,9 +252,34 @@ def test_a_bad_scene_stops_only_the_commands_that_need_it():
                                         ("--memory-limit-mb=120", "past its memory limit of 120 MB")])
 def test_a_job_past_its_limit_is_stopped_in_one_line_and_writes_nothing(tmp_path, limit, says):
     scene = ROOT / "workflow/scenes/chains/hanging_particles.yaml"
-    result = subprocess.run([sys.executable, "-m", "classical_dynamics", "run", "chains", str(SCHEMA), str(scene),
+    result = subprocess.run([sys.executable, "-m", "classical_dynamics", "run", "chains", str(scene),
                              str(tmp_path / "out"), str(tmp_path / "timings"), limit],
                             capture_output=True, text=True, timeout=120)
     assert result.returncode == 3
     assert result.stderr.count("\n") == 1 and says in result.stderr and result.stderr.startswith(str(scene))
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_fault_of_ours_under_limits_leaves_its_traceback_in_the_log(capfd):
+    """A job runs in a watched child (limits.run_limited): an exception there is a bug of ours, not a user's
+    mistake, and its traceback must reach the job's log (it once left an empty log and exit status 1)."""
+    from classical_dynamics.limits import run_limited
+
+    def faulty():
+        raise ZeroDivisionError("a bug of ours")
+    assert run_limited(faulty, "scene.yaml", 60.0, 4000.0) == 1
+    err = capfd.readouterr().err
+    assert "Traceback" in err and "ZeroDivisionError: a bug of ours" in err
+
+
+def test_a_job_validates_under_the_budget_its_run_gives(tmp_path):
+    """The scene rule passes the run's budget (workflow/config.yaml with any --config budget=...) to the job, which
+    validates again under it, not under the file's alone (a budget raised with --config once failed in the job)."""
+    scene = ROOT / "workflow/scenes/chains/hanging_particles.yaml"
+    base = [sys.executable, "-m", "classical_dynamics", "run", "chains", str(scene)]
+    tight = subprocess.run(base + [str(tmp_path / "a"), str(tmp_path / "ta"), "--quick", "--budget-seconds", "0.001"],
+                           capture_output=True, text=True, timeout=120)
+    assert tight.returncode == 2 and "budget.seconds" in tight.stderr and not (tmp_path / "a").exists()
+    done = subprocess.run(base + [str(tmp_path / "b"), str(tmp_path / "tb"), "--quick", "--budget-seconds", "7200"],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr

@@ -13,7 +13,6 @@ from classical_dynamics.studies.self_excited import largest_axis, portrait
 
 from .conftest import ROOT, assert_refused
 
-SCHEMA = ROOT / "workflow" / "schemas" / "self_excited.schema.yaml"
 BODY = se.Body.from_moments([3.0, 2.2, 1.2])
 
 
@@ -164,7 +163,7 @@ def test_bad_scenes_name_the_field(tmp_path, change, field):
 
 def test_every_shipped_scene_validates():
     for scene in sorted((ROOT / "workflow/scenes/self_excited").glob("*.yaml")):
-        validate("self_excited", scene, SCHEMA)
+        validate("self_excited", scene)
 
 
 def test_period_on_F_against_jacobis_form():

@@ -157,11 +157,10 @@ def test_the_torque_laws_differ_so_the_overlay_can_fail():
 
 
 def test_the_zoom_panel_draws_its_crossings_with_their_names():
-    from classical_dynamics.studies.results import plt
+    from classical_dynamics.studies.results import new_figure
     r = Numbers()
     lc.figure_2_12(r, 0.5, 0.1, zoom=True)
-    fig, ax = plt.subplots()
+    fig, ax = new_figure()
     portrait.draw(ax, r.tables["zoom"], "p1", small=True)
     assert sorted(t.get_text() for t in ax.texts) == ["$f_1$", "$f_2$", "$g_1$", "$g_2$"]
-    plt.close(fig)
     assert isinstance(r.tables["zoom"], pd.DataFrame)

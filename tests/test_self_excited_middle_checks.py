@@ -2,7 +2,6 @@
 deliberately wrong one."""
 
 import numpy as np
-import pytest
 import sympy as sp
 
 from classical_dynamics.models import self_excited as se

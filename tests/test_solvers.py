@@ -300,9 +300,8 @@ def test_heavy_top_scene_lists_gravity_and_is_a_real_body(tmp_path):
     from classical_dynamics.scenes import SceneError
     from classical_dynamics.studies import validate
     root = __import__("pathlib").Path(__file__).resolve().parents[1]
-    schema = root / "workflow" / "schemas" / "solvers.schema.yaml"
     shipped = root / "workflow" / "scenes" / "solvers" / "heavy_top.yaml"
-    validate("solvers", shipped, schema)
+    validate("solvers", shipped)
     good = yaml.safe_load(shipped.read_text())
     for change, field in ((lambda d: d.pop("effects"), "effects.gravity"),
                           (lambda d: d["top"].update(C=2.5), "top.C"),
@@ -312,7 +311,7 @@ def test_heavy_top_scene_lists_gravity_and_is_a_real_body(tmp_path):
         path = tmp_path / "heavy_top.yaml"
         path.write_text(yaml.safe_dump(data))
         with pytest.raises(SceneError, match=field.replace(".", r"\.")):
-            validate("solvers", path, schema)
+            validate("solvers", path)
 
 
 def test_moments_of_inertia_by_quadrature():

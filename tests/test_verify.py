@@ -46,7 +46,7 @@ def built(tmp_path_factory):
     base = tmp_path_factory.mktemp("verify")
     results = base / "results"
     for scene in SCENES:
-        done = cli("run", "chains", ROOT / "workflow/schemas/chains.schema.yaml",
+        done = cli("run", "chains",
                    ROOT / f"workflow/scenes/chains/{scene}.yaml", results / "chains" / scene,
                    results / "chains/timings" / scene, "--quick", cwd=ROOT)
         assert done.returncode == 0, done.stderr

@@ -1,7 +1,7 @@
 """Command-line entry points the Snakemake rules call.
 
-  python -m classical_dynamics validate STUDY SCHEMA SCENE...
-  python -m classical_dynamics run STUDY SCHEMA SCENE OUT_DIR TIMINGS_DIR [--quick]
+  python -m classical_dynamics validate STUDY SCENE...
+  python -m classical_dynamics run STUDY SCENE OUT_DIR TIMINGS_DIR [--quick]
   python -m classical_dynamics report RESULTS_DIR HTML PDF [--quick]
   python -m classical_dynamics dist RESULTS_DIR ARCHIVE
   python -m classical_dynamics verify ARCHIVE [--scenes STUDY/SCENE,...] [--root .] [--cores N]
@@ -31,10 +31,19 @@ def _now() -> str:
     return datetime.now(timezone.utc).isoformat(timespec="seconds")
 
 
+def _budget(args):
+    """The budget the command line gives (a Snakemake job passes its run's), else workflow/config.yaml's."""
+    from .scenes.cost import Budget
+    if args.budget_seconds is None and args.budget_memory_mb is None:
+        return Budget.from_file()
+    return Budget.from_config({key: value for key, value in (("seconds", args.budget_seconds),
+                                                            ("memory_mb", args.budget_memory_mb)) if value is not None})
+
+
 def cmd_validate(args) -> int:
     from .studies import validate
     for scene in args.scenes:
-        validate(args.study, scene, args.schema)
+        validate(args.study, scene, _budget(args))
     return 0
 
 
@@ -52,7 +61,7 @@ def _run(args) -> int:
     from . import provenance
     from .studies import study_module, validate
 
-    scene = validate(args.study, args.scene, args.schema)     # nothing is computed before this passes
+    scene = validate(args.study, args.scene, _budget(args))     # nothing is computed before this passes
     module = study_module(args.study)
     started, wall0, cpu0 = _now(), time.perf_counter(), time.process_time()
     results = module.run(scene, quick=args.quick)
@@ -106,18 +115,18 @@ def main(argv=None) -> int:
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("validate", help="validate scene files; one line per problem")
     p.add_argument("study")
-    p.add_argument("schema")
     p.add_argument("scenes", nargs="+")
+    _budget_arguments(p)
     p.set_defaults(func=cmd_validate)
     p = sub.add_parser("run", help="run one scene")
     p.add_argument("study")
-    p.add_argument("schema")
     p.add_argument("scene")
     p.add_argument("out_dir")
     p.add_argument("timings_dir")
     p.add_argument("--quick", action="store_true")
     p.add_argument("--time-limit-min", type=float, help="stop the job past this wall time, minutes")
     p.add_argument("--memory-limit-mb", type=float, help="stop the job past this resident memory")
+    _budget_arguments(p)
     p.set_defaults(func=cmd_run)
     p = sub.add_parser("report", help="render the HTML and PDF report from results/")
     p.add_argument("results")
@@ -147,6 +156,11 @@ def main(argv=None) -> int:
     p.set_defaults(func=cmd_diff)
     args = parser.parse_args(argv)
     return _guarded(args.func, args)
+
+
+def _budget_arguments(parser) -> None:
+    parser.add_argument("--budget-seconds", type=float, help="the most a scene may cost (default: workflow/config.yaml)")
+    parser.add_argument("--budget-memory-mb", type=float)
 
 
 def _guarded(func, args) -> int:

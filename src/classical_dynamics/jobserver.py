@@ -91,7 +91,7 @@ def client(argv: list[str]) -> int:
 # What the jobs import: loaded once here, shared by every child (copy-on-write). Every module of the packages
 # below (sympy for the closed forms among them), and the report's HTML. Not WeasyPrint: one job, the PDF, uses it.
 WARM = ("classical_dynamics.cli", "numpy", "scipy.integrate", "scipy.special", "scipy.linalg", "scipy.optimize",
-        "matplotlib", "matplotlib.pyplot", "jsonschema", "yaml", "sympy", "classical_dynamics.report.build")
+        "matplotlib", "matplotlib.figure", "matplotlib.backends.backend_svg", "jsonschema", "yaml", "sympy", "classical_dynamics.report.build")
 WARM_PACKAGES = ("classical_dynamics.solvers", "classical_dynamics.models", "classical_dynamics.scenes",
                  "classical_dynamics.studies")
 

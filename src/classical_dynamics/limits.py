@@ -14,6 +14,7 @@ import select
 import signal
 import sys
 import time
+import traceback
 from typing import Callable
 
 POLL_S = 0.1
@@ -46,6 +47,8 @@ def run_limited(work: Callable[[], int], what: str, time_limit_s: float, memory_
             status = work()
         except SystemExit as exit_:
             status = exit_.code if isinstance(exit_.code, int) else 1
+        except BaseException:                           # a fault of ours: its traceback in the job's log
+            traceback.print_exc()
         finally:
             sys.stdout.flush()
             sys.stderr.flush()

@@ -298,8 +298,7 @@ def run_scene(root: Path, study: str, scene: str, quick: bool, out: Path) -> str
         return f"no scene file {scene_file.relative_to(root)} in the checkout"
     env = dict(os.environ)
     env["PYTHONPATH"] = str(root / "src") + os.pathsep + env.get("PYTHONPATH", "")
-    command = [sys.executable, "-m", "classical_dynamics", "run", study,
-               str(root / "workflow" / "schemas" / f"{study}.schema.yaml"), str(scene_file),
+    command = [sys.executable, "-m", "classical_dynamics", "run", study, str(scene_file),
                str(out / study / scene), str(out / "timings" / study / scene)] + (["--quick"] if quick else [])
     done = subprocess.run(command, cwd=root, env=env, capture_output=True, text=True)
     if done.returncode != 0:

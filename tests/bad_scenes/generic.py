@@ -5,9 +5,9 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from . import ROOT, BadScene
+from classical_dynamics.studies.registry import STUDIES
 
-STUDIES = ("precession", "chandler", "chains", "self_excited", "solvers")
+from . import ROOT, BadScene
 
 # Nine levels of nine-fold aliases: 9^9 items once expanded (refused at the first alias).
 BOMB = ("a: &a [x, x, x, x, x, x, x, x, x]\n" + "".join(

@@ -1,6 +1,9 @@
-# Shared by every study: the list of studies, scene discovery, and validation of every scene
-# before anything runs. (Rules live in their own files: Snakemake's linter wants them apart.)
+# Shared by every study: scene discovery, and validation of every scene before anything runs. The studies are
+# those of classical_dynamics/studies/registry.py. (Rules live in their own files: Snakemake's linter wants them
+# apart.) Paths: WORKFLOW (this folder) and ROOT (the checkout) are set in the Snakefile; results/ and .snakemake/
+# are in the working directory.
 
+import os
 import sys
 from pathlib import Path
 
@@ -25,13 +28,32 @@ QUICK = "--quick" if int(config.get("quick", 0)) else ""
 VALIDATED = Path(".snakemake/validated-scenes.json")
 
 
+SCENES = WORKFLOW / "scenes"
+
+
+def here(path):
+    """A file of the package (a schema, a template) as a path from the working directory, as Snakemake records
+    inputs: a checkout moved or copied elsewhere does not look changed."""
+    return os.path.relpath(path)
+
+
 def scenes(study):
     """Every scene file of a study: dropping a YAML file in workflow/scenes/<study>/ adds it."""
-    return sorted(p.stem for p in Path("workflow/scenes", study).glob("*.yaml") if not is_leftover(p))
+    return sorted(p.stem for p in (SCENES / study).glob("*.yaml") if not is_leftover(p))
 
 
 def scene_outputs(study):
     return expand("results/{study}/{scene}", study=study, scene=scenes(study))
+
+
+# Steps of a study drawn from its scenes' results (the self-excited gallery): {study: [output folder, ...]}, part
+# of the study's target and of the report's inputs.
+STUDY_STEPS = {}
+
+
+def every_result():
+    """Every scene of every study, and the steps drawn from them: what the report and the archives read."""
+    return [out for study in STUDIES for out in scene_outputs(study) + STUDY_STEPS.get(study, [])]
 
 
 def result_state(wc):
@@ -79,8 +101,8 @@ try:
     BUDGET = Budget.from_config(config.get("budget"))
     if _runs:
         ESTIMATES, _unneeded = validate_all(
-            [(_study, _scene, Path(f"workflow/schemas/{_study}.schema.yaml"))
-             for _study in STUDIES for _scene in sorted(Path("workflow/scenes", _study).glob("*"))
+            [(_study, _scene, STUDIES[_study].schema)
+             for _study in STUDIES for _scene in sorted((SCENES / _study).glob("*"))
              if not is_leftover(_scene)],     # an editor's swap or backup file
             validate, VALIDATED, BUDGET, optional=lambda study, scene: not _needed(study, scene.stem))
         for _error in _unneeded:
@@ -93,9 +115,13 @@ except Exception as _error:        # a fault of ours, not the user's; still one 
     sys.exit(1)
 
 
+# A job validates its scene again (as a hand-typed command would) under this run's budget, --config included
+BUDGET_ARGS = f"--budget-seconds {BUDGET.seconds!r} --budget-memory-mb {BUDGET.memory_mb!r}"
+
+
 def limits(wc):
     """The job's Estimate (scenes/cost.py), from which its time and memory limits follow."""
-    return ESTIMATES[Path("workflow/scenes", wc.study, f"{wc.scene}.yaml").as_posix()]
+    return ESTIMATES[(SCENES / wc.study / f"{wc.scene}.yaml").as_posix()]
 
 
 # A scene estimated under this many seconds is light: on a cluster, light scenes run in batches (a group; the
@@ -104,7 +130,7 @@ LIGHT_SCENE_S = 30
 LIGHT_SCENES = "light_scenes"
 
 # The jobs that are not scenes ask for memory and time from their measured peaks, with room to spare.
-MEASURED = yaml.safe_load(Path("workflow/resources.yaml").read_text())["rules"]
+MEASURED = yaml.safe_load((WORKFLOW / "resources.yaml").read_text())["rules"]
 
 
 def measured_resources(rule):

@@ -8,7 +8,7 @@ rule dist:
     input:
         rules.report_html.output,
         rules.report_pdf.output,
-        [out for study in STUDIES for out in scene_outputs(study)],
+        every_result(),
     output:
         archive=ARCHIVE,
         sums="results/dist/SHA256SUMS",
@@ -35,6 +35,7 @@ rule verify:
     no output; nothing is written but the log). Another archive: --config archive=PATH."""
     params:
         archive=config.get("archive", ARCHIVE),
+        root=ROOT,
     threads: workflow.cores
     # It reruns every scene of the archive, `threads` at a time, here and never as a cluster job.
     resources:
@@ -45,4 +46,4 @@ rule verify:
     conda:
         "../envs/pipeline.yaml"
     shell:
-        "python3 -m classical_dynamics verify {params.archive:q} --cores {threads} 2>&1 | tee {log:q}"
+        "python3 -m classical_dynamics verify {params.archive:q} --root {params.root:q} --cores {threads} 2>&1 | tee {log:q}"

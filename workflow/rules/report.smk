@@ -2,7 +2,9 @@
 
 import tomllib
 
-with open("pyproject.toml", "rb") as _handle:
+from classical_dynamics.report import assets as report_assets
+
+with open(ROOT / "pyproject.toml", "rb") as _handle:
     _project = tomllib.load(_handle)["project"]
 # Every result but the report, archived before the report so that the report can print its SHA-256.
 RESULTS_ARCHIVE = f"results/dist/{_project['name']}-{_project['version']}-results.tar.gz"
@@ -10,8 +12,7 @@ RESULTS_ARCHIVE = f"results/dist/{_project['name']}-{_project['version']}-result
 
 rule results_archive:
     input:
-        [out for study in STUDIES for out in scene_outputs(study)],
-        rules.self_excited_gallery.output.results,
+        every_result(),
     output:
         archive=RESULTS_ARCHIVE,
         sums=RESULTS_ARCHIVE.removesuffix(".tar.gz") + ".SHA256SUMS",
@@ -31,16 +32,16 @@ rule results_archive:
 
 rule report_html:
     input:
-        results=[out for study in STUDIES for out in scene_outputs(study)],
-        gallery=rules.self_excited_gallery.output.results,
+        results=every_result(),
         archive=RESULTS_ARCHIVE,
-        templates=sorted(str(p) for p in Path("report").rglob("*") if p.is_file()),
-        measured=sorted(str(p) for p in Path("benchmarks/results").glob("*") if p.is_file()),     # its appendix
+        templates=[here(path) for path in report_assets.asset_files()],
+        measured=sorted(str(p) for p in (ROOT / "benchmarks/results").glob("*") if p.is_file()),     # its appendix
     output:
         "results/report.html",
     params:
         quick=QUICK,
-        code=code_digest("report", "formatting.py", "units.py"),
+        root=ROOT,
+        code=code_digest("report", "formatting.py", "units.py", "studies/registry.py"),
     threads: 1
     resources:
         **measured_resources("report_html"),
@@ -52,7 +53,7 @@ rule report_html:
         "results/benchmarks/report_html.tsv"
     shell:
         "python3 -m classical_dynamics.jobserver"
-        " classical_dynamics report results {output:q} {params.quick} 2>&1 | tee {log:q}"
+        " classical_dynamics report results {output:q} --root {params.root:q} {params.quick} 2>&1 | tee {log:q}"
 
 
 rule report_pdf:

@@ -9,13 +9,14 @@ wildcard_constraints:
 rule scene:
     """Run one scene of one study: results/<study>/<scene>/ and its timings."""
     input:
-        scene="workflow/scenes/{study}/{scene}.yaml",
-        schema="workflow/schemas/{study}.schema.yaml",
+        scene=f"{SCENES}/{{study}}/{{scene}}.yaml",
+        schema=lambda wc: here(STUDIES[wc.study].schema),
     output:
         results=directory("results/{study}/{scene}"),
         timings=directory("results/{study}/timings/{scene}"),
     params:
         quick=QUICK,
+        budget=BUDGET_ARGS,
         result=result_state,
         code=lambda wc: code_digest(*SHARED_CODE, f"studies/{wc.study}"),
     # Longest first (by the scene's cost estimate), so the heaviest scene does not start last and run alone.
@@ -35,6 +36,6 @@ rule scene:
         "results/benchmarks/{study}/{scene}.tsv"
     shell:
         "python3 -m classical_dynamics.jobserver"
-        " classical_dynamics run {wildcards.study:q} {input.schema:q} {input.scene:q}"
-        " {output.results:q} {output.timings:q} {params.quick}"
+        " classical_dynamics run {wildcards.study:q} {input.scene:q}"
+        " {output.results:q} {output.timings:q} {params.quick} {params.budget}"
         " --time-limit-min {resources.runtime} --memory-limit-mb {resources.mem_mb} > {log:q} 2>&1"

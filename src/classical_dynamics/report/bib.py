@@ -1,4 +1,4 @@
-"""The report's bibliography: report/references.bib read with pybtex, each entry typeset as an HTML fragment,
+"""The report's bibliography: report/references.bib (in this package) read with pybtex, each entry typeset as an HTML fragment,
 and numbered citations in order of first use.
 
 pybtex parses the file (entries, @string macros, names split into first/von/last/jr parts). Field values keep
@@ -297,7 +297,7 @@ class Citations:
 
     def cite(self, key: str) -> int:
         if key not in self.entries:
-            raise KeyError(f"citation {key!r} is not in report/references.bib")
+            raise KeyError(f"citation {key!r} is not in the report's references.bib")
         if key not in self.order:
             self.order.append(key)
         return self.order.index(key) + 1

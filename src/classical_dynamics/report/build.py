@@ -24,6 +24,7 @@ from ..formatting import format_column, format_number, shortest, sig_for_toleran
 from ..provenance import git_state, machine, package_versions, sha256_file
 from ..studies import STUDIES
 from ..units import UnknownUnit, unit_text
+from . import assets
 from . import claims as claims_mod
 from .bib import Citations, format_entry, read_bib
 from .citation import citation, commit_date
@@ -33,9 +34,6 @@ from .ledger import read_ledger, require_figures
 from .math import latex_data_uri
 from .navigation import add_navigation
 from .numbering import NAMES, Numbering
-
-STUDY_ORDER = ["precession", "chandler", "chains", "self_excited", "solvers"]
-
 
 class ResultsIndex:
     """Everything under results/: summaries, provenance, timing tables."""
@@ -50,7 +48,7 @@ class ResultsIndex:
 
     def studies(self):
         present = {study for study, _ in self.summaries}
-        return [s for s in STUDY_ORDER if s in present]
+        return [s for s in STUDIES if s in present]       # in the registry's order
 
     def scenes(self, study):
         """A study's scenes. A step drawn from other scenes' results (its provenance lists them as input_scenes, as
@@ -135,12 +133,12 @@ class Report:
     def __init__(self, index: ResultsIndex, root: Path, quick: bool):
         self.index, self.root, self.quick = index, Path(root), quick
         self.numbering = Numbering()
-        self.citations = Citations(read_bib(self.root / "report" / "references.bib"))
+        self.citations = Citations(read_bib(assets.BIBLIOGRAPHY))
         self.claim_results = {}
-        self.ledger = read_ledger(self.root / "report" / "ledger", self.root / "report" / "claims")
+        self.ledger = read_ledger(assets.LEDGER, {study: assets.claims_file(study) for study in STUDIES})
         self._count, self.cited = 0, {}          # numbers shown so far; per scene, where each is first cited
         self.env = jinja2.Environment(
-            loader=jinja2.FileSystemLoader(str(self.root / "report")),
+            loader=jinja2.FileSystemLoader(assets.template_folders()),
             autoescape=jinja2.select_autoescape(["html", "j2"]),
             undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True, extensions=[InlineMath])
         self.env.filters["fmt"] = lambda v, sig=4: format_number(v, sig)
@@ -150,7 +148,9 @@ class Report:
             benchmark_fig=self.benchmark_fig, claims=self.claims, stability=self.stability, scenes=self.scenes_table,
             summary=self.index.summary, rebuild=self.rebuild, study_scenes=self.index.scenes,
             all_claims=self.all_claims, claim=self.claim, provenance_json=self.provenance_json, ledger=self.ledger,
-            cited=lambda study, scene: self.cited.get((study, scene), {}))
+            cited=lambda study, scene: self.cited.get((study, scene), {}),
+            study_title=lambda study: STUDIES[study].title, every_study=list(STUDIES),
+            chapter_template=assets.chapter_template, ledger_folder=assets.LEDGER_SHOWN)
 
     # --- numbers ---------------------------------------------------------------------------
     def _number_link(self, study, scene, name, value, text, unit_key=None):
@@ -326,7 +326,7 @@ class Report:
 
     def claims(self, study):
         if study not in self.claim_results:
-            path = self.root / "report" / "claims" / f"{study}.yaml"
+            path = assets.claims_file(study)
             self.claim_results[study] = claims_mod.evaluate(study, path, self.index.entry) if path.exists() else []
         return self.claim_results[study]
 
@@ -369,11 +369,11 @@ class Report:
         # The report's date: its commit's, so a rebuild does not change it; outside git, its newest result's.
         date = commit_date(self.root) or max((p.get("finished", "") for p in self.index.provenance.values()),
                                              default="")
-        css = {name: (self.root / "report" / f"{name}.css").read_text(encoding="utf-8")
+        css = {name: (assets.TEMPLATES / f"{name}.css").read_text(encoding="utf-8")
                for name in ("report", "screen", "print")}
         return {
             "studies": studies, "quick": self.quick, "css": css,
-            "script": (self.root / "report" / "report.js").read_text(encoding="utf-8"),
+            "script": (assets.TEMPLATES / "report.js").read_text(encoding="utf-8"),
             "git": git, "packages": package_versions(), "machine": machine(),
             "results_archive": archive,
             "cite_this": citation(self.root, git["commit"], bool(git["dirty"]), archive and archive["sha256"], date),
@@ -403,7 +403,7 @@ class Report:
         if self.numbering.missing:
             raise ValueError("unresolved cross-references: " + ", ".join(sorted(self.numbering.missing)))
         claims_mod.require([r for rs in self.claim_results.values() for r in rs])
-        if set(self.index.studies()) == set(STUDY_ORDER):        # a partial build lacks some figures
+        if set(self.index.studies()) == set(STUDIES):        # a partial build lacks some figures
             require_figures(self.ledger, set(self.numbering.numbers))
         return break_points(add_navigation(text))
 

@@ -1,6 +1,6 @@
 """Claims: statements of the source texts checked against computed numbers, declared as data.
 
-report/claims/<study>.yaml lists claims. Each names the source's value and where it stands,
+studies/<study>/claims.yaml lists a study's claims. Each names the source's value and where it stands,
 the computed number (scene and name in that scene's summary.json), an optional modern value,
 and a check: {absolute: tol}, {relative: tol} or {factor: f} (within a factor f) against the source
 value, or {at_most: x} / {at_least: x} / {equals: x} on the computed value. A failing claim with must_hold: true fails the build.

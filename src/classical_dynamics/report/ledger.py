@@ -1,6 +1,6 @@
 """The source ledger: every quantitative statement of a source, and what in the report checks it.
 
-report/ledger/<source>.yaml lists a source's statements (where, what it states, its value as printed). Each
+report/ledger/<source>.yaml (in this package) lists a source's statements (where, what it states, its value as printed). Each
 maps to exactly one of: a claim (claim: <study>/<claim id>), a figure (figure: <label>), a reason it is out of
 scope (out_of_scope: why), or, until the report checks it, missing: what would. A statement that maps to
 nothing, to two things, or to a claim or figure that does not exist stops the build.
@@ -53,18 +53,19 @@ class Source:
         return self.count("claim") + self.count("figure")
 
 
-def claim_ids(claims_dir: Path) -> set[str]:
-    """study/id of every claim declared in report/claims/<study>.yaml."""
+def claim_ids(claims_files: dict[str, Path]) -> set[str]:
+    """study/id of every claim declared in the studies' claims files ({study: its claims.yaml})."""
     ids = set()
-    for path in sorted(Path(claims_dir).glob("*.yaml")):
-        for claim in yaml.safe_load(path.read_text(encoding="utf-8")) or []:
-            ids.add(f"{path.stem}/{claim['id']}")
+    for study, path in claims_files.items():
+        if Path(path).is_file():
+            for claim in yaml.safe_load(Path(path).read_text(encoding="utf-8")) or []:
+                ids.add(f"{study}/{claim['id']}")
     return ids
 
 
-def read_ledger(ledger_dir: Path, claims_dir: Path) -> list[Source]:
+def read_ledger(ledger_dir: Path, claims_files: dict[str, Path]) -> list[Source]:
     """Every source's ledger, checked: each statement maps to exactly one existing thing."""
-    known_claims = claim_ids(claims_dir)
+    known_claims = claim_ids(claims_files)
     sources = []
     for path in sorted(Path(ledger_dir).glob("*.yaml")):
         data = yaml.safe_load(path.read_text(encoding="utf-8")) or {}
@@ -82,7 +83,7 @@ def read_ledger(ledger_dir: Path, claims_dir: Path) -> list[Source]:
                                   f"{', '.join(kinds) or 'nothing'}")
             kind, target = kinds[0], str(entry[kinds[0]])
             if kind == "claim" and target not in known_claims:
-                raise LedgerError(f"{where} maps to claim '{target}', which report/claims/ does not declare")
+                raise LedgerError(f"{where} maps to claim '{target}', which no study's claims.yaml declares")
             statements.append(Statement(source=key, id=sid, where=str(entry.get("where", "")),
                                         states=str(entry.get("states", "")), printed=str(entry.get("printed", "")),
                                         kind=kind, target=target))

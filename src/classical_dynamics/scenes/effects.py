@@ -2,7 +2,7 @@
 
 A model is assembled from the effects a scene lists, and from those alone: an effect
 that is not listed is never called (not multiplied by zero). Each study owns one registry;
-parameter schemas live with the study's scene schema in workflow/schemas/.
+parameter schemas live in the study's scene schema (classical_dynamics/studies/<study>/schema.yaml).
 """
 
 from __future__ import annotations

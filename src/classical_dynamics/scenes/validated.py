@@ -21,8 +21,8 @@ from .loader import SceneError, read_bytes
 def validate_all(scenes: Iterable[tuple[str, Path, Path]], validate: Callable, record: Path,
                  budget: Budget, optional: Callable[[str, Path], bool] = lambda study, scene: False
                  ) -> tuple[dict[str, Estimate], list[SceneError]]:
-    """({scene file: Estimate}, errors) after validate(study, scene, schema, budget) for every scene not recorded
-    as valid with its present bytes. The first SceneError of a scene not optional(study, scene) propagates (the
+    """({scene file: Estimate}, errors) after validate(study, scene, budget) for every (study, scene, the study's
+    schema file) not recorded as valid with its present bytes and schema. The first SceneError of a scene not optional(study, scene) propagates (the
     scenes validated before it are still recorded); those of optional scenes are returned."""
     try:
         known = json.loads(Path(record).read_text(encoding="utf-8"))
@@ -39,7 +39,7 @@ def validate_all(scenes: Iterable[tuple[str, Path, Path]], validate: Callable, r
             entry = known.get(key)
             if not (isinstance(entry, dict) and entry.get("digest") == digest):
                 try:
-                    estimate = validate(study, scene, schema, budget).estimate
+                    estimate = validate(study, scene, budget).estimate
                 except SceneError as error:
                     if not optional(study, Path(scene)):
                         raise

@@ -1,4 +1,5 @@
-"""The five studies. Each module exposes TITLE, EFFECTS, check(path, data), cost(data) and run(scene, quick)."""
+"""The studies (registered in registry.py). Each study module exposes EFFECTS, check(path, data), cost(data) and
+run(scene, quick)."""
 
 from __future__ import annotations
 
@@ -11,20 +12,15 @@ import yaml
 
 from ..scenes import Scene, SceneError, load_scene
 from ..scenes.cost import Budget, check_budget
+from .registry import STUDIES
 
-STUDIES = {
-    "precession": "classical_dynamics.studies.precession",
-    "chandler": "classical_dynamics.studies.chandler",
-    "chains": "classical_dynamics.studies.chains",
-    "self_excited": "classical_dynamics.studies.self_excited",
-    "solvers": "classical_dynamics.studies.solvers",
-}
+__all__ = ["STUDIES", "study_module", "load_schema", "validate"]
 
 
 def study_module(study: str):
     if study not in STUDIES:
         raise KeyError(f"unknown study {study!r}; known: {', '.join(sorted(STUDIES))}")
-    return importlib.import_module(STUDIES[study])
+    return importlib.import_module(STUDIES[study].module)
 
 
 def load_schema(schema_path: Path | str) -> dict:
@@ -38,11 +34,11 @@ def _schema(path: Path, mtime_ns: int) -> dict:
     return yaml.load(path.read_text(encoding="utf-8"), Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
 
 
-def validate(study: str, scene_path: Path | str, schema_path: Path | str, budget: Budget | None = None) -> Scene:
-    """Fully validate one scene file of a study (schema, effects, physics, cost within the budget); raise
+def validate(study: str, scene_path: Path | str, budget: Budget | None = None) -> Scene:
+    """Fully validate one scene file of a study (its schema, effects, physics, cost within the budget); raise
     SceneError. The scene returned carries its cost estimate, from which its job's limits follow."""
-    module = study_module(study)
-    scene = load_scene(scene_path, study, load_schema(schema_path), module.EFFECTS.names(), module.check)
+    module = study_module(study)        # also refuses an unknown study
+    scene = load_scene(scene_path, study, load_schema(STUDIES[study].schema), module.EFFECTS.names(), module.check)
     try:
         works = module.cost(scene.data)
     except (ArithmeticError, ValueError, TypeError) as exc:       # sizes too large to even estimate

@@ -12,16 +12,16 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import matplotlib
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+from .. import io
+from ..figure_style import STYLE, TEXT_WIDTH_IN
+from .figure_data import figure_data
 
-from .. import io  # noqa: E402
-from ..figure_style import STYLE, TEXT_WIDTH_IN  # noqa: E402
-from .figure_data import figure_data  # noqa: E402
-
-# One style for every figure of the report: applied once, when a study first imports this module.
-plt.rcParams.update(STYLE)
+# One style for every figure of the report: applied once, when a study first imports this module. Figures are
+# made without pyplot (figure and subplots below): no backend is chosen for the importer, no window can open.
+matplotlib.rcParams.update(STYLE)
 
 
 @dataclass
@@ -120,7 +120,6 @@ class Results:
         finally:
             for staging, _ in staged:
                 shutil.rmtree(staging, ignore_errors=True)
-        plt.close("all")
 
     def _result_files(self, provenance):
         files = {"summary.json": io.dumps_json(self.summary()).encode()}
@@ -145,15 +144,29 @@ class Results:
         return files
 
 
+def figure(*, figsize, layout="constrained") -> Figure:
+    """pyplot.figure without pyplot: a Figure on an Agg canvas of its own (which measures text, as layouts need),
+    in no list of open figures; savefig still writes SVG."""
+    fig = Figure(figsize=figsize, layout=layout)
+    FigureCanvasAgg(fig)
+    return fig
+
+
+def subplots(nrows=1, ncols=1, *, figsize, layout="constrained", **kwargs):
+    """pyplot.subplots without pyplot (see figure); kwargs go to Figure.subplots (sharex, squeeze, ...)."""
+    fig = figure(figsize=figsize, layout=layout)
+    return fig, fig.subplots(nrows, ncols, **kwargs)
+
+
 def new_figure(width=TEXT_WIDTH_IN * 0.85, height=3.4):
-    fig, ax = plt.subplots(figsize=(width, height), layout="constrained")
+    fig, ax = subplots(figsize=(width, height))
     ax.grid(True, which="both", alpha=0.25, linewidth=0.6)
     return fig, ax
 
 
 def new_figures(ncols, width=TEXT_WIDTH_IN, height=3.0):
     """A row of ncols panels, styled as new_figure."""
-    fig, axes = plt.subplots(1, ncols, figsize=(width, height), layout="constrained")
+    fig, axes = subplots(1, ncols, figsize=(width, height))
     for ax in axes:
         ax.grid(True, which="both", alpha=0.25, linewidth=0.6)
     return fig, axes

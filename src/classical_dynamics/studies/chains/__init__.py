@@ -13,8 +13,7 @@ from ...models.chains import EFFECTS, segments_for
 from ...scenes import Scene, SceneError
 from .cost import cost
 
-TITLE = "Vibrations of chains"
-__all__ = ["TITLE", "EFFECTS", "check", "cost", "run"]     # the interface every study module exposes
+__all__ = ["EFFECTS", "check", "cost", "run"]     # the interface every study module exposes
 
 # effect -> the ends it needs and the models it is written for
 _EFFECT_ENDS = {"gravity": {"fixed-free"}, "rotation": {"fixed-free"}}

@@ -14,7 +14,7 @@ from ...solvers import chain_eigen
 from ...solvers.special import bessel_j0_zeros, laguerre_lowest_zero_asymptotic, laguerre_zero_mp
 from ...solvers.timing import min_time
 from ...figure_style import FULL_WIDTH_IN
-from ..results import new_figure, plt
+from ..results import new_figure, subplots
 from ...lazy import lazy_module
 from . import small_oscillations
 
@@ -328,7 +328,7 @@ def _convergence(results, model, n_values, quick):
 
 def _convergence_figure(results, model, frame, exact, fitted):
     """omega_1 against n (left) and its relative error with reference slopes and fitted orders (right)."""
-    fig, (ax, bx) = plt.subplots(1, 2, figsize=(FULL_WIDTH_IN, 3.3), layout="constrained")
+    fig, (ax, bx) = subplots(1, 2, figsize=(FULL_WIDTH_IN, 3.3), layout="constrained")
     for scheme, part in frame.groupby("scheme", sort=False):
         key = _scheme(scheme)
         label, colour, _ = SCHEMES[key]

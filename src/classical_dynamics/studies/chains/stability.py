@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import numpy as np
 import scipy.linalg as sla
-import sympy as sp
 from scipy.integrate import solve_ivp
 
 from . import symbolic

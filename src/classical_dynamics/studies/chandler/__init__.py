@@ -15,8 +15,7 @@ from ...scenes import Scene, SceneError
 from ...scenes.cost import check_step
 from .cost import cost
 
-TITLE = "The Chandler wobble"
-__all__ = ["TITLE", "EFFECTS", "check", "cost", "run"]
+__all__ = ["EFFECTS", "check", "cost", "run"]
 
 
 def check(path: Path, data: dict) -> None:

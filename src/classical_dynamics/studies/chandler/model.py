@@ -13,7 +13,7 @@ from ...solvers import rigid_body
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
 from ...figure_style import FULL_WIDTH_IN
-from ..results import new_figure, plt
+from ..results import new_figure, subplots
 from . import polar_motion
 
 
@@ -199,7 +199,7 @@ def _symmetric_integrals(results, model, tilt_deg=10.0, periods=20):
 def _polhode(results, t, m, period, damped, triaxial=False):
     one = t <= (t[-1] if damped else period)
     if triaxial:
-        fig, (ax, bx) = plt.subplots(1, 2, figsize=(FULL_WIDTH_IN, 3.2), layout="constrained",
+        fig, (ax, bx) = subplots(1, 2, figsize=(FULL_WIDTH_IN, 3.2), layout="constrained",
                                      gridspec_kw={"width_ratios": [1, 1.3]})
     else:
         fig, ax = new_figure(3.6, 3.4)
@@ -342,7 +342,7 @@ def figure_path(results, name, years, m, caption, last_years=13.0, time_label="y
 
     years: the samples' times in years (calendar years or years from the start: time_label says which)."""
     keep = years >= years[-1] - last_years
-    fig, (ax, bx) = plt.subplots(1, 2, figsize=(FULL_WIDTH_IN, 3.0), layout="constrained",
+    fig, (ax, bx) = subplots(1, 2, figsize=(FULL_WIDTH_IN, 3.0), layout="constrained",
                                  gridspec_kw={"width_ratios": [1, 1.45]})
     centre = m[keep] - np.polyval(np.polyfit(years[keep], m[keep], 1), years[keep])
     ax.plot(centre.real, centre.imag, lw=0.5, color="C4")
@@ -390,7 +390,7 @@ def _cones(results, model, amplitude):
     results.number("space_cone_period_sidereal_days", 2 * np.pi / space_rate * earth.SIDEREAL_PER_SOLAR_DAY,
                    "sidereal days", note="$\\dot\\psi = |\\mathbf{L}|/A$: the plane of $\\omega$ and the "
                    "figure axis turns about $\\mathbf{L}$ once a day")
-    fig, (ax, bx) = plt.subplots(1, 2, figsize=(FULL_WIDTH_IN, 3.2), layout="constrained")
+    fig, (ax, bx) = subplots(1, 2, figsize=(FULL_WIDTH_IN, 3.2), layout="constrained")
     # the body: two days are a short arc of the polhode, drawn on the whole circle (the closed form: a circle
     # of the wobble's radius about the figure axis) so that the arc's size can be judged
     p_body, q_body = ms[:, 0] / I[0] / model.n / earth.MAS, ms[:, 1] / I[1] / model.n / earth.MAS

@@ -15,8 +15,7 @@ from ...models.earth import JULIAN_YEAR_DAYS
 from ...scenes.cost import check_step
 from .cost import cost
 
-TITLE = "Precession of the equinoxes"
-__all__ = ["TITLE", "EFFECTS", "check", "cost", "run"]
+__all__ = ["EFFECTS", "check", "cost", "run"]
 
 MAX_STEP_HOURS = 24.0
 

@@ -11,7 +11,7 @@ from ...models import precession as prec
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
 from ...figure_style import FULL_WIDTH_IN
-from ..results import plt
+from ..results import subplots
 from . import fitting
 from .secular import ARCSEC_PER_TURN
 
@@ -118,7 +118,7 @@ def _nutation(results, model, t, psi, eps):
 
 def _cone_figure(results, model, s, t, eps_arcsec, span_years):
     years = t / earth.JULIAN_YEAR_DAYS
-    fig, (ax, bx) = plt.subplots(1, 2, figsize=(FULL_WIDTH_IN, 3.1), layout="constrained",
+    fig, (ax, bx) = subplots(1, 2, figsize=(FULL_WIDTH_IN, 3.1), layout="constrained",
                                  gridspec_kw={"width_ratios": [1, 1.35]})
     ax.plot(s[:, 0], s[:, 1], lw=0.6, color="C4")
     ax.plot([0], [0], "k+", ms=8)

@@ -17,7 +17,7 @@ from ...models import precession as prec
 from ...solvers import rigid_body
 from ...solvers.timing import min_time
 from ...figure_style import FULL_WIDTH_IN
-from ..results import plt
+from ..results import subplots
 from . import averaged, fitting
 from .secular import ARCSEC_PER_TURN
 
@@ -209,7 +209,7 @@ def _iau_nutation(results, model, t, psi, eps, fp, fe, args):
                    / earth.ARCSEC, "″")
     show = t <= 20.0 * earth.JULIAN_YEAR_DAYS
     years = 2000.0 + t[show] / earth.JULIAN_YEAR_DAYS
-    fig, axes = plt.subplots(3, 1, figsize=(FULL_WIDTH_IN, 3.7), sharex=True, layout="constrained",
+    fig, axes = subplots(3, 1, figsize=(FULL_WIDTH_IN, 3.7), sharex=True, layout="constrained",
                              gridspec_kw={"height_ratios": [1, 1, 0.8]})
     for ax, ours, iau, name in ((axes[0], ours_psi, d_psi, r"$\Delta\psi$ (″)"),
                                 (axes[1], ours_eps, d_eps, r"$\Delta\varepsilon$ (″)")):

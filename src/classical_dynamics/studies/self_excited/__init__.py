@@ -17,8 +17,7 @@ from pathlib import Path
 from ...scenes import Scene, SceneError
 from .cost import cost
 
-TITLE = "The self-excited rigid body"
-__all__ = ["TITLE", "EFFECTS", "check", "cost", "run"]
+__all__ = ["EFFECTS", "check", "cost", "run"]
 
 
 def __getattr__(name):

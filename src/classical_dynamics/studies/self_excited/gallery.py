@@ -246,7 +246,7 @@ LEGEND_HEIGHT_IN = 0.4
 def grid_figure(group, found):
     """The grid of one group: panels in Lee's order, shared axes where the windows agree, one legend (in a spare
     slot when there is one, otherwise below)."""
-    from ..results import plt           # with the report's figure style
+    from ..results import subplots      # with the report's figure style
     from ...figure_style import FULL_WIDTH_IN, MAX_HEIGHT_IN
     from ...solvers.workprecision import legend_below
     from . import portrait
@@ -263,7 +263,7 @@ def grid_figure(group, found):
     spare = columns * rows > len(found)
     height = min(MAX_HEIGHT_IN, rows * ROW_HEIGHT_IN + (0.0 if spare else LEGEND_HEIGHT_IN) + (0.5 if body else 0))
     zoom = any(p.kind == "zoom" for p in found)          # a zoom keeps its own window: share by hand, not by subplots
-    fig, axes = plt.subplots(rows, columns, figsize=(FULL_WIDTH_IN, height), layout="constrained", squeeze=False,
+    fig, axes = subplots(rows, columns, figsize=(FULL_WIDTH_IN, height), layout="constrained", squeeze=False,
                              sharex=share_x and not zoom, sharey=share_y and not zoom,
                              width_ratios=[2.6, 1.0] if body else None)
     if zoom:
@@ -366,11 +366,11 @@ def closed_form_data():
 def closed_form_figure(frame, mu_c, body):
     import numpy as np
     from matplotlib.lines import Line2D
-    from ..results import plt
+    from ..results import subplots
     from ...figure_style import FULL_WIDTH_IN
     from ...solvers.workprecision import legend_below
     from . import portrait
-    fig, axes = plt.subplots(1, 4, figsize=(FULL_WIDTH_IN, 1.95), layout="constrained")
+    fig, axes = subplots(1, 4, figsize=(FULL_WIDTH_IN, 1.95), layout="constrained")
     for ax in axes:
         ax.grid(True, which="both", alpha=0.25, linewidth=0.6)
     for ax, letter, m1 in zip(axes[:2], "ab", CLOSED_FORM_M1):
@@ -504,10 +504,10 @@ def body_view_data():
 
 def body_view_figure(frame):
     from matplotlib.lines import Line2D
-    from ..results import plt
+    from ..results import subplots
     from ...figure_style import FULL_WIDTH_IN
     from ...solvers.workprecision import legend_below
-    fig, axes = plt.subplots(1, 2, figsize=(FULL_WIDTH_IN, 2.25), layout="constrained", sharey=True)
+    fig, axes = subplots(1, 2, figsize=(FULL_WIDTH_IN, 2.25), layout="constrained", sharey=True)
     for ax, panel in zip(axes, "ab"):
         part = frame[frame.panel == panel]
         ax.grid(True, alpha=0.25, linewidth=0.6)

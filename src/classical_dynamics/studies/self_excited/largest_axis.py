@@ -16,7 +16,7 @@ from ...solvers.ode import Events, Problem, solve, solve_batch
 from ...solvers.timing import min_time
 from ...formatting import format_number, shortest
 from ...figure_style import PAIR_WIDTH_IN, TEXT_WIDTH_IN
-from ..results import new_figure, plt
+from ..results import figure, new_figure, subplots
 from . import accuracy, portrait
 from .bounds import INVARIANT_BOUND, OVERLAY_BOUND
 
@@ -60,7 +60,7 @@ def run(scene, results, quick):
     _eigenvalue_check(results, m1, nu, points)
 
     if smallest:          # the plane, and beside it the motion in the body, seen along the torque axis z
-        fig, (ax, cx) = plt.subplots(1, 2, figsize=(TEXT_WIDTH_IN, 3.9), layout="constrained",
+        fig, (ax, cx) = subplots(1, 2, figsize=(TEXT_WIDTH_IN, 3.9), layout="constrained",
                                      width_ratios=[2.6, 1.0])
         for a in (ax, cx):
             a.grid(True, which="both", alpha=0.25, linewidth=0.6)
@@ -306,7 +306,7 @@ def _series(results, m1, nu, phi_c, amplitudes, sphere=None):
         f"the fitted slope is {format_number(slope, 3)}."))
     if sphere is not None:           # Lee §1.2: the frames and angles of (1.2), and this body's motion in space
         from . import space
-        fig = plt.figure(figsize=(TEXT_WIDTH_IN, 2.6), layout="constrained")
+        fig = figure(figsize=(TEXT_WIDTH_IN, 2.6), layout="constrained")
         space.draw_frames(fig.add_subplot(1, 2, 1, projection="3d"))
         space.draw_sphere(fig.add_subplot(1, 2, 2, projection="3d"), *sphere)
         results.figure("space", fig, (
@@ -510,7 +510,7 @@ def _cylinder(results, m1, nu, points):
     """Lee's Figure 2.13: phi2 taken mod 2 pi, the plane rolled onto a cylinder (cos phi2, sin phi2, p1). The
     saddles merge into one S and the centers into one C; F and F1 close on themselves; a closed orbit about C, a
     start above F1 winding onto F, and one below F1 running away to p1 -> -infinity."""
-    fig = plt.figure(figsize=(5.8, 3.2), layout="constrained")      # at most 40 % of a page
+    fig = figure(figsize=(5.8, 3.2), layout="constrained")      # at most 40 % of a page
     ax = fig.add_subplot(projection="3d")
     theta = np.linspace(0.0, 2 * np.pi, 721)
     F = se.limit_cycle_p1(theta, m1, nu)

@@ -17,8 +17,7 @@ from ...solvers.references import HNW_PERIOD
 from .cost import SWEEP_SPAN, cost
 from . import top_model
 
-TITLE = "The solver layer"
-__all__ = ["TITLE", "EFFECTS", "check", "cost", "run"]
+__all__ = ["EFFECTS", "check", "cost", "run"]
 EFFECTS = EffectRegistry("solvers")           # the test problems have none; the heavy top has gravity
 top_model.register(EFFECTS)
 

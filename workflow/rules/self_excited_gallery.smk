@@ -1,5 +1,4 @@
-# Study: the self-excited rigid body (Lee 1964): phase planes of Euler's equations under body-fixed torques.
-# Scenes: workflow/scenes/self_excited/ (one portrait each); then the gallery redraws the portraits as grids.
+# A step of the self-excited study drawn from its scenes: the gallery redraws the portraits as grids.
 
 from classical_dynamics.studies.self_excited.gallery import portrait_scenes
 
@@ -36,8 +35,4 @@ rule self_excited_gallery:
 ruleorder: self_excited_gallery > scene
 
 
-rule self_excited:
-    """Every scene of the self-excited rigid body study, and the gallery of its portraits."""
-    input:
-        scene_outputs("self_excited"),
-        rules.self_excited_gallery.output.results,
+STUDY_STEPS["self_excited"] = [rules.self_excited_gallery.output.results]

@@ -1,0 +1,36 @@
+"""What the report is made from besides its code and the results: templates, styles and script, the sources'
+ledgers and the bibliography here, each study's chapter and claims in its package (studies/registry.py).
+Shipped inside the package and found through importlib.resources, so an installed package renders the report
+from any directory (it is installed as files, not zipped: Jinja and the checks read real paths)."""
+
+from __future__ import annotations
+
+from importlib.resources import files
+from pathlib import Path
+
+from ..studies import registry
+
+HERE = Path(str(files(__package__)))
+TEMPLATES = HERE / "templates"          # report.html.j2, _macros.html.j2, report.css, screen.css, print.css, report.js
+LEDGER = HERE / "ledger"                # <source>.yaml: every quantitative statement of a source
+LEDGER_SHOWN = "src/classical_dynamics/report/ledger"      # where a reader of the report finds it in the checkout
+BIBLIOGRAPHY = HERE / "references.bib"
+
+
+def claims_file(study: str) -> Path:
+    return registry.STUDIES[study].file("claims.yaml")
+
+
+def chapter_template(study: str) -> str:
+    """A study's chapter as the report's Jinja loader names it (its search path: TEMPLATES, then the studies)."""
+    return f"{study}/chapter.html.j2"
+
+
+def template_folders() -> list[str]:
+    return [str(TEMPLATES), str(registry.HERE)]
+
+
+def asset_files() -> list[Path]:
+    """Every file the report reads besides the results and its code: a change to one rebuilds the report."""
+    own = [path for path in HERE.rglob("*") if path.is_file() and path.suffix not in (".py", ".pyc")]
+    return sorted(own) + registry.resource_files()
