@@ -1,9 +1,9 @@
 """Each job's measured wall time and peak memory beside what its rule asks a scheduler for (issue 20).
 
-Snakemake's `benchmark:` directive writes, for every job, its seconds and its peak resident memory (max_rss, MB)
-to results/benchmarks/ (a scene to <study>/<scene>.tsv, another rule to <rule>.tsv). Those figures are right only
-for a job that runs in its own processes: on a cluster, or locally with `--config jobserver=0` (a job the local job
-server runs is a forked child of the server, outside the process tree Snakemake measures).
+Snakemake's `benchmark:` directive writes, for every job, its seconds and its peak resident memory (max_rss,
+MB) to results/benchmarks/ (a scene to <study>/<scene>.tsv, another rule to <rule>.tsv). Those figures are
+right only for a job that runs in its own processes: on a cluster, or locally with `--config jobserver=0` (a
+job the local job server runs is a forked child of the server, outside the process tree Snakemake measures).
 
     snakemake -c all --forceall --config jobserver=0     # measure (about 4 minutes on 2 cores)
     python benchmarks/job_resources.py                   # print measured against asked
@@ -37,7 +37,10 @@ def used(path: Path) -> dict:
     with path.open() as handle:
         row = next(csv.DictReader(handle, delimiter="\t"))
     rss = row["max_rss"]
-    return {"seconds": float(row["s"]), "max_rss_mb": float(rss) if rss not in ("", "NA", "-") else float("nan")}
+    return {
+        "seconds": float(row["s"]),
+        "max_rss_mb": float(rss) if rss not in ("", "NA", "-") else float("nan"),
+    }
 
 
 def measured(benchmarks: Path) -> dict[str, dict]:
@@ -78,19 +81,28 @@ def main(argv=None) -> int:
         print(f"{name:<44} {job['seconds']:>8.1f} {job['max_rss_mb']:>8.0f} {asked}")
     total = sum(job["seconds"] for job in jobs.values())
     print(f"{len(jobs)} jobs, {total:.0f} s in all")
-    served = [name for name, job in jobs.items() if job["max_rss_mb"] < 50]     # a client's, not its job's
+    served = [name for name, job in jobs.items() if job["max_rss_mb"] < 50]  # a client's, not its job's
     if served:
-        print(f"{len(served)} jobs measured under 50 MB: run through the local job server, their memory is not "
-              "theirs; build again with --config jobserver=0", file=sys.stderr)
+        print(
+            f"{len(served)} jobs measured under 50 MB: run through the local job server, their memory is not "
+            "theirs; build again with --config jobserver=0",
+            file=sys.stderr,
+        )
         if args.write:
             return 1
     if args.write:
-        commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT, capture_output=True,
-                                text=True).stdout.strip()
+        commit = subprocess.run(
+            ["git", "rev-parse", "--short", "HEAD"], cwd=ROOT, capture_output=True, text=True
+        ).stdout.strip()
         header = RESOURCES.read_text().split("\nmeasured:", 1)[0]
-        document = {"measured": {"commit": commit, "machine": f"{platform.machine()}, {platform.node()}",
-                                 "date": datetime.now(timezone.utc).strftime("%Y-%m-%d")},
-                    "rules": rule_peaks(jobs)}
+        document = {
+            "measured": {
+                "commit": commit,
+                "machine": f"{platform.machine()}, {platform.node()}",
+                "date": datetime.now(timezone.utc).strftime("%Y-%m-%d"),
+            },
+            "rules": rule_peaks(jobs),
+        }
         RESOURCES.write_text(header + "\n" + yaml.safe_dump(document, sort_keys=False))
         print(f"wrote {RESOURCES.relative_to(ROOT)}")
     return 0

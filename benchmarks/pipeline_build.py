@@ -8,9 +8,9 @@ load; the ratios between the two columns, taken minutes apart, are what to read.
 
 Rows: the full build from clean (Snakemake's own log gives its elapsed time), its longest job; a no-op dry run
 beside Snakemake's floor (a Snakefile with as many jobs and no work); one job's overhead (the interpreter and
-its imports, or the job server's fork: the job's wall time less the same work in a warm process); the rebuild after editing one
-scene; a dry run with a generated sweep of scenes added, beside the floor for as many jobs; and the test
-suite (`python -m pytest`, as `make test` runs it).
+its imports, or the job server's fork: the job's wall time less the same work in a warm process); the rebuild
+after editing one scene; a dry run with a generated sweep of scenes added, beside the floor for as many jobs;
+and the test suite (`python -m pytest`, as `make test` runs it).
 """
 
 from __future__ import annotations
@@ -41,13 +41,14 @@ def snakemake(tree: Path, *args: str) -> float:
 
 
 def floor(jobs: int, folder: Path, pending: int = 0) -> float:
-    """A dry run of a Snakefile with `jobs` jobs that do no work, `pending` of them not yet run: what Snakemake
-    itself costs for as many jobs (min of 3)."""
+    """A dry run of a Snakefile with `jobs` jobs that do no work, `pending` of them not yet run: what
+    Snakemake itself costs for as many jobs (min of 3)."""
     folder.mkdir(parents=True)
     (folder / "Snakefile").write_text(
         f"N = {jobs}\n"
         "rule all:\n    input: expand('out/{i}', i=range(N))\n"
-        "rule one:\n    output: 'out/{i}'\n    shell: 'touch {output}'\n")
+        "rule one:\n    output: 'out/{i}'\n    shell: 'touch {output}'\n"
+    )
     subprocess.run([str(BIN / "snakemake"), "-c", "1", "-q"], cwd=folder, check=True, capture_output=True)
     for i in range(pending):
         (folder / "out" / str(i)).unlink()
@@ -56,8 +57,14 @@ def floor(jobs: int, folder: Path, pending: int = 0) -> float:
 
 def jobs_of(tree: Path, config: list[str]) -> int:
     """The number of jobs of a forced dry run (every rule instance of the build)."""
-    out = subprocess.run([str(BIN / "snakemake"), "-n", "--forceall", *config], cwd=tree, env=env_for(tree),
-                         check=True, capture_output=True, text=True).stdout
+    out = subprocess.run(
+        [str(BIN / "snakemake"), "-n", "--forceall", *config],
+        cwd=tree,
+        env=env_for(tree),
+        check=True,
+        capture_output=True,
+        text=True,
+    ).stdout
     return next(int(line.split()[-1]) for line in out.splitlines() if line.startswith("total"))
 
 
@@ -74,7 +81,8 @@ WORK = """
 import sys, tempfile, time
 from pathlib import Path
 from classical_dynamics.studies import study_module, validate
-scene, module = validate("chains", *sys.argv[1:]), study_module("chains")      # the baseline also takes a schema
+# the baseline's validate also takes a schema
+scene, module = validate("chains", *sys.argv[1:]), study_module("chains")
 with tempfile.TemporaryDirectory() as tmp:
     for attempt in range(2):                        # the first imports and compiles what the work uses
         start = time.perf_counter()
@@ -88,22 +96,50 @@ def job_overhead(tree: Path) -> float:
     """One cheap scene's job as the pipeline runs it, less the same work (computing, drawing, writing) in a
     process that has already done it once: interpreter start, the imports it uses, validation, provenance
     (min of 3, the compiled-code cache filled)."""
-    scene, schema = "workflow/scenes/chains/two_masses_three_springs.yaml", "workflow/schemas/chains.schema.yaml"
-    schema = [schema] if (tree / schema).exists() else []     # before the schemas moved into the package
-    work = min(float(subprocess.run([sys.executable, "-c", WORK, scene, *schema], cwd=tree, env=env_for(tree),
-                                    check=True, capture_output=True, text=True).stdout) for _ in range(3))
+    scene, schema = (
+        "workflow/scenes/chains/two_masses_three_springs.yaml",
+        "workflow/schemas/chains.schema.yaml",
+    )
+    schema = [schema] if (tree / schema).exists() else []  # before the schemas moved into the package
+    work = min(
+        float(
+            subprocess.run(
+                [sys.executable, "-c", WORK, scene, *schema],
+                cwd=tree,
+                env=env_for(tree),
+                check=True,
+                capture_output=True,
+                text=True,
+            ).stdout
+        )
+        for _ in range(3)
+    )
     with tempfile.TemporaryDirectory() as tmp:
         command = [sys.executable, "-m", "classical_dynamics"]
         server = None
-        if (tree / "src/classical_dynamics/jobserver.py").exists():     # a local run's jobs go through it
+        if (tree / "src/classical_dynamics/jobserver.py").exists():  # a local run's jobs go through it
             socket_path = f"{tmp}/jobs.sock"
-            server = subprocess.Popen([sys.executable, "-m", "classical_dynamics.jobserver", "--serve", socket_path,
-                                       str(os.getpid())], cwd=tree, env=env_for(tree))
+            server = subprocess.Popen(
+                [
+                    sys.executable,
+                    "-m",
+                    "classical_dynamics.jobserver",
+                    "--serve",
+                    socket_path,
+                    str(os.getpid()),
+                ],
+                cwd=tree,
+                env=env_for(tree),
+            )
             command = [sys.executable, "-m", "classical_dynamics.jobserver", "classical_dynamics"]
             os.environ["CLASSICAL_DYNAMICS_JOBSERVER"] = socket_path
         try:
-            walls = [timed(tree, *command, "run", "chains", *schema, scene, f"{tmp}/r{i}", f"{tmp}/t{i}", "--quick")
-                     for i in range(4)]
+            walls = [
+                timed(
+                    tree, *command, "run", "chains", *schema, scene, f"{tmp}/r{i}", f"{tmp}/t{i}", "--quick"
+                )
+                for i in range(4)
+            ]
         finally:
             os.environ.pop("CLASSICAL_DYNAMICS_JOBSERVER", None)
             if server:
@@ -118,8 +154,10 @@ def add_sweep(tree: Path, count: int) -> None:
     for i in range(count):
         n = 10 + i % 90
         (folder / f"sweep_{i:04d}.yaml").write_text(
-            f"title: Sweep {i}\nchain: {{model: particles, n: {n}, ends: fixed-fixed, length_m: 1.0, mass_kg: 1.0}}\n"
-            f"effects:\n  tension: {{newton: {1 + i / count:.6f}}}\nanalysis:\n  modes: 10\n")
+            f"title: Sweep {i}\nchain: "
+            f"{{model: particles, n: {n}, ends: fixed-fixed, length_m: 1.0, mass_kg: 1.0}}\n"
+            f"effects:\n  tension: {{newton: {1 + i / count:.6f}}}\nanalysis:\n  modes: 10\n"
+        )
 
 
 def restore(tree: Path) -> None:
@@ -140,12 +178,13 @@ def measure(tree: Path, scratch: Path, args) -> dict:
     scene = tree / "workflow/scenes/chains/loaded_string.yaml"
     scene.write_text(scene.read_text().replace("newton: 1.0", "newton: 1.5"))
     row["after editing one scene (s)"] = snakemake(tree, "-c", "all", *config)
-    if args.sweep:               # the sweep's scenes not yet run: the dry run lists them, as the floor's does
+    if args.sweep:  # the sweep's scenes not yet run: the dry run lists them, as the floor's does
         add_sweep(tree, args.sweep)
         row["sweep: dry run, scenes validated (s)"] = snakemake(tree, "-n", *config)
         row["sweep: dry run again (s)"] = again = min(snakemake(tree, "-n", *config) for _ in range(2))
-        row["sweep: Snakemake floor (s)"] = sweep_floor = floor(jobs + args.sweep, scratch / "floor_sweep",
-                                                                pending=args.sweep)
+        row["sweep: Snakemake floor (s)"] = sweep_floor = floor(
+            jobs + args.sweep, scratch / "floor_sweep", pending=args.sweep
+        )
         row["sweep: dry run / floor"] = again / sweep_floor
     restore(tree)
     if not args.no_tests:
@@ -157,15 +196,19 @@ def measure(tree: Path, scratch: Path, args) -> dict:
 
 
 def worktree(rev: str, path: Path) -> Path:
-    subprocess.run(["git", "worktree", "add", "--detach", str(path), rev], cwd=ROOT, check=True,
-                   capture_output=True)
+    subprocess.run(
+        ["git", "worktree", "add", "--detach", str(path), rev], cwd=ROOT, check=True, capture_output=True
+    )
     return path
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--baseline", default="b99490e",
-                        help="the commit to compare with (default b99490e; none: this commit alone)")
+    parser.add_argument(
+        "--baseline",
+        default="b99490e",
+        help="the commit to compare with (default b99490e; none: this commit alone)",
+    )
     parser.add_argument("--rev", default="HEAD", help="the commit measured (default HEAD)")
     parser.add_argument("--quick", action="store_true", help="the reduced build (quick=1)")
     parser.add_argument("--sweep", type=int, default=1000, help="scenes in the generated sweep (0: none)")
@@ -176,18 +219,23 @@ def main() -> None:
         trees = {}
         try:
             revisions = (("baseline", args.baseline), ("this", args.rev))
-            for label, rev in revisions[args.baseline == "none":]:
-                name = subprocess.run(["git", "rev-parse", "--short", rev], cwd=ROOT, check=True,
-                                      capture_output=True, text=True).stdout.strip()
+            for label, rev in revisions[args.baseline == "none" :]:
+                name = subprocess.run(
+                    ["git", "rev-parse", "--short", rev], cwd=ROOT, check=True, capture_output=True, text=True
+                ).stdout.strip()
                 trees[label] = worktree(rev, Path(tmp) / name)
                 print(f"measuring {label} ({name}) ...", flush=True)
                 columns[label] = measure(trees[label], Path(tmp) / f"scratch-{label}", args)
         finally:
             for tree in trees.values():
-                subprocess.run(["git", "worktree", "remove", "--force", str(tree)], cwd=ROOT, capture_output=True)
+                subprocess.run(
+                    ["git", "worktree", "remove", "--force", str(tree)], cwd=ROOT, capture_output=True
+                )
     base, this = columns.get("baseline", {}), columns["this"]
-    print(f"\nmachine: {os.cpu_count()} cores; build: {'quick' if args.quick else 'full'}; "
-          f"baseline {trees['baseline'].name if base else 'none'}, this {trees['this'].name}")
+    print(
+        f"\nmachine: {os.cpu_count()} cores; build: {'quick' if args.quick else 'full'}; "
+        f"baseline {trees['baseline'].name if base else 'none'}, this {trees['this'].name}"
+    )
     print(f"{'':44s}{'baseline':>10s}{'this':>10s}{'baseline / this':>17s}")
     for key in this:
         b, t = base.get(key), this[key]

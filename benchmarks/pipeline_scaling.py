@@ -1,5 +1,6 @@
-"""How the pipeline's cost grows with the number of scenes (issue 21), with the fitted slope of each: a dry run
-(beside Snakemake's floor for as many jobs), building the new scenes, and rendering the report (HTML, then PDF).
+"""How the pipeline's cost grows with the number of scenes (issue 21), with the fitted slope of each: a dry
+run (beside Snakemake's floor for as many jobs), building the new scenes, and rendering the report (HTML, then
+PDF).
 
 A copy of the working tree gets a quick build, then a generated sweep of chain scenes (loaded strings of 10 to
 99 particles, pipeline_build.add_sweep) in steps. Writes benchmarks/results/pipeline_scaling.json and .svg,
@@ -15,7 +16,6 @@ import argparse
 import json
 import platform
 import shutil
-import subprocess
 import sys
 import tempfile
 from datetime import datetime, timezone
@@ -24,10 +24,10 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from pipeline_build import ROOT, add_sweep, floor, jobs_of, snakemake  # noqa: E402
+from pipeline_build import ROOT, add_sweep, floor, jobs_of, snakemake
 
 sys.path.insert(0, str(ROOT))
-from tests.conftest import copy_repository  # noqa: E402
+from tests.conftest import copy_repository
 
 OUT = ROOT / "benchmarks" / "results" / "pipeline_scaling"
 QUICK = ["--config", "quick=1"]
@@ -49,11 +49,18 @@ def dry_runs(tree: Path, counts: list[int], scratch: Path) -> list[dict]:
     for count in counts:
         remove_sweep(tree)
         add_sweep(tree, count)
-        first = snakemake(tree, "-n", *QUICK)                       # validates the new scenes once
+        first = snakemake(tree, "-n", *QUICK)  # validates the new scenes once
         again = min(snakemake(tree, "-n", *QUICK) for _ in range(2))
         jobs = jobs_of(tree, QUICK)
-        rows.append({"scenes_added": count, "jobs": jobs, "dry_run_first_s": first, "dry_run_s": again,
-                     "floor_s": floor(jobs, scratch / f"floor{count}", pending=count + 4 if count else 0)})
+        rows.append(
+            {
+                "scenes_added": count,
+                "jobs": jobs,
+                "dry_run_first_s": first,
+                "dry_run_s": again,
+                "floor_s": floor(jobs, scratch / f"floor{count}", pending=count + 4 if count else 0),
+            }
+        )
         print(rows[-1], flush=True)
     remove_sweep(tree)
     return rows
@@ -82,11 +89,13 @@ def slope(rows: list[dict], x: str, y: str) -> float:
 
 
 def slopes(dry: list[dict], built: list[dict]) -> dict:
-    return {"dry_run_s_per_1000_scenes": 1000 * slope(dry, "scenes_added", "dry_run_s"),
-            "floor_s_per_1000_scenes": 1000 * slope(dry, "scenes_added", "floor_s"),
-            "build_s_per_scene": slope(built, "scenes_added", "build_s"),
-            "report_html_s_per_scene": slope(built, "scenes_added", "report_html_s"),
-            "report_pdf_s_per_scene": slope(built, "scenes_added", "report_pdf_s")}
+    return {
+        "dry_run_s_per_1000_scenes": 1000 * slope(dry, "scenes_added", "dry_run_s"),
+        "floor_s_per_1000_scenes": 1000 * slope(dry, "scenes_added", "floor_s"),
+        "build_s_per_scene": slope(built, "scenes_added", "build_s"),
+        "report_html_s_per_scene": slope(built, "scenes_added", "report_html_s"),
+        "report_pdf_s_per_scene": slope(built, "scenes_added", "report_pdf_s"),
+    }
 
 
 def draw(data: dict) -> bytes:
@@ -97,19 +106,38 @@ def draw(data: dict) -> bytes:
     fig, (left, right) = subplots(1, 2, figsize=(FULL_WIDTH_IN, 2.6))
     dry, built, fits = data["dry_runs"], data["builds"], data["slopes"]
     n = [r["scenes_added"] for r in dry]
-    left.plot(n, [r["dry_run_s"] for r in dry], "o-",
-              label=f"this pipeline: {fits['dry_run_s_per_1000_scenes']:.2f} s per 1000")
-    left.plot(n, [r["floor_s"] for r in dry], "s--",
-              label=f"Snakemake alone, same jobs: {fits['floor_s_per_1000_scenes']:.2f} s per 1000")
+    left.plot(
+        n,
+        [r["dry_run_s"] for r in dry],
+        "o-",
+        label=f"this pipeline: {fits['dry_run_s_per_1000_scenes']:.2f} s per 1000",
+    )
+    left.plot(
+        n,
+        [r["floor_s"] for r in dry],
+        "s--",
+        label=f"Snakemake alone, same jobs: {fits['floor_s_per_1000_scenes']:.2f} s per 1000",
+    )
     left.set(xlabel="scenes added to a quick build", ylabel="dry run (s)", ylim=(0, None), title="dry run")
     left.legend()
-    for key, label in (("build_s", "building the new scenes"), ("report_html_s", "report HTML"),
-                       ("report_pdf_s", "report PDF")):
+    for key, label in (
+        ("build_s", "building the new scenes"),
+        ("report_html_s", "report HTML"),
+        ("report_pdf_s", "report PDF"),
+    ):
         rows = [r for r in built if r[key] is not None]
-        right.plot([r["scenes_added"] for r in rows], [r[key] for r in rows], "o-",
-                   label=f"{label}: {fits[key + '_per_scene']:.2f} s/scene")
-    right.set(xlabel="scenes added to a quick build", ylabel="wall time (s)", ylim=(0, None),
-              title="build and report")
+        right.plot(
+            [r["scenes_added"] for r in rows],
+            [r[key] for r in rows],
+            "o-",
+            label=f"{label}: {fits[key + '_per_scene']:.2f} s/scene",
+        )
+    right.set(
+        xlabel="scenes added to a quick build",
+        ylabel="wall time (s)",
+        ylim=(0, None),
+        title="build and report",
+    )
     right.legend()
     return io.svg_bytes(fig)
 
@@ -133,11 +161,16 @@ def main() -> None:
     state, host = git_state(), machine()
     data = {
         "what": "pipeline cost against the number of scenes (benchmarks/pipeline_scaling.py)",
-        "commit": state["commit"], "dirty": bool(state["dirty"]),
+        "commit": state["commit"],
+        "dirty": bool(state["dirty"]),
         "measured": datetime.now(timezone.utc).isoformat(timespec="seconds"),
         "machine": {"cpu_model": host["cpu_model"], "cores": host["cores"], "platform": platform.platform()},
-        "packages": {k: v for k, v in package_versions().items() if k in ("snakemake", "weasyprint", "numpy")},
-        "quick_build_s": base, "dry_runs": dry, "builds": built,
+        "packages": {
+            k: v for k, v in package_versions().items() if k in ("snakemake", "weasyprint", "numpy")
+        },
+        "quick_build_s": base,
+        "dry_runs": dry,
+        "builds": built,
         "slopes": slopes(dry, built),
     }
     save(data)
@@ -154,7 +187,7 @@ def redraw() -> None:
     """The saved measurement's slopes and figure again, without measuring (after a change to either)."""
     data = json.loads(OUT.with_suffix(".json").read_text(encoding="utf-8"))
     for row in data["builds"]:
-        row["build_s"] = row["build_s"] or None             # nothing built for no scenes added
+        row["build_s"] = row["build_s"] or None  # nothing built for no scenes added
     data["slopes"] = slopes(data["dry_runs"], data["builds"])
     save(data)
 

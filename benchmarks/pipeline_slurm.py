@@ -1,10 +1,12 @@
-"""The quick build locally and through Slurm (workflow/profiles/slurm), and what one job costs beyond its own work
-on each (issue 20). Needs a Slurm cluster that answers: `tools/local-slurm up` starts one on this machine.
+"""The quick build locally and through Slurm (workflow/profiles/slurm), and what one job costs beyond its own
+work on each (issue 20). Needs a Slurm cluster that answers: `tools/local-slurm up` starts one on this
+machine.
 
-In copies of the working tree, one after the other: the quick build with `-c 2` (the local job server on), then
-the same through Slurm; then one light scene forced to run again, alone, by each. A job's overhead is the command's
-wall time less the job's own seconds (its Snakemake benchmark file); for Slurm also Slurm's own elapsed time of the
-job (sacct), which leaves out the wait for the first status check. About 12 minutes on 2 cores.
+In copies of the working tree, one after the other: the quick build with `-c 2` (the local job server on),
+then the same through Slurm; then one light scene forced to run again, alone, by each. A job's overhead is the
+command's wall time less the job's own seconds (its Snakemake benchmark file); for Slurm also Slurm's own
+elapsed time of the job (sacct), which leaves out the wait for the first status check. About 12 minutes on 2
+cores.
 
     python benchmarks/pipeline_slurm.py
 """
@@ -38,8 +40,12 @@ def own_seconds(repo: Path) -> float:
 
 
 def slurm_elapsed(job_id: str) -> float:
-    out = subprocess.run(["sacct", "-n", "-X", "-P", "-j", job_id, "-o", "ElapsedRaw"], capture_output=True,
-                         text=True, check=True).stdout.split()
+    out = subprocess.run(
+        ["sacct", "-n", "-X", "-P", "-j", job_id, "-o", "ElapsedRaw"],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout.split()
     return float(out[0])
 
 
@@ -55,10 +61,17 @@ def main() -> int:
         rows.append(("quick build, Slurm", seconds, f"{jobs} jobs in {len(submitted)} Slurm jobs"))
         seconds, _ = timed(local, "-c", "2", f"results/{SCENE}", "--forcerun", "scene", "--config", "quick=1")
         rows.append((f"one scene ({SCENE}), local", seconds, f"its own work {own_seconds(local):.1f} s"))
-        seconds, log = timed(slurm, *PROFILE, f"results/{SCENE}", "--forcerun", "scene", "--config", "quick=1")
+        seconds, log = timed(
+            slurm, *PROFILE, f"results/{SCENE}", "--forcerun", "scene", "--config", "quick=1"
+        )
         job = re.findall(r"submitted with SLURM jobid (\d+)", log)[-1]
-        rows.append((f"one scene ({SCENE}), Slurm", seconds,
-                     f"its own work {own_seconds(slurm):.1f} s, {slurm_elapsed(job):.0f} s in Slurm"))
+        rows.append(
+            (
+                f"one scene ({SCENE}), Slurm",
+                seconds,
+                f"its own work {own_seconds(slurm):.1f} s, {slurm_elapsed(job):.0f} s in Slurm",
+            )
+        )
     print(f"{'':<40} {'wall s':>8}")
     for name, seconds, note in rows:
         print(f"{name:<40} {seconds:>8.1f}   {note}")

@@ -15,13 +15,18 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "src"))
-from classical_dynamics.provenance import software_stamp  # noqa: E402
-from classical_dynamics.solvers import sine_cosine_integrals as sc  # noqa: E402
-from classical_dynamics.solvers.timing import min_time  # noqa: E402
+from classical_dynamics.provenance import software_stamp
+from classical_dynamics.solvers import sine_cosine_integrals as sc
+from classical_dynamics.solvers.timing import min_time
 
 ORDERS = (1.3 + 0.4j, 2.7 + 0.5j)
 POINTS = (0.5, 2.0, 10.0, 30.0)
-METHODS = {"series": sc.series, "asymptotic": sc.asymptotic, "quadrature": sc.quadrature, "si_ci (auto)": sc.si_ci}
+METHODS = {
+    "series": sc.series,
+    "asymptotic": sc.asymptotic,
+    "quadrature": sc.quadrature,
+    "si_ci (auto)": sc.si_ci,
+}
 
 
 def main():
@@ -35,8 +40,10 @@ def main():
             for name, method in METHODS.items():
                 seconds, value, _ = min_time(lambda: method(x, w), repeats=20, budget_s=0.5)
                 error = max(abs(value.si - si), abs(value.ci - ci)) / scale
-                print(f"{w!s:>12} {x:5g} {name:>14} {error:9.1e} {value.bound / scale:9.1e} "
-                      f"{seconds * 1e6:8.1f} us  {t_ref / seconds:6.0f}x faster")
+                print(
+                    f"{w!s:>12} {x:5g} {name:>14} {error:9.1e} {value.bound / scale:9.1e} "
+                    f"{seconds * 1e6:8.1f} us  {t_ref / seconds:6.0f}x faster"
+                )
             print(f"{'':>12} {'':>5} {'mpmath 30 dps':>14} {'':>9} {'':>9} {t_ref * 1e6:8.1f} us")
 
 

@@ -25,12 +25,12 @@ import numpy as np
 from numba import njit
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "src"))
-from classical_dynamics.models import rigid_body as rhs  # noqa: E402
-from classical_dynamics.provenance import software_stamp  # noqa: E402
-from classical_dynamics.solvers import references as ref  # noqa: E402
-from classical_dynamics.solvers import runge_kutta as rk  # noqa: E402
-from classical_dynamics.solvers.ode import Problem, solve, solve_batch  # noqa: E402
-from classical_dynamics.solvers.timing import min_time  # noqa: E402
+from classical_dynamics.models import rigid_body as rhs
+from classical_dynamics.provenance import software_stamp
+from classical_dynamics.solvers import references as ref
+from classical_dynamics.solvers import runge_kutta as rk
+from classical_dynamics.solvers.ode import Problem, solve, solve_batch
+from classical_dynamics.solvers.timing import min_time
 
 TARGET = 1e-10
 T = 20.0
@@ -64,8 +64,8 @@ def hand_written_dop853(y0, h, n, A, B, C):
 
 @njit(cache=True)
 def hand_written_adaptive_dop853(y0, t1, h, rtol, atol, A, B, C, E5, E3):
-    """DOP853 with error control (ours' stages, embedded estimates and norm; its controller's safety factor and
-    limits, from a given first step), the HNW right-hand side written in, no calls: the fair limit for an
+    """DOP853 with error control (ours' stages, embedded estimates and norm; its controller's safety factor
+    and limits, from a given first step), the HNW right-hand side written in, no calls: the fair limit for an
     adaptive method. (steps, rejected, y)."""
     y = y0.copy()
     y_new = np.empty(3)
@@ -119,8 +119,13 @@ def error(y):
     return float(np.max(np.abs(y - EXACT)))
 
 
-VARIANTS = {"dop853": ("dop853", {}), "dop853, specialized": ("dop853", {"specialize": True}),
-            "dopri5": ("dopri5", {}), "scipy:DOP853": ("scipy:DOP853", {}), "scipy:RK45": ("scipy:RK45", {})}
+VARIANTS = {
+    "dop853": ("dop853", {}),
+    "dop853, specialized": ("dop853", {"specialize": True}),
+    "dopri5": ("dopri5", {}),
+    "scipy:DOP853": ("scipy:DOP853", {}),
+    "scipy:RK45": ("scipy:RK45", {}),
+}
 
 
 def fastest_adaptive():
@@ -128,11 +133,14 @@ def fastest_adaptive():
     results = {}
     for label, (method, options) in VARIANTS.items():
         best = None
-        for rtol in 10.0 ** -np.arange(6, 13.5, 0.125):     # as fine as the hand-written loop's step count
+        for rtol in 10.0 ** -np.arange(6, 13.5, 0.125):  # as fine as the hand-written loop's step count
             err = error(solve(HNW, method, rtol=rtol, atol=rtol * 1e-3, **options).y)
             if err <= TARGET:
-                seconds, _, _ = min_time(lambda: solve(HNW, method, rtol=rtol, atol=rtol * 1e-3, **options),
-                                         repeats=300 if method in ("dop853", "dopri5") else 5, budget_s=1.0)
+                seconds, _, _ = min_time(
+                    lambda: solve(HNW, method, rtol=rtol, atol=rtol * 1e-3, **options),
+                    repeats=300 if method in ("dop853", "dopri5") else 5,
+                    budget_s=1.0,
+                )
                 best = (label, rtol, seconds, err)
                 break
         results[label] = best
@@ -144,8 +152,9 @@ def hand_written_limit():
     for n in range(20, 2000):
         y = hand_written_dop853(ref.HNW_Y0, T / n, n, d.A, d.B, d.C)
         if error(y) <= TARGET:
-            seconds, _, _ = min_time(lambda: hand_written_dop853(ref.HNW_Y0, T / n, n, d.A, d.B, d.C), repeats=200,
-                                     budget_s=1.0)
+            seconds, _, _ = min_time(
+                lambda: hand_written_dop853(ref.HNW_Y0, T / n, n, d.A, d.B, d.C), repeats=200, budget_s=1.0
+            )
             return n, seconds, error(y)
     raise RuntimeError("no fixed step reached the target")
 
@@ -168,17 +177,25 @@ def batch(count=1000):
     rtol = 1e-10
     out = {}
     for label, options in (("", {}), (", specialized", {"specialize": True})):
-        solve_batch(rhs.euler_free, Y0[:2], (0.0, T), a, rtol=rtol, atol=rtol * 1e-3, **options)    # compile
-        one = lambda: [solve(Problem(rhs.euler_free, y, (0.0, T), a), "dop853", rtol=rtol, atol=rtol * 1e-3,  # noqa
-                             **options) for y in Y0]
-        together = lambda: solve_batch(rhs.euler_free, Y0, (0.0, T), a, rtol=rtol, atol=rtol * 1e-3,  # noqa
-                                       **options)
+        solve_batch(rhs.euler_free, Y0[:2], (0.0, T), a, rtol=rtol, atol=rtol * 1e-3, **options)  # compile
+        one = lambda: [
+            solve(Problem(rhs.euler_free, y, (0.0, T), a), "dop853", rtol=rtol, atol=rtol * 1e-3, **options)
+            for y in Y0
+        ]
+        together = lambda: solve_batch(
+            rhs.euler_free, Y0, (0.0, T), a, rtol=rtol, atol=rtol * 1e-3, **options
+        )
         out[f"ours, one call each{label}"] = min_time(one, repeats=3, budget_s=2.0)[0] / count
         out[f"ours, one batch call{label}"] = min_time(together, repeats=5, budget_s=2.0)[0] / count
     few = Y0[:20]
     out["solve_ivp DOP853, one call each"] = min_time(
-        lambda: [solve(Problem(rhs.euler_free, y, (0.0, T), a), "scipy:DOP853", rtol=rtol, atol=rtol * 1e-3)
-                 for y in few], repeats=2, budget_s=2.0)[0] / len(few)
+        lambda: [
+            solve(Problem(rhs.euler_free, y, (0.0, T), a), "scipy:DOP853", rtol=rtol, atol=rtol * 1e-3)
+            for y in few
+        ],
+        repeats=2,
+        budget_s=2.0,
+    )[0] / len(few)
     return out
 
 
@@ -186,10 +203,15 @@ def main():
     start = time.perf_counter()
     solve(HNW, "dop853", rtol=1e-8, atol=1e-11)
     print(f"machine: {software_stamp()}")
-    print(f"first call in this process (compiled loop loaded from cache): {time.perf_counter() - start:.2f} s")
+    print(
+        f"first call in this process (compiled loop loaded from cache): {time.perf_counter() - start:.2f} s"
+    )
     start = time.perf_counter()
     solve(HNW, "dop853", rtol=1e-8, atol=1e-11, specialize=True)
-    print(f"first specialized call (compiles the loop for this right-hand side): {time.perf_counter() - start:.2f} s\n")
+    print(
+        "first specialized call (compiles the loop for this right-hand side): "
+        f"{time.perf_counter() - start:.2f} s\n"
+    )
     adaptive = fastest_adaptive()
     print(f"HNW rigid body, t = {T:g}, time to reach error <= {TARGET:g} (solve(), from Python):")
     for label, (m, rtol, seconds, err) in adaptive.items():
@@ -198,22 +220,45 @@ def main():
     n, limit_s, limit_err = hand_written_limit()
     print(f"  {'hand-written':20s} {n:4d} fixed steps error {limit_err:8.2e}  {limit_s * 1e6:10.1f} us")
     adaptive_s, adaptive_err, steps, rejected = hand_written_adaptive(ours[1])
-    print(f"  {'hand-written adaptive':20s} rtol {ours[1]:8.1e}  error {adaptive_err:8.2e}  {adaptive_s * 1e6:10.1f} us"
-          f"   ({steps} steps, {rejected} rejected)")
-    print(f"\n  best of ours ({ours[0]}) vs solve_ivp DOP853: {adaptive['scipy:DOP853'][2] / ours[2]:7.1f}x faster"
-          "   (goal >= 100x)")
-    print(f"  plain dop853 vs solve_ivp DOP853:                 {adaptive['scipy:DOP853'][2] / adaptive['dop853'][2]:7.1f}x")
-    print(f"  best of ours vs hand-written limit:               {ours[2] / limit_s:7.2f}x slower   (goal <= 2x)")
-    print(f"  best of ours vs hand-written adaptive, same rtol:  {ours[2] / adaptive_s:7.2f}x slower   (goal <= 1.3x)")
+    print(
+        f"  {'hand-written adaptive':20s} rtol {ours[1]:8.1e}  error {adaptive_err:8.2e}  "
+        f"{adaptive_s * 1e6:10.1f} us"
+        f"   ({steps} steps, {rejected} rejected)"
+    )
+    print(
+        f"\n  best of ours ({ours[0]}) vs solve_ivp DOP853: {adaptive['scipy:DOP853'][2] / ours[2]:7.1f}x "
+        "faster"
+        "   (goal >= 100x)"
+    )
+    print(
+        "  plain dop853 vs solve_ivp DOP853:                 "
+        f"{adaptive['scipy:DOP853'][2] / adaptive['dop853'][2]:7.1f}x"
+    )
+    print(
+        f"  best of ours vs hand-written limit:               {ours[2] / limit_s:7.2f}x slower   (goal <= 2x)"
+    )
+    print(
+        f"  best of ours vs hand-written adaptive, same rtol:  {ours[2] / adaptive_s:7.2f}x slower   (goal "
+        "<= 1.3x)"
+    )
     per = batch()
     print("\nA batch of 1000 trajectories (HNW body, perturbed starts, rtol 1e-10), time per trajectory:")
     for label, seconds in per.items():
         print(f"  {label:36s} {seconds * 1e6:9.1f} us")
     best_batch = per["ours, one batch call, specialized"]
-    print(f"\n  batch (specialized) vs solve_ivp one at a time:   {per['solve_ivp DOP853, one call each'] / best_batch:6.1f}x"
-          "   (goal >= 10x)")
-    print(f"  batch (specialized) vs ours one at a time (plain): {per['ours, one call each'] / best_batch:6.1f}x")
-    print(f"  batch (specialized) vs ours one at a time (spec.): {per['ours, one call each, specialized'] / best_batch:6.1f}x")
+    print(
+        "\n  batch (specialized) vs solve_ivp one at a time:   "
+        f"{per['solve_ivp DOP853, one call each'] / best_batch:6.1f}x"
+        "   (goal >= 10x)"
+    )
+    print(
+        "  batch (specialized) vs ours one at a time (plain): "
+        f"{per['ours, one call each'] / best_batch:6.1f}x"
+    )
+    print(
+        "  batch (specialized) vs ours one at a time (spec.): "
+        f"{per['ours, one call each, specialized'] / best_batch:6.1f}x"
+    )
 
 
 if __name__ == "__main__":

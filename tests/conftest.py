@@ -14,21 +14,26 @@ SCHEMA = STUDIES["chains"].schema
 
 def copy_repository(target: Path) -> Path:
     """A copy of the working tree as git sees it (tracked and untracked-not-ignored files)."""
-    listed = subprocess.run(["git", "ls-files", "-co", "--exclude-standard", "-z"], cwd=ROOT,
-                            capture_output=True, check=True).stdout.decode().split("\0")
+    listed = (
+        subprocess.run(
+            ["git", "ls-files", "-co", "--exclude-standard", "-z"], cwd=ROOT, capture_output=True, check=True
+        )
+        .stdout.decode()
+        .split("\0")
+    )
     for rel in filter(None, listed):
         source = ROOT / rel
         if source.is_file():
             (target / rel).parent.mkdir(parents=True, exist_ok=True)
             shutil.copy2(source, target / rel)
-    # Compiled code travels with the sources it was compiled from (bytecode, numba's cache): each entry is checked
-    # against its source file's time and size, which copy2 keeps, so the copy starts as warm as the checkout
-    # (cold, the first parse alone compiles runge_kutta's typed loops: 9 s). It changes no result.
+    # Compiled code travels with the sources it was compiled from (bytecode, numba's cache): each entry is
+    # checked against its source file's time and size, which copy2 keeps, so the copy starts as warm as the
+    # checkout (cold, the first parse alone compiles runge_kutta's typed loops: 9 s). It changes no result.
     for cached in (ROOT / "src").glob("**/__pycache__/*"):
         try:
             (target / cached.relative_to(ROOT)).parent.mkdir(parents=True, exist_ok=True)
             shutil.copy2(cached, target / cached.relative_to(ROOT))
-        except FileNotFoundError:           # replaced meanwhile by a compile in another test worker
+        except FileNotFoundError:  # replaced meanwhile by a compile in another test worker
             pass
     return target
 
@@ -42,36 +47,42 @@ def run_env(repo: Path) -> dict:
 
 def snakemake(repo: Path, *args, check=True, timeout=1200):
     command = [str(Path(sys.executable).parent / "snakemake"), *args]
-    result = subprocess.run(command, cwd=repo, env=run_env(repo), capture_output=True, text=True,
-                            timeout=timeout)
+    result = subprocess.run(
+        command, cwd=repo, env=run_env(repo), capture_output=True, text=True, timeout=timeout
+    )
     if check and result.returncode != 0:
-        raise AssertionError(f"snakemake {' '.join(args)} failed:\n{result.stdout[-4000:]}\n{result.stderr[-4000:]}")
+        raise AssertionError(
+            f"snakemake {' '.join(args)} failed:\n{result.stdout[-4000:]}\n{result.stderr[-4000:]}"
+        )
     return result
 
 
 @pytest.fixture(scope="session")
 def built_repo(tmp_path_factory, worker_id):
-    """A copy of the repository with a complete quick build, shared by the end-to-end tests: built once per test
-    session, by whichever pytest-xdist worker asks first, while the others wait on a file lock."""
+    """A copy of the repository with a complete quick build, shared by the end-to-end tests: built once per
+    test session, by whichever pytest-xdist worker asks first, while the others wait on a file lock."""
     from filelock import FileLock
 
     shared = tmp_path_factory.getbasetemp()
-    if worker_id != "master":               # each worker has its own basetemp; their parent is the session's
+    if worker_id != "master":  # each worker has its own basetemp; their parent is the session's
         shared = shared.parent
     repo, done = shared / "built" / "repo", shared / "built" / "done"
     with FileLock(str(shared / "built.lock")):
         if not done.exists():
-            shutil.rmtree(repo.parent, ignore_errors=True)          # a build that failed in another worker
+            shutil.rmtree(repo.parent, ignore_errors=True)  # a build that failed in another worker
             snakemake(copy_repository(repo), "-c", "2", "--config", "quick=1")
             done.touch()
     return repo
 
 
 def pytest_collection_modifyitems(items):
-    """Tests that need the shared build run last: while one worker builds it, the others run everything else."""
+    """Tests that need the shared build run last: while one worker builds it, the others run everything
+    else."""
+
     def needs_build(item):
         return bool({"built_repo", "scratch"} & set(getattr(item, "fixturenames", ())))
-    items.sort(key=needs_build)                                  # stable: the order within each group is kept
+
+    items.sort(key=needs_build)  # stable: the order within each group is kept
 
 
 def assert_refused(tmp_path: Path, study: str, data: dict, field: str) -> None:

@@ -33,12 +33,15 @@ def test_the_suite_covers_every_study_and_kind():
     assert len(CASES) >= 120
     by_study, by_kind = Counter(c.study for c in CASES), Counter(c.kind for c in CASES)
     assert set(by_kind) == set(KINDS), by_kind
-    assert all(by_study[study] >= 20 for study in ("precession", "chandler", "chains", "self_excited", "solvers"))
+    assert all(
+        by_study[study] >= 20 for study in ("precession", "chandler", "chains", "self_excited", "solvers")
+    )
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c.id for c in CASES])
 def test_a_bad_scene_is_refused_in_one_line_naming_its_field(tmp_path, case):
-    validate(case.study, next((ROOT / "workflow/scenes" / case.study).glob("*.yaml")), BUDGET)           # imports and caches warm
+    # imports and caches warm
+    validate(case.study, next((ROOT / "workflow/scenes" / case.study).glob("*.yaml")), BUDGET)
     message, seconds = refuse(case, tmp_path)
     assert "\n" not in message
     assert message.startswith(f"{tmp_path / case.name}: field '{case.field}"), message
@@ -56,10 +59,13 @@ def test_snakemake_refuses_one_of_each_kind_and_touches_nothing(built_repo, tmp_
     """Snakemake validates every scene when it reads the Snakefile: one case of each kind, each study in turn,
     through `snakemake -n` on a built copy: exit 1, one line naming the file, results/ byte-identical."""
     studies = ("precession", "chandler", "chains", "self_excited", "solvers")
-    picked = [next(c for c in sorted(CASES, key=lambda c: c.study != studies[i % len(studies)]) if c.kind == kind)
-              for i, kind in enumerate(KINDS)]
-    picked += [next(c for c in CASES if c.id == f"{study}-alias-bomb") for study in studies]   # once each study
-    repo = tmp_path / "repo"                    # a copy: the shared build is read by other tests meanwhile
+    picked = [
+        next(c for c in sorted(CASES, key=lambda c: c.study != studies[i % len(studies)]) if c.kind == kind)
+        for i, kind in enumerate(KINDS)
+    ]
+    # once each study
+    picked += [next(c for c in CASES if c.id == f"{study}-alias-bomb") for study in studies]
+    repo = tmp_path / "repo"  # a copy: the shared build is read by other tests meanwhile
     shutil.copytree(built_repo, repo, symlinks=True)
     before = _digest(repo / "results")
     for case in picked:
@@ -70,10 +76,16 @@ def test_snakemake_refuses_one_of_each_kind_and_touches_nothing(built_repo, tmp_
         finally:
             path.rmdir() if path.is_dir() and not path.is_symlink() else path.unlink()
         assert result.returncode == 1, case.id
-        lines = [line for line in result.stderr.splitlines()
-                 if line.strip() and not line.startswith("Using workflow specific profile")]   # Snakemake's own
-        assert lines == [lines[-1]] and f"workflow/scenes/{case.study}/{case.name}: field '{case.field}" in lines[-1], \
-            (case.id, result.stderr[-2000:])
+        # Snakemake's own
+        lines = [
+            line
+            for line in result.stderr.splitlines()
+            if line.strip() and not line.startswith("Using workflow specific profile")
+        ]
+        assert (
+            lines == [lines[-1]]
+            and f"workflow/scenes/{case.study}/{case.name}: field '{case.field}" in lines[-1]
+        ), (case.id, result.stderr[-2000:])
         assert _digest(repo / "results") == before, case.id
 
 
@@ -85,7 +97,10 @@ def _unbounded(schema, where="") -> list[str]:
         kinds = schema.get("type", [])
         kinds = kinds if isinstance(kinds, list) else [kinds]
         if {"number", "integer"} & set(kinds):
-            if not ({"minimum", "exclusiveMinimum"} & set(schema) and {"maximum", "exclusiveMaximum"} & set(schema)):
+            if not (
+                {"minimum", "exclusiveMinimum"} & set(schema)
+                and {"maximum", "exclusiveMaximum"} & set(schema)
+            ):
                 found.append(f"{where}: a number without both bounds")
         if "array" in kinds and "maxItems" not in schema:
             found.append(f"{where}: a list without maxItems")
@@ -101,8 +116,10 @@ def _unbounded(schema, where="") -> list[str]:
 
 @pytest.mark.parametrize("study", ["precession", "chandler", "chains", "self_excited", "solvers"])
 def test_every_number_a_schema_takes_is_bounded(study):
-    """Finite ranges on every float (and integer), a length on every list and text: 1e300 never reaches a model."""
+    """Finite ranges on every float (and integer), a length on every list and text: 1e300 never reaches a
+    model."""
     import yaml
+
     schema = yaml.safe_load((STUDIES[study].schema).read_text())
     assert _unbounded(schema) == []
 

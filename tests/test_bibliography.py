@@ -110,15 +110,20 @@ def test_citations_are_numbered_in_order_of_first_use():
 
 
 def test_layout_of_an_article_and_a_book(tmp_path):
-    entries = _write_bib(tmp_path, r"""
+    entries = _write_bib(
+        tmp_path,
+        r"""
 @article{a, author = {Name, Albert B. and Other, C. and Third, D.}, title = {Waves---and {Fourier} \& co.},
   journal = {J. Things}, volume = {7}, number = {2}, pages = {10-20}, year = {2001}, doi = {10.1/x<y>}}
 @book{b, author = {van der Berg, J. and Smith, Jr., A. and others}, title = {A Book}, publisher = {Pub},
   address = {Town}, year = {1999}, url = {https://example.org/a\_b?c=1&d=2}}
-""")
+""",
+    )
     article = format_entry(entries["a"])
-    assert _read(article).text == ("A. B. Name, C. Other and D. Third (2001). Waves—and Fourier & co. "
-                                   "J. Things 7(2), 10–20. doi:10.1/x<y>.")
+    assert _read(article).text == (
+        "A. B. Name, C. Other and D. Third (2001). Waves—and Fourier & co. "
+        "J. Things 7(2), 10–20. doi:10.1/x<y>."
+    )
     assert "<em>J. Things</em>" in article and "<em>Waves" not in article
     assert "&amp; co." in article and "x&lt;y&gt;" in article and "<y>" not in article
     assert _read(article).links == ["https://doi.org/10.1/x%3Cy%3E"]

@@ -6,12 +6,19 @@ import pytest
 import scipy.linalg as sla
 from scipy import special
 
-from classical_dynamics.models.chains import (continuum_frequencies, exact_discrete_frequencies, particle_chain,
-                                              rigid_links_matrices)
+from classical_dynamics.models.chains import (
+    continuum_frequencies,
+    exact_discrete_frequencies,
+    particle_chain,
+    rigid_links_matrices,
+)
 from classical_dynamics.solvers import chain_eigen
+from classical_dynamics.solvers.special import (
+    laguerre_lowest_zero_asymptotic,
+    laguerre_zero_mp,
+    mcmahon_j0_zero,
+)
 from classical_dynamics.solvers.spectral import hanging_chain_sigma
-from classical_dynamics.solvers.special import (laguerre_lowest_zero_asymptotic, laguerre_zero_mp,
-                                                mcmahon_j0_zero)
 from classical_dynamics.studies.chains.continuum import rayleigh_quotient, rayleigh_ritz_2x2
 from classical_dynamics.studies.chains.discrete import hanging_particles_scaled, links_frequencies
 
@@ -55,9 +62,9 @@ def test_spectral_collocation_finds_j0_zeros_with_no_condition_at_the_free_end()
 
 def test_lamb_numbers():
     j = np.array(J0_MP)
-    assert 4 * np.pi / j[0] == pytest.approx(5.225, abs=5e-4)          # gravest period, Art. 90 (24)
+    assert 4 * np.pi / j[0] == pytest.approx(5.225, abs=5e-4)  # gravest period, Art. 90 (24)
     assert j[:2] / np.pi == pytest.approx([0.7655, 1.7571], abs=5e-5)  # Art. 90 (23)
-    assert (j[0] / j[1]) ** 2 == pytest.approx(0.190, abs=5e-4)        # node of mode 2
+    assert (j[0] / j[1]) ** 2 == pytest.approx(0.190, abs=5e-4)  # node of mode 2
 
 
 def test_high_index_j0_zeros_against_mpmath_and_mcmahon():
@@ -71,13 +78,13 @@ def test_rayleigh_is_an_upper_bound_and_its_stationary_value():
     exact = (J0_MP[0] / 2) ** 2
     beta = np.linspace(-50, 50, 200001)
     assert np.all(rayleigh_quotient(beta) > exact)
-    assert rayleigh_quotient(0.0) == pytest.approx(1.5, rel=1e-15)        # rigid bar
+    assert rayleigh_quotient(0.0) == pytest.approx(1.5, rel=1e-15)  # rigid bar
     best = (-2 + np.sqrt(34)) / 6
     assert rayleigh_quotient(best) == pytest.approx(1.446032, abs=1e-6)
     assert rayleigh_quotient(best) <= rayleigh_quotient(beta).min() + 1e-15
     ritz = rayleigh_ritz_2x2()
-    assert ritz[0] == pytest.approx(rayleigh_quotient(best), rel=1e-12)   # the same minimum
-    assert ritz[1] > (J0_MP[1] / 2) ** 2                                   # Poincare: 2nd Ritz value bounds 2nd
+    assert ritz[0] == pytest.approx(rayleigh_quotient(best), rel=1e-12)  # the same minimum
+    assert ritz[1] > (J0_MP[1] / 2) ** 2  # Poincare: 2nd Ritz value bounds 2nd
 
 
 def test_random_trial_functions_never_beat_the_gravest_mode():
@@ -115,22 +122,24 @@ def test_convergence_orders():
     for n in (256, 512):
         lam = hanging_particles_scaled(n, 1)[0]
         err[n] = (np.sqrt(n * lam) / j1 - 1, np.sqrt((n + 0.5) * lam) / j1 - 1)
-    assert err[256][0] < 0 and err[256][0] / err[512][0] == pytest.approx(2.0, rel=0.01)   # first order, below
-    assert err[256][1] / err[512][1] == pytest.approx(4.0, rel=0.02)                          # second order
+    assert err[256][0] < 0 and err[256][0] / err[512][0] == pytest.approx(2.0, rel=0.01)  # first order, below
+    assert err[256][1] / err[512][1] == pytest.approx(4.0, rel=0.02)  # second order
 
 
 def test_rigid_links():
     K, M = rigid_links_matrices(1)
-    assert sla.eigh(K, M, eigvals_only=True)[0] == pytest.approx(1.5, rel=1e-15)           # compound pendulum
+    assert sla.eigh(K, M, eigvals_only=True)[0] == pytest.approx(1.5, rel=1e-15)  # compound pendulum
     e16, e32 = (links_frequencies(n, 1)[0] / (J0_MP[0] / 2) - 1 for n in (16, 32))
-    assert e16 > e32 > 0                                                                     # from above
-    assert e16 / e32 == pytest.approx(4.0, rel=0.03)                                         # second order
+    assert e16 > e32 > 0  # from above
+    assert e16 / e32 == pytest.approx(4.0, rel=0.03)  # second order
 
 
 @pytest.mark.parametrize("n", [1, 2, 3, 4, 6, 10])
 @pytest.mark.parametrize("motion,shift", [("out_of_plane", 0.0), ("in_plane", 1.0)])
 def test_southwell_law_is_exact_for_the_uniform_discrete_chain(n, motion, shift):
-    chain = particle_chain(n, "fixed-free", 1.0, 1.0 / n, {"rotation": {"omega_rad_per_s": 2.0, "motion": motion}})
+    chain = particle_chain(
+        n, "fixed-free", 1.0, 1.0 / n, {"rotation": {"omega_rad_per_s": 2.0, "motion": motion}}
+    )
     lam = sla.eigh(chain.stiffness_matrix(), np.diag(chain.masses), eigvals_only=True)
     odd = 2 * np.arange(1, n + 1) - 1
     assert np.allclose(lam / 4.0, odd * (odd + 1) / 2 - shift, rtol=1e-11, atol=1e-11)
@@ -148,14 +157,14 @@ def test_loaded_string_sine_law():
 def test_small_spring_systems():
     two = particle_chain(2, "fixed-fixed", 1.0, 1.0, {"springs": {"k_n_per_m": [1.0, 3.0, 1.0]}})
     lam = sla.eigh(two.stiffness_matrix(), np.diag(two.masses), eigvals_only=True)
-    assert np.allclose(np.sqrt(lam), [1.0, np.sqrt(7.0)], rtol=1e-14)                   # handbook Ex. 2.4
+    assert np.allclose(np.sqrt(lam), [1.0, np.sqrt(7.0)], rtol=1e-14)  # handbook Ex. 2.4
     m, M, k = 16.0, 12.0, 2.0
     tri = particle_chain(3, "free-free", 1.0, [m, M, m], {"springs": {"k_n_per_m": k}})
     lam = sla.eigh(tri.stiffness_matrix(), np.diag(tri.masses), eigvals_only=True)
-    assert abs(lam[0]) < 1e-14 * lam[-1]                                                 # translation
+    assert abs(lam[0]) < 1e-14 * lam[-1]  # translation
     assert np.allclose(lam[1:], [k / m, k * (M + 2 * m) / (M * m)], rtol=1e-13)
     exact = exact_discrete_frequencies(tri, {"springs": {"k_n_per_m": k}}, 3)
-    assert np.allclose(exact ** 2, [0.0, k / m, k * (M + 2 * m) / (M * m)])
+    assert np.allclose(exact**2, [0.0, k / m, k * (M + 2 * m) / (M * m)])
 
 
 def test_free_chain_zero_mode_is_a_translation():
@@ -189,14 +198,15 @@ def test_pliability_refuses_what_it_cannot_do():
 
 
 def test_sympy_derives_the_small_chains_and_proves_the_printed_formulas():
-    """The characteristic polynomial's roots in closed form; a printed formula must equal them for every value of
-    its symbols, so a wrong one (2k/m for 3k/m) is caught, and so is a right value at one point only."""
+    """The characteristic polynomial's roots in closed form; a printed formula must equal them for every value
+    of its symbols, so a wrong one (2k/m for 3k/m) is caught, and so is a right value at one point only."""
     import sympy as sp
 
     from classical_dynamics.studies.chains import symbolic as sy
+
     _, roots, values = sy.derive([1.0, 2.0], 1.0, "fixed-fixed")
     assert sy.formula_is_exact(sy.SOURCE_FORMULAS["unequal_masses"], roots)
-    assert np.allclose(sy.evaluate(roots, values), [(3 - 3 ** 0.5) / 2, (3 + 3 ** 0.5) / 2], rtol=1e-15)
+    assert np.allclose(sy.evaluate(roots, values), [(3 - 3**0.5) / 2, (3 + 3**0.5) / 2], rtol=1e-15)
     _, roots, _ = sy.derive([1.0, 1.0], 1.0, "fixed-fixed")
     assert sy.formula_is_exact(sy.SOURCE_FORMULAS["equal_springs"], roots)
     assert not sy.formula_is_exact([sy.k / sy.m1, 2 * sy.k / sy.m1], roots)
@@ -209,12 +219,15 @@ def test_sympy_derives_the_small_chains_and_proves_the_printed_formulas():
 
 # --- Lamb's theory of small oscillations (Arts. 90-97) --------------------------------------------------
 
+
 def test_second_order_friction_shift_reduces_to_the_one_degree_case():
-    """One mode alone: lambda^2 + eps c lambda + sigma^2 = 0 has lambda = -eps c/2 + i sqrt(sigma^2 - eps^2c^2/4),
-    whose expansion is i sigma - eps c/2 - i eps^2 c^2/(8 sigma) (Lamb Art. 96); the order-by-order derivation
-    for n modes must give that when the coupling terms vanish."""
+    """One mode alone: lambda^2 + eps c lambda + sigma^2 = 0 has lambda = -eps c/2 + i sqrt(sigma^2 -
+    eps^2c^2/4), whose expansion is i sigma - eps c/2 - i eps^2 c^2/(8 sigma) (Lamb Art. 96); the
+    order-by-order derivation for n modes must give that when the coupling terms vanish."""
     import sympy as sp
+
     from classical_dynamics.studies.chains.symbolic import damped_frequency_shift
+
     sigma, C, l1, l2 = damped_frequency_shift(3, 1)
     uncoupled = {C[0, 1]: 0, C[1, 2]: 0}
     c, s = C[1, 1], sigma[1]
@@ -225,7 +238,9 @@ def test_second_order_friction_shift_reduces_to_the_one_degree_case():
 def test_second_order_friction_shift_against_the_quadratic_eigenproblem():
     """The derived correction leaves a third-order rest on a random three-mode system (seeded)."""
     import sympy as sp
+
     from classical_dynamics.studies.chains.symbolic import damped_frequency_shift
+
     rng = np.random.default_rng(3)
     sig = np.array([1.0, 1.7, 2.9])
     C0 = rng.standard_normal((3, 3))
@@ -240,7 +255,7 @@ def test_second_order_friction_shift_against_the_quadratic_eigenproblem():
         values = {**dict(zip(symbols, sig)), **{C[i, j]: eps * C0[i, j] for i in range(3) for j in range(3)}}
         predicted = 1j * sig[0] + complex(sp.N(l1.subs(values))) + complex(sp.N(l2.subs(values)))
         rests.append(abs(full[0] - predicted))
-    assert rests[1] < rests[0] / 500                        # third order: a thousandfold per decade
+    assert rests[1] < rests[0] / 500  # third order: a thousandfold per decade
 
 
 def test_three_particles_on_a_string_lamb_art_90():
@@ -258,8 +273,10 @@ def test_resonant_response_kept_apart_beats_the_direct_solve():
     """Near resonance forming K - sigma^2 M loses eps/delta; the normal-coordinate sum with the detuning apart
     does not (Lamb Art. 95), against a 50-digit solve."""
     from classical_dynamics.studies.chains import small_oscillations
-    chain = particle_chain(3, "fixed-fixed", 4.0, 1.0, {"tension": {"newton": 1.0},
-                                                         "forcing": {"newton": [1.0, 0.0, 0.0]}})
+
+    chain = particle_chain(
+        3, "fixed-fixed", 4.0, 1.0, {"tension": {"newton": 1.0}, "forcing": {"newton": [1.0, 0.0, 0.0]}}
+    )
     sigma1 = small_oscillations._exact_lowest(chain)
     delta = 1e-10
     reference = small_oscillations._response_mp(chain, sigma1, delta)

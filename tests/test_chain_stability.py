@@ -11,7 +11,6 @@ from classical_dynamics.studies import validate
 from classical_dynamics.studies.chains import stability, symbolic
 
 
-
 class Recorder:
     def __init__(self):
         self.values, self.hard = {}, {}
@@ -37,7 +36,7 @@ def test_equal_roots_bounded_but_a_jordan_block_grows():
     L = np.array([[2.0, -1, -1], [-1, 2, -1], [-1, -1, 2]])
     assert stability._bounded(np.eye(3) + L, np.eye(3), 2 * np.pi, 500, rng) - 1 < 1e-10
     growth = stability._bounded(np.array([[1.0, 1.0], [0.0, 1.0]]), np.eye(2), 2 * np.pi, 500, rng)
-    assert growth > 100                       # secular: the amplitude grows as t
+    assert growth > 100  # secular: the amplitude grows as t
 
 
 def test_gyroscopic_switch_secular_instability_and_bowl():
@@ -47,8 +46,8 @@ def test_gyroscopic_switch_secular_instability_and_bowl():
     assert abs(v["kinetic_switch_beta"] - 2.0) < 1e-10
     assert v["kinetic_positive_c_unstable_count"] == 0 and v["kinetic_mixed_c_stable_count"] == 0
     slower, faster = v["secular_real_parts_c_negative"]
-    assert slower > 0 > faster                            # the slower mode grows: secular instability
-    assert max(v["secular_real_parts_c_positive"]) < 0   # positive c: both decay
+    assert slower > 0 > faster  # the slower mode grows: secular instability
+    assert max(v["secular_real_parts_c_positive"]) < 0  # positive c: both decay
     assert v["secular_vs_first_order_c_negative"] < 1e-6
     assert abs(v["bowl_switch_omega_over_n"] - 1.0) < 1e-10
     assert np.allclose(v["bowl_space_rates_frictionless"], [-1.0, 1.0], atol=1e-12)
@@ -82,31 +81,67 @@ def test_drum_collocation_finds_the_bessel_zeros_not_their_roots():
     stability.drum(r, 41)
     computed = np.array(r.values["drum_frequencies_collocation"])
     assert abs(computed[0] - jn_zeros(0, 1)[0]) < 1e-12
-    assert abs(computed[0] - 1.551) > 0.8                 # the notes' 1.551 is sqrt(j01), not a frequency
+    assert abs(computed[0] - 1.551) > 0.8  # the notes' 1.551 is sqrt(j01), not a frequency
     assert r.values["drum_collocation_vs_bessel"] < 1e-12
     assert [tuple(x) for x in r.values["drum_modes_mn"][:4]] == [(0, 1), (1, 1), (2, 1), (0, 2)]
 
 
-RING = {"title": "ring", "chain": {"model": "ring", "n": 16, "length_m": 1.0, "mass_kg": 1.0},
-        "effects": {"rotation": {"omega_rad_per_s": 1.0}, "springs": {"k_n_per_m": 1.0e4}},
-        "analysis": {"ring_waves": {"s_max": 4}}}
-CONTINUUM = {"title": "c", "chain": {"model": "continuum", "length_m": 1.0, "mass_kg": 1.0},
-             "effects": {"gravity": {"g_m_per_s2": 9.81}}}
+RING = {
+    "title": "ring",
+    "chain": {"model": "ring", "n": 16, "length_m": 1.0, "mass_kg": 1.0},
+    "effects": {"rotation": {"omega_rad_per_s": 1.0}, "springs": {"k_n_per_m": 1.0e4}},
+    "analysis": {"ring_waves": {"s_max": 4}},
+}
+CONTINUUM = {
+    "title": "c",
+    "chain": {"model": "continuum", "length_m": 1.0, "mass_kg": 1.0},
+    "effects": {"gravity": {"g_m_per_s2": 9.81}},
+}
 
 
-@pytest.mark.parametrize("data,field,expected", [
-    ({**RING, "analysis": {"gyroscopic": {"beta": 3.0, "epsilon": 1e-4, "bowl_friction": 0.1}}}, "analysis",
-     "ring_waves"),
-    ({**RING, "analysis": {"ring_waves": {"s_max": 4}, "gyroscopic": {"beta": 1.5, "epsilon": 1e-4,
-                                                                      "bowl_friction": 0.1}}},
-     "analysis.gyroscopic.beta", "> 2"),
-    ({**CONTINUUM, "analysis": {"membrane": {"points": 40}}}, "analysis.membrane.points", "odd"),
-    ({**CONTINUUM, "analysis": {"galerkin": {"elements": [1000, 1000000]}}}, "analysis.galerkin.elements",
-     "at most 100000"),
-    ({"title": "t", "chain": {"model": "particles", "n": 4, "ends": "fixed-free", "length_m": 1.0, "mass_kg": 1.0},
-      "effects": {"gravity": {"g_m_per_s2": 9.81}}, "analysis": {"stability": True}}, "analysis.stability",
-     "springs"),
-])
+@pytest.mark.parametrize(
+    "data,field,expected",
+    [
+        (
+            {**RING, "analysis": {"gyroscopic": {"beta": 3.0, "epsilon": 1e-4, "bowl_friction": 0.1}}},
+            "analysis",
+            "ring_waves",
+        ),
+        (
+            {
+                **RING,
+                "analysis": {
+                    "ring_waves": {"s_max": 4},
+                    "gyroscopic": {"beta": 1.5, "epsilon": 1e-4, "bowl_friction": 0.1},
+                },
+            },
+            "analysis.gyroscopic.beta",
+            "> 2",
+        ),
+        ({**CONTINUUM, "analysis": {"membrane": {"points": 40}}}, "analysis.membrane.points", "odd"),
+        (
+            {**CONTINUUM, "analysis": {"galerkin": {"elements": [1000, 1000000]}}},
+            "analysis.galerkin.elements",
+            "at most 100000",
+        ),
+        (
+            {
+                "title": "t",
+                "chain": {
+                    "model": "particles",
+                    "n": 4,
+                    "ends": "fixed-free",
+                    "length_m": 1.0,
+                    "mass_kg": 1.0,
+                },
+                "effects": {"gravity": {"g_m_per_s2": 9.81}},
+                "analysis": {"stability": True},
+            },
+            "analysis.stability",
+            "springs",
+        ),
+    ],
+)
 def test_bad_stability_scenes(tmp_path, data, field, expected):
     path = tmp_path / "scene.yaml"
     path.write_text(yaml.safe_dump(data))
@@ -117,6 +152,7 @@ def test_bad_stability_scenes(tmp_path, data, field, expected):
 
 def test_rotation_checks_and_kept_energy():
     from classical_dynamics.studies.solvers import hard_cases
+
     r = Recorder()
     hard_cases._rotations(r)
     hard_cases._energy_kept(r)
@@ -129,6 +165,7 @@ def test_rotation_checks_and_kept_energy():
 
 def test_reciprocal_theorem_needs_the_reversal():
     from classical_dynamics.studies.solvers import heavy_top, top_model
+
     r = Recorder()
     heavy_top._reciprocal(r, top_model.Top(1.0, 0.5, 1.0), 6.0, np.radians(60.0))
     assert r.values["reciprocal_relative_difference"] < 1e-6

@@ -19,7 +19,7 @@ from .conftest import ROOT
 
 SCHEMA = STUDIES["chandler"].schema
 YEAR = earth.JULIAN_YEAR_DAYS
-AMP = 0.1 * earth.ARCSEC              # a 0.1" wobble, 5e-7 rad
+AMP = 0.1 * earth.ARCSEC  # a 0.1" wobble, 5e-7 rad
 
 
 def run_model(effects, span_days, amplitude=AMP, rtol=1e-12, samples=20001, H=earth.H_MHB2000):
@@ -32,18 +32,22 @@ def run_model(effects, span_days, amplitude=AMP, rtol=1e-12, samples=20001, H=ea
 
 # --- units: one test per conversion -------------------------------------------------------------
 
+
 def test_sidereal_and_solar_days():
     # 366.2422 turns in 365.2422 solar days: a tropical year holds one more sidereal day than solar days
-    assert earth.SIDEREAL_PER_SOLAR_DAY * earth.TROPICAL_YEAR_DAYS == pytest.approx(earth.TROPICAL_YEAR_DAYS + 1,
-                                                                                    abs=2e-4)
-    assert earth.sidereal_to_solar_days(earth.solar_to_sidereal_days(433.0)) == pytest.approx(433.0, rel=1e-15)
+    assert earth.SIDEREAL_PER_SOLAR_DAY * earth.TROPICAL_YEAR_DAYS == pytest.approx(
+        earth.TROPICAL_YEAR_DAYS + 1, abs=2e-4
+    )
+    assert earth.sidereal_to_solar_days(earth.solar_to_sidereal_days(433.0)) == pytest.approx(
+        433.0, rel=1e-15
+    )
     # the turn counted is the stellar day (Earth rotation angle), 86164.0989 s; the equinox-referred sidereal
     # day is 8.4 ms shorter (precession): the difference is 1e-7, far below anything compared here
     assert earth.sidereal_to_solar_days(1.0) * earth.SECONDS_PER_DAY == pytest.approx(86164.0989, abs=1e-4)
 
 
 def test_julian_and_tropical_years():
-    assert pm.ANNUAL_CPY == pytest.approx(1.0000214, abs=1e-7)      # one tropical year per Julian year
+    assert pm.ANNUAL_CPY == pytest.approx(1.0000214, abs=1e-7)  # one tropical year per Julian year
 
 
 def test_arcseconds_and_milliarcseconds():
@@ -52,12 +56,16 @@ def test_arcseconds_and_milliarcseconds():
 
 
 def test_ellipticity_definitions():
-    assert earth.euler_period_sidereal_days(earth.h_over_c(0.00327, "(C-A)/A")) == pytest.approx(1 / 0.00327,
-                                                                                                 rel=1e-13)
-    assert earth.euler_period_sidereal_days(earth.H_MHB2000) == pytest.approx(1 / earth.H_MHB2000 - 1, rel=1e-14)
+    assert earth.euler_period_sidereal_days(earth.h_over_c(0.00327, "(C-A)/A")) == pytest.approx(
+        1 / 0.00327, rel=1e-13
+    )
+    assert earth.euler_period_sidereal_days(earth.H_MHB2000) == pytest.approx(
+        1 / earth.H_MHB2000 - 1, rel=1e-14
+    )
 
 
 # --- closed forms ----------------------------------------------------------------------------------
+
 
 def test_secular_love_number_from_j2_and_q():
     assert earth.centrifugal_parameter() == pytest.approx(3.4614e-3, rel=1e-4)
@@ -85,12 +93,13 @@ def test_exact_free_body_keeps_a_tiny_wobble():
 
 # --- the model's physics and its hard cases -----------------------------------------------------------
 
+
 def test_tiny_wobble_period_to_1e6_over_a_century():
     model, t, y = run_model({}, 100 * YEAR)
     period = 2 * np.pi / wobble_model.phase_rate(t, y)
-    expected = (1 / earth.H_MHB2000 - 1) / earth.SIDEREAL_PER_SOLAR_DAY      # A/(C-A) sidereal days
+    expected = (1 / earth.H_MHB2000 - 1) / earth.SIDEREAL_PER_SOLAR_DAY  # A/(C-A) sidereal days
     assert abs(period / expected - 1) < 1e-6
-    assert np.max(np.abs(np.hypot(y[:, 0], y[:, 1]) / AMP - 1)) < 1e-8       # the amplitude is kept
+    assert np.max(np.abs(np.hypot(y[:, 0], y[:, 1]) / AMP - 1)) < 1e-8  # the amplitude is kept
 
 
 @pytest.mark.parametrize("H,sense", [(earth.H_MHB2000, 1), (-0.01, -1)])
@@ -100,8 +109,13 @@ def test_sense_of_rotation_against_the_spin(H, sense):
     Read geometrically, from (omega x omega') . e3 compared with omega . e3, not from a parameter's sign."""
     model = wobble.WobbleModel(H=H)
     t = np.linspace(0, 50.0, 201)
-    sol = solve(Problem(wobble.liouville, np.array([AMP, 0.0, 1.0]), (0, 50.0), model.parameters()), "dop853",
-                rtol=1e-12, atol=1e-20, t_eval=t)
+    sol = solve(
+        Problem(wobble.liouville, np.array([AMP, 0.0, 1.0]), (0, 50.0), model.parameters()),
+        "dop853",
+        rtol=1e-12,
+        atol=1e-20,
+        t_eval=t,
+    )
     y = sol.y_eval
     dy = np.gradient(y, t, axis=0)
     turning = y[:, 0] * dy[:, 1] - y[:, 1] * dy[:, 0]
@@ -127,7 +141,7 @@ def test_elastic_integration_gives_lambs_period():
     model, t, y = run_model(effects, 30 * YEAR)
     H = earth.H_MHB2000
     beta = earth.elastic_beta_n2_over_c(0.30, H)
-    sigma = (H - beta) / (1 - H + beta)                      # Lamb (14) with moments in units of C
+    sigma = (H - beta) / (1 - H + beta)  # Lamb (14) with moments in units of C
     assert 2 * np.pi / wobble_model.phase_rate(t, y) == pytest.approx(2 * np.pi / (model.n * sigma), rel=1e-9)
 
 
@@ -138,8 +152,13 @@ def test_dissipation_keeps_L_lowers_energy_and_gives_its_Q():
     tilt = np.radians(10.0)
     span = 10 * model.wobble_period_solar_days()
     t = np.linspace(0, span, 2001)
-    sol = solve(Problem(wobble.liouville, np.array([np.sin(tilt), 0, np.cos(tilt)]), (0, span),
-                        model.parameters()), "dop853", rtol=1e-12, atol=1e-15, t_eval=t)
+    sol = solve(
+        Problem(wobble.liouville, np.array([np.sin(tilt), 0, np.cos(tilt)]), (0, span), model.parameters()),
+        "dop853",
+        rtol=1e-12,
+        atol=1e-15,
+        t_eval=t,
+    )
     L, E = wobble.invariants(sol.y_eval, model.parameters())
     assert np.max(np.abs(L / L[0] - 1)) < 1e-12
     assert np.all(np.diff(E) <= 0) and E[-1] < E[0] * (1 - 1e-6)
@@ -155,19 +174,29 @@ def test_dissipation_makes_a_prolate_spinner_tumble():
     effects = {"elastic_yielding": {"k2": 0.1}, "dissipation": {"Q": 5.0}}
     model = wobble.assemble(-0.05, effects)
     span = 40 * abs(model.wobble_period_solar_days())
-    sol = solve(Problem(wobble.liouville, np.array([1e-3, 0.0, 1.0]), (0, span), model.parameters()), "dop853",
-                rtol=1e-10, atol=1e-13)
+    sol = solve(
+        Problem(wobble.liouville, np.array([1e-3, 0.0, 1.0]), (0, span), model.parameters()),
+        "dop853",
+        rtol=1e-10,
+        atol=1e-13,
+    )
     assert np.hypot(sol.y[0], sol.y[1]) > 10 * 1e-3
 
 
 def test_static_excitation_moves_the_mean_pole_to_chi():
-    """Liouville at zero frequency: the pole circles round chi (the displaced figure axis) and averages to it."""
+    """Liouville at zero frequency: the pole circles round chi (the displaced figure axis) and averages to
+    it."""
     chi_mas = 50.0
     model = wobble.WobbleModel(H=earth.H_MHB2000, terms=[(chi_mas * earth.MAS, 0.0, 0.0)])
     period = model.wobble_period_solar_days()
     t = np.linspace(0, 20 * period, 20001)
-    sol = solve(Problem(wobble.liouville, np.array([0.0, 0.0, 1.0]), (0, t[-1]), model.parameters()), "dop853",
-                rtol=1e-12, atol=1e-20, t_eval=t)
+    sol = solve(
+        Problem(wobble.liouville, np.array([0.0, 0.0, 1.0]), (0, t[-1]), model.parameters()),
+        "dop853",
+        rtol=1e-12,
+        atol=1e-20,
+        t_eval=t,
+    )
     m = (sol.y_eval[:, 0] + 1j * sol.y_eval[:, 1]) / earth.MAS
     assert abs(np.mean(m) - chi_mas) < 1e-3 * chi_mas
     assert np.max(np.abs(np.abs(m - chi_mas) - chi_mas)) < 1e-3 * chi_mas
@@ -179,10 +208,13 @@ def test_annual_forcing_gives_the_liouville_response():
     psi (1 + omega/n) sigma/(sigma - omega), sigma complex with Q (the rigid Liouville factor, times the
     elastic amplification 1/(1 - k2/k_s) of a mass load)."""
     chi_mas, Q = 10.0, 20.0
-    effects = {"elastic_yielding": {"period_solar_days": 433.0}, "dissipation": {"Q": Q},
-               "excitation": {"annual": {"prograde": {"amplitude_mas": chi_mas, "phase_deg": 0.0}}}}
+    effects = {
+        "elastic_yielding": {"period_solar_days": 433.0},
+        "dissipation": {"Q": Q},
+        "excitation": {"annual": {"prograde": {"amplitude_mas": chi_mas, "phase_deg": 0.0}}},
+    }
     model = wobble.assemble(earth.H_MHB2000, effects)
-    span = 150 * YEAR                                     # free part decays e^-75 ... long gone
+    span = 150 * YEAR  # free part decays e^-75 ... long gone
     t = np.arange(100 * YEAR, span, 2.0)
     sol = wobble_model.integrate(model, 1e-12, span, 1e-11, t)
     m = (sol.y_eval[:, 0] + 1j * sol.y_eval[:, 1]) / earth.MAS
@@ -196,15 +228,21 @@ def test_annual_forcing_gives_the_liouville_response():
 
 # --- fitting the polar motion ------------------------------------------------------------------------
 
+
 def test_fit_recovers_a_known_series():
     t = np.arange(0, 40, 1 / 365.25)
     f_c = 365.25 / 433.0
-    m = (3 + 2j) + (1 - 1j) * t + 150 * np.exp(2j * np.pi * f_c * t + 0.7j) \
-        + 90 * np.exp(2j * np.pi * pm.ANNUAL_CPY * t + 0.2j) + 5 * np.exp(-2j * np.pi * pm.ANNUAL_CPY * t)
+    m = (
+        (3 + 2j)
+        + (1 - 1j) * t
+        + 150 * np.exp(2j * np.pi * f_c * t + 0.7j)
+        + 90 * np.exp(2j * np.pi * pm.ANNUAL_CPY * t + 0.2j)
+        + 5 * np.exp(-2j * np.pi * pm.ANNUAL_CPY * t)
+    )
     fit = pm.fit(t, m)
     assert fit.chandler_period_days == pytest.approx(433.0, rel=1e-8)
     assert fit.chandler_amplitude_mas == pytest.approx(150.0, rel=1e-8)
-    assert fit.annual_prograde_mas == pytest.approx(90.0, rel=1e-6)     # f_c found to xatol 1e-10
+    assert fit.annual_prograde_mas == pytest.approx(90.0, rel=1e-6)  # f_c found to xatol 1e-10
     assert fit.annual_retrograde_mas == pytest.approx(5.0, rel=1e-6)
 
 
@@ -215,16 +253,28 @@ def test_observed_series_shows_a_prograde_433_day_wobble():
     assert 425 < fit.chandler_period_days < 440
     f, power = pm.periodogram(t, m, points=1201)
     band = (np.abs(f) > 0.7) & (np.abs(f) < 1.0)
-    assert f[band][np.argmax(power[band])] > 0                   # x - iy turns with the spin
+    assert f[band][np.argmax(power[band])] > 0  # x - iy turns with the spin
     assert 60 < fit.annual_prograde_mas < 120
 
 
 # --- scenes --------------------------------------------------------------------------------------------
 
-GOOD = {"title": "t", "earth": {"H": 0.0032737949, "H_definition": "(C-A)/C", "H_source": "s"},
-        "effects": {"elastic_yielding": {"k2": 0.3, "source": "s"}, "dissipation": {"Q": 100, "source": "s"}}}
-OBS = {"title": "o", "observation": {"series": "eopc04", "start_year": 1962, "end_year": 2020, "window_years": 6.4,
-                                     "step_years": 1, "compare": {"H": 0.0032737949, "k2": 0.3}}}
+GOOD = {
+    "title": "t",
+    "earth": {"H": 0.0032737949, "H_definition": "(C-A)/C", "H_source": "s"},
+    "effects": {"elastic_yielding": {"k2": 0.3, "source": "s"}, "dissipation": {"Q": 100, "source": "s"}},
+}
+OBS = {
+    "title": "o",
+    "observation": {
+        "series": "eopc04",
+        "start_year": 1962,
+        "end_year": 2020,
+        "window_years": 6.4,
+        "step_years": 1,
+        "compare": {"H": 0.0032737949, "k2": 0.3},
+    },
+}
 
 
 def scene(tmp_path, base, **changes):
@@ -246,10 +296,19 @@ BAD = [
     (GOOD, {"earth__H": -0.003}, "earth.H", "> 0"),
     (GOOD, {"effects__dissipation__Q": 0}, "effects.dissipation.Q", ">= 0.01"),
     (GOOD, {"effects__dissipation__Q": -5}, "effects.dissipation.Q", ">= 0.01"),
-    (GOOD, {"effects": {"dissipation": {"Q": 100, "source": "s"}}}, "effects.dissipation", "elastic_yielding"),
+    (
+        GOOD,
+        {"effects": {"dissipation": {"Q": 100, "source": "s"}}},
+        "effects.dissipation",
+        "elastic_yielding",
+    ),
     (GOOD, {"effects__elastic_yielding__k2": 0.95}, "effects.elastic_yielding.k2", "k_s"),
-    (GOOD, {"effects": {"triaxiality": {"b_minus_a_over_c": 0.01}}}, "effects.triaxiality.b_minus_a_over_c",
-     "below 2H"),
+    (
+        GOOD,
+        {"effects": {"triaxiality": {"b_minus_a_over_c": 0.01}}},
+        "effects.triaxiality.b_minus_a_over_c",
+        "below 2H",
+    ),
     (OBS, {"observation__start_year": 1950}, "observation.start_year", "inside the series"),
     (OBS, {"observation__end_year": 2100}, "observation.end_year", "not after the series ends"),
     (OBS, {"observation__window_years": 80}, "observation.window_years", "no longer than the span"),
@@ -270,9 +329,20 @@ def test_bad_scene_one_line(tmp_path, base, changes, field, expected):
 def test_cli_refuses_a_window_outside_the_series_and_creates_nothing(tmp_path):
     path = scene(tmp_path, OBS, observation__end_year=2100)
     out = tmp_path / "results" / "chandler" / "scene"
-    result = subprocess.run([sys.executable, "-m", "classical_dynamics", "run", "chandler", str(path),
-                             str(out), str(tmp_path / "results" / "chandler" / "timings" / "scene")],
-                            capture_output=True, text=True)
+    result = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "classical_dynamics",
+            "run",
+            "chandler",
+            str(path),
+            str(out),
+            str(tmp_path / "results" / "chandler" / "timings" / "scene"),
+        ],
+        capture_output=True,
+        text=True,
+    )
     assert result.returncode != 0 and result.stderr.strip().count("\n") == 0
     assert "observation.end_year" in result.stderr
     assert not (tmp_path / "results").exists()
@@ -289,9 +359,18 @@ def test_only_listed_effects_are_built(monkeypatch):
     called = []
     for name in wobble.EFFECTS.names():
         effect = wobble.EFFECTS[name]
-        monkeypatch.setitem(wobble.EFFECTS._effects, name, effect.__class__(
-            effect.name, effect.kind, effect.summary,
-            lambda params, model, _build=effect.build, _name=name: called.append(_name) or _build(params, model)))
+        monkeypatch.setitem(
+            wobble.EFFECTS._effects,
+            name,
+            effect.__class__(
+                effect.name,
+                effect.kind,
+                effect.summary,
+                lambda params, model, _build=effect.build, _name=name: (
+                    called.append(_name) or _build(params, model)
+                ),
+            ),
+        )
     model = wobble.assemble(earth.H_MHB2000, {"elastic_yielding": {"k2": 0.3}})
     assert called == ["elastic_yielding"]
     p = model.parameters()
@@ -313,11 +392,12 @@ def test_polar_path_time_axis_reads_calendar_years():
     low, high = results.figures["polar_path"][0].axes[1].get_xlim()
     assert 1989 < low < 1991 and 2002 < high < 2004
     polhode = results.figures["polar_path"][0].axes[0]
-    assert polhode.get_aspect() == 1.0                       # x and y in the same unit: equal aspect
+    assert polhode.get_aspect() == 1.0  # x and y in the same unit: equal aspect
 
 
 def test_retarding_couple_lamb_x10():
-    """Lamb Ex. X.10: under -kappa omega, tan(theta) falls at kappa(1/A - 1/C); it grows for a prolate body."""
+    """Lamb Ex. X.10: under -kappa omega, tan(theta) falls at kappa(1/A - 1/C); it grows for a prolate
+    body."""
     from classical_dynamics.studies.chandler.retarding import decay_rate
 
     for a in (2.0 / 3.0, 2.0):

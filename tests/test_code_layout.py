@@ -1,5 +1,5 @@
-"""The package's layout: no module imports itself back through others (imports inside functions included, since a
-circle that only closes at run time is still one the reader has to untangle)."""
+"""The package's layout: no module imports itself back through others (imports inside functions included,
+since a circle that only closes at run time is still one the reader has to untangle)."""
 
 import ast
 
@@ -26,9 +26,11 @@ def imported(name, path):
             base = node.module or ""
             if node.level:
                 here = name.split(".") if path.name == "__init__.py" else name.split(".")[:-1]
-                base = ".".join(here[:len(here) - node.level + 1] + ([node.module] if node.module else []))
+                base = ".".join(here[: len(here) - node.level + 1] + ([node.module] if node.module else []))
             # `from pkg import name`: the module pkg.name if there is one, else pkg itself
-            found.update(f"{base}.{alias.name}" if f"{base}.{alias.name}" in MODULES else base for alias in node.names)
+            found.update(
+                f"{base}.{alias.name}" if f"{base}.{alias.name}" in MODULES else base for alias in node.names
+            )
     return {module for module in found if module in MODULES and module != name}
 
 
@@ -67,5 +69,8 @@ def test_the_circle_finder_finds_one():
 
 def test_no_module_imports_itself_back():
     graph = {name: imported(name, path) for name, path in MODULES.items()}
-    assert "classical_dynamics.studies.self_excited.bounds" in graph["classical_dynamics.studies.self_excited.accuracy"]
+    assert (
+        "classical_dynamics.studies.self_excited.bounds"
+        in graph["classical_dynamics.studies.self_excited.accuracy"]
+    )
     assert circles(graph) == []

@@ -3,15 +3,14 @@
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import pytest  # noqa: E402
+import matplotlib.pyplot as plt
+import pytest
 
-from classical_dynamics import io  # noqa: E402
-from classical_dynamics.report import assets, claims  # noqa: E402
-from classical_dynamics.report.bib import read_bib  # noqa: E402
-from classical_dynamics.report.numbering import Numbering  # noqa: E402
-from classical_dynamics.formatting import format_number, shortest, sig_for_tolerance  # noqa: E402
-
+from classical_dynamics import io
+from classical_dynamics.formatting import format_number, shortest, sig_for_tolerance
+from classical_dynamics.report import assets, claims
+from classical_dynamics.report.bib import read_bib
+from classical_dynamics.report.numbering import Numbering
 
 
 def test_atomic_write_leaves_nothing_half_written(tmp_path):
@@ -21,8 +20,9 @@ def test_atomic_write_leaves_nothing_half_written(tmp_path):
     class Boom:
         def __float__(self):
             raise RuntimeError("interrupted")
+
     with pytest.raises(Exception):
-        io.atomic_write_bytes(target, Boom())           # fails mid-write
+        io.atomic_write_bytes(target, Boom())  # fails mid-write
     assert io.read_json(target) == {"a": 1}
     assert sorted(p.name for p in tmp_path.iterdir()) == ["summary.json"]
     assert oct(target.stat().st_mode & 0o777) != oct(0o600)
@@ -36,39 +36,78 @@ def test_svg_is_deterministic():
         data = io.svg_bytes(fig)
         plt.close(fig)
         return data
+
     assert draw() == draw()
 
 
-@pytest.mark.parametrize("value,sig,text", [
-    (5.22548114733106, 4, "5.225"), (0.189791, 3, "0.190"), (1.5, 4, "1.500"), (9.99996, 4, "10.00"),
-    (2.2e-16, 2, "2.2 × 10⁻¹⁶"), (-0.0237, 3, "−0.0237"), (123456.0, 3, "1.23 × 10⁵"), (True, 4, "yes"),
-    (None, 4, "—"), (0, 4, "0"), (100000, 4, "100\u202f000"), (12, 4, "12"),
-    # rounding decides the notation: five figures of 99 999.6 are 1.0000 × 10⁵, never 100000
-    (99999.6, 5, "1.0000 × 10⁵"), (99999.4, 5, "99\u202f999"), (0.00099996, 4, "0.001000"),
-    (0.00099994, 4, "9.999 × 10⁻⁴"), (-0.0, 4, "0"), (-1e-300, 2, "−1.0 × 10⁻³⁰⁰"), (12345.67, 6, "12\u202f345.7"),
-    (-9.99999, 3, "−10.0"), (float("inf"), 3, "∞"), (-7, 4, "−7")])
+@pytest.mark.parametrize(
+    "value,sig,text",
+    [
+        (5.22548114733106, 4, "5.225"),
+        (0.189791, 3, "0.190"),
+        (1.5, 4, "1.500"),
+        (9.99996, 4, "10.00"),
+        (2.2e-16, 2, "2.2 × 10⁻¹⁶"),
+        (-0.0237, 3, "−0.0237"),
+        (123456.0, 3, "1.23 × 10⁵"),
+        (True, 4, "yes"),
+        (None, 4, "—"),
+        (0, 4, "0"),
+        (100000, 4, "100\u202f000"),
+        (12, 4, "12"),
+        # rounding decides the notation: five figures of 99 999.6 are 1.0000 × 10⁵, never 100000
+        (99999.6, 5, "1.0000 × 10⁵"),
+        (99999.4, 5, "99\u202f999"),
+        (0.00099996, 4, "0.001000"),
+        (0.00099994, 4, "9.999 × 10⁻⁴"),
+        (-0.0, 4, "0"),
+        (-1e-300, 2, "−1.0 × 10⁻³⁰⁰"),
+        (12345.67, 6, "12\u202f345.7"),
+        (-9.99999, 3, "−10.0"),
+        (float("inf"), 3, "∞"),
+        (-7, 4, "−7"),
+    ],
+)
 def test_number_format(value, sig, text):
-    assert format_number(value, sig) == text.replace(" × ", "\u202f×\u202f")     # × never breaks a line
+    assert format_number(value, sig) == text.replace(" × ", "\u202f×\u202f")  # × never breaks a line
 
 
-@pytest.mark.parametrize("value,text", [(50.5, "50.5"), (306.0, "306"), (0.00327, "0.00327"), (2.18, "2.18"),
-                                        (433.1, "433.1"), (-46.84, "−46.84"), (1.6e-10, "1.6 × 10⁻¹⁰"),
-                                        (6.7575599248, "6.7575599")])
+@pytest.mark.parametrize(
+    "value,text",
+    [
+        (50.5, "50.5"),
+        (306.0, "306"),
+        (0.00327, "0.00327"),
+        (2.18, "2.18"),
+        (433.1, "433.1"),
+        (-46.84, "−46.84"),
+        (1.6e-10, "1.6 × 10⁻¹⁰"),
+        (6.7575599248, "6.7575599"),
+    ],
+)
 def test_source_values_keep_their_printed_digits(value, text):
     assert shortest(value) == text.replace(" × ", "\u202f×\u202f")
 
 
-@pytest.mark.parametrize("check,value,figures", [({"relative": 0.01}, 306.0, 3), ({"relative": 1e-12}, 1.0, 12),
-                                                 ({"absolute": 0.05}, 50.4, 4), ({"absolute": 1.0}, 433.0, 3)])
+@pytest.mark.parametrize(
+    "check,value,figures",
+    [
+        ({"relative": 0.01}, 306.0, 3),
+        ({"relative": 1e-12}, 1.0, 12),
+        ({"absolute": 0.05}, 50.4, 4),
+        ({"absolute": 1.0}, 433.0, 3),
+    ],
+)
 def test_claim_digits_follow_the_check(check, value, figures):
     assert sig_for_tolerance(value, **check) == figures
 
 
 def test_plural_and_units():
     from classical_dynamics.units import UnknownUnit, unit_text
+
     assert unit_text("periods", 1) == "\u202fperiod" and unit_text("periods", 2) == "\u202fperiods"
-    assert unit_text("d", 1) == "\u202fd"                     # a symbol is never pluralized
-    assert unit_text("″/yr", 50.4) == "″/yr"                 # closes up: 50.4″/yr
+    assert unit_text("d", 1) == "\u202fd"  # a symbol is never pluralized
+    assert unit_text("″/yr", 50.4) == "″/yr"  # closes up: 50.4″/yr
     assert unit_text("1") == "" and unit_text(None) == ""
     with pytest.raises(UnknownUnit):
         unit_text("furlongs/fortnight")
@@ -76,8 +115,10 @@ def test_plural_and_units():
 
 def test_failing_must_hold_claim_names_itself(tmp_path):
     spec = tmp_path / "c.yaml"
-    spec.write_text("- id: gravest\n  statement: s\n  source: {value: 5.225}\n"
-                    "  computed: {scene: a, number: p}\n  check: {absolute: 1.0e-6}\n  must_hold: true\n")
+    spec.write_text(
+        "- id: gravest\n  statement: s\n  source: {value: 5.225}\n"
+        "  computed: {scene: a, number: p}\n  check: {absolute: 1.0e-6}\n  must_hold: true\n"
+    )
     results = claims.evaluate("chains", spec, lambda study, scene, number: {"value": 5.2255, "unit": ""})
     assert not results[0].passed
     with pytest.raises(claims.ClaimFailure, match="claim 'gravest'"):
@@ -87,13 +128,17 @@ def test_failing_must_hold_claim_names_itself(tmp_path):
 def test_claim_on_missing_number_fails():
     import tempfile
     from pathlib import Path
+
     with tempfile.TemporaryDirectory() as tmp:
         spec = Path(tmp) / "c.yaml"
-        spec.write_text("- id: x\n  statement: s\n  computed: {scene: a, number: p}\n  check: {at_most: 1}\n"
-                        "  must_hold: true\n")
+        spec.write_text(
+            "- id: x\n  statement: s\n  computed: {scene: a, number: p}\n  check: {at_most: 1}\n"
+            "  must_hold: true\n"
+        )
 
         def lookup(*_):
             raise KeyError("no such number")
+
         (result,) = claims.evaluate("chains", spec, lookup)
     assert not result.passed and "no computed value" in result.problem
 
@@ -110,6 +155,13 @@ def test_numbering_resolves_forward_references():
 
 def test_bibliography_has_the_required_sources():
     entries = read_bib(assets.BIBLIOGRAPHY)
-    for key in ("lamb1920", "lee1964", "chandler1891", "bizouard2019", "capitaine2003", "bernoulli1738",
-                "rayleigh1877"):
+    for key in (
+        "lamb1920",
+        "lee1964",
+        "chandler1891",
+        "bizouard2019",
+        "capitaine2003",
+        "bernoulli1738",
+        "rayleigh1877",
+    ):
         assert key in entries and entries[key].get("year")

@@ -1,4 +1,5 @@
-"""The warm job server (classical_dynamics/jobserver.py): a job through it behaves as the same job run alone."""
+"""The warm job server (classical_dynamics/jobserver.py): a job through it behaves as the same job run
+alone."""
 
 import os
 import signal
@@ -40,31 +41,39 @@ def through(server_path, *args, env_server=True, **kwargs):
     env.pop(jobserver.ENV, None)
     if env_server:
         env[jobserver.ENV] = server_path
-    return subprocess.run([*CLIENT, *args], cwd=ROOT, env=env, capture_output=True, text=True, timeout=120,
-                          **kwargs)
+    return subprocess.run(
+        [*CLIENT, *args], cwd=ROOT, env=env, capture_output=True, text=True, timeout=120, **kwargs
+    )
 
 
 def test_a_job_gets_the_same_streams_and_status_with_and_without_the_server(server, tmp_path):
     path, pid = server
     bad = tmp_path / "bad.yaml"
     bad.write_text("title: [unclosed\n")
-    args = ("classical_dynamics", "run", "chains", str(bad),
-            str(tmp_path / "out"), str(tmp_path / "timings"))
+    args = ("classical_dynamics", "run", "chains", str(bad), str(tmp_path / "out"), str(tmp_path / "timings"))
     served, alone = through(path, *args), through(path, *args, env_server=False)
     assert served.returncode == alone.returncode == 2
-    assert served.stderr == alone.stderr and served.stderr.count("\n") == 1 and "YAML at line" in served.stderr
+    assert (
+        served.stderr == alone.stderr and served.stderr.count("\n") == 1 and "YAML at line" in served.stderr
+    )
     assert not (tmp_path / "out").exists()
     ok = through(path, "timeit", "-n", "1", "-r", "1", "pass")
     assert ok.returncode == 0 and "1 loop" in ok.stdout
-    assert children(pid) == []                              # the job's process is gone with it
+    assert children(pid) == []  # the job's process is gone with it
 
 
 def test_a_job_runs_in_the_clients_folder_with_its_environment(server, tmp_path):
     path, _ = server
     env = {**os.environ, jobserver.ENV: path, "JOBSERVER_PROBE": "42"}
     code = "import os; print(os.getcwd(), os.environ['JOBSERVER_PROBE'])"
-    done = subprocess.run([*CLIENT, "timeit", "-n", "1", "-r", "1", "-s", code, "pass"], cwd=tmp_path, env=env,
-                          capture_output=True, text=True, timeout=60)
+    done = subprocess.run(
+        [*CLIENT, "timeit", "-n", "1", "-r", "1", "-s", code, "pass"],
+        cwd=tmp_path,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
     assert done.returncode == 0 and done.stdout.splitlines()[0] == f"{tmp_path} 42"
 
 
@@ -73,8 +82,12 @@ def test_stopping_the_client_stops_its_job(server, sig):
     """Snakemake stops a job by signalling its shell's process: the work must not run on unseen."""
     path, pid = server
     env = {**os.environ, jobserver.ENV: path}
-    client = subprocess.Popen([*CLIENT, "timeit", "-n", "1", "-r", "1", "import time; time.sleep(60)"],
-                              env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    client = subprocess.Popen(
+        [*CLIENT, "timeit", "-n", "1", "-r", "1", "import time; time.sleep(60)"],
+        env=env,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+    )
     deadline = time.monotonic() + 30
     while not children(pid) and time.monotonic() < deadline:
         time.sleep(0.05)

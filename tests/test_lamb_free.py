@@ -1,4 +1,5 @@
-"""Lamb's free body (Arts. 48-55, Examples X, XIII.11), the notes' free precession, and Art. 61's identities."""
+"""Lamb's free body (Arts. 48-55, Examples X, XIII.11), the notes' free precession, and Art. 61's
+identities."""
 
 import numpy as np
 import pytest
@@ -28,6 +29,7 @@ def test_every_symbolic_statement_is_an_identity():
 def test_a_wrong_formula_is_not_an_identity():
     """The sympy check can fail: Ex. X.4 with the wrong sign of 2T/H^2 leaves a residual."""
     import sympy as sp
+
     A, B, C, p, q, r = lf.A_, lf.B_, lf.C_, lf.p_, lf.q_, lf.r_
     H2 = A**2 * p**2 + B**2 * q**2 + C**2 * r**2
     n = sp.Matrix([A * p, B * q, C * r]) / sp.sqrt(H2)
@@ -59,11 +61,15 @@ def test_poinsot_geometry_holds_and_moves():
     out = Numbers()
     lf._poinsot(out, I)
     n = out.numbers
-    for name in ("section_area_max_relative_deviation", "poinsot_sum_max_relative_deviation",
-                 "gyration_normal_angle_rad", "gyration_perpendicular_times_omega_drift",
-                 "plane_rate_max_relative_deviation"):
+    for name in (
+        "section_area_max_relative_deviation",
+        "poinsot_sum_max_relative_deviation",
+        "gyration_normal_angle_rad",
+        "gyration_perpendicular_times_omega_drift",
+        "plane_rate_max_relative_deviation",
+    ):
         assert n[name] < 1e-11, name
-    assert n["gyration_omega_range"] > 0.01 and n["plane_rate_range"] > 0.05      # the motion is not trivial
+    assert n["gyration_omega_range"] > 0.01 and n["plane_rate_range"] > 0.05  # the motion is not trivial
     # the differenced azimuth agrees to the differences' own error (second order in the step)
     assert n["plane_rate_differences_max_relative_deviation"] < 1e-4
 
@@ -91,7 +97,8 @@ def test_constraining_couples_are_lambs_on_the_phase_average_only():
 
 @pytest.mark.parametrize("moments, prograde", [((0.9, 0.9, 1.0), True), ((1.0, 1.0, 0.5), False)])
 def test_notes_body_frequency_turns_at_minus_omega_b(moments, prograde):
-    """Oblate: the pole turns with the spin; prolate: against it. Either way at -Omega_b, Omega_b = (I1 - I3)w3/I1."""
+    """Oblate: the pole turns with the spin; prolate: against it. Either way at -Omega_b, Omega_b = (I1 -
+    I3)w3/I1."""
     Ib = np.array(moments)
     w3 = 1.0
     t, w, _ = lf.integrate(Ib, np.array([0.05, 0.0, w3]), 5.0, samples=501)
@@ -109,9 +116,14 @@ def _scene(tmp_path, **free):
     return path
 
 
-@pytest.mark.parametrize("change, field", [({"moments": [2.0, 1.0, 2.5]}, "lamb_free_body.moments"),
-                                           ({"moments": [1.0, 1.2, 3.0]}, "lamb_free_body.moments"),
-                                           ({"plate_half_sides": [1.0, 2.0]}, "lamb_free_body.plate_half_sides")])
+@pytest.mark.parametrize(
+    "change, field",
+    [
+        ({"moments": [2.0, 1.0, 2.5]}, "lamb_free_body.moments"),
+        ({"moments": [1.0, 1.2, 3.0]}, "lamb_free_body.moments"),
+        ({"plate_half_sides": [1.0, 2.0]}, "lamb_free_body.plate_half_sides"),
+    ],
+)
 def test_bad_free_body_is_refused_in_one_line(tmp_path, change, field):
     path = _scene(tmp_path, **change)
     with pytest.raises(SceneError) as error:
@@ -123,9 +135,12 @@ def test_art61_identities_and_the_torque_routine():
     from classical_dynamics.models import precession as prec
     from classical_dynamics.studies.precession import examples
 
-    model = prec.assemble(0.00327, np.radians(23.45), prec.CONSTANTS["lamb1920"](),
-                          {"solar_torque": None, "lunar_torque": None, "lunar_inclination": None,
-                           "node_regression": None})
+    model = prec.assemble(
+        0.00327,
+        np.radians(23.45),
+        prec.CONSTANTS["lamb1920"](),
+        {"solar_torque": None, "lunar_torque": None, "lunar_inclination": None, "node_regression": None},
+    )
     out = Numbers()
     examples.lamb_art61(out, model, {"samples": 20, "seed": 3})
     n = out.numbers
@@ -145,9 +160,13 @@ def test_node_period_is_fitted_not_assumed(period_years):
 
     t = np.arange(0.0, 100.0 * earth.JULIAN_YEAR_DAYS, 1.0)
     P = period_years * earth.JULIAN_YEAR_DAYS
-    semi = lambda x: 4.0 * np.pi * x / 365.2422 + 0.3          # noqa: E731
-    eps = (1e-7 * t / t[-1] + 4.5e-5 * np.cos(2 * np.pi * t / P + 1.0) + 3e-6 * np.sin(semi(t))
-           + 1e-7 * np.cos(4 * np.pi * t / P))
+    semi = lambda x: 4.0 * np.pi * x / 365.2422 + 0.3
+    eps = (
+        1e-7 * t / t[-1]
+        + 4.5e-5 * np.cos(2 * np.pi * t / P + 1.0)
+        + 3e-6 * np.sin(semi(t))
+        + 1e-7 * np.cos(4 * np.pi * t / P)
+    )
     args = {"18.6 yr": lambda x: 2 * np.pi * x / (18.6 * 365.25), "semi-annual": semi}
     out = Numbers()
     full._node_period(out, t, eps, args)

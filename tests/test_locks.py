@@ -54,11 +54,15 @@ def test_the_tests_lock_adds_to_the_pipelines():
 def test_the_conda_environment_has_the_pipelines_pins():
     environment = yaml.safe_load((ROOT / "workflow/envs/pipeline.yaml").read_text())
     pip = next(entry["pip"] for entry in environment["dependencies"] if isinstance(entry, dict))
-    pinned = {normalized(name): version for name, version in (line.split("==") for line in pip if "==" in line)}
+    pinned = {
+        normalized(name): version for name, version in (line.split("==") for line in pip if "==" in line)
+    }
     assert pinned == {name: version for name, (version, _) in pins("pipeline.lock").items()}
-    assert "-e ../.." in pip                                      # this package, from the checkout
-    assert {"python=3.11", "pango"} <= {entry for entry in environment["dependencies"] if isinstance(entry, str)}
-    assert "Python 3.11" in (LOCKS / "pipeline.lock").read_text()    # what pip-compile resolved for
+    assert "-e ../.." in pip  # this package, from the checkout
+    assert {"python=3.11", "pango"} <= {
+        entry for entry in environment["dependencies"] if isinstance(entry, str)
+    }
+    assert "Python 3.11" in (LOCKS / "pipeline.lock").read_text()  # what pip-compile resolved for
 
 
 def test_this_environment_is_installed_from_the_locks():

@@ -20,15 +20,22 @@ HANGING = ["hanging_continuum", "hanging_particles", "hanging_links", "hanging_t
 
 
 def tree_digest(folder):
-    return {str(p.relative_to(folder)): hashlib.sha256(p.read_bytes()).hexdigest()
-            for p in sorted(folder.rglob("*")) if p.is_file()}
+    return {
+        str(p.relative_to(folder)): hashlib.sha256(p.read_bytes()).hexdigest()
+        for p in sorted(folder.rglob("*"))
+        if p.is_file()
+    }
 
 
 def result_files(repo):
     """The deterministic results: everything under results/<study>/<scene>/ except provenance (and Snakemake's
     benchmark files, results/benchmarks/, which are timings)."""
-    return {k: v for k, v in tree_digest(repo / "results").items()
-            if re.match(r"^(?!benchmarks/)[a-z_]+/(?!timings/)[a-z0-9_]+/", k) and not k.endswith("provenance.json")}
+    return {
+        k: v
+        for k, v in tree_digest(repo / "results").items()
+        if re.match(r"^(?!benchmarks/)[a-z_]+/(?!timings/)[a-z0-9_]+/", k)
+        and not k.endswith("provenance.json")
+    }
 
 
 def job_counts(dry_run_output):
@@ -72,18 +79,33 @@ def test_build_writes_the_results_contract(built_repo):
         for name in summary["tables"]:
             assert (folder / f"{name}.csv").exists()
         assert (results / "chains" / "timings" / scene / "run.csv").exists()
-        for key in ("commit", "dirty", "packages", "machine", "scene_sha256", "started", "finished",
-                    "wall_seconds", "cpu_seconds", "effects_simulated"):
+        for key in (
+            "commit",
+            "dirty",
+            "packages",
+            "machine",
+            "scene_sha256",
+            "started",
+            "finished",
+            "wall_seconds",
+            "cpu_seconds",
+            "effects_simulated",
+        ):
             assert key in provenance
         assert provenance["effects_simulated"] == sorted(
-            yaml.safe_load((built_repo / f"workflow/scenes/chains/{scene}.yaml").read_text())["effects"])
+            yaml.safe_load((built_repo / f"workflow/scenes/chains/{scene}.yaml").read_text())["effects"]
+        )
     for scene in HANGING:
         numbers = json.loads((results / "chains" / scene / "summary.json").read_text())["numbers"]
         assert len(numbers["frequencies_sqrt_g_over_l"]["value"]) == 5
         assert len(numbers["relative_error_vs_continuum"]["value"]) == 5
-        assert numbers["n"]["value"] == (0 if scene == "hanging_continuum" else
-                                         yaml.safe_load((built_repo / f"workflow/scenes/chains/{scene}.yaml")
-                                                        .read_text())["chain"]["n"])
+        assert numbers["n"]["value"] == (
+            0
+            if scene == "hanging_continuum"
+            else yaml.safe_load((built_repo / f"workflow/scenes/chains/{scene}.yaml").read_text())["chain"][
+                "n"
+            ]
+        )
 
 
 def test_every_hard_case_holds_in_the_quick_build(built_repo):
@@ -93,8 +115,10 @@ def test_every_hard_case_holds_in_the_quick_build(built_repo):
         for case in json.loads(path.read_text()).get("stability", []):
             count += 1
             if not case["holds"]:
-                failing.append(f"{path.parent.relative_to(built_repo)}: {case['name']} {case['measured']} > "
-                               f"{case['bound']}")
+                failing.append(
+                    f"{path.parent.relative_to(built_repo)}: {case['name']} {case['measured']} > "
+                    f"{case['bound']}"
+                )
     assert count > 100 and not failing, failing
 
 
@@ -104,18 +128,28 @@ def test_nothing_to_do_after_a_build(built_repo):
 
 
 def test_another_environment_marks_nothing_stale(built_repo, tmp_path):
-    """Jobs call `python3` by name: Snakemake run from another environment (same packages, another path, as on a
-    cluster node or after moving the venv) finds nothing to do after the build."""
+    """Jobs call `python3` by name: Snakemake run from another environment (same packages, another path, as on
+    a cluster node or after moving the venv) finds nothing to do after the build."""
     other = tmp_path / "env"
     (other / "bin").mkdir(parents=True)
     (other / "pyvenv.cfg").write_text((Path(sys.prefix) / "pyvenv.cfg").read_text())
     (other / "lib").symlink_to(Path(sys.prefix) / "lib")
     (other / "bin" / "python3").symlink_to(Path(sys.executable).resolve())
-    probe = subprocess.run([other / "bin" / "python3", "-c", "import sys, snakemake; print(sys.prefix)"],
-                           capture_output=True, text=True, check=True)
+    probe = subprocess.run(
+        [other / "bin" / "python3", "-c", "import sys, snakemake; print(sys.prefix)"],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
     assert probe.stdout.strip() == str(other)
-    out = subprocess.run([other / "bin" / "python3", "-m", "snakemake", "-n", "--config", "quick=1"],
-                         cwd=built_repo, env=run_env(built_repo), capture_output=True, text=True, timeout=300)
+    out = subprocess.run(
+        [other / "bin" / "python3", "-m", "snakemake", "-n", "--config", "quick=1"],
+        cwd=built_repo,
+        env=run_env(built_repo),
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert "Nothing to be done" in out.stdout + out.stderr, out.stdout[-3000:] + out.stderr[-3000:]
 
 
@@ -129,27 +163,37 @@ def test_editing_one_scene_reruns_that_scene_and_the_report_only(scratch):
     scene = scratch / "workflow/scenes/chains/loaded_string.yaml"
     scene.write_text(scene.read_text().replace("newton: 1.0", "newton: 2.0"))
     out = snakemake(scratch, "-n", "--config", "quick=1")
-    assert job_counts(out.stdout) == {"scene": 1, "results_archive": 1, "report_html": 1, "report_pdf": 1, "all": 1}
+    assert job_counts(out.stdout) == {
+        "scene": 1,
+        "results_archive": 1,
+        "report_html": 1,
+        "report_pdf": 1,
+        "all": 1,
+    }
     assert "results/chains/loaded_string" in out.stdout
-    # Built up to the HTML: the PDF renders the same HTML (29 s), checked by the shared build and the dist test.
+    # Built up to the HTML: the PDF renders the same HTML (29 s), checked by the shared build and the dist
+    # test.
     snakemake(scratch, "-c", "2", "results/report.html", "--config", "quick=1")
     summary = json.loads((scratch / "results/chains/loaded_string/summary.json").read_text())
+    # frequencies scale as sqrt(P)
     assert summary["numbers"]["frequencies_rad_per_s"]["value"][0] == pytest.approx(
-        2 ** 0.5 * 2.985221, rel=1e-5)         # frequencies scale as sqrt(P)
+        2**0.5 * 2.985221, rel=1e-5
+    )
 
 
 def test_a_new_scene_file_is_picked_up_with_no_rule_edit(scratch):
     source = scratch / "workflow/scenes/chains/loaded_string.yaml"
     (scratch / "workflow/scenes/chains/short_string.yaml").write_text(
-        source.read_text().replace("n: 10", "n: 4").replace("modes: 10", "modes: 4"))
+        source.read_text().replace("n: 10", "n: 4").replace("modes: 10", "modes: 4")
+    )
     out = snakemake(scratch, "-n", "--config", "quick=1")
     assert "results/chains/short_string" in out.stdout
     snakemake(scratch, "-c", "2", "results/report.html", "--config", "quick=1")
     assert "short_string" in (scratch / "results/report.html").read_text()
 
 
-# A study of its own, written as the README says: a study package (code, schema, chapter, claims), a scenes folder,
-# one line in the registry.
+# A study of its own, written as the README says: a study package (code, schema, chapter, claims), a scenes
+# folder, one line in the registry.
 PENDULUM = {
     "__init__.py": '''"""A throwaway study: the small oscillations of a simple pendulum."""
 import math
@@ -231,55 +275,99 @@ def test_a_new_study_is_one_package_one_scenes_folder_and_one_registry_line(scra
         (package / name).write_text(text)
     (scratch / "workflow/scenes/pendulum").mkdir()
     (scratch / "workflow/scenes/pendulum/one_metre.yaml").write_text(
-        "title: One metre\npendulum: {length_m: 1.0}\neffects: {gravity: {g_m_per_s2: 9.81}}\n")
+        "title: One metre\npendulum: {length_m: 1.0}\neffects: {gravity: {g_m_per_s2: 9.81}}\n"
+    )
     registry = scratch / "src/classical_dynamics/studies/registry.py"
     text = registry.read_text()
     line = '    Study("precession", "Precession of the equinoxes"),\n'
     assert line in text
-    registry.write_text(text.replace(line, '    Study("pendulum", "The simple pendulum"),\n' + line))  # chapter 1
+    # chapter 1
+    registry.write_text(text.replace(line, '    Study("pendulum", "The simple pendulum"),\n' + line))
 
     out = snakemake(scratch, "-n", "--config", "quick=1")
-    assert job_counts(out.stdout) == {"scene": 1, "results_archive": 1, "report_html": 1, "report_pdf": 1, "all": 1}
+    assert job_counts(out.stdout) == {
+        "scene": 1,
+        "results_archive": 1,
+        "report_html": 1,
+        "report_pdf": 1,
+        "all": 1,
+    }
     assert "results/pendulum/one_metre" in snakemake(scratch, "-n", "pendulum", "--config", "quick=1").stdout
     snakemake(scratch, "-c", "2", "results/report.html", "--config", "quick=1")
     summary = json.loads((scratch / "results/pendulum/one_metre/summary.json").read_text())
     assert summary["numbers"]["period_s"]["value"] == pytest.approx(2 * 3.141592653589793 * (1 / 9.81) ** 0.5)
     page = (scratch / "results/report.html").read_text()
-    chapters = [c for c in re.findall(r'<section id="([a-z_]+)" class="chapter"', page) if c != "introduction"]
+    chapters = [
+        c for c in re.findall(r'<section id="([a-z_]+)" class="chapter"', page) if c != "introduction"
+    ]
     assert chapters == ["pendulum", "precession", "chandler", "chains", "self_excited", "solvers"]
     assert "The simple pendulum" in page and "Period of a pendulum one metre long" in page
     assert "pendulum" in snakemake(scratch, "--list-rules").stdout.split()
 
 
-@pytest.mark.parametrize("text,field", [
-    ("title: x\nchain: {model: particles, n: 3, length_m: -1, mass_kg: 1}\neffects: {gravity: {g_m_per_s2: 9.8}}\n",
-     "chain.length_m"),
-    ("title: x\nchain: {model: particles, n: 3, length_m: 1, mass_kg: 1}\neffects: {magic: {}}\n", "effects.magic"),
-    ("title: [unclosed\n", "YAML at line"),
-    ("title: x\nobservation: {series: eopc04, start_year: 1962, end_year: 2100, window_years: 6.4, step_years: 1,"
-     " compare: {H: 0.00327, k2: 0.3}}\n", "observation.end_year"),
-    ("title: x\nearth: {H: 0.00327, H_definition: (C-A)/C, H_source: s}\n"
-     "effects: {elastic_yielding: {k2: 0.3, source: s}, dissipation: {Q: -1, source: s}}\n",
-     "effects.dissipation.Q"),
-    ("title: x\nfidelity: full\nconstants: modern\nearth: {H: 0.00327, H_definition: (C-A)/C, H_source: s,"
-     " obliquity_deg: 23.4, obliquity_source: s}\neffects: {solar_torque: }\nanalysis: {span_years: 10}\n",
-     "analysis.step_hours"),
-    ("title: x\nbody: {moments: [4.0, 2.5, 1.0]}\ntorque_axis: largest\nplane: {m1: 0.5, nu: 0, delta: 1}\n"
-     "effects: {body_torque: }\n", "body.moments"),
-])
+@pytest.mark.parametrize(
+    "text,field",
+    [
+        (
+            "title: x\nchain: {model: particles, n: 3, length_m: -1, mass_kg: 1}\neffects: {gravity: "
+            "{g_m_per_s2: 9.8}}\n",
+            "chain.length_m",
+        ),
+        (
+            "title: x\nchain: {model: particles, n: 3, length_m: 1, mass_kg: 1}\neffects: {magic: {}}\n",
+            "effects.magic",
+        ),
+        ("title: [unclosed\n", "YAML at line"),
+        (
+            "title: x\nobservation: {series: eopc04, start_year: 1962, end_year: 2100, window_years: 6.4, "
+            "step_years: 1,"
+            " compare: {H: 0.00327, k2: 0.3}}\n",
+            "observation.end_year",
+        ),
+        (
+            "title: x\nearth: {H: 0.00327, H_definition: (C-A)/C, H_source: s}\n"
+            "effects: {elastic_yielding: {k2: 0.3, source: s}, dissipation: {Q: -1, source: s}}\n",
+            "effects.dissipation.Q",
+        ),
+        (
+            "title: x\nfidelity: full\nconstants: modern\nearth: {H: 0.00327, H_definition: (C-A)/C, "
+            "H_source: s,"
+            " obliquity_deg: 23.4, obliquity_source: s}\neffects: {solar_torque: }\nanalysis: {span_years: "
+            "10}\n",
+            "analysis.step_hours",
+        ),
+        (
+            "title: x\nbody: {moments: [4.0, 2.5, 1.0]}\ntorque_axis: largest\nplane: {m1: 0.5, nu: 0, "
+            "delta: 1}\n"
+            "effects: {body_torque: }\n",
+            "body.moments",
+        ),
+    ],
+)
 def test_a_bad_scene_stops_the_build_and_touches_nothing(scratch, text, field):
     before = tree_digest(scratch / "results")
-    study = ("precession" if "fidelity" in text else "self_excited" if "torque_axis" in text
-             else "chandler" if "observation" in text or "earth" in text else "chains")
+    study = (
+        "precession"
+        if "fidelity" in text
+        else "self_excited"
+        if "torque_axis" in text
+        else "chandler"
+        if "observation" in text or "earth" in text
+        else "chains"
+    )
     (scratch / f"workflow/scenes/{study}/broken.yaml").write_text(text)
     out = snakemake(scratch, "-c", "2", "--config", "quick=1", check=False)
     assert out.returncode != 0
     lines = [line for line in (out.stdout + out.stderr).splitlines() if "broken.yaml" in line]
     assert len(lines) == 1 and field in lines[0]
     assert tree_digest(scratch / "results") == before
-    snakemake(scratch, "--unlock")                      # runs no job: the bad scene does not stand in its way
-    other = snakemake(scratch, "-n", "solvers", "results/precession/lamb_1920" if study != "precession" else "chains")
-    assert "note: not needed by this command, and not valid either: " in other.stderr and field in other.stderr
+    snakemake(scratch, "--unlock")  # runs no job: the bad scene does not stand in its way
+    other = snakemake(
+        scratch, "-n", "solvers", "results/precession/lamb_1920" if study != "precession" else "chains"
+    )
+    assert (
+        "note: not needed by this command, and not valid either: " in other.stderr and field in other.stderr
+    )
 
 
 def test_a_failing_must_hold_claim_fails_the_build_naming_it(scratch):
@@ -287,21 +375,36 @@ def test_a_failing_must_hold_claim_fails_the_build_naming_it(scratch):
     text = claims.read_text()
     block = re.search(r"- id: lamb_gravest_period\n.*?(?=\n- id:)", text, re.S).group(0)
     assert "check: {absolute: 5.0e-4}" in block
-    claims.write_text(text.replace(block, block.replace("check: {absolute: 5.0e-4}", "check: {absolute: 1.0e-9}")))
+    claims.write_text(
+        text.replace(block, block.replace("check: {absolute: 5.0e-4}", "check: {absolute: 1.0e-9}"))
+    )
     out = snakemake(scratch, "-c", "1", "--config", "quick=1", check=False)
     assert out.returncode != 0
     assert "claim 'lamb_gravest_period'" in out.stdout + out.stderr
-    assert "Traceback" not in out.stdout + out.stderr                 # the claim is named, no traceback
+    assert "Traceback" not in out.stdout + out.stderr  # the claim is named, no traceback
     assert not (scratch / "results/report.html").exists()
 
 
 def test_two_clean_builds_give_identical_results(built_repo, tmp_path):
     other = copy_repository(tmp_path / "again")
-    snakemake(other, "-c", "2", "results/chains/hanging_particles", "results/chains/hanging_continuum",
-              "results/chains/hanging_time_domain", "results/chains/spring_chain", "results/chandler/excited",
-              "results/chandler/observed", "results/chandler/triaxial", "results/precession/lamb_1920",
-              "results/precession/full_sun", "results/precession/averaged_cycle",
-              "results/self_excited/largest_perturbed_cycles", "--config", "quick=1")
+    snakemake(
+        other,
+        "-c",
+        "2",
+        "results/chains/hanging_particles",
+        "results/chains/hanging_continuum",
+        "results/chains/hanging_time_domain",
+        "results/chains/spring_chain",
+        "results/chandler/excited",
+        "results/chandler/observed",
+        "results/chandler/triaxial",
+        "results/precession/lamb_1920",
+        "results/precession/full_sun",
+        "results/precession/averaged_cycle",
+        "results/self_excited/largest_perturbed_cycles",
+        "--config",
+        "quick=1",
+    )
     mine = {k: v for k, v in result_files(built_repo).items() if k in result_files(other)}
     assert len(mine) > 10
     assert mine == result_files(other)
@@ -309,8 +412,11 @@ def test_two_clean_builds_give_identical_results(built_repo, tmp_path):
 
 def test_dist_archive_with_checksums(scratch):
     snakemake(scratch, "-c", "1", "dist", "--config", "quick=1")
-    archives = [a for a in (scratch / "results/dist").glob("classical-dynamics-*.tar.gz")
-                if not a.name.endswith("-results.tar.gz")]
+    archives = [
+        a
+        for a in (scratch / "results/dist").glob("classical-dynamics-*.tar.gz")
+        if not a.name.endswith("-results.tar.gz")
+    ]
     assert len(archives) == 1
     with tarfile.open(archives[0]) as tar:
         names = tar.getnames()
@@ -321,12 +427,13 @@ def test_dist_archive_with_checksums(scratch):
         for line in sums:
             digest, name = line.split("  ")
             assert hashlib.sha256(tar.extractfile(f"{prefix}/{name}").read()).hexdigest() == digest
-        assert len(sums) == len(names) - 1                     # every member but the manifest itself
+        assert len(sums) == len(names) - 1  # every member but the manifest itself
         tar.extractall(scratch / "unpacked", filter="data")
     # Each manifest checks where it lies, with the standard tool: the archive beside it, the members unpacked.
     for folder in (scratch / "results/dist", scratch / "unpacked" / prefix):
-        check = subprocess.run(["sha256sum", "--check", "--strict", "SHA256SUMS"], cwd=folder,
-                               capture_output=True, text=True)
+        check = subprocess.run(
+            ["sha256sum", "--check", "--strict", "SHA256SUMS"], cwd=folder, capture_output=True, text=True
+        )
         assert check.returncode == 0, check.stdout[-500:] + check.stderr[-500:]
     outer = (scratch / "results/dist/SHA256SUMS").read_text().splitlines()
     assert outer == [f"{hashlib.sha256(archives[0].read_bytes()).hexdigest()}  {archives[0].name}"]
@@ -338,11 +445,12 @@ def test_dist_archive_with_checksums(scratch):
 
 
 def test_the_report_prints_the_sha256_of_the_results_archive(built_repo):
-    """The archive of every result but the report is made first; the report and its BibTeX name its checksum."""
-    archive, = (built_repo / "results/dist").glob("classical-dynamics-*-results.tar.gz")
+    """The archive of every result but the report is made first; the report and its BibTeX name its
+    checksum."""
+    (archive,) = (built_repo / "results/dist").glob("classical-dynamics-*-results.tar.gz")
     digest = hashlib.sha256(archive.read_bytes()).hexdigest()
     page = (built_repo / "results/report.html").read_text()
-    assert page.count(digest) >= 2                                # the how-to-cite text and the BibTeX note
+    assert page.count(digest) >= 2  # the how-to-cite text and the BibTeX note
     with tarfile.open(archive) as tar:
         names = tar.getnames()
     assert not any(n.endswith(("report.html", "report.pdf")) for n in names)
@@ -350,61 +458,108 @@ def test_the_report_prints_the_sha256_of_the_results_archive(built_repo):
 
 
 def test_a_checkout_path_with_a_space_runs(tmp_path):
-    """make puts .venv inside the checkout, so the interpreter's path carries the checkout's space: every shell
-    rule quotes its paths. A venv in the spaced folder, seeing this environment's packages through a .pth file."""
+    """make puts .venv inside the checkout, so the interpreter's path carries the checkout's space: every
+    shell rule quotes its paths. A venv in the spaced folder, seeing this environment's packages through a
+    .pth file."""
     import site
     import sys
+
     repo = copy_repository(tmp_path / "my checkout")
     subprocess.run([sys.executable, "-m", "venv", "--without-pip", str(repo / ".venv")], check=True)
-    venv_site, = (repo / ".venv/lib").glob("python3*/site-packages")
+    (venv_site,) = (repo / ".venv/lib").glob("python3*/site-packages")
     (venv_site / "parent.pth").write_text("\n".join(site.getsitepackages()) + "\n")
-    done = subprocess.run([str(repo / ".venv/bin/python"), "-m", "snakemake", "-c", "1",
-                           "results/chains/two_masses_three_springs", "--config", "quick=1"], cwd=repo, env=run_env(repo),
-                          capture_output=True, text=True, timeout=300)
+    done = subprocess.run(
+        [
+            str(repo / ".venv/bin/python"),
+            "-m",
+            "snakemake",
+            "-c",
+            "1",
+            "results/chains/two_masses_three_springs",
+            "--config",
+            "quick=1",
+        ],
+        cwd=repo,
+        env=run_env(repo),
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
     summary = json.loads((repo / "results/chains/two_masses_three_springs/summary.json").read_text())
     assert summary["numbers"]
 
 
 def test_the_workflow_runs_from_another_directory(tmp_path):
-    """snakemake -s <checkout>/workflow/Snakefile -d <elsewhere>: results/ and .snakemake/ are made there, everything
-    else is read beside the Snakefile and from the package; the checkout gets nothing."""
+    """snakemake -s <checkout>/workflow/Snakefile -d <elsewhere>: results/ and .snakemake/ are made there,
+    everything else is read beside the Snakefile and from the package; the checkout gets nothing."""
     repo, elsewhere = copy_repository(tmp_path / "checkout"), tmp_path / "elsewhere"
     (tmp_path / "cwd").mkdir()
-    command = [str(Path(sys.executable).parent / "snakemake"), "-s", str(repo / "workflow/Snakefile"),
-               "-d", str(elsewhere), "--config", "quick=1"]
+    command = [
+        str(Path(sys.executable).parent / "snakemake"),
+        "-s",
+        str(repo / "workflow/Snakefile"),
+        "-d",
+        str(elsewhere),
+        "--config",
+        "quick=1",
+    ]
     scene = "results/chains/two_masses_three_springs"
-    done = subprocess.run(command + ["-c", "1", scene], cwd=tmp_path / "cwd", env=run_env(repo),
-                          capture_output=True, text=True, timeout=300)
+    done = subprocess.run(
+        command + ["-c", "1", scene],
+        cwd=tmp_path / "cwd",
+        env=run_env(repo),
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
     provenance = json.loads((elsewhere / scene / "provenance.json").read_text())
-    assert (elsewhere / provenance["scene_file"]).resolve() == repo / "workflow/scenes/chains/two_masses_three_springs.yaml"
+    assert (
+        elsewhere / provenance["scene_file"]
+    ).resolve() == repo / "workflow/scenes/chains/two_masses_three_springs.yaml"
     assert not (repo / "results").exists() and not (repo / ".snakemake").exists()
     assert not any((tmp_path / "cwd").iterdir())
-    plan = subprocess.run(command + ["-n"], cwd=tmp_path / "cwd", env=run_env(repo), capture_output=True, text=True,
-                          timeout=300)
+    plan = subprocess.run(
+        command + ["-n"], cwd=tmp_path / "cwd", env=run_env(repo), capture_output=True, text=True, timeout=300
+    )
     assert plan.returncode == 0, plan.stderr[-2000:]
     counts = job_counts(plan.stdout)
     assert counts["report_html"] == counts["report_pdf"] == 1
-    assert counts["scene"] == len(list((repo / "workflow/scenes").glob("*/*.yaml"))) - 1       # all but the one built
+    # all but the one built
+    assert counts["scene"] == len(list((repo / "workflow/scenes").glob("*/*.yaml"))) - 1
 
 
 def test_a_cut_short_result_is_refused_by_the_report_and_rerun_by_the_pipeline(scratch):
     """A truncated summary.json: the report names it in one line; a dry run lists that scene (and what follows
-    from it) and nothing else; a kill's staging folder is read by nobody; the rerun restores the same bytes."""
+    from it) and nothing else; a kill's staging folder is read by nobody; the rerun restores the same
+    bytes."""
     summary = scratch / "results/chains/loaded_string/summary.json"
     whole = summary.read_bytes()
-    summary.write_bytes(whole[:len(whole) // 2])
+    summary.write_bytes(whole[: len(whole) // 2])
     staging = scratch / "results/chains/.loaded_string.k1ll3d"
     staging.mkdir()
     (staging / "summary.json").write_text("{")
-    done = subprocess.run([sys.executable, "-m", "classical_dynamics", "report", "results", "/dev/null", "--quick"],
-                          cwd=scratch, env=run_env(scratch), capture_output=True, text=True)
+    done = subprocess.run(
+        [sys.executable, "-m", "classical_dynamics", "report", "results", "/dev/null", "--quick"],
+        cwd=scratch,
+        env=run_env(scratch),
+        capture_output=True,
+        text=True,
+    )
     assert done.returncode == 2 and "Traceback" not in done.stderr
-    assert done.stderr.strip() == ("results/chains/loaded_string/summary.json: does not match its checksum in "
-                                   "provenance.json (truncated or edited); rebuild the scene")
+    assert done.stderr.strip() == (
+        "results/chains/loaded_string/summary.json: does not match its checksum in "
+        "provenance.json (truncated or edited); rebuild the scene"
+    )
     out = snakemake(scratch, "-n", "--config", "quick=1")
-    assert job_counts(out.stdout) == {"scene": 1, "results_archive": 1, "report_html": 1, "report_pdf": 1, "all": 1}
+    assert job_counts(out.stdout) == {
+        "scene": 1,
+        "results_archive": 1,
+        "report_html": 1,
+        "report_pdf": 1,
+        "all": 1,
+    }
     assert "results/chains/loaded_string" in out.stdout
     snakemake(scratch, "-c", "2", "results/report.html", "--config", "quick=1")
     assert summary.read_bytes() == whole
@@ -419,22 +574,36 @@ def test_a_build_killed_mid_job_resumes_to_the_same_results(scratch, signal_name
     import os
     import signal
     import time
+
     target = scratch / "results/chains/hanging_links"
 
-    def contents():       # provenance.json also records when and how long: compare the checksums it records
+    def contents():  # provenance.json also records when and how long: compare the checksums it records
         files = {p.relative_to(target): p.read_bytes() for p in target.rglob("*") if p.is_file()}
         files[Path("provenance.json")] = json.loads(files[Path("provenance.json")])["files"]
         return files
+
     before = contents()
     shutil.rmtree(target)
     log = scratch / "results/logs/chains/hanging_links.log"
     log.unlink(missing_ok=True)
-    command = [str(Path(sys.executable).parent / "snakemake"), "-c", "1", "results/chains/hanging_links",
-               "--config", "quick=1"]
-    build = subprocess.Popen(command, cwd=scratch, env=run_env(scratch), stdout=subprocess.DEVNULL,
-                             stderr=subprocess.DEVNULL, start_new_session=True)
+    command = [
+        str(Path(sys.executable).parent / "snakemake"),
+        "-c",
+        "1",
+        "results/chains/hanging_links",
+        "--config",
+        "quick=1",
+    ]
+    build = subprocess.Popen(
+        command,
+        cwd=scratch,
+        env=run_env(scratch),
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+        start_new_session=True,
+    )
     deadline = time.monotonic() + 120
-    while not log.exists() and time.monotonic() < deadline:    # the scene's job has started
+    while not log.exists() and time.monotonic() < deadline:  # the scene's job has started
         time.sleep(0.05)
     time.sleep(0.5)
     os.killpg(build.pid, getattr(signal, signal_name))

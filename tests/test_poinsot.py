@@ -14,7 +14,6 @@ from classical_dynamics.studies.precession import examples
 from .conftest import ROOT
 
 
-
 class Recorder:
     def __init__(self):
         self.numbers, self.hard = {}, {}
@@ -30,7 +29,8 @@ class Recorder:
 
 
 def test_attitude_turns_the_body_the_right_way():
-    """A spin about the body's z axis at rate 1: after time t the body's x axis points at (cos t, sin t, 0)."""
+    """A spin about the body's z axis at rate 1: after time t the body's x axis points at (cos t, sin t,
+    0)."""
     t, w, q = poinsot._integrate([1.0, 2.0, 3.0], [0.0, 0.0, 1.0], 1.3, 3)
     x = poinsot._to_space(q, np.tile([1.0, 0.0, 0.0], (3, 1)))
     assert x[-1] == pytest.approx([np.cos(1.3), np.sin(1.3), 0.0], abs=1e-12)
@@ -39,16 +39,21 @@ def test_attitude_turns_the_body_the_right_way():
 def _scipy_radius_extremes(I, w0, span=60.0):
     """The herpolhode's radius from omega alone, by scipy's DOP853: |x|^2 - (2T/H^2), x = omega/sqrt(2T)."""
     I = np.asarray(I, float)
-    f = lambda t, w: [(I[1] - I[2]) / I[0] * w[1] * w[2], (I[2] - I[0]) / I[1] * w[2] * w[0],
-                      (I[0] - I[1]) / I[2] * w[0] * w[1]]
-    sol = solve_ivp(f, (0, span), w0, method="DOP853", rtol=1e-12, atol=1e-14, t_eval=np.linspace(0, span, 60001))
+    f = lambda t, w: [
+        (I[1] - I[2]) / I[0] * w[1] * w[2],
+        (I[2] - I[0]) / I[1] * w[2] * w[0],
+        (I[0] - I[1]) / I[2] * w[0] * w[1],
+    ]
+    sol = solve_ivp(
+        f, (0, span), w0, method="DOP853", rtol=1e-12, atol=1e-14, t_eval=np.linspace(0, span, 60001)
+    )
     w = sol.y.T
     T2, H2 = np.sum(I * w0**2), np.sum((I * w0) ** 2)
     rho = np.sqrt(np.sum(w**2, axis=1) / T2 - T2 / H2)
     return rho.min(), rho.max()
 
 
-@pytest.mark.parametrize("w0", [[1.0, 0.3, 1.0], [1.0, 0.2, 0.3]])     # about the greatest, the least axis
+@pytest.mark.parametrize("w0", [[1.0, 0.3, 1.0], [1.0, 0.2, 0.3]])  # about the greatest, the least axis
 def test_herpolhode_circles_closed_form_against_scipy(w0):
     I = [1.0, 2.0, 2.5]
     lo, hi = poinsot.herpolhode_radii(I, w0)
@@ -64,8 +69,16 @@ def test_symmetric_body_herpolhode_is_a_circle():
 
 def test_poinsot_body_numbers():
     r = Recorder()
-    poinsot.poinsot_body(r, {"moments": [1.0, 2.0, 2.5], "omega": [1.0, 0.3, 1.0], "span": 40.0, "samples": 40001,
-                             "source": "test"})
+    poinsot.poinsot_body(
+        r,
+        {
+            "moments": [1.0, 2.0, 2.5],
+            "omega": [1.0, 0.3, 1.0],
+            "span": 40.0,
+            "samples": 40001,
+            "source": "test",
+        },
+    )
     n = r.numbers
     assert n["poinsot_plane_error"] < 1e-10
     assert n["herpolhode_bounds_error"] < 1e-8
@@ -73,7 +86,7 @@ def test_poinsot_body_numbers():
     assert n["rolling_arc_difference"] < 1e-5
     assert n["conjugate_midplane_error"] < 1e-13
     assert n["momentum_parallel_only_on_axes"] == 1 and n["invariable_cone_sympy"] == 1
-    assert 0 <= n["triangle_least_margin"] < 1e-3          # flat bodies come near the bound, none beyond it
+    assert 0 <= n["triangle_least_margin"] < 1e-3  # flat bodies come near the bound, none beyond it
     assert n["hnw_triangle_margin"] < 0
     assert n["invariable_planes_residual"] < 1e-9
     assert "herpolhode" in r.figures and "$" in r.figures["herpolhode"]

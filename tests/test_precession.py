@@ -1,4 +1,5 @@
-"""Precession of the equinoxes: the secular formula, the averaged and the full model, hard cases, bad scenes."""
+"""Precession of the equinoxes: the secular formula, the averaged and the full model, hard cases, bad
+scenes."""
 
 import numpy as np
 import pytest
@@ -30,38 +31,57 @@ def full_rate(m, years, step_hours=3.0):
 
 # --- rung 1: the secular formula (digest P1, P3, P4, P8) -----------------------------------------------
 
+
 def test_solar_rate_with_lamb_like_inputs():
     m = model(("solar_torque",), H=0.00327, obliquity=np.radians(23.45), orbits=prec.lamb1920())
     per_year = m.solar_rate() * m.orbits.year_days / earth.ARCSEC
     # (3 n'^2/2n) H cos eps per year = 3 pi (n'/n) H cos eps, written out independently
-    assert per_year == pytest.approx(3 * np.pi / 366.25 * 0.00327 * np.cos(np.radians(23.45)) / earth.ARCSEC, rel=1e-12)
+    assert per_year == pytest.approx(
+        3 * np.pi / 366.25 * 0.00327 * np.cos(np.radians(23.45)) / earth.ARCSEC, rel=1e-12
+    )
     assert per_year == pytest.approx(15.92, abs=0.05)
 
 
 def test_scalings_of_the_secular_rate():
     base = model(("solar_torque",))
     assert abs(model(("solar_torque",), obliquity=np.pi / 2).solar_rate()) < 1e-15 * base.solar_rate()
-    assert model(("solar_torque",), H=2 * earth.H_P03).solar_rate() == pytest.approx(2 * base.solar_rate(), rel=1e-14)
+    assert model(("solar_torque",), H=2 * earth.H_P03).solar_rate() == pytest.approx(
+        2 * base.solar_rate(), rel=1e-14
+    )
     assert model(("solar_torque",), obliquity=0.3).solar_rate() / base.solar_rate() == pytest.approx(
-        np.cos(0.3) / np.cos(EPS0), rel=1e-14)
-    fast = prec.Orbits(**{**prec.modern().__dict__, "spin_turns_per_year": 2 * prec.modern().spin_turns_per_year})
-    assert model(("solar_torque",), orbits=fast).solar_rate() == pytest.approx(0.5 * base.solar_rate(), rel=1e-14)
+        np.cos(0.3) / np.cos(EPS0), rel=1e-14
+    )
+    fast = prec.Orbits(
+        **{**prec.modern().__dict__, "spin_turns_per_year": 2 * prec.modern().spin_turns_per_year}
+    )
+    assert model(("solar_torque",), orbits=fast).solar_rate() == pytest.approx(
+        0.5 * base.solar_rate(), rel=1e-14
+    )
 
 
 def test_lamb_ratio_and_the_mass_convention():
-    lamb = model(("solar_torque", "lunar_torque", "lunar_inclination", "node_regression"), H=0.00327,
-                 obliquity=np.radians(23.45), orbits=prec.lamb1920())
+    lamb = model(
+        ("solar_torque", "lunar_torque", "lunar_inclination", "node_regression"),
+        H=0.00327,
+        obliquity=np.radians(23.45),
+        orbits=prec.lamb1920(),
+    )
     assert lamb.lunar_rate() / lamb.solar_rate() == pytest.approx(2.18, abs=0.01)
     # Kepler's law for the Moon wants M/(E + M): the ratio falls to about 2.15 (digest P4)
     o = prec.lamb1920()
     corrected = prec.Orbits(**{**o.__dict__, "moon_gm_over_a3": o.moon_gm_over_a3 * 81.4 / 82.4})
-    m = model(("solar_torque", "lunar_torque", "lunar_inclination", "node_regression"), H=0.00327,
-              obliquity=np.radians(23.45), orbits=corrected)
+    m = model(
+        ("solar_torque", "lunar_torque", "lunar_inclination", "node_regression"),
+        H=0.00327,
+        obliquity=np.radians(23.45),
+        orbits=corrected,
+    )
     assert m.lunar_rate() / m.solar_rate() == pytest.approx(2.153, abs=0.005)
 
 
 def test_inverse_problem_returns_lamb_ellipticity(tmp_path):
     from classical_dynamics.studies.results import Results
+
     scene = validate("precession", ROOT / "workflow/scenes/precession/lamb_1920.yaml")
     results = Results("precession", scene.name, scene.title)
     secular.run(scene, results)
@@ -75,6 +95,7 @@ def test_inverse_problem_returns_lamb_ellipticity(tmp_path):
 
 def test_modern_secular_rate_against_iau2006():
     import erfa
+
     m = model()
     # psi_A from pyerfa by an independent route: its value after one Julian century
     psi_A = erfa.p06e(2451545.0, 36525.0)[1] / earth.ARCSEC / 100.0
@@ -83,6 +104,7 @@ def test_modern_secular_rate_against_iau2006():
 
 
 # --- rung 2: the averaged equations ---------------------------------------------------------------------
+
 
 def test_node_average_by_quadrature():
     """P5: the Moon's couple averaged over the node is the ecliptic's with the factor (3cos^2 i - 1)/2."""
@@ -108,8 +130,8 @@ def test_averaged_rate_is_the_formula_for_orbits_in_the_ecliptic():
     sol = averaged.integrate(m, span, t)
     psi, eps = prec.precession_angles(sol.y_eval)
     assert np.polyfit(t, psi, 1)[0] == pytest.approx(m.secular_rate(), rel=1e-9)
-    assert np.ptp(eps) < 1e-10                 # constant, to the tolerance (rtol 1e-12) over 3000 years
-    assert psi[-1] > 0                      # westward: retrograde
+    assert np.ptp(eps) < 1e-10  # constant, to the tolerance (rtol 1e-12) over 3000 years
+    assert psi[-1] > 0  # westward: retrograde
 
 
 def test_18p6_year_nutation_of_the_averaged_model():
@@ -124,7 +146,8 @@ def test_18p6_year_nutation_of_the_averaged_model():
     assert fitting.amplitude(fp, "18.6 yr") == pytest.approx(closed_psi, rel=2e-3)
     assert fitting.amplitude(fe, "18.6 yr") == pytest.approx(closed_eps, rel=2e-3)
     assert fitting.amplitude(fp, "18.6 yr") / fitting.amplitude(fe, "18.6 yr") == pytest.approx(
-        2 / np.tan(2 * EPS0), rel=2e-3)
+        2 / np.tan(2 * EPS0), rel=2e-3
+    )
     # the IAU's phase convention: dpsi = -A sin(Omega), deps = +B cos(Omega)
     assert fp.sin["18.6 yr"] / earth.ARCSEC == pytest.approx(-17.27, abs=0.05)
     assert fe.cos["18.6 yr"] / earth.ARCSEC == pytest.approx(9.22, abs=0.05)
@@ -135,10 +158,11 @@ def test_a_fixed_inclined_node_lets_the_obliquity_swing():
     span = 13000 * YEAR
     sol = averaged.integrate(m, span, np.linspace(0, span, 2001))
     _, eps = prec.precession_angles(sol.y_eval)
-    assert np.degrees(np.ptp(eps)) > 5.0                  # degrees, not arcseconds
+    assert np.degrees(np.ptp(eps)) > 5.0  # degrees, not arcseconds
 
 
 # --- rung 3: the full model -----------------------------------------------------------------------------
+
 
 def test_couple_against_maccullagh_in_vectors():
     """torque_body against N = 3 GM/r^5 r x (I r) assembled independently in the space frame."""
@@ -157,19 +181,24 @@ def test_couple_against_maccullagh_in_vectors():
         for k in (prec.SUN, prec.MOON):
             x, y, z, a3 = prec._body_position(t, p, k)
             r = np.array([x, y, z])
-            total += p[k + 1] / 3 * a3 * 3 * np.cross(r, I_space @ r)       # p[k+1] = 3 GM/a^3, r unit
+            total += p[k + 1] / 3 * a3 * 3 * np.cross(r, I_space @ r)  # p[k+1] = 3 GM/a^3, r unit
         assert R.T @ total == pytest.approx(out, abs=1e-9 * np.linalg.norm(out))
 
 
 def _matrix(q):
     w, x, y, z = q
-    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+    return np.array(
+        [
+            [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+        ]
+    )
 
 
 def test_kepler_orbit_positions():
     from scipy.optimize import brentq
+
     m = model()
     p = m.parameters()
     for t in (0.0, 91.3, 200.0, 1234.5):
@@ -185,7 +214,9 @@ def test_kepler_orbit_positions():
         # the Moon's position lies in its orbit plane, tilted by i, node regressing
         x, y, z, _ = prec._body_position(t, p, prec.MOON)
         node = p[prec.NODE0] + p[prec.NODE_RATE] * t
-        normal = np.array([np.sin(m.moon_i) * np.sin(node), -np.sin(m.moon_i) * np.cos(node), np.cos(m.moon_i)])
+        normal = np.array(
+            [np.sin(m.moon_i) * np.sin(node), -np.sin(m.moon_i) * np.cos(node), np.cos(m.moon_i)]
+        )
         assert np.dot(normal, (x, y, z)) == pytest.approx(0.0, abs=1e-14)
         assert np.linalg.norm((x, y, z)) == pytest.approx(1.0, rel=1e-14)
 
@@ -193,7 +224,7 @@ def test_kepler_orbit_positions():
 def test_a_body_not_listed_is_not_evaluated():
     m = model(("solar_torque",))
     p = m.parameters()
-    p[prec.MOON + 1:prec.NODE_RATE + 1] = np.nan            # garbage in the Moon's block: never read
+    p[prec.MOON + 1 : prec.NODE_RATE + 1] = np.nan  # garbage in the Moon's block: never read
     out = np.empty(3)
     prec.torque_body(10.0, np.array([0.9, 0.1, 0.3, 0.2]) / np.linalg.norm([0.9, 0.1, 0.3, 0.2]), p, out)
     assert np.all(np.isfinite(out))
@@ -246,7 +277,7 @@ def test_full_sun_only_matches_secular_and_semiannual():
 def test_precession_is_retrograde_and_the_sign_comes_from_the_bulge():
     oblate = model(("solar_torque",))
     fp, *_ = full_rate(oblate, 2)
-    assert fp.rate > 0                                      # westward: retrograde
+    assert fp.rate > 0  # westward: retrograde
     prolate = model(("solar_torque",), H=-earth.H_P03)
     fp, *_ = full_rate(prolate, 2)
     assert fp.rate < 0
@@ -254,6 +285,7 @@ def test_precession_is_retrograde_and_the_sign_comes_from_the_bulge():
 
 def test_full_century_against_averaged_and_iau2000b():
     import erfa
+
     m = model()
     fp, fe, args, t, psi, eps = full_rate(m, 40)
     sol = averaged.integrate(m, t[-1], t)
@@ -271,6 +303,7 @@ def test_full_century_against_averaged_and_iau2000b():
 
 # --- hard cases -----------------------------------------------------------------------------------------
 
+
 def test_a_millennium_keeps_L_and_the_mean_obliquity():
     m = model()
     t, ms, qs = full.integrate(m, 1000 * YEAR, 0.125)
@@ -279,7 +312,7 @@ def test_a_millennium_keeps_L_and_the_mean_obliquity():
     psi, eps = prec.precession_angles(full.angular_momentum_axis(ms, qs))
     _, fe, _ = full.fit_series(m, t, psi, eps)
     assert abs(fe.rate * 36525 / earth.ARCSEC) < full.OBLIQUITY_RATE_BOUND
-    assert abs(fe.offset - EPS0) / earth.ARCSEC < 0.1      # the mean obliquity is the scene's
+    assert abs(fe.offset - EPS0) / earth.ARCSEC < 0.1  # the mean obliquity is the scene's
 
 
 def test_fitted_rate_does_not_depend_on_the_window():
@@ -291,7 +324,7 @@ def test_fitted_rate_does_not_depend_on_the_window():
         bare.append(np.polyfit(t[inside], psi[inside], 1)[0])
         fitted.append(fitting.fit(t[inside], psi[inside], args).rate)
     assert np.ptp(fitted) / np.mean(fitted) < full.ALIASING_BOUND
-    assert np.ptp(bare) / np.mean(bare) > 1e-3              # what a bare line does
+    assert np.ptp(bare) / np.mean(bare) > 1e-3  # what a bare line does
 
 
 def test_starting_on_the_forced_state_leaves_no_free_wobble():
@@ -319,8 +352,10 @@ def test_ellipticity_enters_as_H_never_as_a_difference():
 
 # --- units: one test per conversion ---------------------------------------------------------------------
 
+
 def test_spin_is_the_stellar_day():
     import erfa
+
     # the Earth rotation angle advances 2 pi x 1.00273781191135448 per UT1 day
     d = erfa.era00(2451545.0, 1.0) - erfa.era00(2451545.0, 0.0)
     assert np.mod(d, 2 * np.pi) == pytest.approx(np.mod(prec.modern().spin, 2 * np.pi), abs=1e-12)
@@ -344,25 +379,39 @@ def test_node_period_against_the_stars_and_the_equinox():
 
 # --- scenes ---------------------------------------------------------------------------------------------
 
-GOOD = {"title": "x", "fidelity": "full", "constants": "modern",
-        "earth": {"H": 0.00327, "H_definition": "(C-A)/C", "H_source": "s", "obliquity_deg": 23.4,
-                  "obliquity_source": "s"},
-        "effects": {"solar_torque": None}, "analysis": {"span_years": 1, "step_hours": 3}}
+GOOD = {
+    "title": "x",
+    "fidelity": "full",
+    "constants": "modern",
+    "earth": {
+        "H": 0.00327,
+        "H_definition": "(C-A)/C",
+        "H_source": "s",
+        "obliquity_deg": 23.4,
+        "obliquity_source": "s",
+    },
+    "effects": {"solar_torque": None},
+    "analysis": {"span_years": 1, "step_hours": 3},
+}
 
 
-@pytest.mark.parametrize("change,field", [
-    (lambda d: d["effects"].update(magic=None), "effects.magic"),
-    (lambda d: d["earth"].update(obliquity_deg=200), "earth.obliquity_deg"),
-    (lambda d: d["earth"].update(obliquity_deg=-1), "earth.obliquity_deg"),
-    (lambda d: d["earth"].update(H=0), "earth.H"),
-    (lambda d: d["earth"].update(H=-0.003), "earth.H"),
-    (lambda d: d["analysis"].pop("step_hours"), "analysis.step_hours"),
-    (lambda d: d["analysis"].update(step_hours=48), "analysis.step_hours"),
-    (lambda d: d["effects"].update(node_regression=None), "effects.node_regression"),
-    (lambda d: d.update(effects={"orbit_eccentricity": None}), "effects"),
-])
+@pytest.mark.parametrize(
+    "change,field",
+    [
+        (lambda d: d["effects"].update(magic=None), "effects.magic"),
+        (lambda d: d["earth"].update(obliquity_deg=200), "earth.obliquity_deg"),
+        (lambda d: d["earth"].update(obliquity_deg=-1), "earth.obliquity_deg"),
+        (lambda d: d["earth"].update(H=0), "earth.H"),
+        (lambda d: d["earth"].update(H=-0.003), "earth.H"),
+        (lambda d: d["analysis"].pop("step_hours"), "analysis.step_hours"),
+        (lambda d: d["analysis"].update(step_hours=48), "analysis.step_hours"),
+        (lambda d: d["effects"].update(node_regression=None), "effects.node_regression"),
+        (lambda d: d.update(effects={"orbit_eccentricity": None}), "effects"),
+    ],
+)
 def test_bad_scenes_name_the_field(tmp_path, change, field):
     import copy
+
     data = copy.deepcopy(GOOD)
     change(data)
     assert_refused(tmp_path, "precession", data, field)
@@ -388,10 +437,23 @@ def test_lamb_examples_from_the_model():
             self.numbers[name] = value
 
     r = Collect()
-    examples.moon_line_offset(r, {"C_minus_A_over_Ea2": 0.00109, "moon_distance_radii": 60, "declination_deg": 28})
-    assert r.numbers["moon_line_offset_radii"] == pytest.approx(r.numbers["moon_line_offset_closed_form_radii"],
-                                                                rel=1e-13)
-    examples.gyroscope_couple(r, {"weights_lb": [300, 35], "radii_of_gyration_ft": [1.0, 2.5], "spin_rev_per_s": 20,
-                                  "turn_period_s": 10, "g_ft_per_s2": 32.2, "transverse_over_axial": 0.3})
-    assert r.numbers["gyroscope_couple_ft_lb"] == pytest.approx(r.numbers["gyroscope_couple_closed_form_ft_lb"],
-                                                                rel=1e-13)
+    examples.moon_line_offset(
+        r, {"C_minus_A_over_Ea2": 0.00109, "moon_distance_radii": 60, "declination_deg": 28}
+    )
+    assert r.numbers["moon_line_offset_radii"] == pytest.approx(
+        r.numbers["moon_line_offset_closed_form_radii"], rel=1e-13
+    )
+    examples.gyroscope_couple(
+        r,
+        {
+            "weights_lb": [300, 35],
+            "radii_of_gyration_ft": [1.0, 2.5],
+            "spin_rev_per_s": 20,
+            "turn_period_s": 10,
+            "g_ft_per_s2": 32.2,
+            "transverse_over_axial": 0.3,
+        },
+    )
+    assert r.numbers["gyroscope_couple_ft_lb"] == pytest.approx(
+        r.numbers["gyroscope_couple_closed_form_ft_lb"], rel=1e-13
+    )

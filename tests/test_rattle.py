@@ -26,8 +26,16 @@ def test_order_two():
     errors = []
     for per in (100, 200):
         h = 2 * np.pi / per
-        tip, _, _ = rattle.integrate(rattle.positions_from_angles([theta0], 1.0), np.zeros((1, 2)), np.ones(1),
-                                     1.0, 1.0, h, per * 40, 10)
+        tip, _, _ = rattle.integrate(
+            rattle.positions_from_angles([theta0], 1.0),
+            np.zeros((1, 2)),
+            np.ones(1),
+            1.0,
+            1.0,
+            h,
+            per * 40,
+            10,
+        )
         errors.append(abs(rattle.crossing_frequency(tip, h)[0] - exact))
     assert errors[0] / errors[1] == pytest.approx(4.0, rel=0.1)
 
@@ -47,5 +55,5 @@ def test_energy_error_stays_bounded_over_ten_thousand_periods():
     drift = np.abs(energies - energies[0]) / (energies[0] - rest)
     tenth = energies.size // 10
     assert drift.max() < 1e-3
-    assert drift[-tenth:].max() < 2 * drift[:tenth].max()      # no growth: bounded, not drifting
+    assert drift[-tenth:].max() < 2 * drift[:tenth].max()  # no growth: bounded, not drifting
     assert constraint < 1e-13

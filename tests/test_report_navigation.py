@@ -23,7 +23,7 @@ from .test_report_typesetting import CHROMIUM, FLAGS
 
 ROOT = Path(__file__).resolve().parents[1]
 CLAIMS = {study: assets.claims_file(study) for study in STUDIES}
-PAGE_BUDGET = 60                                  # A4 pages, issue 16
+PAGE_BUDGET = 60  # A4 pages, issue 16
 
 
 # --- numbering and citation, directly ------------------------------------------------------------
@@ -32,19 +32,28 @@ PAGE = """<nav><!--contents--></nav>
 <section id="abstract" class="front"><h2>Abstract</h2></section>
 <section id="intro" class="chapter"><h2>Introduction</h2><h3 id="intro-a">First</h3><h3>Second <i>part</i></h3></section>
 <section id="two" class="chapter"><h2>Two</h2><h3 id="two-a">Only</h3></section>
-<section id="extra" class="appendix"><h2>Tables</h2><h3 id="extra-a">All</h3></section>"""
+<section id="extra" class="appendix"><h2>Tables</h2><h3 id="extra-a">All</h3></section>"""  # noqa: E501
 
 
 def test_sections_are_numbered_and_listed_two_levels_deep():
     page, outline = number_sections(PAGE)
-    assert [(h.number, h.text) for h in outline] == [("", "Abstract"), ("1", "Introduction"), ("2", "Two"),
-                                                     ("A", "Tables")]
-    assert [(h.number, h.id) for h in outline[1].children] == [("1.1", "intro-a"), ("1.2", "intro-second-part")]
+    assert [(h.number, h.text) for h in outline] == [
+        ("", "Abstract"),
+        ("1", "Introduction"),
+        ("2", "Two"),
+        ("A", "Tables"),
+    ]
+    assert [(h.number, h.id) for h in outline[1].children] == [
+        ("1.1", "intro-a"),
+        ("1.2", "intro-second-part"),
+    ]
     assert outline[3].children[0].number == "A.1"
     assert 'data-toc="1.2 Second part"' in page and 'href="#intro-second-part"' in page
     full = add_navigation(PAGE)
-    contents = full[full.index("<nav>"):full.index("</nav>")]
-    assert contents.count("<li>") == 8 and '<a href="#two-a"><span class="secno">2.1</span> Only</a>' in contents
+    contents = full[full.index("<nav>") : full.index("</nav>")]
+    assert (
+        contents.count("<li>") == 8 and '<a href="#two-a"><span class="secno">2.1</span> Only</a>' in contents
+    )
 
 
 def test_two_sections_with_one_id_are_refused():
@@ -65,9 +74,23 @@ def test_the_bibtex_entry_says_what_citation_cff_says():
 
 
 def _claim(passed, explanation=""):
-    return ClaimResult(id="x", statement="s", study="precession", scene="a", number="n", computed=1.0, unit="",
-                       source={"value": 2.0}, modern=None, check={"relative": 0.01}, deviation=-1.0,
-                       relative_deviation=-0.5, passed=passed, must_hold=False, explanation=explanation)
+    return ClaimResult(
+        id="x",
+        statement="s",
+        study="precession",
+        scene="a",
+        number="n",
+        computed=1.0,
+        unit="",
+        source={"value": 2.0},
+        modern=None,
+        check={"relative": 0.01},
+        deviation=-1.0,
+        relative_deviation=-0.5,
+        passed=passed,
+        must_hold=False,
+        explanation=explanation,
+    )
 
 
 def test_a_claim_that_fails_must_say_why():
@@ -85,6 +108,7 @@ LANDS = """(id) => { const t = document.getElementById(id); if (!t) return null;
 @pytest.fixture(scope="module")
 def browser():
     from playwright.sync_api import sync_playwright
+
     with sync_playwright() as p:
         b = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
         yield b
@@ -102,12 +126,14 @@ def _open(browser, built_repo, width, touch=False):
 @pytest.mark.parametrize("width", [1280, 390])
 def test_every_contents_link_lands_on_its_target(browser, built_repo, width):
     page = _open(browser, built_repo, width, touch=width < 1000)
-    targets = page.eval_on_selector_all("nav.toc a", "links => links.map(a => a.getAttribute('href').slice(1))")
-    assert len(targets) > 30                                     # chapters and their sections
+    targets = page.eval_on_selector_all(
+        "nav.toc a", "links => links.map(a => a.getAttribute('href').slice(1))"
+    )
+    assert len(targets) > 30  # chapters and their sections
     missed = []
     for target in targets:
         if width < 1000:
-            page.click(".menu-toggle")                           # on a phone the contents are a menu
+            page.click(".menu-toggle")  # on a phone the contents are a menu
         page.click(f"nav.toc a[href='#{target}']")
         page.wait_for_timeout(30)
         where = page.evaluate(LANDS, target)
@@ -116,7 +142,7 @@ def test_every_contents_link_lands_on_its_target(browser, built_repo, width):
         if width < 1000:
             assert not page.is_visible("nav.toc"), "the menu closes when a section is chosen"
     assert missed == []
-    assert page.evaluate("document.documentElement.scrollWidth") <= width    # no horizontal scroll
+    assert page.evaluate("document.documentElement.scrollWidth") <= width  # no horizontal scroll
     page.context.close()
 
 
@@ -126,7 +152,7 @@ def test_the_sidebar_stays_beside_the_text_on_a_laptop(browser, built_repo):
     assert page.is_visible("nav.toc") and not page.is_visible(".menu-toggle")
     page.evaluate("window.scrollTo(0, document.body.scrollHeight / 2)")
     box = page.locator("nav.toc").bounding_box()
-    assert box["y"] <= 1 and box["x"] < 400                     # sticky, on the left, still in view
+    assert box["y"] <= 1 and box["x"] < 400  # sticky, on the left, still in view
     page.context.close()
 
 
@@ -163,13 +189,15 @@ def test_a_number_opens_its_provenance(browser, built_repo, how):
         page.keyboard.press("Enter")
     scene, key, text = _provenance_of(page, link)
     study, name = scene.split("/")
-    assert f"workflow/scenes/{study}/{name}.yaml" in text            # its scene
-    assert f"results/{scene}/summary.json → numbers.{key}" in text     # its file and key
-    assert f"snakemake -c all results/{scene}" in text                 # the command that rebuilds it
+    assert f"workflow/scenes/{study}/{name}.yaml" in text  # its scene
+    assert f"results/{scene}/summary.json → numbers.{key}" in text  # its file and key
+    assert f"snakemake -c all results/{scene}" in text  # the command that rebuilds it
     provenance = json.loads((built_repo / "results" / scene / "provenance.json").read_text())
     assert re.search(r"commit\s+" + re.escape(provenance["commit"]), text)
     assert re.search(r"scene SHA-256\s+" + provenance["scene_sha256"], text)
-    assert float(link.get_attribute("data-value")) == pytest.approx(float(re.search(r"value\s+(\S+)", text)[1]))
+    assert float(link.get_attribute("data-value")) == pytest.approx(
+        float(re.search(r"value\s+(\S+)", text)[1])
+    )
     # the panel links to the appendix row, and that row names the number and links back
     row = page.locator(f"#prov-{study}-{name}")
     assert page.locator(f"#provenance-panel a[href='#prov-{study}-{name}']").count() == 1
@@ -197,10 +225,13 @@ def test_every_figure_links_its_svg_data_and_scene(built_repo):
 
 # --- the PDF -------------------------------------------------------------------------------------
 
+
 @pytest.mark.slow
 def test_the_pdf_keeps_its_page_budget_outline_and_metadata(built_repo):
     pdf = built_repo / "results/report.pdf"
-    info = subprocess.run(["pdfinfo", "-isodates", str(pdf)], capture_output=True, text=True, check=True).stdout
+    info = subprocess.run(
+        ["pdfinfo", "-isodates", str(pdf)], capture_output=True, text=True, check=True
+    ).stdout
     fields = dict(line.split(":", 1) for line in info.splitlines() if ":" in line)
     fields = {k.strip(): v.strip() for k, v in fields.items()}
     assert int(fields["Pages"]) <= PAGE_BUDGET
@@ -208,13 +239,20 @@ def test_the_pdf_keeps_its_page_budget_outline_and_metadata(built_repo):
     assert fields["Title"] == cff["title"]
     assert fields["Author"] == cff["authors"][0]["name"]
     assert "Chandler wobble" in fields["Subject"] and "precession of the equinoxes" in fields["Keywords"]
-    # The date is the commit's (a rebuild keeps it); the test's copy is no git checkout, so it is the newest result's.
-    newest = max(json.loads(p.read_text())["finished"] for p in (built_repo / "results").glob("*/*/provenance.json"))
+    # The date is the commit's (a rebuild keeps it); the test's copy is no git checkout, so it is the newest
+    # result's.
+    newest = max(
+        json.loads(p.read_text())["finished"] for p in (built_repo / "results").glob("*/*/provenance.json")
+    )
     assert fields["CreationDate"][:10] == newest[:10]
-    assert f'<meta name="dcterms.created" content="{newest}">' in (built_repo / "results/report.html").read_text()
+    assert (
+        f'<meta name="dcterms.created" content="{newest}">'
+        in (built_repo / "results/report.html").read_text()
+    )
     # The outline: every numbered chapter and section of the contents, in order.
-    xml = subprocess.run(["pdftohtml", "-xml", "-i", "-stdout", "-q", str(pdf)], capture_output=True, text=True,
-                         check=True).stdout
+    xml = subprocess.run(
+        ["pdftohtml", "-xml", "-i", "-stdout", "-q", str(pdf)], capture_output=True, text=True, check=True
+    ).stdout
     outline = [unescape(o).strip() for o in re.findall(r"<item[^>]*>([^<]+)</item>", xml)]
     html_page = (built_repo / "results/report.html").read_text()
     headings = [unescape(h) for h in re.findall(r'<h[23](?: id="[^"]+")? data-toc="([^"]+)"', html_page)]
@@ -223,8 +261,9 @@ def test_the_pdf_keeps_its_page_budget_outline_and_metadata(built_repo):
 
 def _outline_starts(pdf) -> set[int]:
     """Pages on which a top-level entry of the PDF outline (a chapter, appendix or front section) starts."""
-    xml = subprocess.run(["pdftohtml", "-xml", "-i", "-stdout", "-q", str(pdf)], capture_output=True, text=True,
-                         check=True).stdout
+    xml = subprocess.run(
+        ["pdftohtml", "-xml", "-i", "-stdout", "-q", str(pdf)], capture_output=True, text=True, check=True
+    ).stdout
     starts, depth = set(), 0
     for tag, page in re.findall(r'<(/?outline|item)(?: page="(\d+)")?', xml):
         depth += {"outline": 1, "/outline": -1}.get(tag, 0)
@@ -238,6 +277,7 @@ def test_no_page_is_more_than_40_percent_blank_but_a_sections_last(built_repo, t
     """Ink must reach at least 60 % down the text block, except on the last page of a chapter or section."""
     import numpy as np
     from PIL import Image
+
     pdf = built_repo / "results/report.pdf"
     subprocess.run(["pdftoppm", "-r", "30", "-gray", str(pdf), str(tmp_path / "p")], check=True)
     pages = sorted(tmp_path.glob("p-*.pgm"))
@@ -245,10 +285,10 @@ def test_no_page_is_more_than_40_percent_blank_but_a_sections_last(built_repo, t
     mostly_blank = []
     for number, page in enumerate(pages, start=1):
         if number + 1 in starts or number == len(pages):
-            continue                                        # a chapter's last page may end where it ends
+            continue  # a chapter's last page may end where it ends
         ink = np.asarray(Image.open(page)) < 200
         mm = ink.shape[0] / 297
-        block = ink[int(22 * mm):int((297 - 18) * mm)]     # below the running head, above the folio
+        block = ink[int(22 * mm) : int((297 - 18) * mm)]  # below the running head, above the folio
         rows = np.flatnonzero(block.any(axis=1))
         used = (rows.max() + 1) / len(block) if len(rows) else 0.0
         if used < 0.6:
@@ -258,28 +298,35 @@ def test_no_page_is_more_than_40_percent_blank_but_a_sections_last(built_repo, t
 
 # --- the source ledger ---------------------------------------------------------------------------
 
+
 def _ledger(tmp_path, entry):
     folder = tmp_path / "ledger"
     folder.mkdir(exist_ok=True)
-    (folder / "notes.yaml").write_text(yaml.safe_dump({"source": {"key": "lecture_notes", "title": "Notes"},
-                                                       "statements": [entry]}))
+    (folder / "notes.yaml").write_text(
+        yaml.safe_dump({"source": {"key": "lecture_notes", "title": "Notes"}, "statements": [entry]})
+    )
     return folder
 
 
-@pytest.mark.parametrize("entry,message", [
-    ({"id": "a", "where": "p. 1", "states": "ω² = k/m"}, "maps to nothing"),
-    ({"id": "a", "claim": "chains/no_such_claim"}, "no_such_claim"),
-    ({"id": "a", "claim": "chains/lamb_node", "out_of_scope": "historical"}, "exactly one"),
-])
+@pytest.mark.parametrize(
+    "entry,message",
+    [
+        ({"id": "a", "where": "p. 1", "states": "ω² = k/m"}, "maps to nothing"),
+        ({"id": "a", "claim": "chains/no_such_claim"}, "no_such_claim"),
+        ({"id": "a", "claim": "chains/lamb_node", "out_of_scope": "historical"}, "exactly one"),
+    ],
+)
 def test_a_ledger_statement_must_map_to_one_thing_that_exists(tmp_path, entry, message):
     from classical_dynamics.report.ledger import LedgerError, read_ledger
+
     with pytest.raises(LedgerError, match=message):
         read_ledger(_ledger(tmp_path, entry), CLAIMS)
 
 
 def test_the_ledgers_map_every_statement(tmp_path):
     from classical_dynamics.report.ledger import read_ledger
+
     sources = read_ledger(assets.LEDGER, CLAIMS)
     for source in sources:
         assert source.statements, source.key
-        assert all(s.kind != "out_of_scope" or len(s.target) > 20 for s in source.statements)   # a real reason
+        assert all(s.kind != "out_of_scope" or len(s.target) > 20 for s in source.statements)  # a real reason

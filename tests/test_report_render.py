@@ -10,12 +10,20 @@ from PIL import Image
 pytestmark = pytest.mark.slow
 
 CHROMIUM = "/usr/bin/chromium"
-FLAGS = ["--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
-         "--disable-component-update", "--disable-sync"]
+FLAGS = [
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-quic",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+]
 
 
 def test_html_in_a_real_browser(built_repo, tmp_path):
     from playwright.sync_api import sync_playwright
+
     html = built_repo / "results/report.html"
     errors, failed, requests = [], [], []
     with sync_playwright() as p:
@@ -36,13 +44,13 @@ def test_html_in_a_real_browser(built_repo, tmp_path):
         page.screenshot(path=str(tmp_path / "results.png"))
         browser.close()
     assert errors == [] and failed == []
-    assert [u for u in requests if not u.startswith(("file:", "data:"))] == []     # works offline
+    assert [u for u in requests if not u.startswith(("file:", "data:"))] == []  # works offline
     assert figures >= 10 and all(complete and width > 0 for complete, width, _ in images)
     # every number knows its scene's commit and input hash, its key and its full value
     assert len(numbers) > 50 and all(n and n[0] and len(n[1]) == 64 and n[2] and n[3] for n in numbers)
     for shot in ("top.png", "results.png"):
         pixels = np.asarray(Image.open(tmp_path / shot).convert("L"), dtype=float)
-        assert pixels.std() > 10                                                   # not blank
+        assert pixels.std() > 10  # not blank
 
 
 def test_html_has_resolved_numbering(built_repo):
@@ -55,17 +63,24 @@ def test_html_has_resolved_numbering(built_repo):
 
 
 def test_the_appendix_shows_the_measured_scaling_with_its_origin(built_repo):
-    """The cost-against-scenes figure and its slopes come from the benchmark's saved file, named with its commit."""
+    """The cost-against-scenes figure and its slopes come from the benchmark's saved file, named with its
+    commit."""
     import json
 
     from classical_dynamics.formatting import format_number
+
     data = json.loads((built_repo / "benchmarks/results/pipeline_scaling.json").read_text())
     text = (built_repo / "results/report.html").read_text()
-    section = text[text.index("How the cost grows with the number of scenes"):text.index('id="provenance-scenes"')]
+    section = text[
+        text.index("How the cost grows with the number of scenes") : text.index('id="provenance-scenes"')
+    ]
     assert 'id="fig:pipeline-scaling"' in section and data["commit"][:10] in section
     links = re.findall(r'<a href="([^"#]+)"', section)
-    assert {"../benchmarks/results/pipeline_scaling.svg", "../benchmarks/results/pipeline_scaling.json",
-            "../benchmarks/pipeline_scaling.py"} <= set(links)
+    assert {
+        "../benchmarks/results/pipeline_scaling.svg",
+        "../benchmarks/results/pipeline_scaling.json",
+        "../benchmarks/pipeline_scaling.py",
+    } <= set(links)
     for link in links:
         assert (built_repo / "results" / link).resolve().is_file(), link
     for key in ("build_s_per_scene", "report_html_s_per_scene", "report_pdf_s_per_scene"):
@@ -79,15 +94,18 @@ def test_pdf_pages(built_repo, tmp_path):
     pages = sorted(tmp_path.glob("page-*.png"))
     assert len(pages) >= 10
 
-    def body(page):             # the page less its running header and page number (grey: ink of their own)
+    def body(page):  # the page less its running header and page number (grey: ink of their own)
         image = np.asarray(Image.open(page).convert("L"))
-        return image[int(0.06 * len(image)):int(0.94 * len(image))]
-    inked = [body(p).min() < 100 for p in pages]                # no page is empty but for header and number
+        return image[int(0.06 * len(image)) : int(0.94 * len(image))]
+
+    inked = [body(p).min() < 100 for p in pages]  # no page is empty but for header and number
     assert all(inked), [p.name for p, ink in zip(pages, inked) if not ink]
-    text = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True, text=True, check=True).stdout
+    text = subprocess.run(
+        ["pdftotext", "-layout", str(pdf), "-"], capture_output=True, text=True, check=True
+    ).stdout
     html = (built_repo / "results/report.html").read_text()
     for number in re.findall(r'<span class="label">Figure (\d+)\.</span>', html):
-        assert f"Figure {number}." in text                                         # every figure, same number
+        assert f"Figure {number}." in text  # every figure, same number
     assert "Contents" in text and "References" in text and "Vibrations of chains" in text
     assert "The Chandler wobble" in text and "observed polar motion" in text
     assert "Precession of the equinoxes" in text and "The spin-resolved Earth" in text

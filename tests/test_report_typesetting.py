@@ -14,17 +14,28 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from classical_dynamics.report.inline_math import MathError, render_text
 from classical_dynamics.figure_style import MAX_HEIGHT_IN, MIN_FONT_PT, TEXT_WIDTH_IN
+from classical_dynamics.report.inline_math import MathError, render_text
 
 CHROMIUM = "/usr/bin/chromium"
-FLAGS = ["--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
-         "--disable-component-update", "--disable-sync"]
+FLAGS = [
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-quic",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+]
 
 # What must never reach a reader: TeX and the pseudo-markup that stands in for it.
 RAW = {
-    "TeX superscript": r"\^\{", "TeX subscript": r"_\{", "backslash command": r"\\[A-Za-z]+",
-    "dollar": r"\$", "TeX quotes": r"``|''", "TeX accent": r"\\['`\"^~]",
+    "TeX superscript": r"\^\{",
+    "TeX subscript": r"_\{",
+    "backslash command": r"\\[A-Za-z]+",
+    "dollar": r"\$",
+    "TeX quotes": r"``|''",
+    "TeX accent": r"\\['`\"^~]",
 }
 # In running text (not code): x_c-style subscripts and 1e-10-style numbers.
 PROSE_ONLY = {
@@ -39,19 +50,25 @@ VISIBLE_PROSE = """() => {
 
 
 def findings(text, patterns):
-    return {name: sorted(set(re.findall(f"(?:{p})", text)))[:5] for name, p in patterns.items()
-            if re.search(p, text)}
+    return {
+        name: sorted(set(re.findall(f"(?:{p})", text)))[:5]
+        for name, p in patterns.items()
+        if re.search(p, text)
+    }
 
 
 # --- inline math, unit level ----------------------------------------------------------------------
-@pytest.mark.parametrize("source,html", [
-    (r"$\nu_\mathrm{c}$", '<span class=math><i>ν</i><sub>c</sub></span>'),
-    (r"$m_1$", '<span class=math><i>m</i><sub>1</sub></span>'),
-    (r"$(1 - e^2)^{-3/2}$", '<span class=math>(1 − <i>e</i><sup>2</sup>)<sup>−3/2</sup></span>'),
-    (r"$\dot\psi$", '<span class=math><i>ψ̇</i></span>'),
-    (r"$\tfrac12 p_1^2$", '<span class=math>½ <i>p</i><sub>1</sub><sup>2</sup></span>'),
-    ("a < b & $x$", 'a &lt; b &amp; <span class=math><i>x</i></span>'),
-])
+@pytest.mark.parametrize(
+    "source,html",
+    [
+        (r"$\nu_\mathrm{c}$", "<span class=math><i>ν</i><sub>c</sub></span>"),
+        (r"$m_1$", "<span class=math><i>m</i><sub>1</sub></span>"),
+        (r"$(1 - e^2)^{-3/2}$", "<span class=math>(1 − <i>e</i><sup>2</sup>)<sup>−3/2</sup></span>"),
+        (r"$\dot\psi$", "<span class=math><i>ψ̇</i></span>"),
+        (r"$\tfrac12 p_1^2$", "<span class=math>½ <i>p</i><sub>1</sub><sup>2</sup></span>"),
+        ("a < b & $x$", "a &lt; b &amp; <span class=math><i>x</i></span>"),
+    ],
+)
 def test_inline_math(source, html):
     assert render_text(source) == html
 
@@ -64,10 +81,12 @@ def test_inline_math_refuses_what_it_cannot_typeset(source):
 
 # --- the built report -----------------------------------------------------------------------------
 
+
 @pytest.fixture(scope="module")
 def browser_texts(built_repo):
     """Visible text and layout facts of the HTML in Chromium at a laptop's and a phone's width."""
     from playwright.sync_api import sync_playwright
+
     out = {}
     with sync_playwright() as p:
         browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
@@ -86,7 +105,7 @@ def browser_texts(built_repo):
                       if (r.right <= window.innerWidth + 1) return false;
                       for (let a = e.parentElement; a; a = a.parentElement) {
                         const o = getComputedStyle(a).overflowX; if (o === 'auto' || o === 'scroll') return false; }
-                      return true; }).map(e => e.tagName + '#' + (e.id || e.className))"""),
+                      return true; }).map(e => e.tagName + '#' + (e.id || e.className))"""),  # noqa: E501
             }
             page.close()
         browser.close()
@@ -110,8 +129,12 @@ def test_html_shows_no_raw_markup(browser_texts):
 def test_pdf_links_name_no_path_of_this_machine(built_repo):
     """Links to the data beside the report stay relative (as in the HTML): a file:// link would carry this
     machine's paths into the cited archive and make its bytes depend on where it was built."""
-    urls = subprocess.run(["pdfinfo", "-url", str(built_repo / "results/report.pdf")], capture_output=True,
-                          text=True, check=True).stdout.splitlines()[1:]
+    urls = subprocess.run(
+        ["pdfinfo", "-url", str(built_repo / "results/report.pdf")],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout.splitlines()[1:]
     targets = [line.split()[-1] for line in urls]
     assert len(targets) > 100
     assert [t for t in targets if t.startswith("file:") or str(built_repo) in t] == []
@@ -135,13 +158,15 @@ def test_nothing_wider_than_a_phone_without_its_own_scroll_box(browser_texts):
 def test_nothing_past_the_pdf_text_block(built_repo, tmp_path):
     """No ink in the left or right margin (A4, 18 mm margins) between the running head and the folio."""
     dpi = 60
-    subprocess.run(["pdftoppm", "-r", str(dpi), "-gray", str(built_repo / "results/report.pdf"),
-                    str(tmp_path / "p")], check=True)
+    subprocess.run(
+        ["pdftoppm", "-r", str(dpi), "-gray", str(built_repo / "results/report.pdf"), str(tmp_path / "p")],
+        check=True,
+    )
     mm = dpi / 25.4
     offenders = []
     for page in sorted(tmp_path.glob("p-*.pgm")):
         ink = np.asarray(Image.open(page)) < 180
-        top, bottom = int(16 * mm), int((297 - 18) * mm)           # print.css: @page margins
+        top, bottom = int(16 * mm), int((297 - 18) * mm)  # print.css: @page margins
         left, right = int((18 - 1.5) * mm), int((210 - 18 + 1.5) * mm)
         band = ink[top:bottom]
         if band[:, :left].any() or band[:, right:].any():
@@ -166,8 +191,9 @@ def test_identifiers_and_commands_break_only_at_separators(built_repo, pdf_text)
 
 
 def _figures(page_html):
-    for uri in re.findall(r'<figure id="[^"]+" class="figure"><img src="data:image/svg\+xml;base64,([^"]+)"',
-                          page_html):
+    for uri in re.findall(
+        r'<figure id="[^"]+" class="figure"><img src="data:image/svg\+xml;base64,([^"]+)"', page_html
+    ):
         yield base64.b64decode(uri).decode("utf-8")
 
 
@@ -195,16 +221,24 @@ def test_figure_text_is_legible_at_print_size(built_repo):
 
 
 def test_a_paragraph_does_not_open_with_one_word_alone(tmp_path):
-    """WeasyPrint 70 keeps only the first word when the text before an inline element fits its line only without
-    its trailing space; report/pdf.py lets that space hang. The paragraph is one of the report's, set at the print
-    width where the fault showed."""
-    paragraph = ("This report rebuilds classical results of rigid-body dynamics and of vibrations from their sources,\n"
-                 "  Lamb's <em>Higher Mechanics</em> [<a>1</a>] and Lee's thesis on the self-excited rigid body")
+    """WeasyPrint 70 keeps only the first word when the text before an inline element fits its line only
+    without its trailing space; report/pdf.py lets that space hang. The paragraph is one of the report's, set
+    at the print width where the fault showed."""
+    paragraph = (
+        "This report rebuilds classical results of rigid-body dynamics and of vibrations from their "
+        "sources,\n"
+        "  Lamb's <em>Higher Mechanics</em> [<a>1</a>] and Lee's thesis on the self-excited rigid body"
+    )
     html = tmp_path / "p.html"
-    html.write_text('<html><head><style>@page { size: A4; margin: 16mm 18mm 18mm } html { font: 9pt/1.3 "DejaVu Serif" }'
-                    f"</style></head><body><p>{paragraph}</p></body></html>", encoding="utf-8")
+    html.write_text(
+        '<html><head><style>@page { size: A4; margin: 16mm 18mm 18mm } html { font: 9pt/1.3 "DejaVu Serif" }'
+        f"</style></head><body><p>{paragraph}</p></body></html>",
+        encoding="utf-8",
+    )
     from classical_dynamics.report.pdf import html_to_pdf
+
     html_to_pdf(html, tmp_path / "p.pdf")
-    lines = subprocess.run(["pdftotext", str(tmp_path / "p.pdf"), "-"], capture_output=True, text=True,
-                           check=True).stdout.splitlines()
+    lines = subprocess.run(
+        ["pdftotext", str(tmp_path / "p.pdf"), "-"], capture_output=True, text=True, check=True
+    ).stdout.splitlines()
     assert lines[0].endswith("their sources, Lamb's"), lines[:2]

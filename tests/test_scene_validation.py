@@ -50,23 +50,51 @@ BAD = [
     ("negative length", edited(chain__length_m=-1.0), "chain.length_m", "expected a number >= 1e-06"),
     ("negative mass", edited(chain__mass_kg=-2.0), "chain.mass_kg", "expected a number >= 1e-09"),
     ("zero particles", edited(chain__n=0), "chain.n", "expected a number >= 1"),
-    ("unknown effect", edited(effects={"magnetism": {}}), "effects.magnetism",
-     "known effect: forcing, friction, gravity, rotation, springs, tension"),
-    ("negative gravity", edited(effects={"gravity": {"g_m_per_s2": -9.81}}), "effects.gravity.g_m_per_s2", "> 0"),
+    (
+        "unknown effect",
+        edited(effects={"magnetism": {}}),
+        "effects.magnetism",
+        "known effect: forcing, friction, gravity, rotation, springs, tension",
+    ),
+    (
+        "negative gravity",
+        edited(effects={"gravity": {"g_m_per_s2": -9.81}}),
+        "effects.gravity.g_m_per_s2",
+        "> 0",
+    ),
     ("missing title", edited(title=KeyError), "title", "required"),
     ("no effects", edited(effects={}), "effects", "at least 1"),
     ("gravity on a string", edited(chain__ends="fixed-fixed"), "chain.ends", "fixed-free"),
     ("masses list of wrong length", edited(chain__masses_kg=[1.0, 2.0]), "chain.masses_kg", "n = 10"),
     ("continuum with n", edited(chain__model="continuum"), "chain.n", "no n for a continuum"),
     ("not finite", edited(chain__length_m=float("nan")), "chain.length_m", "a finite number"),
-    ("a response without a force", edited(analysis={"forced": {"sigma_max_over_lowest": 3, "points": 101,
-                                                               "transient_detuning": 1e-6, "transient_periods": 5}}),
-     "analysis.forced", "the effect forcing"),
-    ("only a force, nothing restoring", edited(effects={"forcing": {"newton": 1.0}}), "effects",
-     "a restoring effect"),
-    ("a dashpot list of wrong length", edited(effects={"gravity": {"g_m_per_s2": 9.81},
-                                                       "friction": {"b_kg_per_s": [1.0, 2.0]}}),
-     "effects.friction.b_kg_per_s", "one value per particle, 10"),
+    (
+        "a response without a force",
+        edited(
+            analysis={
+                "forced": {
+                    "sigma_max_over_lowest": 3,
+                    "points": 101,
+                    "transient_detuning": 1e-6,
+                    "transient_periods": 5,
+                }
+            }
+        ),
+        "analysis.forced",
+        "the effect forcing",
+    ),
+    (
+        "only a force, nothing restoring",
+        edited(effects={"forcing": {"newton": 1.0}}),
+        "effects",
+        "a restoring effect",
+    ),
+    (
+        "a dashpot list of wrong length",
+        edited(effects={"gravity": {"g_m_per_s2": 9.81}, "friction": {"b_kg_per_s": [1.0, 2.0]}}),
+        "effects.friction.b_kg_per_s",
+        "one value per particle, 10",
+    ),
 ]
 
 
@@ -85,11 +113,16 @@ def test_broken_yaml(tmp_path):
     path = write(tmp_path, "title: x\nchain: {model: particles, n: 3\n")
     with pytest.raises(SceneError) as error:
         validate("chains", path)
-    assert "\n" not in str(error.value) and "YAML at line" in str(error.value) and str(path) in str(error.value)
+    assert (
+        "\n" not in str(error.value) and "YAML at line" in str(error.value) and str(path) in str(error.value)
+    )
 
 
 def test_duplicate_key_is_refused(tmp_path):
-    path = write(tmp_path, "title: a\ntitle: b\nchain: {model: continuum, length_m: 1}\neffects: {gravity: {g_m_per_s2: 9.8}}\n")
+    path = write(
+        tmp_path,
+        "title: a\ntitle: b\nchain: {model: continuum, length_m: 1}\neffects: {gravity: {g_m_per_s2: 9.8}}\n",
+    )
     with pytest.raises(SceneError, match="given twice"):
         validate("chains", path)
 
@@ -121,9 +154,15 @@ def test_schema_and_registry_name_the_same_effects():
 
 def test_cli_run_refuses_a_bad_scene_and_creates_nothing(tmp_path):
     path = write(tmp_path, edited(chain__length_m=-1.0))
-    out, timings = tmp_path / "results" / "chains" / "scene", tmp_path / "results" / "chains" / "timings" / "scene"
-    result = subprocess.run([sys.executable, "-m", "classical_dynamics", "run", "chains", str(path),
-                             str(out), str(timings)], capture_output=True, text=True)
+    out, timings = (
+        tmp_path / "results" / "chains" / "scene",
+        tmp_path / "results" / "chains" / "timings" / "scene",
+    )
+    result = subprocess.run(
+        [sys.executable, "-m", "classical_dynamics", "run", "chains", str(path), str(out), str(timings)],
+        capture_output=True,
+        text=True,
+    )
     assert result.returncode != 0
     assert result.stderr.strip().count("\n") == 0
     assert "field 'chain.length_m'" in result.stderr
@@ -134,9 +173,18 @@ def test_only_listed_effects_are_evaluated(monkeypatch):
     called = []
     for name in EFFECTS.names():
         effect = EFFECTS[name]
-        monkeypatch.setitem(EFFECTS._effects, name, effect.__class__(
-            effect.name, effect.kind, effect.summary,
-            lambda params, geometry, _build=effect.build, _name=name: called.append(_name) or _build(params, geometry)))
+        monkeypatch.setitem(
+            EFFECTS._effects,
+            name,
+            effect.__class__(
+                effect.name,
+                effect.kind,
+                effect.summary,
+                lambda params, geometry, _build=effect.build, _name=name: (
+                    called.append(_name) or _build(params, geometry)
+                ),
+            ),
+        )
     chain = particle_chain(5, "fixed-fixed", 1.0, 0.2, {"tension": {"newton": 2.0}})
     assert called == ["tension"]
     assert set(chain.contributions) == {"tension"}
@@ -144,16 +192,20 @@ def test_only_listed_effects_are_evaluated(monkeypatch):
 
 # Hostile or accidental files: refused in one line before parsing runs away (issue 19).
 BOMB = "a: &a [x, x, x, x, x, x, x, x, x]\n" + "".join(
-    f"{chr(98 + i)}: &{chr(98 + i)} [{', '.join(['*' + chr(97 + i)] * 9)}]\n" for i in range(8))
+    f"{chr(98 + i)}: &{chr(98 + i)} [{', '.join(['*' + chr(97 + i)] * 9)}]\n" for i in range(8)
+)
 
 
-@pytest.mark.parametrize("case,text,field,expected", [
-    ("alias bomb", BOMB, "(YAML at line 2", "an alias (*a)"),
-    ("one alias", yaml.safe_dump(GOOD) + "extra: &x 1\nagain: *x\n", "(YAML at", "an alias (*x)"),
-    ("deep nesting", "title: " + "[" * 20000 + "]" * 20000 + "\n", "(YAML at", "nesting deeper than"),
-    ("oversized", "title: x\n" + "# padding\n" * 120_000, "(file)", "at most 1000 kB"),
-    ("not UTF-8", b"title: \xff\xfe\n", "(file)", "UTF-8 text"),
-])
+@pytest.mark.parametrize(
+    "case,text,field,expected",
+    [
+        ("alias bomb", BOMB, "(YAML at line 2", "an alias (*a)"),
+        ("one alias", yaml.safe_dump(GOOD) + "extra: &x 1\nagain: *x\n", "(YAML at", "an alias (*x)"),
+        ("deep nesting", "title: " + "[" * 20000 + "]" * 20000 + "\n", "(YAML at", "nesting deeper than"),
+        ("oversized", "title: x\n" + "# padding\n" * 120_000, "(file)", "at most 1000 kB"),
+        ("not UTF-8", b"title: \xff\xfe\n", "(file)", "UTF-8 text"),
+    ],
+)
 def test_hostile_scene_files_are_refused_quickly_in_one_line(tmp_path, case, text, field, expected):
     path = tmp_path / "scene.yaml"
     path.write_bytes(text if isinstance(text, bytes) else text.encode())
@@ -173,9 +225,9 @@ def test_a_scene_that_is_not_a_regular_file_is_refused_without_reading_it(tmp_pa
         (tmp_path / "elsewhere.yaml").write_text(yaml.safe_dump(GOOD))
         path.symlink_to(tmp_path / "elsewhere.yaml")
     elif kind == "fifo":
-        os.mkfifo(path)                     # reading it would block for ever
+        os.mkfifo(path)  # reading it would block for ever
     else:
-        path.symlink_to("/dev/zero")        # reading it would never end
+        path.symlink_to("/dev/zero")  # reading it would never end
     with pytest.raises(SceneError, match=r"field '\(file\)': expected a regular file"):
         validate("chains", path)
 
@@ -190,17 +242,27 @@ def test_a_physical_check_that_overflows_is_one_line(tmp_path):
     assert "\n" not in str(error.value) and str(error.value).startswith(f"{path}: field '")
 
 
-@pytest.mark.parametrize("name,leftover", [(".loaded_string.yaml.swp", True), ("loaded_string.yaml~", True),
-                                           ("#loaded_string.yaml#", True), (".hidden.yaml", True),
-                                           ("loaded_string.yaml", False), ("loaded_string.yml", False)])
+@pytest.mark.parametrize(
+    "name,leftover",
+    [
+        (".loaded_string.yaml.swp", True),
+        ("loaded_string.yaml~", True),
+        ("#loaded_string.yaml#", True),
+        (".hidden.yaml", True),
+        ("loaded_string.yaml", False),
+        ("loaded_string.yml", False),
+    ],
+)
 def test_editor_leftovers_are_not_scenes(name, leftover):
     from classical_dynamics.scenes.loader import is_leftover
+
     assert is_leftover(Path(name)) is leftover
 
 
 def test_validation_is_remembered_until_scene_schema_or_code_change(tmp_path):
     """Each parse of the Snakefile validates only what changed; a scene that fails is never remembered."""
     from classical_dynamics.scenes.validated import validate_all
+
     scenes_dir = tmp_path / "scenes"
     scenes_dir.mkdir()
     schema = tmp_path / "schema.yaml"
@@ -216,45 +278,70 @@ def test_validation_is_remembered_until_scene_schema_or_code_change(tmp_path):
         seen.clear()
         validate_all([("chains", a, schema), ("chains", b, schema)], counting, record, budget)
         return sorted(seen)
+
     assert run() == ["a.yaml", "b.yaml"]
-    assert run() == []                                   # nothing changed: nothing validated
+    assert run() == []  # nothing changed: nothing validated
     b.write_text(b.read_text() + "# a comment\n")
     assert run() == ["b.yaml"]
     schema.write_text(schema.read_text() + "\n")
     assert run() == ["a.yaml", "b.yaml"]
-    assert run(Budget(seconds=1e4)) == ["a.yaml", "b.yaml"]       # a new budget: every scene costed again
+    assert run(Budget(seconds=1e4)) == ["a.yaml", "b.yaml"]  # a new budget: every scene costed again
     a.write_text(yaml.safe_dump(edited(**{"chain.n": 0})))
-    for _ in range(2):                                   # refused every time, not remembered
+    for _ in range(2):  # refused every time, not remembered
         with pytest.raises(SceneError):
             run()
 
 
 def test_a_bad_scene_stops_only_the_commands_that_need_it():
-    """`snakemake chains` does not need a precession scene; the report, dist and a bare `snakemake` need all."""
+    """`snakemake chains` does not need a precession scene; the report, dist and a bare `snakemake` need
+    all."""
     from classical_dynamics.scenes.targets import needed_scenes
 
     class Job:
         rulename, wildcards_dict = "scene", {"study": "chains", "scene": "loaded_string"}
+
     scenes = {"chains": {"loaded_string", "spring_chain"}, "precession": {"lamb_1920"}}
     assert needed_scenes([], [], scenes)("precession", "lamb_1920")
     for targets in (["report"], ["dist"], ["results/report.pdf"], ["chains", "all"]):
         assert needed_scenes(targets, [], scenes)("precession", "lamb_1920"), targets
-    for targets, jobs in ((["chains"], []), (["results/chains/loaded_string"], []),
-                          (["results/chains/timings/loaded_string/run.csv"], []),
-                          (["results/logs/chains/loaded_string.log"], []), ([], [Job()])):
+    for targets, jobs in (
+        (["chains"], []),
+        (["results/chains/loaded_string"], []),
+        (["results/chains/timings/loaded_string/run.csv"], []),
+        (["results/logs/chains/loaded_string.log"], []),
+        ([], [Job()]),
+    ):
         needed = needed_scenes(targets, jobs, scenes)
         assert needed("chains", "loaded_string") and not needed("precession", "lamb_1920"), targets
     assert not needed_scenes(["results/chains/loaded_string"], [], scenes)("chains", "spring_chain")
     assert needed_scenes(["results/chains/unknown_product"], [], scenes)("chains", "spring_chain")
 
 
-@pytest.mark.parametrize("limit,says", [("--time-limit-min=0.02", "ran past its time limit of 1.2 s"),
-                                        ("--memory-limit-mb=120", "past its memory limit of 120 MB")])
+@pytest.mark.parametrize(
+    "limit,says",
+    [
+        ("--time-limit-min=0.02", "ran past its time limit of 1.2 s"),
+        ("--memory-limit-mb=120", "past its memory limit of 120 MB"),
+    ],
+)
 def test_a_job_past_its_limit_is_stopped_in_one_line_and_writes_nothing(tmp_path, limit, says):
     scene = ROOT / "workflow/scenes/chains/hanging_particles.yaml"
-    result = subprocess.run([sys.executable, "-m", "classical_dynamics", "run", "chains", str(scene),
-                             str(tmp_path / "out"), str(tmp_path / "timings"), limit],
-                            capture_output=True, text=True, timeout=120)
+    result = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "classical_dynamics",
+            "run",
+            "chains",
+            str(scene),
+            str(tmp_path / "out"),
+            str(tmp_path / "timings"),
+            limit,
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert result.returncode == 3
     assert result.stderr.count("\n") == 1 and says in result.stderr and result.stderr.startswith(str(scene))
     assert list(tmp_path.iterdir()) == []
@@ -267,19 +354,29 @@ def test_a_fault_of_ours_under_limits_leaves_its_traceback_in_the_log(capfd):
 
     def faulty():
         raise ZeroDivisionError("a bug of ours")
+
     assert run_limited(faulty, "scene.yaml", 60.0, 4000.0) == 1
     err = capfd.readouterr().err
     assert "Traceback" in err and "ZeroDivisionError: a bug of ours" in err
 
 
 def test_a_job_validates_under_the_budget_its_run_gives(tmp_path):
-    """The scene rule passes the run's budget (workflow/config.yaml with any --config budget=...) to the job, which
-    validates again under it, not under the file's alone (a budget raised with --config once failed in the job)."""
+    """The scene rule passes the run's budget (workflow/config.yaml with any --config budget=...) to the job,
+    which validates again under it, not under the file's alone (a budget raised with --config once failed in
+    the job)."""
     scene = ROOT / "workflow/scenes/chains/hanging_particles.yaml"
     base = [sys.executable, "-m", "classical_dynamics", "run", "chains", str(scene)]
-    tight = subprocess.run(base + [str(tmp_path / "a"), str(tmp_path / "ta"), "--quick", "--budget-seconds", "0.001"],
-                           capture_output=True, text=True, timeout=120)
+    tight = subprocess.run(
+        base + [str(tmp_path / "a"), str(tmp_path / "ta"), "--quick", "--budget-seconds", "0.001"],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert tight.returncode == 2 and "budget.seconds" in tight.stderr and not (tmp_path / "a").exists()
-    done = subprocess.run(base + [str(tmp_path / "b"), str(tmp_path / "tb"), "--quick", "--budget-seconds", "7200"],
-                          capture_output=True, text=True, timeout=120)
+    done = subprocess.run(
+        base + [str(tmp_path / "b"), str(tmp_path / "tb"), "--quick", "--budget-seconds", "7200"],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert done.returncode == 0, done.stderr

@@ -1,5 +1,6 @@
-"""The self-excited study's gallery: the portrait scenes redrawn as grids of small multiples, from the tables the
-scenes save. A few real scenes are run (quick) into a scratch results folder; the others of their groups are absent."""
+"""The self-excited study's gallery: the portrait scenes redrawn as grids of small multiples, from the tables
+the scenes save. A few real scenes are run (quick) into a scratch results folder; the others of their groups
+are absent."""
 
 import json
 import re
@@ -13,19 +14,46 @@ from classical_dynamics.studies.self_excited import gallery
 
 from .conftest import ROOT
 
-SCENES = ["force_free", "largest_unperturbed_strong", "largest_perturbed_strong", "smallest_unperturbed",
-          "middle_rare_no_torque", "middle_plane_two_saddle_weak"]
+SCENES = [
+    "force_free",
+    "largest_unperturbed_strong",
+    "largest_perturbed_strong",
+    "smallest_unperturbed",
+    "middle_rare_no_torque",
+    "middle_plane_two_saddle_weak",
+]
 
 
 @pytest.fixture(scope="module")
 def built(tmp_path_factory):
     study = tmp_path_factory.mktemp("results") / "self_excited"
     for scene in SCENES:
-        assert cli(["run", "self_excited", str(ROOT / "workflow/scenes/self_excited" / f"{scene}.yaml"),
-                    str(study / scene), str(study / "timings" / scene), "--quick"]) == 0
+        assert (
+            cli(
+                [
+                    "run",
+                    "self_excited",
+                    str(ROOT / "workflow/scenes/self_excited" / f"{scene}.yaml"),
+                    str(study / scene),
+                    str(study / "timings" / scene),
+                    "--quick",
+                ]
+            )
+            == 0
+        )
     # one scene named on the command line has no results: it must be left out, not fail the step
-    assert gallery.main([str(study), str(study / "gallery"), str(study / "timings" / "gallery"),
-                         *[str(study / s) for s in SCENES], str(study / "largest_unperturbed")]) == 0
+    assert (
+        gallery.main(
+            [
+                str(study),
+                str(study / "gallery"),
+                str(study / "timings" / "gallery"),
+                *[str(study / s) for s in SCENES],
+                str(study / "largest_unperturbed"),
+            ]
+        )
+        == 0
+    )
     return study
 
 
@@ -42,7 +70,11 @@ def test_every_portrait_scene_of_the_study_is_in_a_group_once():
     scene_files = {p.stem for p in (ROOT / "workflow/scenes/self_excited").glob("*.yaml")}
     listed = [entry for group in gallery.GROUPS for entry, _ in group.panels if "/" not in entry]
     assert len(listed) == len(set(listed)) and set(listed) <= scene_files
-    planes = {p.stem for p in (ROOT / "workflow/scenes/self_excited").glob("*.yaml") if "viscous" not in p.read_text()}
+    planes = {
+        p.stem
+        for p in (ROOT / "workflow/scenes/self_excited").glob("*.yaml")
+        if "viscous" not in p.read_text()
+    }
     assert set(gallery.portrait_scenes()) == planes
 
 
@@ -56,9 +88,11 @@ def test_each_scene_present_is_a_panel_titled_with_its_parameters(built):
         title = next(t for t in texts if t.startswith(f"({letter}) "))
         shown = re.fullmatch(r"\([a-z]\) \$m(_\d)?\$ = (\S+), \$\\nu\$ = (\S+)", title)
         assert shown, title
-        for text, key in ((shown.group(2), "m1"), (shown.group(3), "nu")):      # as given, or to four figures
-            assert float(text.replace("\u2212", "-")) == pytest.approx(plane[key]["value"], rel=5e-4, abs=1e-12)
-    assert "panel_largest_unperturbed" not in numbers                   # no results, no panel
+        for text, key in ((shown.group(2), "m1"), (shown.group(3), "nu")):  # as given, or to four figures
+            assert float(text.replace("\u2212", "-")) == pytest.approx(
+                plane[key]["value"], rel=5e-4, abs=1e-12
+            )
+    assert "panel_largest_unperturbed" not in numbers  # no results, no panel
     assert not any(k.startswith("panel_viscous") for k in numbers)
     # letters run on without gaps in each grid, in the group's order
     for group in gallery.GROUPS:
@@ -79,7 +113,7 @@ def test_the_grid_table_holds_each_panels_data(built):
         assert len(rows) == len(own)
         pd.testing.assert_frame_equal(rows[own.columns].reset_index(drop=True), own, check_dtype=False)
         assert set(mine.m1) == {summary(built / scene)["numbers"]["m1"]["value"]}
-        for kind in ("saddle", "center", "degenerate"):                 # the singular points, typed
+        for kind in ("saddle", "center", "degenerate"):  # the singular points, typed
             assert (own.element == kind).sum() == summary(built / scene)["numbers"][f"n_{kind}s"]["value"]
     body = pd.read_csv(built / "gallery" / "grid_smallest.csv")
     assert set(body[body.panel == "b"].element) == {"ellipse", "euler"}

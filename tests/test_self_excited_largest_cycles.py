@@ -10,7 +10,8 @@ import sympy as sp
 
 from classical_dynamics.models import self_excited as se
 from classical_dynamics.solvers.ode import Problem, solve
-from classical_dynamics.studies.self_excited import largest_cycles as lc, portrait
+from classical_dynamics.studies.self_excited import largest_cycles as lc
+from classical_dynamics.studies.self_excited import portrait
 
 BODY = se.Body.from_moments([3.0, 2.2, 1.2])
 
@@ -32,14 +33,16 @@ class Numbers:
 
 
 def test_c1_of_2_29_is_zero_at_lees_start_symbolically():
-    """(2.29) with C1 = 0 at phi2 = -sigma3 has p1^2 = m1/nu: solved for C1 there it is exactly zero (sympy)."""
+    """(2.29) with C1 = 0 at phi2 = -sigma3 has p1^2 = m1/nu: solved for C1 there it is exactly zero
+    (sympy)."""
     m1, nu = sp.symbols("m1 nu", positive=True)
     sigma3 = sp.atan(-1 / (2 * nu))
     phi = -sigma3
-    p1_sq = m1 / nu                                       # the start sqrt(m1/nu), squared
+    p1_sq = m1 / nu  # the start sqrt(m1/nu), squared
     C1 = sp.exp(2 * nu * phi) * (p1_sq - m1 / nu - 2 / sp.sqrt(1 + 4 * nu**2) * sp.sin(phi + sigma3))
     assert sp.simplify(C1) == 0
-    # and (2.29)'s sine form is Lee's (2.13) with mu1 = -nu: 2(2 mu1 sin + cos)/(1 + 4 mu1^2) = -2 sin(x + s3)/sqrt
+    # and (2.29)'s sine form is Lee's (2.13) with mu1 = -nu: 2(2 mu1 sin + cos)/(1 + 4 mu1^2) = -2 sin(x +
+    # s3)/sqrt
     x = sp.symbols("x", real=True)
     lhs = -2 * (-2 * nu * sp.sin(x) + sp.cos(x)) / (1 + 4 * nu**2)
     rhs = 2 / sp.sqrt(1 + 4 * nu**2) * sp.sin(x + sigma3)
@@ -52,20 +55,29 @@ def test_start_with_c1_zero_closes_and_a_start_just_off_it_does_not():
     lc.c1_zero_start(r, 0.5, 0.1)
     assert abs(r.n["c1_zero_start_closure"]) < 1e-9
     sigma3 = np.arctan(-1.0 / 0.2)
-    start = np.sqrt(5.0) + 1e-3                          # C1 != 0: the term C1 e^{2 nu phi2} grows over the turn
-    sol = solve(Problem(se.plane_by_phase, [0.0, start], (-sigma3, -sigma3 + 2 * np.pi), [0.5, -0.1]), "dop853",
-                rtol=1e-13, atol=1e-15)
+    start = np.sqrt(5.0) + 1e-3  # C1 != 0: the term C1 e^{2 nu phi2} grows over the turn
+    sol = solve(
+        Problem(se.plane_by_phase, [0.0, start], (-sigma3, -sigma3 + 2 * np.pi), [0.5, -0.1]),
+        "dop853",
+        rtol=1e-13,
+        atol=1e-15,
+    )
     assert abs(sol.y[1] - start) > 1e-4
 
 
 @pytest.mark.parametrize("offset, escapes", [(-1e-3, True), (1e-3, False), (-0.5, True), (0.05, False)])
 def test_just_below_F1_runs_away_just_above_tends_to_F(offset, escapes):
-    """The hard case: F1 is unstable, so a start 1e-3 below it still leaves every bound in finite time, and one 1e-3
-    above it winds onto F."""
+    """The hard case: F1 is unstable, so a start 1e-3 below it still leaves every bound in finite time, and
+    one 1e-3 above it winds onto F."""
     m1, nu = 0.5, 0.1
     F1 = -float(se.limit_cycle_p1(np.zeros(1), m1, nu)[0])
-    sol = solve(Problem(se.plane_largest, [0.0, F1 + offset], (0.0, 150.0), [m1, -nu, 1.0]), "dop853", rtol=1e-12,
-                atol=1e-14, bound=portrait.BLOW_UP_BOUND)
+    sol = solve(
+        Problem(se.plane_largest, [0.0, F1 + offset], (0.0, 150.0), [m1, -nu, 1.0]),
+        "dop853",
+        rtol=1e-12,
+        atol=1e-14,
+        bound=portrait.BLOW_UP_BOUND,
+    )
     assert (sol.status == "blow-up") == escapes
     if not escapes:
         assert abs(sol.y[1] - se.limit_cycle_p1(np.array([sol.y[0]]), m1, nu)[0]) < 1e-6
@@ -80,11 +92,16 @@ def test_reversal_in_eulers_equations_runs_to_the_negative_x_axis():
 
 
 def test_f1_above_f2_below_nu_star_and_below_above_it():
-    for nu, sign in ((0.1, 1), (0.5, -1), (se.nu_star(0.5) * (1 - 1e-4), 1), (se.nu_star(0.5) * (1 + 1e-4), -1)):
+    for nu, sign in (
+        (0.1, 1),
+        (0.5, -1),
+        (se.nu_star(0.5) * (1 - 1e-4), 1),
+        (se.nu_star(0.5) * (1 + 1e-4), -1),
+    ):
         x = lc.crossings(0.5, nu)
         assert np.sign(x["f1"] - x["f2"]) == sign
     x = lc.crossings(0.5, 0.1)
-    assert x["g1_kind"] == "vertical" and x["g2_kind"] == "axis"        # Lee's reading of Figure 2.12
+    assert x["g1_kind"] == "vertical" and x["g2_kind"] == "axis"  # Lee's reading of Figure 2.12
     assert x["g1"][0] == pytest.approx(np.arcsin(-0.5) + 2 * np.pi, abs=1e-10)
     assert abs(x["g2"][1]) < 1e-10 and np.arcsin(-0.5) < x["g2"][0] < np.pi - np.arcsin(-0.5)
 
@@ -151,13 +168,14 @@ def test_the_torque_laws_differ_so_the_overlay_can_fail():
     bc = np.sqrt(BODY.b * BODY.c)
     m = 0.5 * 0.5 * BODY.a * bc
     L = se.LargestAxis(BODY, m, 0.0, 1.0)
-    wrong = np.array([BODY.a, BODY.b, BODY.c, m, -2.0 * bc * 0.1])         # euler_largest with mu < 0
+    wrong = np.array([BODY.a, BODY.b, BODY.c, m, -2.0 * bc * 0.1])  # euler_largest with mu < 0
     deviation, _ = lc._overlay(se.euler_largest, wrong, L, (0.5, -0.1), lc.OTHER_STARTS)
     assert deviation > 1e-3
 
 
 def test_the_zoom_panel_draws_its_crossings_with_their_names():
     from classical_dynamics.studies.results import new_figure
+
     r = Numbers()
     lc.figure_2_12(r, 0.5, 0.1, zoom=True)
     fig, ax = new_figure()

@@ -24,8 +24,12 @@ def test_lindstedt_matches_lee_and_detects_a_wrong_coefficient():
     differ, total, found = symbolic.lindstedt()
     assert differ == [] and total == 10
     k2, b2, b3, m1 = sp.symbols("k2 beta2 beta3 mu1")
-    wrong = (sp.Rational(28, 576) * b2**2 / k2**2 + sp.Rational(137, 288) * b2 * m1 / k2 + b3 / (192 * k2)
-             + sp.Rational(61, 72) * m1**2)
+    wrong = (
+        sp.Rational(28, 576) * b2**2 / k2**2
+        + sp.Rational(137, 288) * b2 * m1 / k2
+        + b3 / (192 * k2)
+        + sp.Rational(61, 72) * m1**2
+    )
     assert sp.simplify(found["theta3_1"] - wrong) != 0
     assert found["h1"] == 0
 

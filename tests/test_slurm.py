@@ -1,6 +1,7 @@
-"""The pipeline on a real Slurm cluster (tools/local-slurm starts one on this machine, with accounting), through
-workflow/profiles/slurm and Snakemake's executor plugin for Slurm: the quick build gives the local quick build's
-results, every job asks for at least what it used, and a job that fails on the cluster is reported with its log.
+"""The pipeline on a real Slurm cluster (tools/local-slurm starts one on this machine, with accounting),
+through workflow/profiles/slurm and Snakemake's executor plugin for Slurm: the quick build gives the local
+quick build's results, every job asks for at least what it used, and a job that fails on the cluster is
+reported with its log.
 
 Run by `make test-slurm` (which starts the cluster; CI does), not by `make test`: `pytest -m slurm`.
 """
@@ -28,11 +29,14 @@ def cluster():
     except FileNotFoundError:
         state = ""
     if not set(state.split()) & {"idle", "mix", "alloc"}:
-        pytest.fail(f"no Slurm node ready (sinfo: {state.strip() or 'none'}): start one with `tools/local-slurm up`")
+        pytest.fail(
+            f"no Slurm node ready (sinfo: {state.strip() or 'none'}): start one with `tools/local-slurm up`"
+        )
 
 
 def asked(dry_run: str) -> dict[str, dict]:
-    """{benchmark file: {"mem_mb", "runtime"}}: what each job of a dry run asks for (its 'resources:' line)."""
+    """{benchmark file: {"mem_mb", "runtime"}}: what each job of a dry run asks for (its 'resources:'
+    line)."""
     asks, benchmark = {}, None
     for line in dry_run.splitlines():
         line = line.strip()
@@ -51,14 +55,15 @@ def test_the_quick_build_on_slurm_is_the_local_one(cluster, built_repo, tmp_path
     log = done.stdout + done.stderr
     submitted = re.findall(r"submitted with SLURM jobid (\d+)", log)
     jobs = int(re.search(r"(\d+) of \1 steps \(100%\) done", log).group(1))
-    assert submitted and "group_light_scenes" in log                 # jobs went to Slurm, light scenes in batches
+    assert submitted and "group_light_scenes" in log  # jobs went to Slurm, light scenes in batches
     assert len(submitted) < jobs / 2, (len(submitted), jobs)
     assert result_files(repo) == result_files(built_repo)
     assert (repo / "results/report.pdf").read_bytes()[:5] == b"%PDF-"
-    # Every job asked Slurm for at least the memory and time it used (its own interpreter: no job server there).
+    # Every job asked Slurm for at least the memory and time it used (its own interpreter: no job server
+    # there).
     asks = asked(snakemake(repo, "-n", "--forceall", "--config", "quick=1").stdout)
     benchmarks = sorted((repo / "results/benchmarks").rglob("*.tsv"))
-    assert len(benchmarks) == len(asks) == jobs - 1                  # every job but the target rule `all`
+    assert len(benchmarks) == len(asks) == jobs - 1  # every job but the target rule `all`
     for tsv in benchmarks:
         job, ask = used(tsv), asks[tsv.relative_to(repo).as_posix()]
         assert 50 < job["max_rss_mb"] < ask["mem_mb"], (tsv.name, job, ask)
@@ -70,13 +75,22 @@ def test_a_job_failing_on_slurm_is_reported_with_its_log(cluster, tmp_path):
     reported as failed, names its log, and leaves no result."""
     repo = copy_repository(tmp_path / "repo")
     scene = "results/chains/loaded_string"
-    done = snakemake(repo, *PROFILE, scene, "--set-resources", "scene:mem_mb=10", "--config", "quick=1",
-                     check=False, timeout=900)
+    done = snakemake(
+        repo,
+        *PROFILE,
+        scene,
+        "--set-resources",
+        "scene:mem_mb=10",
+        "--config",
+        "quick=1",
+        check=False,
+        timeout=900,
+    )
     log = done.stdout + done.stderr
     assert done.returncode != 0
     assert "Error in rule scene" in log and "results/logs/chains/loaded_string.log" in log, log[-3000:]
     assert "past its memory limit of 10 MB" in (repo / "results/logs/chains/loaded_string.log").read_text()
-    assert re.search(r"SLURM jobid \d+ \(log: \S+\.log\)", log)            # Slurm's own log of the job, named
+    assert re.search(r"SLURM jobid \d+ \(log: \S+\.log\)", log)  # Slurm's own log of the job, named
     assert not (repo / scene).exists()
 
 
@@ -85,7 +99,12 @@ def test_a_site_without_accounting_reads_job_states_from_squeue(cluster, built_r
     finished job visible for MinJobAge = 300 s, at least three times the profile's first status check)."""
     repo = copy_repository(tmp_path / "repo")
     scene = "results/chains/loaded_string"
-    done = snakemake(repo, *PROFILE, scene, "--slurm-status-command", "squeue", "--config", "quick=1", timeout=900)
+    done = snakemake(
+        repo, *PROFILE, scene, "--slurm-status-command", "squeue", "--config", "quick=1", timeout=900
+    )
     assert "submitted with SLURM jobid" in done.stdout + done.stderr
-    assert {k: v for k, v in result_files(repo).items() if k.startswith("chains/loaded_string/")} == {
-        k: v for k, v in result_files(built_repo).items() if k.startswith("chains/loaded_string/")} != {}
+    assert (
+        {k: v for k, v in result_files(repo).items() if k.startswith("chains/loaded_string/")}
+        == {k: v for k, v in result_files(built_repo).items() if k.startswith("chains/loaded_string/")}
+        != {}
+    )

@@ -38,14 +38,15 @@ def second_component(t, y, p, out):
     out[0] = y[1]
 
 
-@pytest.mark.parametrize("method,rtol,bound", [("dop853", 1e-12, 1e-11), ("dopri5", 1e-10, 1e-8),
-                                               ("scipy:DOP853", 1e-12, 1e-11)])
+@pytest.mark.parametrize(
+    "method,rtol,bound", [("dop853", 1e-12, 1e-11), ("dopri5", 1e-10, 1e-8), ("scipy:DOP853", 1e-12, 1e-11)]
+)
 def test_hnw_against_elliptic_functions(method, rtol, bound):
     t = np.linspace(0, 20, 101)
     sol = solve(HNW, method, rtol=rtol, atol=rtol * 1e-3, t_eval=t)
     assert sol.status == "success"
     assert np.max(np.abs(sol.y - ref.hnw_rigid_body(20.0))) < bound
-    assert np.max(np.abs(sol.y_eval - ref.hnw_rigid_body(t))) < 5 * bound       # dense output too
+    assert np.max(np.abs(sol.y_eval - ref.hnw_rigid_body(t))) < 5 * bound  # dense output too
 
 
 def test_detest_b5():
@@ -60,12 +61,24 @@ def test_compiled_dop853_takes_scipys_steps():
     assert np.allclose(ours.y, theirs.y, rtol=1e-12, atol=1e-14)
 
 
-@pytest.mark.parametrize("I,w0", [((1.0, 2.0, 3.0), (0.3, -0.8, 0.5)), ((1.0, 2.0, 3.0), (1.0, 0.3, -0.1)),
-                                  ((1.0, 2.0, 3.0), (-0.5, 0.2, -0.7)), ((0.7, 1.1, 2.9), (0.0, 1.2, 0.4))])
+@pytest.mark.parametrize(
+    "I,w0",
+    [
+        ((1.0, 2.0, 3.0), (0.3, -0.8, 0.5)),
+        ((1.0, 2.0, 3.0), (1.0, 0.3, -0.1)),
+        ((1.0, 2.0, 3.0), (-0.5, 0.2, -0.7)),
+        ((0.7, 1.1, 2.9), (0.0, 1.2, 0.4)),
+    ],
+)
 def test_free_rigid_body_closed_form_on_both_sides_of_the_separatrix(I, w0):
     t = np.linspace(0, 30, 31)
-    sol = solve(Problem(rhs.euler_free, w0, (0, 30), rhs.euler_coefficients(I)), "dop853", rtol=1e-13, atol=1e-15,
-                t_eval=t)
+    sol = solve(
+        Problem(rhs.euler_free, w0, (0, 30), rhs.euler_coefficients(I)),
+        "dop853",
+        rtol=1e-13,
+        atol=1e-15,
+        t_eval=t,
+    )
     assert np.max(np.abs(ref.free_rigid_body(I, np.array(I) * np.array(w0), t) - sol.y_eval)) < 1e-11
 
 
@@ -76,8 +89,12 @@ def test_jacobi_functions_near_the_separatrix_against_mpmath(one_minus_m):
     u = np.linspace(-4 * special.ellipk(m), 8 * special.ellipk(m), 61)
     ours = np.stack(ref.ellipj(u, m)[:3], axis=1)
     with mpmath.workdps(30):
-        exact = np.array([[float(mpmath.ellipfun(f, mpmath.mpf(x), m=mpmath.mpf(m))) for f in ("sn", "cn", "dn")]
-                          for x in u])
+        exact = np.array(
+            [
+                [float(mpmath.ellipfun(f, mpmath.mpf(x), m=mpmath.mpf(m))) for f in ("sn", "cn", "dn")]
+                for x in u
+            ]
+        )
     assert np.max(np.abs(ours - exact)) < 1e-13
 
 
@@ -85,28 +102,38 @@ def test_integrators_stay_on_the_energy_surface_near_the_separatrix():
     I = np.array([1.0, 2.0, 3.0])
     w0 = np.array([np.sqrt(3 * (1 - 1e-10)), 0.0, 1.0])
     H0, C0 = 0.5 * np.sum(I * w0 * w0), np.sum((I * w0) ** 2)
-    sol = solve(Problem(rhs.euler_free, w0, (0.0, 150.0), rhs.euler_coefficients(I)), "dop853", rtol=1e-12,
-                atol=1e-15, record_steps=True)
-    assert np.max(np.abs(0.5 * np.sum(I * sol.y_steps ** 2, axis=1) / H0 - 1)) < 1e-10
+    sol = solve(
+        Problem(rhs.euler_free, w0, (0.0, 150.0), rhs.euler_coefficients(I)),
+        "dop853",
+        rtol=1e-12,
+        atol=1e-15,
+        record_steps=True,
+    )
+    assert np.max(np.abs(0.5 * np.sum(I * sol.y_steps**2, axis=1) / H0 - 1)) < 1e-10
     ms, _ = rigid_body.free_body(I, I * w0, 0.01, 15000, 2, 10)
     assert np.max(np.abs(np.sum(ms * ms, axis=1) / C0 - 1)) < 1e-12
-    assert np.max(np.abs(0.5 * np.sum(ms * ms / I, axis=1) / H0 - 1)) < 1e-3     # bounded O(h^2)
+    assert np.max(np.abs(0.5 * np.sum(ms * ms / I, axis=1) / H0 - 1)) < 1e-3  # bounded O(h^2)
 
 
 def test_intermediate_axis_growth_rate():
     A, B, C, q0 = 3.0, 2.0, 1.0, 1.5
     theory = q0 * np.sqrt((A - B) * (B - C) / (A * C))
     t = np.linspace(0, 20, 401)
-    sol = solve(Problem(rhs.euler_free, [1e-10, q0, 1e-10], (0, 20), rhs.euler_coefficients([A, B, C])), "dop853",
-                rtol=1e-12, atol=1e-20,
-                t_eval=t)
+    sol = solve(
+        Problem(rhs.euler_free, [1e-10, q0, 1e-10], (0, 20), rhs.euler_coefficients([A, B, C])),
+        "dop853",
+        rtol=1e-12,
+        atol=1e-20,
+        t_eval=t,
+    )
     size = np.hypot(sol.y_eval[:, 0], sol.y_eval[:, 2])
     window = (size > 1e-8) & (size < 1e-3)
     assert np.polyfit(t[window], np.log(size[window]), 1)[0] == pytest.approx(theory, rel=1e-3)
 
 
-@pytest.mark.parametrize("m,mu,p0", [(1.0, 1.0, 0.0), (0.5, -0.2, -2.0), (-0.3, -0.5, 0.4), (-0.4, 0.3, 2.0),
-                                     (0.0, 0.7, 1.5)])
+@pytest.mark.parametrize(
+    "m,mu,p0", [(1.0, 1.0, 0.0), (0.5, -0.2, -2.0), (-0.3, -0.5, 0.4), (-0.4, 0.3, 2.0), (0.0, 0.7, 1.5)]
+)
 def test_blow_up_time_matches_the_closed_form(m, mu, p0):
     t_star = ref.riccati_blow_up_time(m, mu, p0)
     sol = solve(Problem(rhs.riccati, [p0], (0.0, 2 * t_star), [m, mu]), "dop853", rtol=1e-10, atol=1e-12)
@@ -130,31 +157,52 @@ def test_riccati_closed_forms_against_integration(m, mu, p0):
 @pytest.mark.parametrize("M3", [0.03, 0.0, -0.03])
 def test_bodewadt_fresnel_solution(M3):
     t = np.linspace(0, 50, 11)
-    sol = solve(Problem(torqued, [0.1, 0.0, 2.0], (0, 50), [1.0, 1.8, 0.05, -0.02, M3]), "dop853", rtol=1e-13,
-                atol=1e-15, t_eval=t)
+    sol = solve(
+        Problem(torqued, [0.1, 0.0, 2.0], (0, 50), [1.0, 1.8, 0.05, -0.02, M3]),
+        "dop853",
+        rtol=1e-13,
+        atol=1e-15,
+        t_eval=t,
+    )
     closed = ref.bodewadt(1.0, 1.8, (0.05, -0.02, M3), np.array([0.1, 0.0, 2.0]), t)
     assert np.max(np.abs(closed - sol.y_eval)) < 1e-11
 
 
 def test_events_do_not_miss_two_sign_changes_in_one_step():
     # g = cos(40 t) on a trivial ODE: adaptive steps are huge, yet every crossing must be found.
-    sol = solve(Problem(still, [0.0], (0.0, 1.0)), "dop853", rtol=1e-6, atol=1e-9, events=Events(fast_cosine, 1),
-                subdivisions=64)
+    sol = solve(
+        Problem(still, [0.0], (0.0, 1.0)),
+        "dop853",
+        rtol=1e-6,
+        atol=1e-9,
+        events=Events(fast_cosine, 1),
+        subdivisions=64,
+    )
     expected = (np.arange(13) + 0.5) * np.pi / 40
     assert sol.n_steps < 10
     assert np.allclose(sol.event_t, expected[expected < 1.0], atol=1e-12)
 
 
 def test_terminal_event_and_direction():
-    sol = solve(HNW, "dop853", rtol=1e-12, atol=1e-15,
-                events=Events(second_component, 1, directions=(-1,), terminal=(True,)))
+    sol = solve(
+        HNW,
+        "dop853",
+        rtol=1e-12,
+        atol=1e-15,
+        events=Events(second_component, 1, directions=(-1,), terminal=(True,)),
+    )
     assert sol.status == "terminal event"
-    assert sol.t == pytest.approx(ref.HNW_PERIOD / 2, rel=1e-10)        # y2 = a sn falls through 0 at u = 2K
+    assert sol.t == pytest.approx(ref.HNW_PERIOD / 2, rel=1e-10)  # y2 = a sn falls through 0 at u = 2K
 
 
-@pytest.mark.parametrize("kwargs,message", [
-    ({"rtol": 1e-15, "atol": 1e-18}, "below 100\\*eps"), ({"rtol": 0.0, "atol": 1e-9}, "positive"),
-    ({"rtol": 1e-6, "atol": -1.0}, "positive")])
+@pytest.mark.parametrize(
+    "kwargs,message",
+    [
+        ({"rtol": 1e-15, "atol": 1e-18}, "below 100\\*eps"),
+        ({"rtol": 0.0, "atol": 1e-9}, "positive"),
+        ({"rtol": 1e-6, "atol": -1.0}, "positive"),
+    ],
+)
 def test_tolerances_that_cannot_be_honoured_are_refused(kwargs, message):
     with pytest.raises(ValueError, match=message):
         solve(HNW, "dop853", **kwargs)
@@ -172,13 +220,20 @@ def test_bad_initial_state_and_span_are_refused():
 def test_splitting_orders_and_quaternion():
     I, m0 = ref.HNW_I, ref.HNW_I * ref.HNW_Y0
     for order, expected in ((2, 2.0), (4, 4.0)):
-        errors = [np.max(np.abs(rigid_body.free_body(I, m0, h, int(round(20 / h)), order, int(round(20 / h)))[0][-1]
-                                / I - ref.hnw_rigid_body(20.0))) for h in (0.05, 0.025)]
+        errors = [
+            np.max(
+                np.abs(
+                    rigid_body.free_body(I, m0, h, int(round(20 / h)), order, int(round(20 / h)))[0][-1] / I
+                    - ref.hnw_rigid_body(20.0)
+                )
+            )
+            for h in (0.05, 0.025)
+        ]
         assert np.log2(errors[0] / errors[1]) == pytest.approx(expected, abs=0.15)
     ms, qs = rigid_body.free_body(I, m0, 0.05, 100000, 2, 1000)
-    assert np.max(np.abs(np.linalg.norm(qs, axis=1) - 1)) < 1e-12               # Lie-group update
+    assert np.max(np.abs(np.linalg.norm(qs, axis=1) - 1)) < 1e-12  # Lie-group update
     L = rigid_body.rotate_to_space(qs, ms)
-    assert np.max(np.abs(L - L[0])) < 1e-11                                      # space angular momentum
+    assert np.max(np.abs(L - L[0])) < 1e-11  # space angular momentum
 
 
 def test_splitting_with_a_body_fixed_torque_converges_to_bodewadt():
@@ -187,13 +242,23 @@ def test_splitting_with_a_body_fixed_torque_converges_to_bodewadt():
     @njit
     def axial(t, m, q, p, out):
         out[0], out[1], out[2] = 0.0, 0.0, p[0]
+
     I = np.array([1.0, 1.0, 1.8])
     m0 = I * np.array([0.1, 0.0, 2.0])
     exact = ref.bodewadt(1.0, 1.8, (0.0, 0.0, 0.03), np.array([0.1, 0.0, 2.0]), 50.0)
     errors = []
     for h in (0.002, 0.001):
-        ms, qs = rigid_body.integrate_torqued(I, m0, np.array([1.0, 0, 0, 0]), h, int(round(50 / h)), 2,
-                                              int(round(50 / h)), axial, np.array([0.03]))
+        ms, qs = rigid_body.integrate_torqued(
+            I,
+            m0,
+            np.array([1.0, 0, 0, 0]),
+            h,
+            int(round(50 / h)),
+            2,
+            int(round(50 / h)),
+            axial,
+            np.array([0.03]),
+        )
         errors.append(np.max(np.abs(ms[-1] / I - exact)))
         assert abs(np.linalg.norm(qs[-1]) - 1) < 1e-12
     assert errors[0] / errors[1] == pytest.approx(4.0, rel=0.05)
@@ -205,21 +270,27 @@ def test_numerical_damping_of_an_undamped_oscillator():
     for method in ("scipy:BDF", "dop853"):
         y = solve(problem, method, rtol=1e-6, atol=1e-9).y
         change[method] = y[0] ** 2 + y[1] ** 2 - 1
-    assert change["scipy:BDF"] < -1e-4                         # BDF damps: not a physical Q
+    assert change["scipy:BDF"] < -1e-4  # BDF damps: not a physical Q
     assert abs(change["dop853"]) < abs(change["scipy:BDF"]) / 10
-    qs, vs = symplectic.integrate(symplectic.harmonic, np.array([1.0]), np.array([1.0]), np.array([0.0]),
-                                  2 * np.pi / 50, 5000, 2, 1)
+    qs, vs = symplectic.integrate(
+        symplectic.harmonic, np.array([1.0]), np.array([1.0]), np.array([0.0]), 2 * np.pi / 50, 5000, 2, 1
+    )
     energy = qs[:, 0] ** 2 + vs[:, 0] ** 2
     assert np.max(np.abs(energy - 1)) < 5e-3 and abs(energy[-1000:].mean() - energy[:1000].mean()) < 1e-4
 
 
 def test_batch_equals_one_at_a_time():
     Y0 = np.array([[1.0, 0.0, 0.9], [0.5, 0.2, 0.9], [1.0, -0.3, 0.2]])
-    status, t_end, final, _ = solve_batch(rhs.euler_free, Y0, (0.0, 20.0), rhs.euler_coefficients(ref.HNW_I),
-                                          rtol=1e-10, atol=1e-13)
+    status, t_end, final, _ = solve_batch(
+        rhs.euler_free, Y0, (0.0, 20.0), rhs.euler_coefficients(ref.HNW_I), rtol=1e-10, atol=1e-13
+    )
     for row, y in zip(Y0, final):
-        single = solve(Problem(rhs.euler_free, row, (0.0, 20.0), rhs.euler_coefficients(ref.HNW_I)), "dop853",
-                       rtol=1e-10, atol=1e-13)
+        single = solve(
+            Problem(rhs.euler_free, row, (0.0, 20.0), rhs.euler_coefficients(ref.HNW_I)),
+            "dop853",
+            rtol=1e-10,
+            atol=1e-13,
+        )
         assert np.array_equal(single.y, y)
     assert status == ["success"] * 3
 
@@ -232,19 +303,24 @@ def test_the_final_state_loop_takes_the_full_loops_steps(method):
     specialized = solve(HNW, method, rtol=1e-9, atol=1e-12, specialize=True)
     for sol in (lean, specialized):
         assert np.array_equal(sol.y, full.y)
-        assert (sol.nfev, sol.n_steps, sol.n_rejected, sol.status) == (full.nfev, full.n_steps, full.n_rejected,
-                                                                       full.status)
+        assert (sol.nfev, sol.n_steps, sol.n_rejected, sol.status) == (
+            full.nfev,
+            full.n_steps,
+            full.n_rejected,
+            full.status,
+        )
 
 
 def test_blow_up_is_located_without_dense_output_asked_for():
-    m, mu, p0 = 1.0, 1.0, 0.0                          # p' = 1 + p^2: p = tan t, blows up at pi/2
+    m, mu, p0 = 1.0, 1.0, 0.0  # p' = 1 + p^2: p = tan t, blows up at pi/2
     problem = Problem(rhs.riccati, [p0], (0.0, 3.0), [m, mu])
     for specialize in (False, True):
         sol = solve(problem, "dop853", rtol=1e-10, atol=1e-12, specialize=specialize)
         assert sol.status == "blow-up"
         assert sol.t == pytest.approx(ref.riccati_blow_up_time(m, mu, p0), rel=1e-6)
-    status, t_end, _, _ = solve_batch(rhs.riccati, np.array([[p0], [0.5]]), (0.0, 3.0), [m, mu], rtol=1e-10,
-                                      atol=1e-12, specialize=True)
+    status, t_end, _, _ = solve_batch(
+        rhs.riccati, np.array([[p0], [0.5]]), (0.0, 3.0), [m, mu], rtol=1e-10, atol=1e-12, specialize=True
+    )
     assert status == ["blow-up", "blow-up"]
     assert t_end[1] == pytest.approx(ref.riccati_blow_up_time(m, mu, 0.5), rel=1e-6)
 
@@ -260,35 +336,43 @@ def test_specialized_batch_equals_plain_batch():
 def test_batch_with_parameters_per_row():
     """Each row its own parameters (a sweep): the same as one at a time."""
     Y0 = np.tile([0.0, 1.0], (3, 1))
-    P = np.array([[0.5, 1.0], [1.0, 2.0], [2.0, 0.5]])             # p' = m + mu p^2, as (m, mu) rows
+    P = np.array([[0.5, 1.0], [1.0, 2.0], [2.0, 0.5]])  # p' = m + mu p^2, as (m, mu) rows
     status, t_end, final, _ = solve_batch(rhs.riccati, Y0[:, :1], (0.0, 0.3), P, rtol=1e-10, atol=1e-12)
     for row, p, y in zip(Y0[:, :1], P, final):
         assert np.array_equal(solve(Problem(rhs.riccati, row, (0.0, 0.3), p), rtol=1e-10, atol=1e-12).y, y)
 
 
-# --- the heavy symmetric top (studies/solvers/top_model.py) against its closed forms ----------------------------
+# --- the heavy symmetric top (studies/solvers/top_model.py) against its closed forms ------------------------
 def test_heavy_top_steady_roots_solve_lambs_quadratic():
     from classical_dynamics.studies.solvers import top_model as tm
+
     A, Mgh, J3 = 1.0, 1.0, 3.0
     for alpha in np.radians([20.0, 60.0, 89.0, 120.0]):
         for w in tm.steady_roots(A, J3, Mgh, alpha):
             assert abs(A * w * w * np.cos(alpha) - J3 * w + Mgh) <= 1e-13 * max(1.0, A * w * w)
-    assert tm.steady_roots(A, J3, Mgh, np.pi / 2)[0] == pytest.approx(Mgh / J3, rel=1e-15)   # the gyroscope
+    assert tm.steady_roots(A, J3, Mgh, np.pi / 2)[0] == pytest.approx(Mgh / J3, rel=1e-15)  # the gyroscope
     threshold = np.sqrt(4 * A * Mgh * np.cos(np.radians(60.0)))
-    assert tm.steady_roots(A, 0.999 * threshold, Mgh, np.radians(60.0)) is None               # spin too slow
-    assert tm.steady_roots(A, 0.0, Mgh, np.radians(60.0)) is None                             # conical pendulum
+    assert tm.steady_roots(A, 0.999 * threshold, Mgh, np.radians(60.0)) is None  # spin too slow
+    assert tm.steady_roots(A, 0.0, Mgh, np.radians(60.0)) is None  # conical pendulum
 
 
 def test_heavy_top_nutates_between_the_roots_of_the_cubic():
     from classical_dynamics.studies.solvers import top_model as tm
+
     top = tm.Top(1.0, 0.5, 1.0)
     y0 = top.state(np.radians(50.0), 0.0, 0.1, 5.0)
     J3, Jz, E = (float(v[0]) for v in top.integrals(y0))
     nut = tm.Nutation.from_integrals(top.A, top.C, top.Mgh, J3, Jz, E)
     t = np.linspace(0.0, 10 * nut.period, 201)
-    sol = solve(Problem(top.rhs, y0, (0.0, t[-1]), top.params), "dop853", rtol=1e-12, atol=1e-15, t_eval=t,
-                events=Events(tm.apse, tm.APSE_EVENTS_N))
-    assert np.max(np.abs(sol.y_eval[:, 5] - nut.cos_theta(t, y0[5]))) < 1e-9               # Jacobi's sn^2
+    sol = solve(
+        Problem(top.rhs, y0, (0.0, t[-1]), top.params),
+        "dop853",
+        rtol=1e-12,
+        atol=1e-15,
+        t_eval=t,
+        events=Events(tm.apse, tm.APSE_EVENTS_N),
+    )
+    assert np.max(np.abs(sol.y_eval[:, 5] - nut.cos_theta(t, y0[5]))) < 1e-9  # Jacobi's sn^2
     theta = tm.angles(sol.event_y[sol.event_t > 1e-9])[0]
     assert np.allclose(np.sort(np.unique(np.round(np.cos(theta), 8))), [nut.u1, nut.u2], atol=1e-9)
     drift = [np.max(np.abs(v - v[0])) / abs(v[0]) for v in top.integrals(sol.y_eval)]
@@ -297,15 +381,19 @@ def test_heavy_top_nutates_between_the_roots_of_the_cubic():
 
 def test_heavy_top_scene_lists_gravity_and_is_a_real_body(tmp_path):
     import yaml
+
     from classical_dynamics.scenes import SceneError
     from classical_dynamics.studies import validate
+
     root = __import__("pathlib").Path(__file__).resolve().parents[1]
     shipped = root / "workflow" / "scenes" / "solvers" / "heavy_top.yaml"
     validate("solvers", shipped)
     good = yaml.safe_load(shipped.read_text())
-    for change, field in ((lambda d: d.pop("effects"), "effects.gravity"),
-                          (lambda d: d["top"].update(C=2.5), "top.C"),
-                          (lambda d: d["effects"]["gravity"].update(Mgh=-1.0), "effects.gravity.Mgh")):
+    for change, field in (
+        (lambda d: d.pop("effects"), "effects.gravity"),
+        (lambda d: d["top"].update(C=2.5), "top.C"),
+        (lambda d: d["effects"]["gravity"].update(Mgh=-1.0), "effects.gravity.Mgh"),
+    ):
         data = yaml.safe_load(yaml.safe_dump(good))
         change(data)
         path = tmp_path / "heavy_top.yaml"
@@ -316,13 +404,14 @@ def test_heavy_top_scene_lists_gravity_and_is_a_real_body(tmp_path):
 
 def test_moments_of_inertia_by_quadrature():
     from classical_dynamics.studies.solvers import inertia
+
     M, I = inertia.tensor(*inertia.sphere(1.0, 16))
     assert np.allclose(I / M, 0.4 * np.eye(3), rtol=0, atol=1e-13)
     M, I = inertia.tensor(*inertia.torus_circular(3.0, 1.0, 16))
-    assert I[2, 2] / M == pytest.approx(9.75, rel=1e-13)                  # Lamb Ex. VII.10: a^2 + 3 kappa^2
+    assert I[2, 2] / M == pytest.approx(9.75, rel=1e-13)  # Lamb Ex. VII.10: a^2 + 3 kappa^2
     s = 1 / np.sqrt(2)
     _, I = inertia.tensor(np.array([[s, -s, 0.0], [-s, s, 0.0]]), np.ones(2))
-    assert np.allclose(I, [[1, 1, 0], [1, 1, 0], [0, 0, 2]], atol=1e-15)   # the lecture notes' dumbbell
+    assert np.allclose(I, [[1, 1, 0], [1, 1, 0], [0, 0, 2]], atol=1e-15)  # the lecture notes' dumbbell
 
 
 @rhs_function
@@ -342,10 +431,14 @@ def test_a_short_event_vector_leaves_later_steps_exact():
     """Locating an event must not touch the stages' scratch: a 10-component state with one event, found many
     times, ends where the exact solution does (the fault this guards against wrote past a 1-element array)."""
     y0 = np.array([1.0, 0.5, -0.3, 0.2, 0.9, 0.0, 0.4, 0.1, -0.7, 0.3])
-    sol = solve(Problem(oscillators, y0, (0.0, 30.0)), rtol=1e-12, atol=1e-14, events=Events(first_position, 1))
+    sol = solve(
+        Problem(oscillators, y0, (0.0, 30.0)), rtol=1e-12, atol=1e-14, events=Events(first_position, 1)
+    )
     t = 30.0
-    exact = np.concatenate([y0[:5] * np.cos(t) + y0[5:] * np.sin(t), -y0[:5] * np.sin(t) + y0[5:] * np.cos(t)])
-    assert sol.event_t.size == 10                     # x1 = cos t crosses zero at pi/2 + k pi, k = 0..9
+    exact = np.concatenate(
+        [y0[:5] * np.cos(t) + y0[5:] * np.sin(t), -y0[:5] * np.sin(t) + y0[5:] * np.cos(t)]
+    )
+    assert sol.event_t.size == 10  # x1 = cos t crosses zero at pi/2 + k pi, k = 0..9
     np.testing.assert_allclose(sol.event_t, np.pi / 2 + np.pi * np.arange(10), atol=1e-10)
     np.testing.assert_allclose(sol.y, exact, atol=1e-9)
 
@@ -365,7 +458,9 @@ def test_lee_cases_every_closed_form_and_blow_up_time():
 
     r = Collect()
     hard_cases._lee_cases(r)
-    assert {n for n in r.numbers if n.endswith("_t_star")} == {f"lee_case_{c}_t_star" for c in ("i", "iii", "iv", "vi")}
+    assert {n for n in r.numbers if n.endswith("_t_star")} == {
+        f"lee_case_{c}_t_star" for c in ("i", "iii", "iv", "vi")
+    }
     assert r.numbers["lee_cases_worst_difference"] < 1e-10
     # Lee's printed forms, typed here: (i) and (iv) with tan, (iii) with arcoth
     k, w = np.sqrt(2.0), np.sqrt(0.18)
@@ -393,12 +488,14 @@ class _Clock:
         def work():
             self.now += next(delays)
             return self.now
+
         return work
 
 
 @pytest.fixture
 def clock(monkeypatch):
     from classical_dynamics.solvers import timing
+
     fake = _Clock()
     monkeypatch.setattr(timing, "time", fake)
     return fake
@@ -407,19 +504,22 @@ def clock(monkeypatch):
 def test_min_time_stops_once_two_runs_agree_and_ignores_a_slow_first_run(clock):
     """A first call that compiles (slow) is not the minimum; the repeats stop when the two fastest agree."""
     from classical_dynamics.solvers.timing import min_time
+
     seconds, result, runs = min_time(clock.work([0.2, 0.030, 0.0305] + [0.03] * 8), repeats=10, budget_s=5.0)
     assert seconds == pytest.approx(0.03) and result == pytest.approx(0.2605)
-    assert runs == 3                  # the slow first run, then two that agree within 5 %: not ten
+    assert runs == 3  # the slow first run, then two that agree within 5 %: not ten
 
 
 def test_min_time_repeats_until_the_two_fastest_agree(clock):
     from classical_dynamics.solvers.timing import min_time
+
     seconds, _, runs = min_time(clock.work([0.2, 0.03, 0.04, 0.035, 0.0301, 0.05]), repeats=10, budget_s=5.0)
-    assert seconds == pytest.approx(0.03) and runs == 5       # 0.03 and 0.0301 are the first two within 5 %
+    assert seconds == pytest.approx(0.03) and runs == 5  # 0.03 and 0.0301 are the first two within 5 %
 
 
 def test_min_time_keeps_to_its_budget_when_runs_disagree(clock):
     from classical_dynamics.solvers.timing import min_time
+
     delays = [0.01, 0.05, 0.02, 0.08, 0.04, 0.12, 0.06, 0.16, 0.09, 0.2, 0.11]
     seconds, _, runs = min_time(clock.work(delays), repeats=10, budget_s=0.1)
     # stopped by the budget: 0.1 s counted after the first run is passed by the third (0.05 + 0.02 + 0.08)

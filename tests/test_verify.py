@@ -25,8 +25,14 @@ def cli(*args, cwd, tmpdir=None):
     env = run_env(ROOT)
     if tmpdir is not None:
         env["TMPDIR"] = str(tmpdir)
-    return subprocess.run([sys.executable, "-m", "classical_dynamics", *map(str, args)], cwd=cwd, env=env,
-                          capture_output=True, text=True, timeout=300)
+    return subprocess.run(
+        [sys.executable, "-m", "classical_dynamics", *map(str, args)],
+        cwd=cwd,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
 
 
 def checkout_copy(target):
@@ -46,14 +52,24 @@ def built(tmp_path_factory):
     base = tmp_path_factory.mktemp("verify")
     results = base / "results"
     for scene in SCENES:
-        done = cli("run", "chains",
-                   ROOT / f"workflow/scenes/chains/{scene}.yaml", results / "chains" / scene,
-                   results / "chains/timings" / scene, "--quick", cwd=ROOT)
+        done = cli(
+            "run",
+            "chains",
+            ROOT / f"workflow/scenes/chains/{scene}.yaml",
+            results / "chains" / scene,
+            results / "chains/timings" / scene,
+            "--quick",
+            cwd=ROOT,
+        )
         assert done.returncode == 0, done.stderr
-    (results / "report.html").write_text("<html></html>")       # dist packs the report too
+    (results / "report.html").write_text("<html></html>")  # dist packs the report too
     (results / "report.pdf").write_bytes(b"%PDF-1.7\n")
     make_archive(results, base / "dist" / ARCHIVE)
-    return {"results": results, "archive": base / "dist" / ARCHIVE, "checkout": checkout_copy(base / "checkout")}
+    return {
+        "results": results,
+        "archive": base / "dist" / ARCHIVE,
+        "checkout": checkout_copy(base / "checkout"),
+    }
 
 
 @pytest.fixture()
@@ -67,7 +83,9 @@ def sandbox(tmp_path):
 
 def test_verify_passes_on_an_unchanged_archive(built, sandbox):
     before = listing(built["checkout"])
-    done = cli("verify", built["archive"], "--root", built["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
+    done = cli(
+        "verify", built["archive"], "--root", built["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp"
+    )
     assert done.returncode == 0, done.stdout + done.stderr
     assert "OK: all" in done.stdout and "2 scenes" in done.stdout and "(quick build)" in done.stdout
     assert listing(built["checkout"]) == before
@@ -77,20 +95,36 @@ def test_verify_fails_naming_the_number_when_a_scene_value_changes(built, sandbo
     checkout = checkout_copy(sandbox / "checkout")
     scene = checkout / "workflow/scenes/chains/two_masses_three_springs.yaml"
     scene.write_text(scene.read_text().replace("[1.0, 3.0, 1.0]", "[1.0, 3.5, 1.0]"))
-    done = cli("verify", built["archive"], "--root", checkout, "--scenes", "chains/two_masses_three_springs",
-               cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
+    done = cli(
+        "verify",
+        built["archive"],
+        "--root",
+        checkout,
+        "--scenes",
+        "chains/two_masses_three_springs",
+        cwd=sandbox / "cwd",
+        tmpdir=sandbox / "tmp",
+    )
     assert done.returncode == 1, done.stdout + done.stderr
     assert "scene file changed since the archive" in done.stdout
     moved = [line for line in done.stdout.splitlines() if "frequencies_rad_per_s[1]" in line]
-    assert moved and "2.64575131106459" in moved[0] and "2.82842712474619" in moved[0] and "+6.904e-02" in moved[0]
-    assert "frequencies_rad_per_s[0]" not in done.stdout          # the first mode does not involve the middle spring
+    assert (
+        moved
+        and "2.64575131106459" in moved[0]
+        and "2.82842712474619" in moved[0]
+        and "+6.904e-02" in moved[0]
+    )
+    assert "frequencies_rad_per_s[0]" not in done.stdout  # the first mode does not involve the middle spring
     shutil.rmtree(checkout)
 
 
 def _rewrite(archive, target, change):
     """A copy of the archive with member data passed through change(name, data)."""
     buffer = io.BytesIO()
-    with tarfile.open(archive) as src, tarfile.open(fileobj=buffer, mode="w", format=tarfile.PAX_FORMAT) as out:
+    with (
+        tarfile.open(archive) as src,
+        tarfile.open(fileobj=buffer, mode="w", format=tarfile.PAX_FORMAT) as out,
+    ):
         for member in src.getmembers():
             data = change(member.name, src.extractfile(member).read())
             member.size = len(data)
@@ -98,20 +132,28 @@ def _rewrite(archive, target, change):
     target.write_bytes(gzip.compress(buffer.getvalue(), mtime=0))
 
 
-@pytest.mark.parametrize("kind, message", [
-    ("truncated", "truncated"),
-    ("tampered", f"checksum mismatch for classical-dynamics-0.1.0/{CHANGED}"),
-    ("foreign", "not a classical-dynamics archive"),
-    ("not gzip", "not a readable tar.gz"),
-])
+@pytest.mark.parametrize(
+    "kind, message",
+    [
+        ("truncated", "truncated"),
+        ("tampered", f"checksum mismatch for classical-dynamics-0.1.0/{CHANGED}"),
+        ("foreign", "not a classical-dynamics archive"),
+        ("not gzip", "not a readable tar.gz"),
+    ],
+)
 def test_a_bad_archive_is_refused_in_one_line(built, sandbox, kind, message):
     bad = sandbox / "bad" / ARCHIVE
     bad.parent.mkdir()
     if kind == "truncated":
         bad.write_bytes(built["archive"].read_bytes()[:-2000])
     elif kind == "tampered":
-        _rewrite(built["archive"], bad, lambda name, data: data.replace(b"2.64575131106459", b"2.6457513110646")
-                 if name.endswith(CHANGED) else data)
+        _rewrite(
+            built["archive"],
+            bad,
+            lambda name, data: (
+                data.replace(b"2.64575131106459", b"2.6457513110646") if name.endswith(CHANGED) else data
+            ),
+        )
     elif kind == "foreign":
         with tarfile.open(bad, "w:gz") as tar:
             tar.add(built["results"] / "chains", arcname="chains")
@@ -125,7 +167,9 @@ def test_a_bad_archive_is_refused_in_one_line(built, sandbox, kind, message):
 
 def test_diff_of_a_build_against_itself_is_empty(built, sandbox):
     done = cli("diff", built["results"], built["results"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
-    assert done.returncode == 0 and done.stdout.startswith("no numbers changed") and done.stdout.count("\n") == 1
+    assert (
+        done.returncode == 0 and done.stdout.startswith("no numbers changed") and done.stdout.count("\n") == 1
+    )
     done = cli("diff", built["archive"], built["results"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
     assert done.returncode == 0 and done.stdout.startswith("no numbers changed"), done.stdout + done.stderr
 
@@ -155,13 +199,15 @@ def test_tolerance_rule():
     def moved(old, new, **entry):
         return compare({("s", "c", "x"): {"value": old, **entry}}, {("s", "c", "x"): {"value": new, **entry}})
 
-    assert not moved(1.0, 1.0 + 1e-12) and moved(1.0, 1.0 + 1e-8)        # floats: 1e-9 relative
-    assert not moved(0.0, 1e-16) and moved(0.0, 1e-14)                    # ... with a tiny floor at zero
-    assert moved(3, 4) and moved(True, False) and moved("a", "b")          # exact otherwise
-    assert not moved(1.0, 1.05, tolerance=0.1) and moved(1.0, 1.2, tolerance=0.1)          # bare: absolute
-    assert not moved(100.0, 101.0, tolerance={"relative": 0.02}) and moved(100.0, 103.0, tolerance={"relative": 0.02})
+    assert not moved(1.0, 1.0 + 1e-12) and moved(1.0, 1.0 + 1e-8)  # floats: 1e-9 relative
+    assert not moved(0.0, 1e-16) and moved(0.0, 1e-14)  # ... with a tiny floor at zero
+    assert moved(3, 4) and moved(True, False) and moved("a", "b")  # exact otherwise
+    assert not moved(1.0, 1.05, tolerance=0.1) and moved(1.0, 1.2, tolerance=0.1)  # bare: absolute
+    assert not moved(100.0, 101.0, tolerance={"relative": 0.02}) and moved(
+        100.0, 103.0, tolerance={"relative": 0.02}
+    )
     assert [c.number for c in moved([1.0, 2.0, 3.0], [1.0, 2.5, 3.0])] == ["x[1]"]
-    assert moved([1.0], [1.0, 2.0]) and not moved(None, None)            # a changed shape; NaN is stored as null
+    assert moved([1.0], [1.0, 2.0]) and not moved(None, None)  # a changed shape; NaN is stored as null
 
 
 @pytest.mark.slow

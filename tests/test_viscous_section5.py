@@ -1,5 +1,5 @@
-"""Lee §5 checks of studies/self_excited/section5.py: the time-dependent torque's quadratures, Cases I and IV, the
-spiral, the hyperbola of permanent rotations, the reduction formulas (5.32)-(5.37) and Re w."""
+"""Lee §5 checks of studies/self_excited/section5.py: the time-dependent torque's quadratures, Cases I and IV,
+the spiral, the hyperbola of permanent rotations, the reduction formulas (5.32)-(5.37) and Re w."""
 
 from __future__ import annotations
 
@@ -34,12 +34,16 @@ class Numbers:
 @pytest.mark.parametrize("V", [V3, replace(V3, nu=0.0, mu=0.0)])
 def test_time_dependent_quadratures_against_eulers_equations(V, kind, a, b):
     t = 7.0
-    ode = solve(Problem(viscous_modulated, list(V.omega0), (0.0, t), np.r_[V.parameters(), kind, a, b]), "dop853",
-                rtol=1e-13, atol=1e-15).y
+    ode = solve(
+        Problem(viscous_modulated, list(V.omega0), (0.0, t), np.r_[V.parameters(), kind, a, b]),
+        "dop853",
+        rtol=1e-13,
+        atol=1e-15,
+    ).y
     q = s5._quadratures(V, modulation(kind, a, b), t)
     assert np.max(np.abs(q["general"] - ode)) < 1e-10
     assert np.max(np.abs(q["fixed"] - ode)) < 1e-10
-    assert np.max(np.abs(q["principal"] - ode)) > 1e-2          # m2 < 0: the principal arctan is the wrong angle
+    assert np.max(np.abs(q["principal"] - ode)) > 1e-2  # m2 < 0: the principal arctan is the wrong angle
 
 
 def test_constant_modulus_reduces_to_the_constant_torque_solution():
@@ -52,12 +56,19 @@ def test_case_one_and_four_are_straight_and_reach_the_point():
     r = Numbers()
     s5.case_one(r, V2)
     s5.case_four(r, V3)
-    for name in ("case_one_lee_vs_ode", "case_one_line_distance", "case_one_frictionless_gap", "case_four_lee_vs_ode",
-                 "case_four_line_distance", "case_four_frictionless_gap", "case_four_space_line_distance_equal_drags"):
+    for name in (
+        "case_one_lee_vs_ode",
+        "case_one_line_distance",
+        "case_one_frictionless_gap",
+        "case_four_lee_vs_ode",
+        "case_four_line_distance",
+        "case_four_frictionless_gap",
+        "case_four_space_line_distance_equal_drags",
+    ):
         assert r.n[name] < 1e-11, name
     assert r.n["case_one_limit_gap"] < 1e-8 and r.n["case_four_limit_gap"] < 1e-8
     assert r.n["case_one_r_max"] == 0.0
-    assert r.n["case_four_space_line_distance"] > 0.1            # nu != mu: curved in space
+    assert r.n["case_four_space_line_distance"] > 0.1  # nu != mu: curved in space
 
 
 def test_lee_linear_formula_is_not_the_integrator():
@@ -95,7 +106,7 @@ def test_reduction_formulas_and_the_printed_sign(K, x):
         si, ci = s5.lee_reduction(x, w)
         ref_si, ref_ci = sc.reference(x, w, dps=40)
         assert abs(si - ref_si) < 1e-30 * abs(ref_si) and abs(ci - ref_ci) < 1e-30 * abs(ref_ci)
-        if K in (3, 5):                                     # P != 0 for K odd only from K = 3
+        if K in (3, 5):  # P != 0 for K odd only from K = 3
             wrong, _ = s5.lee_reduction(x, w, ocr_sign=True)
             assert abs(wrong - ref_si) > 1e-3 * abs(ref_si)
 
@@ -113,5 +124,8 @@ def test_reduction_a_b_and_re_w():
 @pytest.mark.parametrize("s", [0.3, 7.0, 30.0])
 def test_gauss_rule_of_xi_against_quad(s):
     from scipy import integrate
-    f = lambda u: (1.0 + 0.5 * np.sin(2.0 * u)) * (1.0 - np.exp(-0.5 * (s - u)))     # noqa: E731
-    assert abs(s5._gauss(f, s) - integrate.quad(f, 0.0, s, epsabs=1e-15, epsrel=1e-14, limit=200)[0]) < 1e-13 * s
+
+    f = lambda u: (1.0 + 0.5 * np.sin(2.0 * u)) * (1.0 - np.exp(-0.5 * (s - u)))
+    assert (
+        abs(s5._gauss(f, s) - integrate.quad(f, 0.0, s, epsabs=1e-15, epsrel=1e-14, limit=200)[0]) < 1e-13 * s
+    )

@@ -1,7 +1,8 @@
-"""Pin every package, with hashes, in two lock files: requirements/pipeline.lock (what `make report` and the cluster's
-jobs need: pyproject's dependencies and what the editable install builds with) and requirements/test.lock (only what
-the tests add: pyproject's `test` extra; it starts with `-r pipeline.lock`). Then write workflow/envs/pipeline.yaml,
-the conda environment of `snakemake --use-conda`, with the pipeline's pins (tests/test_locks.py checks they agree).
+"""Pin every package, with hashes, in two lock files: requirements/pipeline.lock (what `make report` and the
+cluster's jobs need: pyproject's dependencies and what the editable install builds with) and
+requirements/test.lock (only what the tests add: pyproject's `test` extra; it starts with `-r pipeline.lock`).
+Then write workflow/envs/pipeline.yaml, the conda environment of `snakemake --use-conda`, with the pipeline's
+pins (tests/test_locks.py checks they agree).
 
     python tools/lock.py            # after changing dependencies in pyproject.toml (needs pip-tools)
 
@@ -19,10 +20,19 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 FOLDER = ROOT / "requirements"
-OPTIONS = ["--quiet", "--generate-hashes", "--allow-unsafe", "--strip-extras", "--no-emit-index-url",
-           "--no-emit-find-links", "--no-header"]
-HEADER = ("# {what}\n# Pinned with hashes for Python %d.%d by tools/lock.py (pip-compile); install with "
-          "pip install -r {name}\n" % sys.version_info[:2])
+OPTIONS = [
+    "--quiet",
+    "--generate-hashes",
+    "--allow-unsafe",
+    "--strip-extras",
+    "--no-emit-index-url",
+    "--no-emit-find-links",
+    "--no-header",
+]
+HEADER = (
+    "# {what}\n# Pinned with hashes for Python %d.%d by tools/lock.py (pip-compile); install with "
+    "pip install -r {name}\n" % sys.version_info[:2]
+)
 
 
 def compile_(output: Path, *sources: str, extra: list[str] = (), upgrade: bool = False) -> None:
@@ -44,15 +54,19 @@ def blocks(text: str) -> dict[str, str]:
 
 
 def write_conda_environment(pins: dict[str, str]) -> None:
-    """workflow/envs/pipeline.yaml: Python and WeasyPrint's system libraries and fonts from conda-forge, then the
-    lock's pins with pip (without hashes: pip's hash mode refuses the editable install of this package)."""
-    lines = [ENVIRONMENT] + [f"      - {block.split()[0]}\n" for block in pins.values()] + ["      - -e ../..\n"]
+    """workflow/envs/pipeline.yaml: Python and WeasyPrint's system libraries and fonts from conda-forge, then
+    the lock's pins with pip (without hashes: pip's hash mode refuses the editable install of this
+    package)."""
+    lines = (
+        [ENVIRONMENT] + [f"      - {block.split()[0]}\n" for block in pins.values()] + ["      - -e ../..\n"]
+    )
     (ROOT / "workflow" / "envs" / "pipeline.yaml").write_text("".join(lines))
 
 
 ENVIRONMENT = """\
-# The software every rule runs with under `snakemake --use-conda`: Python and WeasyPrint's system libraries and
-# fonts from conda-forge, then the pins of requirements/pipeline.lock and this package. Written by tools/lock.py.
+# The software every rule runs with under `snakemake --use-conda`: Python and WeasyPrint's system libraries
+# and fonts from conda-forge, then the pins of requirements/pipeline.lock and this package. Written by
+# tools/lock.py.
 channels:
   - conda-forge
 dependencies:
@@ -70,22 +84,35 @@ def main() -> int:
     with tempfile.TemporaryDirectory() as scratch:
         draft = Path(scratch) / "pipeline.lock"
         if pipeline.exists():
-            shutil.copy(pipeline, draft)                # pip-compile prefers the pins in its output file
+            shutil.copy(pipeline, draft)  # pip-compile prefers the pins in its output file
         compile_(draft, "pyproject.toml", "requirements/build.in", upgrade=upgrade)
-        pipeline.write_text(HEADER.format(what="What the pipeline runs with (make report, a cluster's jobs).",
-                                          name="requirements/pipeline.lock") + draft.read_text())
+        pipeline.write_text(
+            HEADER.format(
+                what="What the pipeline runs with (make report, a cluster's jobs).",
+                name="requirements/pipeline.lock",
+            )
+            + draft.read_text()
+        )
         everything = Path(scratch) / "everything.lock"
-        shutil.copy(draft, everything)                  # the tests' packages agree with the pipeline's pins
+        shutil.copy(draft, everything)  # the tests' packages agree with the pipeline's pins
         compile_(everything, "pyproject.toml", "requirements/build.in", extra=["--extra", "test"])
         shared, together = blocks(draft.read_text()), blocks(everything.read_text())
         added = {name: lines for name, lines in together.items() if name not in shared}
-        moved = [name for name, lines in together.items()
-                 if name in shared and lines.split()[0] != shared[name].split()[0]]
+        moved = [
+            name
+            for name, lines in together.items()
+            if name in shared and lines.split()[0] != shared[name].split()[0]
+        ]
         if moved:
             raise SystemExit(f"the test extra moves pipeline pins: {', '.join(moved)}")
         (FOLDER / "test.lock").write_text(
-            HEADER.format(what="What the tests add to the pipeline's packages (make test).",
-                          name="requirements/test.lock") + "-r pipeline.lock\n\n" + "".join(added.values()))
+            HEADER.format(
+                what="What the tests add to the pipeline's packages (make test).",
+                name="requirements/test.lock",
+            )
+            + "-r pipeline.lock\n\n"
+            + "".join(added.values())
+        )
     write_conda_environment(shared)
     print(f"{pipeline.relative_to(ROOT)}: {len(shared)} packages; requirements/test.lock: {len(added)} more")
     return 0

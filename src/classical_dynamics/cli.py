@@ -34,14 +34,21 @@ def _now() -> str:
 def _budget(args):
     """The budget the command line gives (a Snakemake job passes its run's), else workflow/config.yaml's."""
     from .scenes.cost import Budget
+
     if args.budget_seconds is None and args.budget_memory_mb is None:
         return Budget.from_file()
-    return Budget.from_config({key: value for key, value in (("seconds", args.budget_seconds),
-                                                            ("memory_mb", args.budget_memory_mb)) if value is not None})
+    return Budget.from_config(
+        {
+            key: value
+            for key, value in (("seconds", args.budget_seconds), ("memory_mb", args.budget_memory_mb))
+            if value is not None
+        }
+    )
 
 
 def cmd_validate(args) -> int:
     from .studies import validate
+
     for scene in args.scenes:
         validate(args.study, scene, _budget(args))
     return 0
@@ -50,8 +57,13 @@ def cmd_validate(args) -> int:
 def cmd_run(args) -> int:
     if args.time_limit_min or args.memory_limit_mb:
         from .limits import run_limited
-        return run_limited(lambda: _guarded(_run, args), args.scene, 60 * (args.time_limit_min or float("inf")),
-                           args.memory_limit_mb or float("inf"))
+
+        return run_limited(
+            lambda: _guarded(_run, args),
+            args.scene,
+            60 * (args.time_limit_min or float("inf")),
+            args.memory_limit_mb or float("inf"),
+        )
     return _run(args)
 
 
@@ -61,22 +73,38 @@ def _run(args) -> int:
     from . import provenance
     from .studies import study_module, validate
 
-    scene = validate(args.study, args.scene, _budget(args))     # nothing is computed before this passes
+    scene = validate(args.study, args.scene, _budget(args))  # nothing is computed before this passes
     module = study_module(args.study)
     started, wall0, cpu0 = _now(), time.perf_counter(), time.process_time()
     results = module.run(scene, quick=args.quick)
     wall, cpu = time.perf_counter() - wall0, time.process_time() - cpu0
     record = {
-        "study": args.study, "scene": scene.name, "scene_file": str(args.scene),
-        "scene_sha256": scene.sha256, "effects_simulated": sorted(scene.effects),
-        "quick": bool(args.quick), **provenance.git_state(), "packages": provenance.package_versions(),
-        "machine": provenance.machine(), "started": started, "finished": _now(),
-        "wall_seconds": round(wall, 3), "cpu_seconds": round(cpu, 3),
+        "study": args.study,
+        "scene": scene.name,
+        "scene_file": str(args.scene),
+        "scene_sha256": scene.sha256,
+        "effects_simulated": sorted(scene.effects),
+        "quick": bool(args.quick),
+        **provenance.git_state(),
+        "packages": provenance.package_versions(),
+        "machine": provenance.machine(),
+        "started": started,
+        "finished": _now(),
+        "wall_seconds": round(wall, 3),
+        "cpu_seconds": round(cpu, 3),
     }
-    timing = {"study": args.study, "scene": scene.name, "wall_seconds": wall, "cpu_seconds": cpu,
-              "max_rss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
-              "estimated_seconds": scene.estimate.seconds, "estimated_memory_mb": scene.estimate.memory_mb,
-              "started": started, "cpu_model": record["machine"]["cpu_model"], "cores": record["machine"]["cores"]}
+    timing = {
+        "study": args.study,
+        "scene": scene.name,
+        "wall_seconds": wall,
+        "cpu_seconds": cpu,
+        "max_rss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
+        "estimated_seconds": scene.estimate.seconds,
+        "estimated_memory_mb": scene.estimate.memory_mb,
+        "started": started,
+        "cpu_model": record["machine"]["cpu_model"],
+        "cores": record["machine"]["cores"],
+    }
     results.write(Path(args.out_dir), Path(args.timings_dir), record, timing)
     return 0
 
@@ -85,10 +113,16 @@ def cmd_report(args) -> int:
     from .report.build import build_report
     from .report.claims import ClaimFailure
     from .report.ledger import LedgerError
+
     try:
-        build_report(Path(args.results), Path(args.html), Path(args.pdf) if args.pdf else None,
-                     quick=args.quick, root=Path(args.root))
-    except (ClaimFailure, LedgerError) as error:      # what the report's data say is wrong: no traceback
+        build_report(
+            Path(args.results),
+            Path(args.html),
+            Path(args.pdf) if args.pdf else None,
+            quick=args.quick,
+            root=Path(args.root),
+        )
+    except (ClaimFailure, LedgerError) as error:  # what the report's data say is wrong: no traceback
         print(f"report: {error}", file=sys.stderr)
         return 1
     return 0
@@ -96,17 +130,20 @@ def cmd_report(args) -> int:
 
 def cmd_dist(args) -> int:
     from .report.dist import make_archive
+
     make_archive(Path(args.results), Path(args.archive))
     return 0
 
 
 def cmd_verify(args) -> int:
     from .verify import verify
+
     return verify(Path(args.archive), Path(args.root), args.scenes, args.quick, args.cores)
 
 
 def cmd_diff(args) -> int:
     from .verify import diff
+
     return diff(Path(args.a), Path(args.b))
 
 
@@ -139,15 +176,23 @@ def main(argv=None) -> int:
     p.add_argument("results")
     p.add_argument("archive")
     p.set_defaults(func=cmd_dist)
-    p = sub.add_parser("verify", help="rebuild a dist archive's scenes and compare every number with it; "
-                       "exit 1 if one moved beyond its tolerance, 2 for a bad archive")
+    p = sub.add_parser(
+        "verify",
+        help="rebuild a dist archive's scenes and compare every number with it; "
+        "exit 1 if one moved beyond its tolerance, 2 for a bad archive",
+    )
     p.add_argument("archive")
     p.add_argument("--scenes", help="only these: study/scene or study, comma-separated")
     p.add_argument("--root", default=".", help="the checkout whose code and scene files rebuild it")
     p.add_argument("--cores", type=int, default=1, help="scenes rebuilt side by side")
     mode = p.add_mutually_exclusive_group()
-    mode.add_argument("--quick", action="store_const", const=True, default=None,
-                      help="rebuild as a quick build (default: as each scene's provenance says)")
+    mode.add_argument(
+        "--quick",
+        action="store_const",
+        const=True,
+        default=None,
+        help="rebuild as a quick build (default: as each scene's provenance says)",
+    )
     mode.add_argument("--full", action="store_const", const=False, dest="quick")
     p.set_defaults(func=cmd_verify)
     p = sub.add_parser("diff", help="every number that changed between two builds; exit 1 if any")
@@ -159,7 +204,9 @@ def main(argv=None) -> int:
 
 
 def _budget_arguments(parser) -> None:
-    parser.add_argument("--budget-seconds", type=float, help="the most a scene may cost (default: workflow/config.yaml)")
+    parser.add_argument(
+        "--budget-seconds", type=float, help="the most a scene may cost (default: workflow/config.yaml)"
+    )
     parser.add_argument("--budget-memory-mb", type=float)
 
 
@@ -167,14 +214,18 @@ def _guarded(func, args) -> int:
     """func(args), with a user's mistake (a bad scene, archive or result) and exhausted memory as one line."""
     from .io import ResultError
     from .verify import VerifyError
+
     try:
         return func(args)
     except (SceneError, VerifyError, ResultError) as error:
         print(error, file=sys.stderr)
         return 2
     except MemoryError:
-        print(f"{getattr(args, 'scene', args.command)}: stopped: out of memory (see budget: in workflow/config.yaml)",
-              file=sys.stderr)
+        print(
+            f"{getattr(args, 'scene', args.command)}: stopped: out of memory (see budget: in "
+            "workflow/config.yaml)",
+            file=sys.stderr,
+        )
         return 3
 
 

@@ -9,21 +9,29 @@ from __future__ import annotations
 
 from cycler import cycler
 
-TEXT_WIDTH_IN = 174 / 25.4          # A4 less 18 mm margins: the widest a figure prints
-FULL_WIDTH_IN = TEXT_WIDTH_IN - 0.2  # a full-width figure: room for the saved SVG's pad and labels past the axes
-MAX_HEIGHT_IN = 95 / 25.4           # print.css caps a figure's height at 95 mm
+TEXT_WIDTH_IN = 174 / 25.4  # A4 less 18 mm margins: the widest a figure prints
+# a full-width figure: room for the saved SVG's pad and labels past the axes
+FULL_WIDTH_IN = TEXT_WIDTH_IN - 0.2
+MAX_HEIGHT_IN = 95 / 25.4  # print.css caps a figure's height at 95 mm
 PAIR_WIDTH_IN = 0.4 * TEXT_WIDTH_IN  # print.css: a figure paired with a table (.pair) takes 40 % of the width
-MIN_FONT_PT = 7.0                   # the smallest text allowed at print size
+MIN_FONT_PT = 7.0  # the smallest text allowed at print size
 
 # Okabe & Ito (2008), colour-blind safe; yellow last: it is faint on white.
 OKABE_ITO = ["#000000", "#E69F00", "#56B4E9", "#009E73", "#0072B2", "#D55E00", "#CC79A7", "#F0E442"]
 
 # The same method keeps its colour in every figure.
 METHOD_COLOURS = {
-    "dop853": "#0072B2", "rk45": "#56B4E9", "dopri5": "#56B4E9",
-    "scipy:DOP853": "#D55E00", "scipy:RK45": "#E69F00", "scipy:LSODA": "#CC79A7", "scipy:Radau": "#009E73",
+    "dop853": "#0072B2",
+    "rk45": "#56B4E9",
+    "dopri5": "#56B4E9",
+    "scipy:DOP853": "#D55E00",
+    "scipy:RK45": "#E69F00",
+    "scipy:LSODA": "#CC79A7",
+    "scipy:Radau": "#009E73",
     "scipy:BDF": "#7F7F7F",
-    "splitting2": "#000000", "splitting4": "#999933", "splitting": "#000000",   # olive: Radau has the green
+    "splitting2": "#000000",
+    "splitting4": "#999933",
+    "splitting": "#000000",  # olive: Radau has the green
 }
 
 
@@ -38,7 +46,7 @@ def method_colour(method: str, fallback_index: int = 0) -> str:
 STYLE = {
     "font.family": "sans-serif",
     "font.sans-serif": ["DejaVu Sans"],
-    "mathtext.fontset": "dejavuserif",   # symbols as in the text: DejaVu Serif italic
+    "mathtext.fontset": "dejavuserif",  # symbols as in the text: DejaVu Serif italic
     "font.size": 8.0,
     "axes.titlesize": 8.5,
     "axes.labelsize": 8.0,
@@ -48,7 +56,7 @@ STYLE = {
     "legend.title_fontsize": 7.5,
     "figure.titlesize": 9.0,
     "axes.prop_cycle": cycler(color=OKABE_ITO),
-    "axes.formatter.use_mathtext": True,   # 1.5 × 10⁻³, never 1.5e-3, on every axis
+    "axes.formatter.use_mathtext": True,  # 1.5 × 10⁻³, never 1.5e-3, on every axis
     "axes.unicode_minus": True,
     "axes.linewidth": 0.6,
     "lines.linewidth": 1.1,

@@ -8,11 +8,11 @@ from __future__ import annotations
 
 import math
 
-MINUS = "\u2212"           # −
-GROUP = "\u202f"           # narrow no-break space between groups of three digits
-TIMES = "\u202f×\u202f"    # 1.6 × 10⁻¹⁰ never breaks across a line
+MINUS = "\u2212"  # −
+GROUP = "\u202f"  # narrow no-break space between groups of three digits
+TIMES = "\u202f×\u202f"  # 1.6 × 10⁻¹⁰ never breaks across a line
 SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
-FIXED_RANGE = (-3, 5)      # decimal notation for 10⁻³ <= |x| < 10⁵, powers of ten outside
+FIXED_RANGE = (-3, 5)  # decimal notation for 10⁻³ <= |x| < 10⁵, powers of ten outside
 
 
 def _group(digits: str) -> str:
@@ -52,7 +52,7 @@ def format_number(value, sig: int = 4, *, fixed_range=FIXED_RANGE) -> str:
         return "0"
     sig = max(int(sig), 1)
     mantissa, exp = f"{abs(value):.{sig - 1}e}".split("e")
-    exponent = int(exp)                      # exponent of the rounded value
+    exponent = int(exp)  # exponent of the rounded value
     sign = MINUS if value < 0 else ""
     low, high = fixed_range
     if low <= exponent < high:

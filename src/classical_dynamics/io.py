@@ -113,7 +113,8 @@ def replace_directory(staging: Path, target: Path) -> None:
     os.replace(staging, target)
 
 
-# --- results folders: whole or refused ---------------------------------------------------------------------------
+# --- results folders: whole or refused ----------------------------------------------------------------------
+
 
 class ResultError(ValueError):
     """A results folder that is incomplete or corrupted. str(error) is one line naming the file."""
@@ -131,8 +132,11 @@ def is_staging(path: Path | str) -> bool:
 
 def result_folders(study_dir: Path | str) -> list[Path]:
     """The finished scene folders of results/<study>/ (staging folders and timings left out), sorted."""
-    return sorted(p.parent for p in Path(study_dir).glob("*/summary.json")
-                  if not is_staging(p.parent) and p.parent.name != "timings")
+    return sorted(
+        p.parent
+        for p in Path(study_dir).glob("*/summary.json")
+        if not is_staging(p.parent) and p.parent.name != "timings"
+    )
 
 
 def check_result_folder(folder: Path | str, deep: bool = True) -> dict:
@@ -142,17 +146,25 @@ def check_result_folder(folder: Path | str, deep: bool = True) -> dict:
     try:
         provenance = json.loads((folder / "provenance.json").read_bytes())
     except (OSError, ValueError) as error:
-        raise ResultError(f"{folder}/provenance.json: unreadable or not JSON ({error}); rebuild the scene") from None
+        raise ResultError(
+            f"{folder}/provenance.json: unreadable or not JSON ({error}); rebuild the scene"
+        ) from None
     digests = provenance.get("files") if isinstance(provenance, dict) else None
     if not isinstance(digests, dict) or "summary.json" not in digests:
-        raise ResultError(f"{folder}/provenance.json: lists no file checksums (written by an older version or cut "
-                          "short); rebuild the scene")
-    for name in (sorted(digests) if deep else ["summary.json"]):
+        raise ResultError(
+            f"{folder}/provenance.json: lists no file checksums (written by an older version or cut "
+            "short); rebuild the scene"
+        )
+    for name in sorted(digests) if deep else ["summary.json"]:
         try:
             data = (folder / name).read_bytes()
         except OSError:
-            raise ResultError(f"{folder}/{name}: missing (listed in provenance.json); rebuild the scene") from None
+            raise ResultError(
+                f"{folder}/{name}: missing (listed in provenance.json); rebuild the scene"
+            ) from None
         if hashlib.sha256(data).hexdigest() != digests[name]:
-            raise ResultError(f"{folder}/{name}: does not match its checksum in provenance.json (truncated or "
-                              "edited); rebuild the scene")
+            raise ResultError(
+                f"{folder}/{name}: does not match its checksum in provenance.json (truncated or "
+                "edited); rebuild the scene"
+            )
     return provenance

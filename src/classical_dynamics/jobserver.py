@@ -1,18 +1,19 @@
-"""A warm process that runs the pipeline's jobs, so that a job does not pay the imports of its own interpreter.
+"""A warm process that runs the pipeline's jobs, so that a job does not pay the imports of its own
+interpreter.
 
 A job of this pipeline spends about a second starting Python and importing numpy, scipy, matplotlib, numba and
 our solvers before its own work, often longer than the work (95 jobs: over a minute of a build on two cores).
-For a local run the Snakefile starts one server (`start`, from `onstart:`); it imports all that once, then forks
-a child per job. The job's command line is this module's client:
+For a local run the Snakefile starts one server (`start`, from `onstart:`); it imports all that once, then
+forks a child per job. The job's command line is this module's client:
 
     python -m classical_dynamics.jobserver MODULE ARG...     # as `python -m MODULE ARG...` would run it
 
-The client hands the server its arguments, working folder, environment and its stdin, stdout and stderr (the job's
-log), waits for the child's exit status and exits with it. Without a server (none started: a dry run, a cluster
-job, a test calling the command itself) the client runs the module in its own process, as before; a job behaves
-the same either way. The child is its own process group: a signal to the client (Ctrl-C, Snakemake stopping the
-job) is passed on, and if the client disappears the server kills the group. The server stops when Snakemake
-stops it or exits.
+The client hands the server its arguments, working folder, environment and its stdin, stdout and stderr (the
+job's log), waits for the child's exit status and exits with it. Without a server (none started: a dry run, a
+cluster job, a test calling the command itself) the client runs the module in its own process, as before; a
+job behaves the same either way. The child is its own process group: a signal to the client (Ctrl-C, Snakemake
+stopping the job) is passed on, and if the client disappears the server kills the group. The server stops when
+Snakemake stops it or exits.
 
 A child's environment and folder are its client's; its modules are the server's, imported when the run started
 (as Snakemake's code digests were taken when it parsed). The client imports nothing but the standard library:
@@ -27,20 +28,24 @@ import signal
 import socket
 import sys
 
-ENV = "CLASSICAL_DYNAMICS_JOBSERVER"        # the server's socket, in the environment of the jobs it serves
+ENV = "CLASSICAL_DYNAMICS_JOBSERVER"  # the server's socket, in the environment of the jobs it serves
 _MAX_REQUEST = 1 << 20
 
 
-# ---------------------------------------------------------------------------------------------------- the client
+# --- the client ---------------------------------------------------------------------------------------------
+
 
 def run_module(module: str, args: list[str]) -> int:
     """`python -m module args...` in this process; its exit status."""
     import runpy
     import warnings
+
     sys.argv = [module, *args]
     try:
-        with warnings.catch_warnings():     # the server imported it already: runpy runs it afresh, as python -m
-            warnings.filterwarnings("ignore", "'.*' found in sys.modules after import of package", RuntimeWarning)
+        with warnings.catch_warnings():  # the server imported it already: runpy runs it afresh, as python -m
+            warnings.filterwarnings(
+                "ignore", "'.*' found in sys.modules after import of package", RuntimeWarning
+            )
             runpy.run_module(module, run_name="__main__", alter_sys=True)
     except SystemExit as exit_:
         code = exit_.code
@@ -68,7 +73,7 @@ def client(argv: list[str]) -> int:
         started = replies.readline()
     except OSError:
         started = ""
-    if not started:                     # no server there, or it could not start: the job runs here
+    if not started:  # no server there, or it could not start: the job runs here
         return run_module(module, args)
     pid = json.loads(started)["pid"]
 
@@ -77,6 +82,7 @@ def client(argv: list[str]) -> int:
             os.kill(pid, signum)
         except ProcessLookupError:
             pass
+
     for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
         signal.signal(sig, forward)
     finished = replies.readline()
@@ -86,19 +92,38 @@ def client(argv: list[str]) -> int:
     return json.loads(finished)["status"]
 
 
-# ---------------------------------------------------------------------------------------------------- the server
+# --- the server ---------------------------------------------------------------------------------------------
 
 # What the jobs import: loaded once here, shared by every child (copy-on-write). Every module of the packages
-# below (sympy for the closed forms among them), and the report's HTML. Not WeasyPrint: one job, the PDF, uses it.
-WARM = ("classical_dynamics.cli", "numpy", "scipy.integrate", "scipy.special", "scipy.linalg", "scipy.optimize",
-        "matplotlib", "matplotlib.figure", "matplotlib.backends.backend_svg", "jsonschema", "yaml", "sympy", "classical_dynamics.report.build")
-WARM_PACKAGES = ("classical_dynamics.solvers", "classical_dynamics.models", "classical_dynamics.scenes",
-                 "classical_dynamics.studies")
+# below (sympy for the closed forms among them), and the report's HTML. Not WeasyPrint: one job, the PDF, uses
+# it.
+WARM = (
+    "classical_dynamics.cli",
+    "numpy",
+    "scipy.integrate",
+    "scipy.special",
+    "scipy.linalg",
+    "scipy.optimize",
+    "matplotlib",
+    "matplotlib.figure",
+    "matplotlib.backends.backend_svg",
+    "jsonschema",
+    "yaml",
+    "sympy",
+    "classical_dynamics.report.build",
+)
+WARM_PACKAGES = (
+    "classical_dynamics.solvers",
+    "classical_dynamics.models",
+    "classical_dynamics.scenes",
+    "classical_dynamics.studies",
+)
 
 
 def _warm_up() -> None:
     import importlib
     import pkgutil
+
     for name in WARM:
         importlib.import_module(name)
     for name in WARM_PACKAGES:
@@ -122,8 +147,9 @@ def _child(request: dict, fds: list[int]) -> None:
         os.environ.clear()
         os.environ.update(request["env"])
         status = run_module(request["module"], request["args"])
-    except BaseException:               # a fault of the job's own: its traceback in its log, as a process would
+    except BaseException:  # a fault of the job's own: its traceback in its log, as a process would
         import traceback
+
         traceback.print_exc()
     finally:
         for stream in (sys.stdout, sys.stderr):
@@ -140,8 +166,8 @@ def serve(path: str, parent: int) -> None:
 
     listener = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     listener.bind(path)
-    listener.listen(64)                 # clients may connect (and wait) while the imports below run
-    signal.signal(signal.SIGINT, signal.SIG_IGN)     # Ctrl-C reaches the jobs through their clients
+    listener.listen(64)  # clients may connect (and wait) while the imports below run
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C reaches the jobs through their clients
     stopping = []
     signal.signal(signal.SIGTERM, lambda *_: stopping.append(True))
     # A child's exit wakes the loop at once (its status goes to its client without waiting for a timeout).
@@ -150,9 +176,9 @@ def serve(path: str, parent: int) -> None:
     os.set_blocking(woken, False)
     signal.set_wakeup_fd(woken)
     signal.signal(signal.SIGCHLD, lambda *_: None)
-    jobs: dict[int, socket.socket] = {}                 # child pid -> its client's connection
+    jobs: dict[int, socket.socket] = {}  # child pid -> its client's connection
     try:
-        _warm_up()          # should an import fail, waiting clients see the server gone and run their jobs alone
+        _warm_up()  # should an import fail, waiting clients see the server gone and run their jobs alone
         while not (stopping or os.getppid() != parent) or jobs:
             watched = [wake, *jobs.values()] + ([] if stopping else [listener])
             for ready in select.select(watched, [], [], 1.0)[0]:
@@ -163,7 +189,7 @@ def serve(path: str, parent: int) -> None:
                     pid = _start(conn, [listener, wake, woken, *jobs.values()])
                     if pid:
                         jobs[pid] = conn
-                elif not ready.recv(1):         # the client is gone (killed): so is its job
+                elif not ready.recv(1):  # the client is gone (killed): so is its job
                     pid = next(p for p, c in jobs.items() if c is ready)
                     try:
                         os.killpg(pid, signal.SIGKILL)
@@ -172,7 +198,7 @@ def serve(path: str, parent: int) -> None:
             _reap(jobs)
     finally:
         listener.close()
-        for remove in (os.unlink, os.rmdir):      # the socket and the folder start() made for it
+        for remove in (os.unlink, os.rmdir):  # the socket and the folder start() made for it
             try:
                 remove(path if remove is os.unlink else os.path.dirname(path))
             except OSError:
@@ -184,7 +210,7 @@ def _start(conn: socket.socket, inherited: list) -> int:
     what it inherited of the server's (its sockets and pipe)."""
     try:
         data, fds, _, _ = socket.recv_fds(conn, _MAX_REQUEST, 3)
-        while not data.endswith(b"\n"):            # one line of JSON; the client then only waits
+        while not data.endswith(b"\n"):  # one line of JSON; the client then only waits
             more = conn.recv(_MAX_REQUEST)
             if not more:
                 raise ValueError("incomplete request")
@@ -229,24 +255,29 @@ def _reap(jobs: dict) -> None:
         conn.close()
 
 
-_server = None          # the server's subprocess.Popen while one runs (subprocess is imported only to start it)
+_server = None  # the server's subprocess.Popen while one runs (subprocess is imported only to start it)
 
 
 def put_interpreter_first_on_path() -> None:
-    """Put this interpreter's folder first on PATH (for the jobs started from this process): rules call `python3`
-    by name, which is then the interpreter that runs Snakemake, as activating its environment would make it."""
+    """Put this interpreter's folder first on PATH (for the jobs started from this process): rules call
+    `python3` by name, which is then the interpreter that runs Snakemake, as activating its environment would
+    make it."""
     os.environ["PATH"] = os.pathsep.join([os.path.dirname(sys.executable), os.environ.get("PATH", "")])
 
 
 def start() -> None:
-    """Start a server for the jobs of this process (the Snakemake run whose `onstart:` calls it): its socket's path
-    goes into this process's environment, which Snakemake's local jobs inherit."""
+    """Start a server for the jobs of this process (the Snakemake run whose `onstart:` calls it): its socket's
+    path goes into this process's environment, which Snakemake's local jobs inherit."""
     import subprocess
     import tempfile
+
     global _server
     path = os.path.join(tempfile.mkdtemp(prefix="classical-dynamics-"), "jobs.sock")
-    _server = subprocess.Popen([sys.executable, "-m", __name__, "--serve", path, str(os.getpid())],
-                               start_new_session=True, stdin=subprocess.DEVNULL)
+    _server = subprocess.Popen(
+        [sys.executable, "-m", __name__, "--serve", path, str(os.getpid())],
+        start_new_session=True,
+        stdin=subprocess.DEVNULL,
+    )
     os.environ[ENV] = path
 
 

@@ -8,7 +8,8 @@ import sys
 
 
 def lazy_module(name: str):
-    """The module `name`, executed on its first attribute access (the LazyLoader recipe of importlib's docs)."""
+    """The module `name`, executed on its first attribute access (the LazyLoader recipe of importlib's
+    docs)."""
     if name in sys.modules:
         return sys.modules[name]
     spec = importlib.util.find_spec(name)

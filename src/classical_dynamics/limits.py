@@ -1,9 +1,9 @@
 """A job run under a time and a memory limit: the scene's own estimate with room to spare (scenes/cost.py).
 
 The work runs in a forked child; the parent only watches the wall clock and the child's resident memory, every
-0.1 s, and stops it with one line when it passes either. A watcher outside the work is the only kind that can stop
-a numba loop holding the interpreter, and resident memory (not address space, which numba and BLAS reserve by the
-gigabyte) is what exhausts a machine.
+0.1 s, and stops it with one line when it passes either. A watcher outside the work is the only kind that can
+stop a numba loop holding the interpreter, and resident memory (not address space, which numba and BLAS
+reserve by the gigabyte) is what exhausts a machine.
 """
 
 from __future__ import annotations
@@ -40,22 +40,23 @@ def run_limited(work: Callable[[], int], what: str, time_limit_s: float, memory_
     # when it does, instead of up to POLL_S later (a job's exit is not delayed by the watcher).
     exited, alive = os.pipe()
     pid = os.fork()
-    if pid == 0:                                        # the child: do the work, never return into the caller
+    if pid == 0:  # the child: do the work, never return into the caller
         os.close(exited)
         status = 1
         try:
             status = work()
         except SystemExit as exit_:
             status = exit_.code if isinstance(exit_.code, int) else 1
-        except BaseException:                           # a fault of ours: its traceback in the job's log
+        except BaseException:  # a fault of ours: its traceback in the job's log
             traceback.print_exc()
         finally:
             sys.stdout.flush()
             sys.stderr.flush()
             os._exit(status)
 
-    def forward(signum, _frame):                        # Ctrl-C or Snakemake stopping the job: stop the work too
+    def forward(signum, _frame):  # Ctrl-C or Snakemake stopping the job: stop the work too
         os.kill(pid, signum)
+
     os.close(alive)
     previous = {sig: signal.signal(sig, forward) for sig in (signal.SIGINT, signal.SIGTERM)}
     start, reason = time.monotonic(), None
@@ -72,11 +73,14 @@ def run_limited(work: Callable[[], int], what: str, time_limit_s: float, memory_
             if reason:
                 os.kill(pid, signal.SIGKILL)
                 os.waitpid(pid, 0)
-                print(f"{what}: stopped: it {reason} (limits are set from the scene's estimated cost; "
-                      f"see budget: in workflow/config.yaml)", file=sys.stderr)
+                print(
+                    f"{what}: stopped: it {reason} (limits are set from the scene's estimated cost; "
+                    f"see budget: in workflow/config.yaml)",
+                    file=sys.stderr,
+                )
                 return 3
             if select.select([exited], [], [], POLL_S)[0]:
-                time.sleep(0.001)                       # closed as it exits: waitable in a moment
+                time.sleep(0.001)  # closed as it exits: waitable in a moment
     finally:
         os.close(exited)
         for sig, handler in previous.items():
@@ -84,8 +88,10 @@ def run_limited(work: Callable[[], int], what: str, time_limit_s: float, memory_
 
 
 def rule_resources(peak: dict) -> dict:
-    """What a job that is not a scene asks a scheduler for, from its rule's measured peak (workflow/resources.yaml):
-    twice the memory and 200 MB more, four times the time and at least 5 minutes (a node slower or busier than
-    the one measured, a report that has grown since)."""
-    return {"mem_mb": 100 * math.ceil((2 * peak["max_rss_mb"] + 200) / 100),
-            "runtime": max(5, math.ceil(4 * peak["seconds"] / 60))}
+    """What a job that is not a scene asks a scheduler for, from its rule's measured peak
+    (workflow/resources.yaml): twice the memory and 200 MB more, four times the time and at least 5 minutes (a
+    node slower or busier than the one measured, a report that has grown since)."""
+    return {
+        "mem_mb": 100 * math.ceil((2 * peak["max_rss_mb"] + 200) / 100),
+        "runtime": max(5, math.ceil(4 * peak["seconds"] / 60)),
+    }

@@ -14,8 +14,21 @@ from pathlib import Path
 from . import __version__
 
 KEY_PACKAGES = (
-    "numpy", "scipy", "numba", "llvmlite", "sympy", "mpmath", "matplotlib", "pandas",
-    "jinja2", "pyyaml", "jsonschema", "snakemake", "weasyprint", "ziamath", "pyerfa",
+    "numpy",
+    "scipy",
+    "numba",
+    "llvmlite",
+    "sympy",
+    "mpmath",
+    "matplotlib",
+    "pandas",
+    "jinja2",
+    "pyyaml",
+    "jsonschema",
+    "snakemake",
+    "weasyprint",
+    "ziamath",
+    "pyerfa",
     "astropy-iers-data",
 )
 
@@ -24,7 +37,7 @@ def sha256_file(path: Path | str) -> str:
     return hashlib.sha256(Path(path).read_bytes()).hexdigest()
 
 
-@lru_cache(maxsize=None)          # a process reads its sources once (a parse asks for each study's digest per job)
+@lru_cache(maxsize=None)  # a process reads its sources once (a parse asks for each study's digest per job)
 def code_digest(*parts: str) -> str:
     """SHA-256 of the package's modules under `parts` (folders or files relative to the package; all of them
     if none): what a result or a scene's validation depends on besides its own inputs."""
@@ -52,7 +65,9 @@ def package_versions() -> dict[str, str]:
 def git(root: Path | str, *args: str) -> str | None:
     """The output of one git command in the checkout at root, or None outside git."""
     try:
-        return subprocess.run(["git", *args], cwd=root, capture_output=True, text=True, check=True).stdout.strip()
+        return subprocess.run(
+            ["git", *args], cwd=root, capture_output=True, text=True, check=True
+        ).stdout.strip()
     except (OSError, subprocess.CalledProcessError):
         return None
 
@@ -91,5 +106,7 @@ def software_stamp() -> str:
     """One line for timing tables: CPU, cores and the versions that matter for speed."""
     v = package_versions()
     m = machine()
-    return (f"{m['cpu_model']}, {m['cores']} cores; Python {m['python']}, numpy {v['numpy']}, "
-            f"scipy {v['scipy']}, numba {v['numba']}")
+    return (
+        f"{m['cpu_model']}, {m['cores']} cores; Python {m['python']}, numpy {v['numpy']}, "
+        f"scipy {v['scipy']}, numba {v['numba']}"
+    )

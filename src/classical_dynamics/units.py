@@ -20,30 +20,57 @@ DIMENSIONLESS = ("", "1", "bool", None, "τ", "1/τ")
 
 @dataclass(frozen=True)
 class Unit:
-    symbol: str                  # as the reader sees it, with $inline math$ where it is a symbol
-    word: bool = False           # a counted noun: pluralized, singular for exactly 1
-    close_up: bool = False       # ″, ′, °: no space before the unit
+    symbol: str  # as the reader sees it, with $inline math$ where it is a symbol
+    word: bool = False  # a counted noun: pluralized, singular for exactly 1
+    close_up: bool = False  # ″, ′, °: no space before the unit
     singular: str | None = None
 
 
 REGISTRY: dict[str, Unit] = {
     # time
-    "s": Unit("s"), "h": Unit("h"), "d": Unit("d"), "yr": Unit("yr"), "cy": Unit("cy"),
+    "s": Unit("s"),
+    "h": Unit("h"),
+    "d": Unit("d"),
+    "yr": Unit("yr"),
+    "cy": Unit("cy"),
     "sidereal days": Unit("sid. d"),
     # angle and angular rates
-    "rad": Unit("rad"), "°": Unit("°", close_up=True), "°E": Unit("°E", close_up=True),
-    "″": Unit("″", close_up=True), "mas": Unit("mas"), "″/yr": Unit("″/yr", close_up=True),
-    "mas/yr": Unit("mas/yr"), "mas/cy": Unit("mas/cy"), "″/cy": Unit("″/cy", close_up=True), "rad/s": Unit("rad s$^{-1}$"), "rad/d": Unit("rad d$^{-1}$"), "cycles/yr": Unit("cycles/yr"),
+    "rad": Unit("rad"),
+    "°": Unit("°", close_up=True),
+    "°E": Unit("°E", close_up=True),
+    "″": Unit("″", close_up=True),
+    "mas": Unit("mas"),
+    "″/yr": Unit("″/yr", close_up=True),
+    "mas/yr": Unit("mas/yr"),
+    "mas/cy": Unit("mas/cy"),
+    "″/cy": Unit("″/cy", close_up=True),
+    "rad/s": Unit("rad s$^{-1}$"),
+    "rad/d": Unit("rad d$^{-1}$"),
+    "cycles/yr": Unit("cycles/yr"),
     # lengths
-    "m": Unit("m"), "km": Unit("km"), "cm": Unit("cm"), "ft": Unit("ft"),
+    "m": Unit("m"),
+    "km": Unit("km"),
+    "cm": Unit("cm"),
+    "ft": Unit("ft"),
     # a couple in the British engineering units of Lamb's examples (foot-pound force)
     "ft-lb": Unit("ft·lb"),
     # natural units of scaled problems
     "σ": Unit("$\\sigma$"),
-    "time": Unit("time units"), "time units": Unit("time units"), "1/time": Unit("per time unit"), "1/time²": Unit("per time unit squared"),
-    "g/l": Unit("$g/l$"), "√(g/l)": Unit("$\\sqrt{g/l}$"), "√(l/g)": Unit("$\\sqrt{l/g}$"), "√(k/m)": Unit("$\\sqrt{k/m}$"),
-    "k/m": Unit("$k/m$"), "μ": Unit("$\\mu$"),
-    "n": Unit("$n$"), "a": Unit("$a$"), "k": Unit("$k$"), "Ω²": Unit("$\\Omega^2$"), "1/(A n)": Unit("$1/An$"),
+    "time": Unit("time units"),
+    "time units": Unit("time units"),
+    "1/time": Unit("per time unit"),
+    "1/time²": Unit("per time unit squared"),
+    "g/l": Unit("$g/l$"),
+    "√(g/l)": Unit("$\\sqrt{g/l}$"),
+    "√(l/g)": Unit("$\\sqrt{l/g}$"),
+    "√(k/m)": Unit("$\\sqrt{k/m}$"),
+    "k/m": Unit("$k/m$"),
+    "μ": Unit("$\\mu$"),
+    "n": Unit("$n$"),
+    "a": Unit("$a$"),
+    "k": Unit("$k$"),
+    "Ω²": Unit("$\\Omega^2$"),
+    "1/(A n)": Unit("$1/An$"),
     "√(T/σ)/a": Unit("$\\sqrt{T/\\sigma}/a$"),
     "x/l from the free end": Unit("of the length from the free end"),
     # counted things
@@ -80,7 +107,7 @@ def unit_text(key: str | None, value=None) -> str:
     text = unit.symbol
     if unit.word and value is not None and value == 1 and unit.singular:
         text = unit.singular
-    return text if unit.close_up else "\u202f" + text        # narrow no-break space: 303.6 d never splits
+    return text if unit.close_up else "\u202f" + text  # narrow no-break space: 303.6 d never splits
 
 
 def header(quantity: str, key: str | None) -> str:

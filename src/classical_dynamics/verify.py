@@ -34,7 +34,7 @@ from .provenance import git, sha256_file
 DEFAULT_RELATIVE = 1e-9
 ABSOLUTE_FLOOR = 1e-15
 PREFIX = re.compile(r"^classical-dynamics-[A-Za-z0-9._+-]+$")
-MISSING = object()          # a number (or scene) present on one side only
+MISSING = object()  # a number (or scene) present on one side only
 
 
 class VerifyError(Exception):
@@ -43,13 +43,17 @@ class VerifyError(Exception):
 
 # --- reading the results contract --------------------------------------------------------------
 
+
 def scenes_of(folder: Path) -> list[tuple[str, str]]:
     """(study, scene) of every results/<study>/<scene>/summary.json; refuse a folder without any."""
     folder = Path(folder)
     if not folder.is_dir():
         raise VerifyError(f"{folder}: not a folder")
-    found = sorted((p.parent.parent.name, p.parent.name) for p in folder.glob("*/*/summary.json")
-                   if p.parent.name != "timings" and not io.is_staging(p.parent))
+    found = sorted(
+        (p.parent.parent.name, p.parent.name)
+        for p in folder.glob("*/*/summary.json")
+        if p.parent.name != "timings" and not io.is_staging(p.parent)
+    )
     if not found:
         raise VerifyError(f"{folder}: not a results folder (no <study>/<scene>/summary.json)")
     return found
@@ -76,8 +80,10 @@ def read_numbers(folder: Path, scenes=None) -> dict[tuple[str, str, str], dict]:
             numbers[study, scene, name] = entry
         # a hard case's measured value is printed in the report too
         for case in summary.get("stability") or []:
-            numbers[study, scene, f"hard_case:{case['name']}"] = {"value": case.get("measured"),
-                                                                 "unit": case.get("unit", "")}
+            numbers[study, scene, f"hard_case:{case['name']}"] = {
+                "value": case.get("measured"),
+                "unit": case.get("unit", ""),
+            }
     return numbers
 
 
@@ -90,10 +96,11 @@ def read_provenance(folder: Path, study: str, scene: str) -> dict:
 
 # --- comparing -----------------------------------------------------------------------------------
 
+
 @dataclass
 class Change:
-    where: str              # study/scene
-    number: str             # name, name[i] for an element of a list
+    where: str  # study/scene
+    number: str  # name, name[i] for an element of a list
     old: object
     new: object
     tolerance: str = ""
@@ -120,7 +127,7 @@ def parse_tolerance(entry: dict, where: str) -> tuple[str, float] | None:
     if _is_number(tol) and tol >= 0:
         return "absolute", float(tol)
     if isinstance(tol, dict) and len(tol) == 1:
-        (kind, value), = tol.items()
+        ((kind, value),) = tol.items()
         if kind in ("absolute", "relative") and _is_number(value) and value >= 0:
             return kind, float(value)
     raise VerifyError(f"{where}: tolerance {tol!r} is not a number >= 0, {{absolute: a}} or {{relative: r}}")
@@ -133,7 +140,7 @@ def _describe(tol) -> str:
 def _close(a, b, tol) -> bool:
     """Whether two leaf values agree within tol (None: the default rule; ("absolute", 0): exact)."""
     if not (_is_number(a) and _is_number(b)):
-        return type(a) is type(b) and a == b              # strings, booleans, None (NaN), "inf"
+        return type(a) is type(b) and a == b  # strings, booleans, None (NaN), "inf"
     if tol is None:
         if isinstance(a, int) and isinstance(b, int):
             return a == b
@@ -153,7 +160,7 @@ def _leaves(name, a, b, tol):
             yield from _leaves(f"{name}.{key}", a[key], b[key], tol)
     elif isinstance(a, (list, dict)) or isinstance(b, (list, dict)):
         if a != b:
-            yield name, a, b                               # shape changed: the whole value
+            yield name, a, b  # shape changed: the whole value
     elif not _close(a, b, tol):
         yield name, a, b
 
@@ -164,11 +171,23 @@ def compare(old: dict, new: dict, *, exact: bool = False) -> list[Change]:
     for key in sorted(old.keys() | new.keys()):
         where, name = f"{key[0]}/{key[1]}", key[2]
         if key not in old or key not in new:
-            changes.append(Change(where, name, old[key]["value"] if key in old else MISSING,
-                                  new[key]["value"] if key in new else MISSING, "exact" if exact else ""))
+            changes.append(
+                Change(
+                    where,
+                    name,
+                    old[key]["value"] if key in old else MISSING,
+                    new[key]["value"] if key in new else MISSING,
+                    "exact" if exact else "",
+                )
+            )
             continue
-        tol = ("absolute", 0.0) if exact else (parse_tolerance(old[key], f"{where} {name}")
-                                               or parse_tolerance(new[key], f"{where} {name}"))
+        tol = (
+            ("absolute", 0.0)
+            if exact
+            else (
+                parse_tolerance(old[key], f"{where} {name}") or parse_tolerance(new[key], f"{where} {name}")
+            )
+        )
         for label, a, b in _leaves(name, old[key]["value"], new[key]["value"], tol):
             changes.append(Change(where, label, a, b, "exact" if exact else _describe(tol)))
     return changes
@@ -193,20 +212,30 @@ def _show_relative(change: Change) -> str:
 
 
 def table(changes: list[Change], old_label: str, new_label: str, tolerance: bool) -> str:
-    header = ["study/scene", "number", old_label, new_label, "relative change"] + (["tolerance"] if tolerance else [])
-    rows = [[c.where, c.number, _show(c.old), _show(c.new), _show_relative(c)] + ([c.tolerance] if tolerance else [])
-            for c in changes]
+    header = ["study/scene", "number", old_label, new_label, "relative change"] + (
+        ["tolerance"] if tolerance else []
+    )
+    rows = [
+        [c.where, c.number, _show(c.old), _show(c.new), _show_relative(c)]
+        + ([c.tolerance] if tolerance else [])
+        for c in changes
+    ]
     widths = [max(len(r[i]) for r in [header, *rows]) for i in range(len(header))]
-    return "\n".join("  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip() for row in [header, *rows])
+    return "\n".join(
+        "  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip() for row in [header, *rows]
+    )
 
 
 def _count(changes) -> str:
     scenes = {c.where for c in changes}
-    return (f"{len(changes)} number{'s' if len(changes) != 1 else ''} in "
-            f"{len(scenes)} scene{'s' if len(scenes) != 1 else ''}")
+    return (
+        f"{len(changes)} number{'s' if len(changes) != 1 else ''} in "
+        f"{len(scenes)} scene{'s' if len(scenes) != 1 else ''}"
+    )
 
 
 # --- the dist archive ----------------------------------------------------------------------------
+
 
 def unpack_archive(archive: Path, into: Path) -> Path:
     """Check a dist archive whole and unpack it into `into`; return its results folder.
@@ -255,7 +284,7 @@ def unpack_archive(archive: Path, into: Path) -> Path:
     missing = sorted(listed.keys() - digests.keys())
     if missing:
         raise VerifyError(f"{archive}: {missing[0]} is listed in SHA256SUMS but missing (truncated?)")
-    beside = archive.parent / "SHA256SUMS"          # the one dist writes next to the archive
+    beside = archive.parent / "SHA256SUMS"  # the one dist writes next to the archive
     if beside.is_file():
         for line in beside.read_text(errors="replace").splitlines():
             digest, _, name = line.partition("  ")
@@ -265,7 +294,9 @@ def unpack_archive(archive: Path, into: Path) -> Path:
     try:
         scenes_of(results)
     except VerifyError:
-        raise VerifyError(f"{archive}: not a classical-dynamics archive (no <study>/<scene>/summary.json)") from None
+        raise VerifyError(
+            f"{archive}: not a classical-dynamics archive (no <study>/<scene>/summary.json)"
+        ) from None
     return results
 
 
@@ -284,6 +315,7 @@ def _read_sums(path: Path, archive: Path, prefix: str) -> dict[str, str]:
 
 # --- rebuilding ----------------------------------------------------------------------------------
 
+
 def checkout_commit(root: Path) -> str:
     commit = git(root, "rev-parse", "HEAD")
     if commit is None:
@@ -298,8 +330,16 @@ def run_scene(root: Path, study: str, scene: str, quick: bool, out: Path) -> str
         return f"no scene file {scene_file.relative_to(root)} in the checkout"
     env = dict(os.environ)
     env["PYTHONPATH"] = str(root / "src") + os.pathsep + env.get("PYTHONPATH", "")
-    command = [sys.executable, "-m", "classical_dynamics", "run", study, str(scene_file),
-               str(out / study / scene), str(out / "timings" / study / scene)] + (["--quick"] if quick else [])
+    command = [
+        sys.executable,
+        "-m",
+        "classical_dynamics",
+        "run",
+        study,
+        str(scene_file),
+        str(out / study / scene),
+        str(out / "timings" / study / scene),
+    ] + (["--quick"] if quick else [])
     done = subprocess.run(command, cwd=root, env=env, capture_output=True, text=True)
     if done.returncode != 0:
         lines = (done.stderr or done.stdout).strip().splitlines()
@@ -320,13 +360,14 @@ def select(available: list[tuple[str, str]], wanted: str | None, archive: Path) 
     return chosen
 
 
-def verify(archive: Path, root: Path, scenes: str | None = None, quick: bool | None = None,
-           cores: int = 1, out=None) -> int:
+def verify(
+    archive: Path, root: Path, scenes: str | None = None, quick: bool | None = None, cores: int = 1, out=None
+) -> int:
     """Rebuild the archive's scenes with the checkout at root and compare: 0 all held, 1 something moved."""
     out = out or sys.stdout
     root = Path(root).resolve()
     with tempfile.TemporaryDirectory(prefix="classical-dynamics-verify-") as tmp:
-        archived = unpack_archive(archive, Path(tmp, "archive"))     # the archive is checked first
+        archived = unpack_archive(archive, Path(tmp, "archive"))  # the archive is checked first
         if not (root / "workflow" / "scenes").is_dir():
             raise VerifyError(f"{root}: not a checkout of this project (no workflow/scenes)")
         chosen = select(scenes_of(archived), scenes, archive)
@@ -340,8 +381,10 @@ def verify(archive: Path, root: Path, scenes: str | None = None, quick: bool | N
         for (study, scene), record in provenance.items():
             modes[study, scene] = quick if quick is not None else record.get("quick")
             if modes[study, scene] is None:
-                raise VerifyError(f"{archive}: provenance of {study}/{scene} does not say whether it was a "
-                                  "quick build; pass --quick or --full")
+                raise VerifyError(
+                    f"{archive}: provenance of {study}/{scene} does not say whether it was a "
+                    "quick build; pass --quick or --full"
+                )
         notes = _input_notes(root, provenance)
         rebuilt = Path(tmp, "rebuilt")
         with ThreadPoolExecutor(max(1, cores)) as pool:
@@ -350,13 +393,19 @@ def verify(archive: Path, root: Path, scenes: str | None = None, quick: bool | N
         ok = [s for s in chosen if not errors[s]]
         changes = compare(read_numbers(archived, ok), read_numbers(rebuilt, ok))
         kinds = sorted({"quick" if q else "full" for q in modes.values()})
-        print(f"verify {Path(archive).name}: {len(chosen)} scene{'s' if len(chosen) != 1 else ''} "
-              f"({' and '.join(kinds)} build) rebuilt with the checkout at {root}", file=out)
+        print(
+            f"verify {Path(archive).name}: {len(chosen)} scene{'s' if len(chosen) != 1 else ''} "
+            f"({' and '.join(kinds)} build) rebuilt with the checkout at {root}",
+            file=out,
+        )
         for note in notes:
             print(f"note: {note}", file=out)
         for study, scene in derived:
-            print(f"note: {study}/{scene} is drawn from other scenes' results; not rebuilt (its input scenes are)",
-                  file=out)
+            print(
+                f"note: {study}/{scene} is drawn from other scenes' results; not rebuilt (its input scenes "
+                "are)",
+                file=out,
+            )
         for study, scene in failed:
             print(f"FAILED {study}/{scene}: {errors[study, scene]}", file=out)
         if changes:
@@ -366,8 +415,11 @@ def verify(archive: Path, root: Path, scenes: str | None = None, quick: bool | N
             print(f"FAILED: {len(failed)} scene{'s' if len(failed) != 1 else ''} not rebuilt", file=out)
         if not changes and not failed:
             total = len(read_numbers(archived, ok))
-            print(f"OK: all {total} numbers of {len(ok)} scene{'s' if len(ok) != 1 else ''} reproduced "
-                  "within tolerance", file=out)
+            print(
+                f"OK: all {total} numbers of {len(ok)} scene{'s' if len(ok) != 1 else ''} reproduced "
+                "within tolerance",
+                file=out,
+            )
             return 0
         return 1
 
@@ -375,36 +427,55 @@ def verify(archive: Path, root: Path, scenes: str | None = None, quick: bool | N
 def _input_notes(root: Path, provenance: dict) -> list[str]:
     """What differs in the inputs: the checkout's commit, and scene files edited since the archive."""
     notes = []
-    commits = sorted({str(p.get("commit", "unknown")) + (" (dirty)" if p.get("dirty") else "")
-                      for p in provenance.values()})
+    commits = sorted(
+        {
+            str(p.get("commit", "unknown")) + (" (dirty)" if p.get("dirty") else "")
+            for p in provenance.values()
+        }
+    )
     here = checkout_commit(root)
     if commits != [here]:
         notes.append(f"archive built at commit {', '.join(commits)}; checkout at {here}")
     for (study, scene), record in provenance.items():
         path = root / "workflow" / "scenes" / study / f"{scene}.yaml"
         if path.is_file() and sha256_file(path) != record.get("scene_sha256"):
-            notes.append(f"{study}/{scene}: scene file changed since the archive "
-                         f"(sha256 {str(record.get('scene_sha256'))[:12]} -> {sha256_file(path)[:12]})")
+            notes.append(
+                f"{study}/{scene}: scene file changed since the archive "
+                f"(sha256 {str(record.get('scene_sha256'))[:12]} -> {sha256_file(path)[:12]})"
+            )
     return notes
 
 
 # --- diff ----------------------------------------------------------------------------------------
 
+
 def diff(a: Path, b: Path, out=None) -> int:
     """Every number that changed between two builds (folders or dist archives): 0 none, 1 some."""
     out = out or sys.stdout
-    with tempfile.TemporaryDirectory(prefix="classical-dynamics-diff-") as tmp_a, \
-            tempfile.TemporaryDirectory(prefix="classical-dynamics-diff-") as tmp_b:
+    with (
+        tempfile.TemporaryDirectory(prefix="classical-dynamics-diff-") as tmp_a,
+        tempfile.TemporaryDirectory(prefix="classical-dynamics-diff-") as tmp_b,
+    ):
         folder_a = unpack_archive(a, Path(tmp_a)) if Path(a).is_file() else Path(a)
         folder_b = unpack_archive(b, Path(tmp_b)) if Path(b).is_file() else Path(b)
         scenes_a, scenes_b = set(scenes_of(folder_a)), set(scenes_of(folder_b))
         both = sorted(scenes_a & scenes_b)
-        changes = [Change("/".join(s), "(whole scene)", "present" if s in scenes_a else MISSING,
-                          "present" if s in scenes_b else MISSING, "exact")
-                   for s in sorted(scenes_a ^ scenes_b)]
+        changes = [
+            Change(
+                "/".join(s),
+                "(whole scene)",
+                "present" if s in scenes_a else MISSING,
+                "present" if s in scenes_b else MISSING,
+                "exact",
+            )
+            for s in sorted(scenes_a ^ scenes_b)
+        ]
         changes += compare(read_numbers(folder_a, both), read_numbers(folder_b, both), exact=True)
         if not changes:
-            print(f"no numbers changed ({len(read_numbers(folder_a, both))} numbers in {len(both)} scenes)", file=out)
+            print(
+                f"no numbers changed ({len(read_numbers(folder_a, both))} numbers in {len(both)} scenes)",
+                file=out,
+            )
             return 0
         print(table(changes, "A", "B", tolerance=False), file=out)
         print(f"changed: {_count(changes)} (A = {a}, B = {b})", file=out)

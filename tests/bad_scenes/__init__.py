@@ -2,7 +2,8 @@
 naming the file and the field, in well under 2 s, with results/ untouched.
 
 Each study's module lists its own cases (CASES); generic.py holds the file-level ones (links, pipes, sizes,
-aliases, encodings) for every study. tests/test_bad_input.py runs them all; benchmarks/bad_input.py tallies them.
+aliases, encodings) for every study. tests/test_bad_input.py runs them all; benchmarks/bad_input.py tallies
+them.
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ from typing import Callable
 import yaml
 
 ROOT = Path(__file__).resolve().parents[2]
-DELETE = object()           # as a value in BadScene.set: remove that key
+DELETE = object()  # as a value in BadScene.set: remove that key
 KINDS = ("schema", "range", "cost", "precision", "physics", "yaml", "file")
 
 
@@ -23,14 +24,15 @@ KINDS = ("schema", "range", "cost", "precision", "physics", "yaml", "file")
 class BadScene:
     """One bad scene. `field` is how the refusal must begin after the file name: "chain.n" matches
     "<file>: field 'chain.n'", "(YAML at" matches "<file>: field '(YAML at line 3 ...'"."""
+
     id: str
     study: str
-    kind: str                               # one of KINDS
+    kind: str  # one of KINDS
     field: str
-    base: str = ""                          # a scene of workflow/scenes/<study>/ to start from
+    base: str = ""  # a scene of workflow/scenes/<study>/ to start from
     set: dict = field(default_factory=dict)  # dotted field (list items by number) -> value, or DELETE
-    text: bytes | None = None               # the file's bytes instead of base + set
-    make: Callable[[Path], None] | None = None   # makes the file itself (links, pipes); overrides the rest
+    text: bytes | None = None  # the file's bytes instead of base + set
+    make: Callable[[Path], None] | None = None  # makes the file itself (links, pipes); overrides the rest
     name: str = "bad_scene.yaml"
 
     def write(self, folder: Path) -> Path:
@@ -62,14 +64,24 @@ class BadScene:
 
 def case(study: str, id_: str, kind: str, field: str, base: str, **set_) -> BadScene:
     """A shipped scene of `study` with fields changed: a__b=v sets a.b, a__0=v the first item of a."""
-    return BadScene(f"{study}-{id_}", study, kind, field, base=base,
-                    set={key.replace("__", "."): value for key, value in set_.items()})
+    return BadScene(
+        f"{study}-{id_}",
+        study,
+        kind,
+        field,
+        base=base,
+        set={key.replace("__", "."): value for key, value in set_.items()},
+    )
 
 
 def all_cases() -> list[BadScene]:
     from . import chains, chandler, generic, precession, self_excited, solvers
-    cases = [case for module in (generic, precession, chandler, chains, self_excited, solvers)
-             for case in module.CASES]
+
+    cases = [
+        case
+        for module in (generic, precession, chandler, chains, self_excited, solvers)
+        for case in module.CASES
+    ]
     ids = [case.id for case in cases]
     assert len(ids) == len(set(ids)), "bad-scene ids must be unique"
     return cases

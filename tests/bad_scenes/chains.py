@@ -4,8 +4,17 @@ from functools import partial
 
 from . import DELETE, case
 
-HP, TD, RING, LINKS = "hanging_particles.yaml", "hanging_time_domain.yaml", "rotating_ring.yaml", "hanging_links.yaml"
-STR3, FORCED, FRICTION = "three_particles_string.yaml", "three_particles_forced.yaml", "three_particles_friction.yaml"
+HP, TD, RING, LINKS = (
+    "hanging_particles.yaml",
+    "hanging_time_domain.yaml",
+    "rotating_ring.yaml",
+    "hanging_links.yaml",
+)
+STR3, FORCED, FRICTION = (
+    "three_particles_string.yaml",
+    "three_particles_forced.yaml",
+    "three_particles_friction.yaml",
+)
 
 
 _case = partial(case, "chains")
@@ -16,39 +25,109 @@ CASES = [
     _case("n-1e8", "range", "chain.n", "loaded_string.yaml", chain__n=100_000_000),
     _case("n-1e7-links", "cost", "chain.n", LINKS, chain__n=10_000_000),
     _case("large-n-1e8", "range", "analysis.large_n.n", HP, analysis__large_n__n=100_000_000),
-    _case("convergence-1e7", "cost", "analysis.convergence.n_values", LINKS,
-          analysis__convergence__n_values=[1, 10_000_000]),
-    _case("accuracy-cost-1e300", "range", "analysis.accuracy_cost.n_values.1", HP,
-          analysis__accuracy_cost__n_values=[16, 10**300]),
-    _case("time-domain-1e10-steps", "cost", "analysis.time_domain.long_run_periods", TD,
-          analysis__time_domain__long_run_periods=1_000_000, analysis__time_domain__steps_per_fastest_period=10000),
+    _case(
+        "convergence-1e7",
+        "cost",
+        "analysis.convergence.n_values",
+        LINKS,
+        analysis__convergence__n_values=[1, 10_000_000],
+    ),
+    _case(
+        "accuracy-cost-1e300",
+        "range",
+        "analysis.accuracy_cost.n_values.1",
+        HP,
+        analysis__accuracy_cost__n_values=[16, 10**300],
+    ),
+    _case(
+        "time-domain-1e10-steps",
+        "cost",
+        "analysis.time_domain.long_run_periods",
+        TD,
+        analysis__time_domain__long_run_periods=1_000_000,
+        analysis__time_domain__steps_per_fastest_period=10000,
+    ),
     _case("time-domain-many-links", "cost", "analysis.time_domain.long_run_periods", TD, chain__n=2000),
     _case("ring-3000-beads", "physics", "chain.n", RING, chain__n=3000),
-    _case("constraint-big-n", "cost", "analysis.constraint.samples", STR3, chain__n=3000,
-          analysis={"modes": 3, "constraint": {"samples": 200, "seed": 1}}),
-    _case("friction-sympy-12", "cost", "chain.n", FRICTION, chain__n=12,
-          effects__friction__b_kg_per_s=[0.5] + [0.0] * 11),
-    _case("forced-points-big-n", "cost", "analysis.forced.points", FORCED, chain__n=5000,
-          effects__forcing__newton=[1.0] + [0.0] * 4999),
-    _case("initial-value-periods", "cost", "analysis.initial_value.periods", STR3, chain__n=300,
-          analysis__constraint__samples=0, analysis__closed_form=DELETE, analysis__rayleigh_symmetric=DELETE,
-          analysis__initial_value__periods=1000),
+    _case(
+        "constraint-big-n",
+        "cost",
+        "analysis.constraint.samples",
+        STR3,
+        chain__n=3000,
+        analysis={"modes": 3, "constraint": {"samples": 200, "seed": 1}},
+    ),
+    _case(
+        "friction-sympy-12",
+        "cost",
+        "chain.n",
+        FRICTION,
+        chain__n=12,
+        effects__friction__b_kg_per_s=[0.5] + [0.0] * 11,
+    ),
+    _case(
+        "forced-points-big-n",
+        "cost",
+        "analysis.forced.points",
+        FORCED,
+        chain__n=5000,
+        effects__forcing__newton=[1.0] + [0.0] * 4999,
+    ),
+    _case(
+        "initial-value-periods",
+        "cost",
+        "analysis.initial_value.periods",
+        STR3,
+        chain__n=300,
+        analysis__constraint__samples=0,
+        analysis__closed_form=DELETE,
+        analysis__rayleigh_symmetric=DELETE,
+        analysis__initial_value__periods=1000,
+    ),
     # finite ranges
     _case("length-1e300", "range", "chain.length_m", HP, chain__length_m=1e300),
     _case("length-tiny", "range", "chain.length_m", HP, chain__length_m=1e-300),
     _case("mass-1e300", "range", "chain.mass_kg", HP, chain__mass_kg=1e300),
     _case("g-1e300", "range", "effects.gravity.g_m_per_s2", HP, effects__gravity__g_m_per_s2=1e300),
-    _case("omega-1e300", "range", "effects.rotation.omega_rad_per_s", "rotating_chain_in_plane.yaml",
-          effects__rotation__omega_rad_per_s=1e300),
-    _case("springs-1e300", "range", "effects.springs.k_n_per_m", "spring_chain.yaml", effects__springs__k_n_per_m=1e300),
-    _case("tension-minus-1e300", "range", "effects.tension.newton", "loaded_string.yaml",
-          effects__tension__newton=-1e300),
-    _case("forcing-1e300", "range", "effects.forcing.newton", FORCED, effects__forcing__newton=[1e300, 0.0, 0.0]),
-    _case("beta-1e300", "range", "analysis.rayleigh.beta_max", "hanging_continuum.yaml",
-          analysis__rayleigh__beta_max=1e300),
+    _case(
+        "omega-1e300",
+        "range",
+        "effects.rotation.omega_rad_per_s",
+        "rotating_chain_in_plane.yaml",
+        effects__rotation__omega_rad_per_s=1e300,
+    ),
+    _case(
+        "springs-1e300",
+        "range",
+        "effects.springs.k_n_per_m",
+        "spring_chain.yaml",
+        effects__springs__k_n_per_m=1e300,
+    ),
+    _case(
+        "tension-minus-1e300",
+        "range",
+        "effects.tension.newton",
+        "loaded_string.yaml",
+        effects__tension__newton=-1e300,
+    ),
+    _case(
+        "forcing-1e300", "range", "effects.forcing.newton", FORCED, effects__forcing__newton=[1e300, 0.0, 0.0]
+    ),
+    _case(
+        "beta-1e300",
+        "range",
+        "analysis.rayleigh.beta_max",
+        "hanging_continuum.yaml",
+        analysis__rayleigh__beta_max=1e300,
+    ),
     _case("seed-huge", "range", "analysis.constraint.seed", STR3, analysis__constraint__seed=2**70),
-    _case("period-count-huge", "range", "analysis.time_domain.long_run_periods", TD,
-          analysis__time_domain__long_run_periods=1e300),
+    _case(
+        "period-count-huge",
+        "range",
+        "analysis.time_domain.long_run_periods",
+        TD,
+        analysis__time_domain__long_run_periods=1e300,
+    ),
     # the schema's shape
     _case("n-text", "schema", "chain.n", HP, chain__n="ten"),
     _case("n-float", "schema", "chain.n", HP, chain__n=10.5),
@@ -57,9 +136,16 @@ CASES = [
     _case("modes-100", "schema", "analysis.modes", HP, analysis__modes=100),
     # physics
     _case("gravity-on-string", "physics", "chain.ends", HP, chain__ends="fixed-fixed"),
-    _case("masses-wrong-length", "physics", "chain.masses_kg", "two_unequal_masses.yaml", chain__masses_kg=[1.0]),
+    _case(
+        "masses-wrong-length", "physics", "chain.masses_kg", "two_unequal_masses.yaml", chain__masses_kg=[1.0]
+    ),
     _case("ring-small", "physics", "chain.n", RING, chain__n=8),
-    _case("membrane-even", "physics", "analysis.membrane.points", "hanging_continuum.yaml",
-          analysis__membrane__points=40),
+    _case(
+        "membrane-even",
+        "physics",
+        "analysis.membrane.points",
+        "hanging_continuum.yaml",
+        analysis__membrane__points=40,
+    ),
     _case("forced-without-force", "physics", "analysis.forced", FORCED, effects__forcing=DELETE),
 ]

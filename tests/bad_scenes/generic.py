@@ -1,4 +1,5 @@
-"""File-level bad scenes, the same for every study: what a careless or hostile file system hands the loader."""
+"""File-level bad scenes, the same for every study: what a careless or hostile file system hands the
+loader."""
 
 from __future__ import annotations
 
@@ -10,8 +11,10 @@ from classical_dynamics.studies.registry import STUDIES
 from . import ROOT, BadScene
 
 # Nine levels of nine-fold aliases: 9^9 items once expanded (refused at the first alias).
-BOMB = ("a: &a [x, x, x, x, x, x, x, x, x]\n" + "".join(
-    f"{chr(98 + i)}: &{chr(98 + i)} [{', '.join(['*' + chr(97 + i)] * 9)}]\n" for i in range(8))).encode()
+BOMB = (
+    "a: &a [x, x, x, x, x, x, x, x, x]\n"
+    + "".join(f"{chr(98 + i)}: &{chr(98 + i)} [{', '.join(['*' + chr(97 + i)] * 9)}]\n" for i in range(8))
+).encode()
 
 
 def _first_scene(study: str) -> Path:
@@ -23,7 +26,7 @@ def _symlink_to(target):
 
 
 def _symlink_to_scene(study):
-    return lambda path: path.symlink_to(_first_scene(study))     # a good scene, but outside the folder's files
+    return lambda path: path.symlink_to(_first_scene(study))  # a good scene, but outside the folder's files
 
 
 def _directory(path: Path) -> None:
@@ -31,7 +34,7 @@ def _directory(path: Path) -> None:
 
 
 def _fifo(path: Path) -> None:
-    os.mkfifo(path)                         # reading it would block for ever
+    os.mkfifo(path)  # reading it would block for ever
 
 
 def _cases(study: str) -> list[BadScene]:
@@ -43,17 +46,26 @@ def _cases(study: str) -> list[BadScene]:
         BadScene(f"{study}-fifo", study, "file", "(file)", make=_fifo),
         BadScene(f"{study}-directory", study, "file", "(file)", make=_directory),
         BadScene(f"{study}-2-mb", study, "file", "(file)", text=good + b"# padding\n" * 200_000),
-        BadScene(f"{study}-50-mb", study, "file", "(file)", text=good + b"x: [" + b"1, " * 17_000_000 + b"1]\n"),
+        BadScene(
+            f"{study}-50-mb", study, "file", "(file)", text=good + b"x: [" + b"1, " * 17_000_000 + b"1]\n"
+        ),
         BadScene(f"{study}-latin-1", study, "file", "(file)", text=good + "# Poincaré\n".encode("latin-1")),
         BadScene(f"{study}-bad-name", study, "file", "(file name)", text=good, name="Bad-Name.yaml"),
         BadScene(f"{study}-reserved-name", study, "file", "(file name)", text=good, name="timings.yaml"),
         BadScene(f"{study}-empty", study, "schema", "(top level)", text=b""),
         BadScene(f"{study}-list", study, "schema", "(top level)", text=b"- title: a list\n"),
         BadScene(f"{study}-alias-bomb", study, "yaml", "(YAML at line 2", text=BOMB),
-        BadScene(f"{study}-nesting", study, "yaml", "(YAML at", text=b"title: " + b"[" * 20000 + b"]" * 20000),
+        BadScene(
+            f"{study}-nesting", study, "yaml", "(YAML at", text=b"title: " + b"[" * 20000 + b"]" * 20000
+        ),
         BadScene(f"{study}-duplicate-key", study, "yaml", "(YAML at", text=good + b"title: again\n"),
-        BadScene(f"{study}-python-tag", study, "yaml", "(YAML at",
-                 text=good + b"extra: !!python/object/apply:os.system ['true']\n"),
+        BadScene(
+            f"{study}-python-tag",
+            study,
+            "yaml",
+            "(YAML at",
+            text=good + b"extra: !!python/object/apply:os.system ['true']\n",
+        ),
         BadScene(f"{study}-broken", study, "yaml", "(YAML at", text=good + b"title: [unclosed\n"),
         BadScene(f"{study}-nan-title", study, "range", "title", base=base, set={"title": float("nan")}),
         BadScene(f"{study}-unknown-key", study, "schema", "colour", base=base, set={"colour": "red"}),

@@ -4,8 +4,14 @@ from functools import partial
 
 from . import DELETE, case
 
-CENTURY, MILLENNIUM, SUN, CYCLE, LAMB, SECULAR = ("full_century.yaml", "full_millennium.yaml", "full_sun.yaml",
-                                                  "averaged_cycle.yaml", "lamb_1920.yaml", "secular_modern.yaml")
+CENTURY, MILLENNIUM, SUN, CYCLE, LAMB, SECULAR = (
+    "full_century.yaml",
+    "full_millennium.yaml",
+    "full_sun.yaml",
+    "averaged_cycle.yaml",
+    "lamb_1920.yaml",
+    "secular_modern.yaml",
+)
 
 
 _case = partial(case, "precession")
@@ -13,31 +19,86 @@ _case = partial(case, "precession")
 CASES = [
     # the cases: a step double precision cannot take; a span at the schema's limit with a small step
     _case("step-1e-30", "precision", "analysis.step_hours", SUN, analysis__step_hours=1e-30),
-    _case("step-1e-12-long", "precision", "analysis.step_hours", MILLENNIUM, analysis__span_years=100000,
-          analysis__step_hours=1e-12),
-    _case("sweep-step-1e-300", "precision", "analysis.accuracy_cost.steps_hours.1", CENTURY,
-          analysis__accuracy_cost__steps_hours=[24, 1e-300]),
-    _case("tolerance-1e-300", "precision", "analysis.accuracy_cost.tolerances.0", CENTURY,
-          analysis__accuracy_cost__tolerances=[1e-300]),
-    _case("span-1e5-small-step", "cost", "analysis.step_hours", MILLENNIUM, analysis__span_years=100000,
-          analysis__step_hours=0.1),
+    _case(
+        "step-1e-12-long",
+        "precision",
+        "analysis.step_hours",
+        MILLENNIUM,
+        analysis__span_years=100000,
+        analysis__step_hours=1e-12,
+    ),
+    _case(
+        "sweep-step-1e-300",
+        "precision",
+        "analysis.accuracy_cost.steps_hours.1",
+        CENTURY,
+        analysis__accuracy_cost__steps_hours=[24, 1e-300],
+    ),
+    _case(
+        "tolerance-1e-300",
+        "precision",
+        "analysis.accuracy_cost.tolerances.0",
+        CENTURY,
+        analysis__accuracy_cost__tolerances=[1e-300],
+    ),
+    _case(
+        "span-1e5-small-step",
+        "cost",
+        "analysis.step_hours",
+        MILLENNIUM,
+        analysis__span_years=100000,
+        analysis__step_hours=0.1,
+    ),
     _case("span-1e5", "cost", "analysis.span_years", MILLENNIUM, analysis__span_years=100000),
-    _case("aliasing-30000-years", "cost", "analysis.aliasing_windows_years", CENTURY, analysis__span_years=30000,
-          analysis__aliasing_windows_years=[19.3, 30000.0]),
-    _case("sweep-tiny-steps", "cost", "analysis.accuracy_cost.steps_hours", CENTURY,
-          analysis__accuracy_cost__span_years=10, analysis__accuracy_cost__steps_hours=[0.001, 0.002]),
-    _case("sweep-tight-scipy", "cost", "analysis.accuracy_cost.tolerances", CENTURY,
-          analysis__accuracy_cost__span_years=10, analysis__accuracy_cost__tolerances=[2.3e-14] * 30),
+    _case(
+        "aliasing-30000-years",
+        "cost",
+        "analysis.aliasing_windows_years",
+        CENTURY,
+        analysis__span_years=30000,
+        analysis__aliasing_windows_years=[19.3, 30000.0],
+    ),
+    _case(
+        "sweep-tiny-steps",
+        "cost",
+        "analysis.accuracy_cost.steps_hours",
+        CENTURY,
+        analysis__accuracy_cost__span_years=10,
+        analysis__accuracy_cost__steps_hours=[0.001, 0.002],
+    ),
+    _case(
+        "sweep-tight-scipy",
+        "cost",
+        "analysis.accuracy_cost.tolerances",
+        CENTURY,
+        analysis__accuracy_cost__span_years=10,
+        analysis__accuracy_cost__tolerances=[2.3e-14] * 30,
+    ),
     # finite ranges
     _case("span-1e300", "range", "analysis.span_years", CYCLE, analysis__span_years=1e300),
     _case("H-1e300", "range", "earth.H", CYCLE, earth__H=1e300),
     _case("obliquity-minus-1e300", "range", "earth.obliquity_deg", CYCLE, earth__obliquity_deg=-1e300),
-    _case("rate-1e300", "range", "analysis.inverse_problem.observed_rate_arcsec_per_year", SECULAR,
-          analysis__inverse_problem__observed_rate_arcsec_per_year=1e300),
-    _case("radius-1e300", "range", "analysis.polhode_circle.earth_radius_cm", LAMB,
-          analysis__polhode_circle__earth_radius_cm=1e300),
-    _case("spin-1e300", "range", "analysis.gyroscope_couple.spin_rev_per_s", LAMB,
-          analysis__gyroscope_couple__spin_rev_per_s=1e300),
+    _case(
+        "rate-1e300",
+        "range",
+        "analysis.inverse_problem.observed_rate_arcsec_per_year",
+        SECULAR,
+        analysis__inverse_problem__observed_rate_arcsec_per_year=1e300,
+    ),
+    _case(
+        "radius-1e300",
+        "range",
+        "analysis.polhode_circle.earth_radius_cm",
+        LAMB,
+        analysis__polhode_circle__earth_radius_cm=1e300,
+    ),
+    _case(
+        "spin-1e300",
+        "range",
+        "analysis.gyroscope_couple.spin_rev_per_s",
+        LAMB,
+        analysis__gyroscope_couple__spin_rev_per_s=1e300,
+    ),
     _case("samples-1e9", "range", "analysis.lamb_art61.samples", LAMB, analysis__lamb_art61__samples=10**9),
     _case("step-48-hours", "range", "analysis.step_hours", SUN, analysis__step_hours=48),
     # the schema's shape
@@ -51,6 +112,11 @@ CASES = [
     _case("full-without-step", "physics", "analysis.step_hours", SUN, analysis__step_hours=DELETE),
     _case("averaged-with-step", "physics", "analysis.step_hours", CYCLE, analysis__step_hours=3),
     _case("iau-on-averaged", "physics", "analysis.compare_iau", CYCLE, analysis__compare_iau=True),
-    _case("windows-past-span", "physics", "analysis.aliasing_windows_years", CENTURY,
-          analysis__aliasing_windows_years=[19.3, 200.0]),
+    _case(
+        "windows-past-span",
+        "physics",
+        "analysis.aliasing_windows_years",
+        CENTURY,
+        analysis__aliasing_windows_years=[19.3, 200.0],
+    ),
 ]

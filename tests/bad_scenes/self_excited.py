@@ -4,7 +4,11 @@ from functools import partial
 
 from . import DELETE, case
 
-LARGEST, MIDDLE, VISCOUS = "largest_perturbed_cycles.yaml", "middle_perturbed.yaml", "viscous_constant_torque.yaml"
+LARGEST, MIDDLE, VISCOUS = (
+    "largest_perturbed_cycles.yaml",
+    "middle_perturbed.yaml",
+    "viscous_constant_torque.yaml",
+)
 EXCURSION = "middle_near_critical.yaml"
 
 
@@ -14,7 +18,13 @@ CASES = [
     # the cases: tau_max and t_max of 1e15, a window of +-1e300, alpha of 1e308
     _case("tau-max-1e15", "range", "portrait.tau_max", LARGEST, portrait={"tau_max": 1e15}),
     _case("t-max-1e15", "range", "viscous.t_max", VISCOUS, viscous__t_max=1e15),
-    _case("phi2-range-1e300", "range", "portrait.phi2_range.1", LARGEST, portrait={"phi2_range": [-1e300, 1e300]}),
+    _case(
+        "phi2-range-1e300",
+        "range",
+        "portrait.phi2_range.1",
+        LARGEST,
+        portrait={"phi2_range": [-1e300, 1e300]},
+    ),
     _case("alpha-1e308", "range", "plane.alpha.1", MIDDLE, plane__alpha=[1e308, 1e308]),
     _case("delta-1e300", "range", "plane.delta", LARGEST, plane__delta=1e300),
     _case("m1-1e300", "range", "plane.m1", LARGEST, plane__m1=1e300),
@@ -23,12 +33,29 @@ CASES = [
     _case("moments-1e300", "range", "body.moments.0", LARGEST, body__moments=[1e300, 2.2, 1.2]),
     _case("q0-1e300", "range", "excursion.q0", MIDDLE, excursion={"q0": 1e300}),
     # over the budget
-    _case("tau-max-10000-fast", "cost", "portrait.tau_max", LARGEST, portrait={"tau_max": 10000.0, "p1_max": 100.0}),
-    _case("wide-window-long", "cost", "portrait.tau_max", LARGEST,
-          portrait={"phi2_range": [-100.0, 100.0], "tau_max": 1000.0, "p1_max": 50.0}),
+    _case(
+        "tau-max-10000-fast",
+        "cost",
+        "portrait.tau_max",
+        LARGEST,
+        portrait={"tau_max": 10000.0, "p1_max": 100.0},
+    ),
+    _case(
+        "wide-window-long",
+        "cost",
+        "portrait.tau_max",
+        LARGEST,
+        portrait={"phi2_range": [-100.0, 100.0], "tau_max": 1000.0, "p1_max": 50.0},
+    ),
     _case("t-max-1e6", "cost", "viscous.t_max", VISCOUS, viscous__t_max=1e6),
-    _case("t-max-fast-spin", "cost", "viscous.t_max", VISCOUS, viscous__t_max=1e5,
-          viscous__omega0=[0.5, 0.8, 1000.0]),
+    _case(
+        "t-max-fast-spin",
+        "cost",
+        "viscous.t_max",
+        VISCOUS,
+        viscous__t_max=1e5,
+        viscous__omega0=[0.5, 0.8, 1000.0],
+    ),
     # the schema's shape
     _case("two-moments", "schema", "body.moments", LARGEST, body__moments=[3.0, 2.2]),
     _case("axis-unknown", "schema", "torque_axis", LARGEST, torque_axis="diagonal"),

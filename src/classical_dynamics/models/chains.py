@@ -21,12 +21,13 @@ EFFECTS = EffectRegistry("chains")
 @dataclass(frozen=True)
 class ChainGeometry:
     """What an effect may read: masses, spacing, positions along the chain, the ends."""
+
     n: int
     masses_kg: np.ndarray
     spacing_m: float
     ends: str
     n_segments: int
-    positions_m: np.ndarray = field(repr=False)   # distance of each particle from the fixed end
+    positions_m: np.ndarray = field(repr=False)  # distance of each particle from the fixed end
 
     @property
     def mass_beyond(self) -> np.ndarray:
@@ -36,11 +37,11 @@ class ChainGeometry:
 
 @dataclass(frozen=True)
 class Contribution:
-    segment_stiffness: np.ndarray | None = None   # N/m per segment
-    diagonal: np.ndarray | None = None            # N/m per particle
-    tension_n: np.ndarray | None = None           # the tension behind the stiffness, for the report
-    damping: np.ndarray | None = None             # kg/s per particle: a dashpot to the frame (Rayleigh's F)
-    force: np.ndarray | None = None               # N per particle: amplitude of a force varying as cos(sigma t)
+    segment_stiffness: np.ndarray | None = None  # N/m per segment
+    diagonal: np.ndarray | None = None  # N/m per particle
+    tension_n: np.ndarray | None = None  # the tension behind the stiffness, for the report
+    damping: np.ndarray | None = None  # kg/s per particle: a dashpot to the frame (Rayleigh's F)
+    force: np.ndarray | None = None  # N per particle: amplitude of a force varying as cos(sigma t)
 
 
 def _require_fixed_free(name: str, geometry: ChainGeometry):
@@ -55,8 +56,11 @@ def _gravity(params, geometry: ChainGeometry) -> Contribution:
     return Contribution(segment_stiffness=tension / geometry.spacing_m, tension_n=tension)
 
 
-@EFFECTS.register("rotation", "tension",
-                  "steady rotation about the fixed end: centrifugal tension; in-plane motion also feels -m omega^2")
+@EFFECTS.register(
+    "rotation",
+    "tension",
+    "steady rotation about the fixed end: centrifugal tension; in-plane motion also feels -m omega^2",
+)
 def _rotation(params, geometry: ChainGeometry) -> Contribution:
     _require_fixed_free("rotation", geometry)
     omega = params["omega_rad_per_s"]
@@ -78,8 +82,11 @@ def _springs(params, geometry: ChainGeometry) -> Contribution:
     return Contribution(segment_stiffness=k)
 
 
-@EFFECTS.register("friction", "dissipation",
-                  "dashpots from particles to the frame: Rayleigh's dissipation function F = 1/2 sum b y'^2")
+@EFFECTS.register(
+    "friction",
+    "dissipation",
+    "dashpots from particles to the frame: Rayleigh's dissipation function F = 1/2 sum b y'^2",
+)
 def _friction(params, geometry: ChainGeometry) -> Contribution:
     return Contribution(damping=_per_particle(params["b_kg_per_s"], geometry, "friction"))
 
@@ -110,8 +117,8 @@ class ParticleChain:
     segment_stiffness: np.ndarray
     diagonal: np.ndarray | None
     contributions: dict
-    damping: np.ndarray | None = None     # kg/s per particle, from friction
-    force: np.ndarray | None = None       # N per particle, from forcing
+    damping: np.ndarray | None = None  # kg/s per particle, from friction
+    force: np.ndarray | None = None  # N per particle, from forcing
 
     @property
     def masses(self) -> np.ndarray:
@@ -144,8 +151,14 @@ def particle_chain(n: int, ends: str, length_m: float, masses_kg, effects: dict)
     spacing = length_m / {"fixed-free": n, "fixed-fixed": n + 1, "free-free": max(n - 1, 1)}[ends]
     masses = np.broadcast_to(np.asarray(masses_kg, float), (n,)).copy()
     offset = 1.0 if ends != "free-free" else 0.0
-    geometry = ChainGeometry(n=n, masses_kg=masses, spacing_m=spacing, ends=ends, n_segments=segments,
-                             positions_m=spacing * (np.arange(n) + offset))
+    geometry = ChainGeometry(
+        n=n,
+        masses_kg=masses,
+        spacing_m=spacing,
+        ends=ends,
+        n_segments=segments,
+        positions_m=spacing * (np.arange(n) + offset),
+    )
     components = EFFECTS.assemble(effects, geometry)
     stiffness = np.zeros(segments)
     diagonal = damping = force = None
@@ -173,6 +186,7 @@ def rigid_links_matrices(n: int):
 
 # --- Closed forms: the continuum limit and the exact discrete spectra -------------------------
 
+
 def frequency_unit(effects: dict, length_m: float, mass_kg: float, spacing_m: float, mass_each_kg: float):
     """(value in rad/s, name, label) of the natural frequency unit of a chain with these effects."""
     if "gravity" in effects:
@@ -181,7 +195,11 @@ def frequency_unit(effects: dict, length_m: float, mass_kg: float, spacing_m: fl
         return effects["rotation"]["omega_rad_per_s"], "over_omega", "ω"
     if "tension" in effects:
         rho = mass_kg / length_m
-        return np.pi / length_m * np.sqrt(effects["tension"]["newton"] / rho), "over_fundamental", "(π/l)√(P/ρ)"
+        return (
+            np.pi / length_m * np.sqrt(effects["tension"]["newton"] / rho),
+            "over_fundamental",
+            "(π/l)√(P/ρ)",
+        )
     k = np.asarray(effects["springs"]["k_n_per_m"], float).ravel()[0]
     return np.sqrt(k / mass_each_kg), "sqrt_k_over_m", "√(k/m)"
 
@@ -191,13 +209,16 @@ def _uniform(values) -> bool:
     return bool(np.all(values == values[0]))
 
 
-def continuum_frequencies(effects: dict, ends: str, length_m: float, mass_kg: float, k: int, n: int | None = None):
+def continuum_frequencies(
+    effects: dict, ends: str, length_m: float, mass_kg: float, k: int, n: int | None = None
+):
     """Frequencies (rad/s) of the continuous chain these effects describe, or None if no closed form.
 
     gravity, fixed-free    omega_k = (j_0k / 2) sqrt(g/l)                    (D. Bernoulli; Lamb Art. 90)
     rotation, fixed-free   sigma^2/Omega^2 = n(n+1)/2, n odd (-1 in plane)   (Southwell; Lamb Ex. XIV.20-21)
     tension, fixed-fixed   omega_s = (s pi / l) sqrt(P / rho)
-    springs (uniform k)    the same wave equation with Y = k a, mu = m/a (fixed-fixed, or free-free from s = 0)
+    springs (uniform k)    the same wave equation with Y = k a, mu = m/a (fixed-fixed, or free-free
+                           from s = 0)
     """
     from ..solvers.special import bessel_j0_zeros
 
@@ -230,8 +251,13 @@ def exact_discrete_frequencies(chain: ParticleChain, effects: dict, k: int):
     from ..solvers.special import laguerre_zeros
 
     g = chain.geometry
-    if (set(effects) == {"springs"} and g.ends == "free-free" and g.n == 3 and _uniform(chain.segment_stiffness)
-            and g.masses_kg[0] == g.masses_kg[2]):
+    if (
+        set(effects) == {"springs"}
+        and g.ends == "free-free"
+        and g.n == 3
+        and _uniform(chain.segment_stiffness)
+        and g.masses_kg[0] == g.masses_kg[2]
+    ):
         # linear triatomic molecule m-M-m: 0, sqrt(k/m), sqrt(k (M + 2m) / (M m))
         (m, M), kk = g.masses_kg[:2], chain.segment_stiffness[0]
         return np.sqrt([0.0, kk / m, kk * (M + 2 * m) / (M * m)])[:k]

@@ -10,11 +10,11 @@ import numpy as np
 
 # Units. The stellar (sidereal) day is the period of the Earth rotation angle (IERS Conventions 2010,
 # eq. 5.15: ERA rate 1.00273781191135448 turns per UT1 day); the true sidereal day differs by 8 ms.
-SIDEREAL_PER_SOLAR_DAY = 1.00273781191135448   # turns of the Earth per mean solar day
+SIDEREAL_PER_SOLAR_DAY = 1.00273781191135448  # turns of the Earth per mean solar day
 SECONDS_PER_DAY = 86400.0
 JULIAN_YEAR_DAYS = 365.25
-TROPICAL_YEAR_DAYS = 365.242190                 # mean tropical year at J2000 (Laskar 1986)
-ARCSEC = np.pi / (180.0 * 3600.0)               # radians per arcsecond
+TROPICAL_YEAR_DAYS = 365.242190  # mean tropical year at J2000 (Laskar 1986)
+ARCSEC = np.pi / (180.0 * 3600.0)  # radians per arcsecond
 MAS = ARCSEC / 1000.0
 
 # IERS Conventions (2010), Table 1.1 (numerical standards).
@@ -106,7 +106,7 @@ def elastic_wobble_frequency(H: float, beta_n2: float, b_minus_a_over_c: float =
 
 def beta_n2_for_period(H: float, period_solar_days: float) -> float:
     """The beta n^2 (units of C) that gives a symmetric elastic Earth a wobble of the given period."""
-    s = 1.0 / (period_solar_days * SIDEREAL_PER_SOLAR_DAY)        # sigma/n
+    s = 1.0 / (period_solar_days * SIDEREAL_PER_SOLAR_DAY)  # sigma/n
     a = 1.0 - H
     # s (a + x) = 1 - a - x  =>  x = (1 - a - s a) / (1 + s)
     return (1.0 - a - s * a) / (1.0 + s)

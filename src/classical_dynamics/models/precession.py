@@ -38,18 +38,20 @@ N_PARAMS = 17
 
 @dataclass(frozen=True)
 class Orbits:
-    """Mean orbital elements (J2000) and the strengths GM/a^3 of the Sun and the Moon, each with its source."""
+    """Mean orbital elements (J2000) and the strengths GM/a^3 of the Sun and the Moon, each with its
+    source."""
+
     name: str
-    year_days: float                 # the Earth's orbital period (its mean motion n' = 2 pi / year_days)
-    spin_turns_per_year: float       # n / n'
-    sun_gm_over_a3: float            # per day^2
-    moon_gm_over_a3: float           # per day^2
+    year_days: float  # the Earth's orbital period (its mean motion n' = 2 pi / year_days)
+    spin_turns_per_year: float  # n / n'
+    sun_gm_over_a3: float  # per day^2
+    moon_gm_over_a3: float  # per day^2
     sun_e: float
     moon_e: float
     moon_i_rad: float
-    moon_n: float                    # rad/day
+    moon_n: float  # rad/day
     node_period_days: float
-    sun_L0: float = 0.0              # mean longitudes, perigees and node at J2000 (rad)
+    sun_L0: float = 0.0  # mean longitudes, perigees and node at J2000 (rad)
     sun_varpi: float = 0.0
     moon_L0: float = 0.0
     moon_varpi: float = 0.0
@@ -75,11 +77,20 @@ def lamb1920() -> Orbits:
     year = 365.256363
     n_sun = 2.0 * np.pi / year
     return Orbits(
-        name="lamb1920", year_days=year, spin_turns_per_year=366.25,
-        sun_gm_over_a3=n_sun**2, moon_gm_over_a3=(13.4 * n_sun) ** 2 / 81.4,
-        sun_e=0.0, moon_e=0.0, moon_i_rad=np.radians(5.0 + 9.0 / 60.0), moon_n=13.4 * n_sun,
+        name="lamb1920",
+        year_days=year,
+        spin_turns_per_year=366.25,
+        sun_gm_over_a3=n_sun**2,
+        moon_gm_over_a3=(13.4 * n_sun) ** 2 / 81.4,
+        sun_e=0.0,
+        moon_e=0.0,
+        moon_i_rad=np.radians(5.0 + 9.0 / 60.0),
+        moon_n=13.4 * n_sun,
         node_period_days=18.6 * year,
-        sources=("Lamb (1920) Art. 61: n/n' = 366.25, E/M = 81.4, n1/n' = 13.4, i = 5°9′ (read from damaged OCR)",))
+        sources=(
+            "Lamb (1920) Art. 61: n/n' = 366.25, E/M = 81.4, n1/n' = 13.4, i = 5°9′ (read from damaged OCR)",
+        ),
+    )
 
 
 # Modern constants. IERS Conventions (2010) Table 1.1: GM_E, the Moon/Earth mass ratio and
@@ -99,18 +110,30 @@ def modern() -> Orbits:
     n_sun = 2.0 * np.pi / SIDEREAL_YEAR_DAYS
     gm_moon = earth.GM_M3_PER_S2 * MOON_OVER_EARTH * earth.SECONDS_PER_DAY**2
     return Orbits(
-        name="modern", year_days=SIDEREAL_YEAR_DAYS, spin_turns_per_year=earth.SPIN_RAD_PER_DAY / n_sun,
+        name="modern",
+        year_days=SIDEREAL_YEAR_DAYS,
+        spin_turns_per_year=earth.SPIN_RAD_PER_DAY / n_sun,
         # Kepler's third law for the Earth-Moon barycentre: GM_S / a'^3 = n'^2 S/(S + E + M)
         sun_gm_over_a3=n_sun**2 * SUN_OVER_EARTH_MOON / (1.0 + SUN_OVER_EARTH_MOON),
         moon_gm_over_a3=gm_moon / MOON_DISTANCE_M**3,
-        sun_e=0.0167086, moon_e=0.0549, moon_i_rad=np.radians(5.145), moon_n=2.0 * np.pi / SIDEREAL_MONTH_DAYS,
+        sun_e=0.0167086,
+        moon_e=0.0549,
+        moon_i_rad=np.radians(5.145),
+        moon_n=2.0 * np.pi / SIDEREAL_MONTH_DAYS,
         node_period_days=NODE_SIDEREAL_PERIOD_DAYS,
-        sun_L0=np.radians(280.46646), sun_varpi=np.radians(102.93735),
-        moon_L0=np.radians(218.31665), moon_varpi=np.radians(83.35324), node0=np.radians(125.04452),
-        sources=("IERS Conventions (2010) Table 1.1: GM_E, M/E = 0.0123000371, S/(E+M) = 328900.5596",
-                 "sidereal year 365.256363 d, sidereal month 27.321662 d, node 6793.48 d against the stars; mean "
-                 "elements at J2000 "
-                 "(Simon et al. 1994)", "e' = 0.0167086, e_Moon = 0.0549, i = 5.145°, a_Moon = 384 400 km"))
+        sun_L0=np.radians(280.46646),
+        sun_varpi=np.radians(102.93735),
+        moon_L0=np.radians(218.31665),
+        moon_varpi=np.radians(83.35324),
+        node0=np.radians(125.04452),
+        sources=(
+            "IERS Conventions (2010) Table 1.1: GM_E, M/E = 0.0123000371, S/(E+M) = 328900.5596",
+            "sidereal year 365.256363 d, sidereal month 27.321662 d, node 6793.48 d against the stars; mean "
+            "elements at J2000 "
+            "(Simon et al. 1994)",
+            "e' = 0.0167086, e_Moon = 0.0549, i = 5.145°, a_Moon = 384 400 km",
+        ),
+    )
 
 
 CONSTANTS = {"lamb1920": lamb1920, "modern": modern}
@@ -119,8 +142,9 @@ CONSTANTS = {"lamb1920": lamb1920, "modern": modern}
 @dataclass
 class PrecessionModel:
     """What the effects switch on; `parameters()` packs it for the compiled kernels."""
+
     H: float
-    obliquity: float                                    # rad, at the start
+    obliquity: float  # rad, at the start
     orbits: Orbits
     sun: bool = False
     moon: bool = False
@@ -155,10 +179,19 @@ class PrecessionModel:
         p = np.zeros(N_PARAMS)
         p[N_SPIN], p[H_] = self.n, self.H
         if self.sun:
-            p[SUN:SUN_VARPI + 1] = (1.0, 3.0 * o.sun_gm_over_a3, self.sun_e, o.sun_n, o.sun_L0, o.sun_varpi)
+            p[SUN : SUN_VARPI + 1] = (1.0, 3.0 * o.sun_gm_over_a3, self.sun_e, o.sun_n, o.sun_L0, o.sun_varpi)
         if self.moon:
-            p[MOON:NODE_RATE + 1] = (1.0, 3.0 * o.moon_gm_over_a3, self.moon_e, o.moon_n, o.moon_L0, o.moon_varpi,
-                                     self.moon_i, o.node0, self.node_rate)
+            p[MOON : NODE_RATE + 1] = (
+                1.0,
+                3.0 * o.moon_gm_over_a3,
+                self.moon_e,
+                o.moon_n,
+                o.moon_L0,
+                o.moon_varpi,
+                self.moon_i,
+                o.node0,
+                self.node_rate,
+            )
         return p
 
     # --- rung 1: the secular formula ---------------------------------------------------------------------
@@ -199,8 +232,7 @@ class PrecessionModel:
         a_psi, a_eps = self.nutation_18p6yr()
         s_psi, s_eps = self.semiannual() if semiannual else (0.0, 0.0)
         node, sun = self.orbits.node0, 2.0 * self.orbits.sun_L0
-        return (-a_psi * np.sin(node) - s_psi * np.sin(sun),
-                a_eps * np.cos(node) + s_eps * np.cos(sun))
+        return (-a_psi * np.sin(node) - s_psi * np.sin(sun), a_eps * np.cos(node) + s_eps * np.cos(sun))
 
     def semiannual(self) -> tuple[float, float]:
         """First-order amplitudes (rad) of the Sun's semi-annual nutation in longitude and obliquity
@@ -230,7 +262,8 @@ def assemble(H: float, obliquity_rad: float, orbits: Orbits, effects: dict) -> P
 
 
 def initial_axis(psi: float, obliquity: float) -> np.ndarray:
-    """The spin axis at obliquity eps whose equinox has moved psi west of x: ecliptic longitude 90 deg - psi."""
+    """The spin axis at obliquity eps whose equinox has moved psi west of x: ecliptic longitude 90 deg -
+    psi."""
     return np.array([np.sin(obliquity) * np.sin(psi), np.sin(obliquity) * np.cos(psi), np.cos(obliquity)])
 
 
@@ -253,7 +286,7 @@ def averaged_rhs(t, y, p, out):
     out[1] = 0.0
     out[2] = 0.0
     if p[0] != 0.0:
-        c = -p[0] * y[2]                        # n = (0, 0, 1): n x s = (-s_y, s_x, 0)
+        c = -p[0] * y[2]  # n = (0, 0, 1): n x s = (-s_y, s_x, 0)
         out[0] -= c * y[1]
         out[1] += c * y[0]
     if p[1] != 0.0:
@@ -296,10 +329,10 @@ def _body_position(t, p, k):
     y = np.sqrt(1.0 - e * e) * sE * a_over_r
     if k == MOON and p[MOON_I] != 0.0:
         node = p[NODE0] + p[NODE_RATE] * t
-        w = varpi - node                               # argument of perigee (the perigee stays fixed)
+        w = varpi - node  # argument of perigee (the perigee stays fixed)
         cw, sw, cn, sn = np.cos(w), np.sin(w), np.cos(node), np.sin(node)
         ci, si = np.cos(p[MOON_I]), np.sin(p[MOON_I])
-        u0, u1 = cw * x - sw * y, sw * x + cw * y      # in the orbit plane from the node
+        u0, u1 = cw * x - sw * y, sw * x + cw * y  # in the orbit plane from the node
         return cn * u0 - sn * ci * u1, sn * u0 + cn * ci * u1, si * u1, a_over_r**3
     cv, sv = np.cos(varpi), np.sin(varpi)
     return cv * x - sv * y, sv * x + cv * y, 0.0, a_over_r**3
@@ -353,12 +386,19 @@ def initial_state(model: PrecessionModel, forced: bool = True) -> tuple[np.ndarr
 
     forced: start on the forced motion, the figure axis already moving as the couple drives it: with
     L = Cn e3 + A omega_perp and L' = N, e3' = N/(Cn), so omega_perp = e3 x N/(Cn) (the precession and the
-    nutations' velocities at t = 0); otherwise omega = n e3 exactly, which leaves a free wobble (the hard case).
+    nutations' velocities at t = 0); otherwise omega = n e3 exactly, which leaves a free wobble (the hard
+    case).
     """
     psi, eps = start(model)
     # body-to-space: a turn by -eps about x puts e3 at (0, sin eps, cos eps), then -psi about z
-    q = np.array([np.cos(-psi / 2) * np.cos(-eps / 2), np.cos(-psi / 2) * np.sin(-eps / 2),
-                  np.sin(-psi / 2) * np.sin(-eps / 2), np.sin(-psi / 2) * np.cos(-eps / 2)])
+    q = np.array(
+        [
+            np.cos(-psi / 2) * np.cos(-eps / 2),
+            np.cos(-psi / 2) * np.sin(-eps / 2),
+            np.sin(-psi / 2) * np.sin(-eps / 2),
+            np.sin(-psi / 2) * np.cos(-eps / 2),
+        ]
+    )
     omega_body = np.array([0.0, 0.0, model.n])
     if forced:
         omega_body[:2] = forced_offset(model, q)

@@ -8,8 +8,9 @@ Torque along the largest axis x (§2), of component M + mu0 |omega|^2: with m = 
     p' - a q r = m + mu |omega|^2,    q' + b r p = 0,    r' - c p q = 0,
 
 the end of omega stays on the elliptic cylinder q^2/b + r^2/c = delta^2, and with
-    R = sqrt(a^2 bc + mu^2 (b - c)^2),  sigma1 = arctan(mu (b - c)/(a sqrt(bc))),  d = delta^2 sqrt(bc) R / 2,
-    phi1 = atan2(r/sqrt(c), q/sqrt(b)),  phi2 = 2 phi1 + sigma1,  tau = sqrt(2d) t,  p1 = 2 sqrt(bc) p / sqrt(2d),
+    R = sqrt(a^2 bc + mu^2 (b - c)^2),  sigma1 = arctan(mu (b - c)/(a sqrt(bc))),
+    d = delta^2 sqrt(bc) R / 2,  phi1 = atan2(r/sqrt(c), q/sqrt(b)),  phi2 = 2 phi1 + sigma1,
+    tau = sqrt(2d) t,  p1 = 2 sqrt(bc) p / sqrt(2d),
 the motion reduces to the plane system (2.10)
     dp1/dtau = m1 + sin(phi2) + mu1 p1^2,  dphi2/dtau = p1,
     m1 = (2m + mu delta^2 (b + c)) / (delta^2 R),  mu1 = mu / (2 sqrt(bc)).
@@ -35,14 +36,21 @@ def _body_torque(params, context):
     return params
 
 
-@EFFECTS.register("quadratic_torque", "torque", "the torque's part mu0 |omega|^2 along the same axis (Lee's "
-                  "perturbation: negative mu0 is a drag-like self-regulation)")
+@EFFECTS.register(
+    "quadratic_torque",
+    "torque",
+    "the torque's part mu0 |omega|^2 along the same axis (Lee's "
+    "perturbation: negative mu0 is a drag-like self-regulation)",
+)
 def _quadratic_torque(params, context):
     return params
 
 
-@EFFECTS.register("drag", "medium", "a viscous medium's resisting torque, -mu1 (p, q) equatorial and -mu0 r axial "
-                  "(Lee §5; both or neither)")
+@EFFECTS.register(
+    "drag",
+    "medium",
+    "a viscous medium's resisting torque, -mu1 (p, q) equatorial and -mu0 r axial (Lee §5; both or neither)",
+)
 def _drag(params, context):
     return params
 
@@ -50,6 +58,7 @@ def _drag(params, context):
 @dataclass(frozen=True)
 class Body:
     """Principal moments sorted so that A > B > C, and Lee's inertia numbers."""
+
     A: float
     B: float
     C: float
@@ -79,6 +88,7 @@ class Body:
 @dataclass(frozen=True)
 class InertiaNumbers:
     """(a, b, c) as the reductions use them; a Body's own, or swapped for the smallest axis."""
+
     a: float
     b: float
     c: float
@@ -88,6 +98,7 @@ class InertiaNumbers:
 class LargestAxis:
     """The §2 reduction for one elliptic cylinder (delta) of one body under m + mu |omega|^2 along x (body: a
     Body, or its swapped numbers with the state (r, q, p) for a torque along the smallest axis)."""
+
     body: Body | InertiaNumbers
     m: float
     mu: float
@@ -151,8 +162,13 @@ class LargestAxis:
         """(phi2, p1) -> (p, q, r) on this cylinder."""
         b, c = self.body.b, self.body.c
         phi1 = 0.5 * (phi2 - self.sigma1)
-        return np.array([self.time_scale * p1 / (2.0 * np.sqrt(b * c)), self.delta * np.sqrt(b) * np.cos(phi1),
-                         self.delta * np.sqrt(c) * np.sin(phi1)])
+        return np.array(
+            [
+                self.time_scale * p1 / (2.0 * np.sqrt(b * c)),
+                self.delta * np.sqrt(b) * np.cos(phi1),
+                self.delta * np.sqrt(c) * np.sin(phi1),
+            ]
+        )
 
 
 def cylinder(body: Body, w: np.ndarray) -> np.ndarray:
@@ -165,7 +181,7 @@ def cylinder(body: Body, w: np.ndarray) -> np.ndarray:
 def euler_largest(t, w, p, out):
     """Lee (2.2): p' = a q r + m + mu |w|^2, q' = -b r p, r' = c p q; p = (a, b, c, m, mu)."""
     out[0] = p[0] * w[1] * w[2] + p[3]
-    if p[4] != 0.0:                      # the quadratic torque, only when the scene lists it
+    if p[4] != 0.0:  # the quadratic torque, only when the scene lists it
         out[0] += p[4] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2])
     out[1] = -p[1] * w[2] * w[0]
     out[2] = p[2] * w[0] * w[1]
@@ -173,7 +189,8 @@ def euler_largest(t, w, p, out):
 
 @rhs_function
 def euler_largest_phase(t, w, p, out):
-    """Lee (2.2) with Lee's auxiliary angle beside it, w = (p, q, r, phi), d phi = p dt; p = (a, b, c, m, mu, ...)."""
+    """Lee (2.2) with Lee's auxiliary angle beside it, w = (p, q, r, phi), d phi = p dt; p = (a, b, c, m, mu,
+    ...)."""
     out[0] = p[0] * w[1] * w[2] + p[3]
     if p[4] != 0.0:
         out[0] += p[4] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2])
@@ -184,8 +201,8 @@ def euler_largest_phase(t, w, p, out):
 
 @rhs_function
 def euler_largest_attitude(t, w, p, out):
-    """Lee (2.2) and the attitude: w = (p, q, r, e0, e1, e2, e3), the unit quaternion e turning body vectors into
-    space, de/dt = e * (0, omega)/2; p = (a, b, c, m, mu)."""
+    """Lee (2.2) and the attitude: w = (p, q, r, e0, e1, e2, e3), the unit quaternion e turning body vectors
+    into space, de/dt = e * (0, omega)/2; p = (a, b, c, m, mu)."""
     out[0] = p[0] * w[1] * w[2] + p[3]
     if p[4] != 0.0:
         out[0] += p[4] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2])
@@ -200,7 +217,8 @@ def euler_largest_attitude(t, w, p, out):
 
 @rhs_function
 def euler_smallest(t, w, p, out):
-    """Lee (2.1) with the torque along z: p' = a q r, q' = -b r p, r' = c p q + m + mu |w|^2; p = (a, b, c, m, mu)."""
+    """Lee (2.1) with the torque along z: p' = a q r, q' = -b r p, r' = c p q + m + mu |w|^2; p = (a, b, c, m,
+    mu)."""
     out[0] = p[0] * w[1] * w[2]
     out[1] = -p[1] * w[2] * w[0]
     out[2] = p[2] * w[0] * w[1] + p[3]
@@ -210,8 +228,8 @@ def euler_smallest(t, w, p, out):
 
 @rhs_function
 def euler_largest_yz(t, w, p, out):
-    """Lee §2.6: the torque along x is M + mu0 (q^2 + r^2): p' = a q r + m + mu (q^2 + r^2); p = (a, b, c, m, mu).
-    q and r obey (2.5) as before, and p the conservative plane (2.8) (mu1 = 0) with the same m1."""
+    """Lee §2.6: the torque along x is M + mu0 (q^2 + r^2): p' = a q r + m + mu (q^2 + r^2); p = (a, b, c, m,
+    mu). q and r obey (2.5) as before, and p the conservative plane (2.8) (mu1 = 0) with the same m1."""
     out[0] = p[0] * w[1] * w[2] + p[3] + p[4] * (w[1] * w[1] + w[2] * w[2])
     out[1] = -p[1] * w[2] * w[0]
     out[2] = p[2] * w[0] * w[1]
@@ -266,7 +284,7 @@ def singular_points(m1: float, mu1: float, phi_min: float, phi_max: float) -> li
             phi = base + 2 * np.pi * k
             if phi_min <= phi <= phi_max:
                 points.append({"phi2": float(phi), "p1": 0.0, "type": kind})
-    unique = {round(pt["phi2"], 12): pt for pt in points}           # at |m1| = 1 the pairs coincide
+    unique = {round(pt["phi2"], 12): pt for pt in points}  # at |m1| = 1 the pairs coincide
     return [unique[k] for k in sorted(unique)]
 
 
@@ -277,10 +295,13 @@ def energy(y: np.ndarray, m1: float) -> np.ndarray:
 
 
 def lee_c1(y: np.ndarray, m1: float, mu1: float) -> np.ndarray:
-    """C1 of (2.13), constant when mu1 != 0: e^{-2 mu1 phi2}[p1^2 + m1/mu1 + 2(2 mu1 sin + cos)/(1 + 4 mu1^2)]."""
+    """C1 of (2.13), constant when mu1 != 0: e^{-2 mu1 phi2}[p1^2 + m1/mu1 + 2(2 mu1 sin + cos)/(1 + 4
+    mu1^2)]."""
     y = np.atleast_2d(y)
     phi, p1 = y[:, 0], y[:, 1]
-    return np.exp(-2 * mu1 * phi) * (p1**2 + m1 / mu1 + 2 * (2 * mu1 * np.sin(phi) + np.cos(phi)) / (1 + 4 * mu1**2))
+    return np.exp(-2 * mu1 * phi) * (
+        p1**2 + m1 / mu1 + 2 * (2 * mu1 * np.sin(phi) + np.cos(phi)) / (1 + 4 * mu1**2)
+    )
 
 
 def invariant_spread(y: np.ndarray, m1: float, mu1: float) -> float:
@@ -302,7 +323,7 @@ def separatrix_p1_squared(phi: np.ndarray, m1: float, mu1: float, phi_saddle: fl
     p1 = 0 at the saddle otherwise. Negative values mark where the curve does not exist."""
     if mu1 == 0.0:
         return 2.0 * (m1 * (phi - phi_saddle) - np.cos(phi) + np.cos(phi_saddle))
-    g = lambda x: -m1 / mu1 - 2.0 * (2 * mu1 * np.sin(x) + np.cos(x)) / (1 + 4 * mu1**2)    # noqa: E731
+    g = lambda x: -m1 / mu1 - 2.0 * (2 * mu1 * np.sin(x) + np.cos(x)) / (1 + 4 * mu1**2)
     C1 = -g(phi_saddle) * np.exp(-2 * mu1 * phi_saddle)
     return C1 * np.exp(2 * mu1 * phi) + g(phi)
 
@@ -348,13 +369,15 @@ class MiddleAxis:
     """The §3 reduction for one hyperbolic cylinder p^2/a - r^2/c = alpha1^2 - alpha2^2 of one body under
     m + mu |omega|^2 along y:
 
-        phi = int q dt, X = sqrt(ac) phi: p/sqrt(a) = alpha1 cosh X + alpha2 sinh X, r/sqrt(c) = alpha1 sinh X + alpha2 cosh X
-        phi'' - mu phi'^2 = m0 + k1 sinh 2X + k2 cosh 2X,
+        phi = int q dt, X = sqrt(ac) phi: p/sqrt(a) = alpha1 cosh X + alpha2 sinh X, r/sqrt(c) = alpha1 sinh X
+        + alpha2 cosh X phi'' - mu phi'^2 = m0 + k1 sinh 2X + k2 cosh 2X,
     and, with phi2 = 2X + sigma, tau = sqrt(2 sqrt(ac) d) t, q1 = dphi2/dtau, mu1 = mu/(2 sqrt(ac)):
-        |k1| > |k2| (|mu| below mu_c): k1 sinh + k2 cosh = eps d sinh(. + sigma), dq1/dtau = m1 + eps sinh phi2 + mu1 q1^2
-        |k2| > |k1| (|mu| above mu_c): k1 sinh + k2 cosh = eps d cosh(. + sigma), dq1/dtau = m2 + eps cosh phi2 + mu1 q1^2
+        |k1| > |k2| (|mu| below mu_c): k1 sinh + k2 cosh = eps d sinh(. + sigma), dq1/dtau = m1 + eps sinh
+        phi2 + mu1 q1^2 |k2| > |k1| (|mu| above mu_c): k1 sinh + k2 cosh = eps d cosh(. + sigma), dq1/dtau =
+        m2 + eps cosh phi2 + mu1 q1^2
     with d = sqrt(|k1^2 - k2^2|), m1 (or m2) = m0/d.
     """
+
     body: Body
     m: float
     mu: float
@@ -385,7 +408,9 @@ class MiddleAxis:
         'rare' (k1 = k2 = 0: plane II at nu = nu_c, (3.65), where no hyperbolic term is left)."""
         k1, k2 = self.k1, self.k2
         scale = max(abs(k1), abs(k2))
-        if scale <= 1e-12 * self.body.b * np.sqrt(self.body.a * self.body.c) * (self.alpha1**2 + self.alpha2**2):
+        if scale <= 1e-12 * self.body.b * np.sqrt(self.body.a * self.body.c) * (
+            self.alpha1**2 + self.alpha2**2
+        ):
             return "rare"
         if abs(k1 - k2) <= 1e-12 * scale:
             return "exp"
@@ -400,8 +425,8 @@ class MiddleAxis:
     @property
     def d1(self) -> float:
         """d1 = sqrt(k1^2 - k2^2) (or d2 = sqrt(k2^2 - k1^2)); |k1| in the exponential forms; in the rare case
-        1/(2 sqrt(ac)), which makes tau = t, so that q1 = 2 sqrt(ac) q and phi2 = 2 sqrt(ac) phi are Lee's (q, phi)
-        scaled."""
+        1/(2 sqrt(ac)), which makes tau = t, so that q1 = 2 sqrt(ac) q and phi2 = 2 sqrt(ac) phi are Lee's (q,
+        phi) scaled."""
         if self.form == "rare":
             return 0.5 / np.sqrt(self.body.a * self.body.c)
         if self.form in ("exp", "exp-"):
@@ -454,7 +479,9 @@ class MiddleAxis:
         return body.b / (2.0 * (body.a + body.c)) if nu == "nu_c" else float(nu)
 
     @classmethod
-    def with_plane_parameters(cls, body: Body, m1: float, mu1: float, alpha1: float, alpha2: float) -> "MiddleAxis":
+    def with_plane_parameters(
+        cls, body: Body, m1: float, mu1: float, alpha1: float, alpha2: float
+    ) -> "MiddleAxis":
         """The torque (m, mu) that gives the plane (m1, mu1) on the cylinder of (alpha1, alpha2)."""
         mu = 2.0 * np.sqrt(body.a * body.c) * mu1
         trial = cls(body, 0.0, mu, alpha1, alpha2)
@@ -466,10 +493,10 @@ class MiddleAxis:
         return np.array([self.body.a, self.body.b, self.body.c, self.m, self.mu])
 
     def to_plane(self, w: np.ndarray) -> np.ndarray:
-        """Rows (p, q, r) -> rows (phi2, q1): e^X = (p/sqrt a + r/sqrt c)/(alpha1 + alpha2) and
-        e^-X = (p/sqrt a - r/sqrt c)/(alpha1 - alpha2). Each row takes the larger of the two: for X far below 0 the
-        sum is a difference of two numbers of size e^|X| and would lose |X|/ln 10 digits. In plane I or II only one
-        of them exists."""
+        """Rows (p, q, r) -> rows (phi2, q1): e^X = (p/sqrt a + r/sqrt c)/(alpha1 + alpha2) and e^-X = (p/sqrt
+        a - r/sqrt c)/(alpha1 - alpha2). Each row takes the larger of the two: for X far below 0 the sum is a
+        difference of two numbers of size e^|X| and would lose |X|/ln 10 digits. In plane I or II only one of
+        them exists."""
         w = np.atleast_2d(w)
         a, c = self.body.a, self.body.c
         u, v = w[:, 0] / np.sqrt(a), w[:, 2] / np.sqrt(c)
@@ -481,10 +508,11 @@ class MiddleAxis:
         return np.column_stack([2.0 * X + self.sigma1, 2.0 * np.sqrt(a * c) * w[:, 1] / self.time_scale])
 
     def plane_departure(self, w: np.ndarray) -> np.ndarray:
-        """In plane I (alpha1 = alpha2) or II (alpha1 = -alpha2): the off-plane part of rows (p, q, r) against the
-        in-plane part, |p/sqrt a -+ r/sqrt c| / |p/sqrt a +- r/sqrt c|; zeros off the planes. The planes are
-        invariant, but the off-plane part grows like e^{|phi2 - phi2(0)|} relative to the in-plane part when phi2
-        runs away (to -infinity in plane I, +infinity in plane II): a rounding error leaves the plane for good."""
+        """In plane I (alpha1 = alpha2) or II (alpha1 = -alpha2): the off-plane part of rows (p, q, r) against
+        the in-plane part, |p/sqrt a -+ r/sqrt c| / |p/sqrt a +- r/sqrt c|; zeros off the planes. The planes
+        are invariant, but the off-plane part grows like e^{|phi2 - phi2(0)|} relative to the in-plane part
+        when phi2 runs away (to -infinity in plane I, +infinity in plane II): a rounding error leaves the
+        plane for good."""
         w = np.atleast_2d(w)
         u, v = w[:, 0] / np.sqrt(self.body.a), w[:, 2] / np.sqrt(self.body.c)
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -497,9 +525,13 @@ class MiddleAxis:
     def from_plane(self, phi2: float, q1: float) -> np.ndarray:
         a, c = self.body.a, self.body.c
         X = 0.5 * (phi2 - self.sigma1)
-        return np.array([np.sqrt(a) * (self.alpha1 * np.cosh(X) + self.alpha2 * np.sinh(X)),
-                         self.time_scale * q1 / (2.0 * np.sqrt(a * c)),
-                         np.sqrt(c) * (self.alpha1 * np.sinh(X) + self.alpha2 * np.cosh(X))])
+        return np.array(
+            [
+                np.sqrt(a) * (self.alpha1 * np.cosh(X) + self.alpha2 * np.sinh(X)),
+                self.time_scale * q1 / (2.0 * np.sqrt(a * c)),
+                np.sqrt(c) * (self.alpha1 * np.sinh(X) + self.alpha2 * np.cosh(X)),
+            ]
+        )
 
 
 def hyperbola(body: Body, w: np.ndarray) -> np.ndarray:
@@ -523,9 +555,9 @@ FORMS = ("sinh", "cosh", "exp", "exp-", "rare")
 
 @rhs_function
 def plane_middle(t, y, p, out):
-    """Lee (3.12), (3.56), (3.24)/(3.58) or (3.25)/(3.59) in y = (phi2, q1): dq1/dtau = m + eps f(phi2) + mu1 q1^2,
-    f = sinh, cosh, exp, exp(-.) or, in the rare case (3.65), 0; p = (m, mu1, eps, direction, form code: index in
-    FORMS)."""
+    """Lee (3.12), (3.56), (3.24)/(3.58) or (3.25)/(3.59) in y = (phi2, q1): dq1/dtau = m + eps f(phi2) + mu1
+    q1^2, f = sinh, cosh, exp, exp(-.) or, in the rare case (3.65), 0; p = (m, mu1, eps, direction, form code:
+    index in FORMS)."""
     out[0] = p[3] * y[1]
     if p[4] == 0.0:
         f = np.sinh(y[0])
@@ -542,25 +574,32 @@ def plane_middle(t, y, p, out):
         out[1] += p[3] * p[1] * y[1] * y[1]
 
 
-# |s - 2 mu1| below which middle_g takes the resonant form. At a distance delta the resonant form misses the equation
-# by about delta phi2^2 e^{s phi2}, and the other form's 1/delta cancels against C with a loss of log10(1/delta) digits.
+# |s - 2 mu1| below which middle_g takes the resonant form. At a distance delta the resonant form misses the
+# equation by about delta phi2^2 e^{s phi2}, and the other form's 1/delta cancels against C with a loss of
+# log10(1/delta) digits.
 RESONANCE = 1e-8
 
 
 def resonant(mu1: float, s: float) -> bool:
-    """Whether the exponential e^{s phi2} of the torque resonates with the homogeneous solution e^{2 mu1 phi2}."""
+    """Whether the exponential e^{s phi2} of the torque resonates with the homogeneous solution e^{2 mu1
+    phi2}."""
     return abs(s - 2 * mu1) < RESONANCE
 
 
 def middle_g_terms(phi, m: float, mu1: float, eps: float, form: str) -> list:
-    """The terms of g in q1^2 = C e^{2 mu1 phi2} + g(phi2), the solution of Lee's middle-axis planes
-    dq1/dtau = m + eps f(phi2) + mu1 q1^2 (mu1 != 0), that is (q1^2)' - 2 mu1 q1^2 = 2m + 2 eps f: (3.14) sinh,
-    (3.19) cosh, (3.27)/(3.28), (3.60), (3.62), (3.63) for f = e^{phi2} ('exp') or e^{-phi2} ('exp-'); (3.66) in
-    the rare case (f = 0). Each exponential c e^{s phi2} of 2 eps f contributes c e^{s phi2}/(s - 2 mu1), or, at the
-    resonance 2 mu1 = s (nu = 1/2 in the cosh form or in plane II, where Lee's 1/(1 - 4 mu1^2) and 2/(1 - 2 nu)
-    diverge), c phi2 e^{s phi2}."""
-    exponentials = {"sinh": ((eps, 1.0), (-eps, -1.0)), "cosh": ((eps, 1.0), (eps, -1.0)), "exp": ((2 * eps, 1.0),),
-                    "exp-": ((2 * eps, -1.0),), "rare": ()}[form]
+    """The terms of g in q1^2 = C e^{2 mu1 phi2} + g(phi2), the solution of Lee's middle-axis planes dq1/dtau
+    = m + eps f(phi2) + mu1 q1^2 (mu1 != 0), that is (q1^2)' - 2 mu1 q1^2 = 2m + 2 eps f: (3.14) sinh, (3.19)
+    cosh, (3.27)/(3.28), (3.60), (3.62), (3.63) for f = e^{phi2} ('exp') or e^{-phi2} ('exp-'); (3.66) in the
+    rare case (f = 0). Each exponential c e^{s phi2} of 2 eps f contributes c e^{s phi2}/(s - 2 mu1), or, at
+    the resonance 2 mu1 = s (nu = 1/2 in the cosh form or in plane II, where Lee's 1/(1 - 4 mu1^2) and 2/(1 -
+    2 nu) diverge), c phi2 e^{s phi2}."""
+    exponentials = {
+        "sinh": ((eps, 1.0), (-eps, -1.0)),
+        "cosh": ((eps, 1.0), (eps, -1.0)),
+        "exp": ((2 * eps, 1.0),),
+        "exp-": ((2 * eps, -1.0),),
+        "rare": (),
+    }[form]
     terms = [-m / mu1 + 0.0 * phi]
     for c, s in exponentials:
         terms.append(c * phi * np.exp(s * phi) if resonant(mu1, s) else c * np.exp(s * phi) / (s - 2 * mu1))
@@ -579,7 +618,8 @@ def middle_c1(y: np.ndarray, m: float, mu1: float, eps: float, form: str) -> np.
 
 
 def middle_potential(phi, m: float, eps: float, form: str):
-    """V(phi2) = -m phi2 - eps F(phi2), F' = f: the potential of the unperturbed planes (mu1 = 0), (3.42)-(3.48)."""
+    """V(phi2) = -m phi2 - eps F(phi2), F' = f: the potential of the unperturbed planes (mu1 = 0),
+    (3.42)-(3.48)."""
     F = {"sinh": np.cosh, "cosh": np.sinh, "exp": np.exp, "exp-": lambda x: -np.exp(-x)}[form](phi)
     return -m * phi - eps * F
 
@@ -601,7 +641,9 @@ def middle_invariant_spread(y: np.ndarray, m: float, mu1: float, eps: float, for
     phi, q1 = y[:, 0], y[:, 1]
     values = middle_invariant(y, m, mu1, eps, form)
     if mu1 != 0.0:
-        size = np.exp(-2 * mu1 * phi) * (q1**2 + sum(np.abs(t) for t in middle_g_terms(phi, m, mu1, eps, form)))
+        size = np.exp(-2 * mu1 * phi) * (
+            q1**2 + sum(np.abs(t) for t in middle_g_terms(phi, m, mu1, eps, form))
+        )
     else:
         size = 0.5 * q1**2 + np.abs(m * phi) + np.abs(middle_potential(phi, 0.0, eps, form))
     return float(np.ptp(values) / np.max(size))

@@ -62,8 +62,8 @@ class ViscousMedium:
     h: float
     nu: float
     mu: float
-    m: tuple            # (m1, m2, m3): the torque per unit moment
-    omega0: tuple       # (p0, q0, r0)
+    m: tuple  # (m1, m2, m3): the torque per unit moment
+    omega0: tuple  # (p0, q0, r0)
 
     @classmethod
     def from_moments(cls, A: float, C: float, nu, mu, m, omega0) -> "ViscousMedium":
@@ -122,14 +122,14 @@ class ViscousMedium:
         return r0 + m3 * t
 
     def J(self, t, integrals=sc.si_ci) -> tuple[np.ndarray, np.ndarray]:
-        """int_0^t e^{nu s + i xi(s)} ds at the times t, and a bound on its error from the bounds on si and ci;
-        `integrals(x, w)` gives si and ci (a Value). The integrals at the fixed end are computed once."""
+        """int_0^t e^{nu s + i xi(s)} ds at the times t, and a bound on its error from the bounds on si and
+        ci; `integrals(x, w)` gives si and ci (a Value). The integrals at the fixed end are computed once."""
         t = np.atleast_1d(np.asarray(t, float))
         if self.generalized:
             return self._J_generalized(t, integrals)
         if self.mu == 0.0 and self.m[2] != 0.0 and self.h != 0.0:
             return self._J_fresnel(t, integrals)
-        rate = complex(self.nu, self.g1 if self.h != 0.0 else 0.0)   # xi linear in t: xi = g1 t
+        rate = complex(self.nu, self.g1 if self.h != 0.0 else 0.0)  # xi linear in t: xi = g1 t
         J = t.astype(complex) if rate == 0 else (np.exp(rate * t) - 1.0) / rate
         return J, np.zeros(len(t))
 
@@ -140,7 +140,7 @@ class ViscousMedium:
         top = integrals(G, w)
         bottoms = [integrals(x, w) for x in G * np.exp(-self.mu * t)]
         inner = np.array([(top.ci - b.ci) - 1j * sigma * (top.si - b.si) for b in bottoms])
-        scale = G ** (w.real - 1.0) / self.mu                       # |G^(w-1)|/mu: the bounds are magnified by it
+        scale = G ** (w.real - 1.0) / self.mu  # |G^(w-1)|/mu: the bounds are magnified by it
         bound = scale * 2.0 * (top.bound + np.array([b.bound for b in bottoms]))
         return np.exp(1j * self.g) * G ** (w - 1.0) / self.mu * inner, bound
 
@@ -156,8 +156,10 @@ class ViscousMedium:
             if U == 0.0:
                 return 0.0j, 0.0
             value, scale = integrals(U, 0.5), 1.0 / (2.0 * np.sqrt(abs(b)))
-            return (np.sign(v) * scale * (value.ci + sc.B(0.5) + 1j * np.sign(b) * (value.si + sc.A(0.5))),
-                    scale * 2.0 * value.bound)
+            return (
+                np.sign(v) * scale * (value.ci + sc.B(0.5) + 1j * np.sign(b) * (value.si + sc.A(0.5))),
+                scale * 2.0 * value.bound,
+            )
 
         F0, b0 = F(v0)
         Ft = [F(v0 + s) for s in t]
@@ -194,4 +196,7 @@ class ViscousMedium:
         if not (self.nu > 0.0 and self.mu > 0.0):
             return None
         delta = np.hypot(self.omega0[0], self.omega0[1])
-        return (delta + (abs(self.m[0]) + abs(self.m[1])) / self.nu, abs(self.omega0[2]) + abs(self.m[2]) / self.mu)
+        return (
+            delta + (abs(self.m[0]) + abs(self.m[1])) / self.nu,
+            abs(self.omega0[2]) + abs(self.m[2]) / self.mu,
+        )

@@ -35,17 +35,27 @@ N_SPIN, A_C, B_C, ELASTIC, BETA, DISSIPATION, INV_2Q, H_EXC, N_TERMS, TERMS = ra
 @dataclass
 class WobbleModel:
     """What the effects set; `parameters()` packs it for the compiled right-hand side."""
-    H: float                                   # (C - (A + B)/2)/C
+
+    H: float  # (C - (A + B)/2)/C
     b_minus_a_over_c: float = 0.0
-    beta_n2: float | None = None               # Lamb's beta n^2 in units of C (elastic_yielding)
-    Q: float | None = None                     # dissipation
+    beta_n2: float | None = None  # Lamb's beta n^2 in units of C (elastic_yielding)
+    Q: float | None = None  # dissipation
     terms: list = field(default_factory=list)  # excitation: (amplitude rad, frequency rad/day, phase rad)
     n: float = earth.SPIN_RAD_PER_DAY
 
     def parameters(self) -> np.ndarray:
         a, b = earth.moments_over_c(self.H, self.b_minus_a_over_c)
-        p = [self.n, a, b, float(self.beta_n2 is not None), self.beta_n2 or 0.0, float(self.Q is not None),
-             0.5 / self.Q if self.Q else 0.0, self.H, float(len(self.terms))]
+        p = [
+            self.n,
+            a,
+            b,
+            float(self.beta_n2 is not None),
+            self.beta_n2 or 0.0,
+            float(self.Q is not None),
+            0.5 / self.Q if self.Q else 0.0,
+            self.H,
+            float(len(self.terms)),
+        ]
         for term in self.terms:
             p.extend(term)
         return np.array(p, dtype=float)
@@ -71,8 +81,11 @@ def b_minus_a_over_c(params, H: float) -> float:
     return earth.b_minus_a_over_c(H) if value == "C22" else float(value)
 
 
-@EFFECTS.register("elastic_yielding", "deformation",
-                  "Lamb Art. 71: the centrifugal bulge follows the spin axis, products of inertia −βnq, −βnp")
+@EFFECTS.register(
+    "elastic_yielding",
+    "deformation",
+    "Lamb Art. 71: the centrifugal bulge follows the spin axis, products of inertia −βnq, −βnp",
+)
 def _elastic(params, model: WobbleModel):
     if "k2" in params:
         model.beta_n2 = earth.elastic_beta_n2_over_c(params["k2"], model.H)
@@ -80,14 +93,20 @@ def _elastic(params, model: WobbleModel):
         model.beta_n2 = earth.beta_n2_for_period(model.H, params["period_solar_days"])
 
 
-@EFFECTS.register("dissipation", "dissipation",
-                  "internal friction with quality factor Q (double bracket: |L| kept, energy falls)")
+@EFFECTS.register(
+    "dissipation",
+    "dissipation",
+    "internal friction with quality factor Q (double bracket: |L| kept, energy falls)",
+)
 def _dissipation(params, model: WobbleModel):
     model.Q = float(params["Q"])
 
 
-@EFFECTS.register("excitation", "excitation",
-                  "moving mass: an annual term and a seeded random process in the products of inertia")
+@EFFECTS.register(
+    "excitation",
+    "excitation",
+    "moving mass: an annual term and a seeded random process in the products of inertia",
+)
 def _excitation(params, model: WobbleModel):
     annual = params.get("annual")
     year = 2.0 * np.pi / earth.TROPICAL_YEAR_DAYS
@@ -125,7 +144,8 @@ def liouville(t, y, p, out):
     m00, m11, m22, m01, m02, m12 = p[1], p[2], 1.0, 0.0, 0.0, 0.0
     f0, f1, f2 = 0.0, 0.0, 0.0
     if p[3] != 0.0:
-        # elastic: delta I = beta (omega omega^T - |omega|^2/3) minus its value at n e3 (in the reference figure)
+        # elastic: delta I = beta (omega omega^T - |omega|^2/3) minus its value at n e3 (in the reference
+        # figure)
         be = p[4]
         w2 = y[0] * y[0] + y[1] * y[1] + y[2] * y[2]
         s = (2.0 / 3.0) * w2 + 1.0 / 3.0
@@ -169,7 +189,7 @@ def liouville(t, y, p, out):
     f1 += n * x1
     f2 += n * x2
     if p[5] != 0.0:
-        g = n * p[6]                       # l x (l x y), scaled: |l| is kept, the energy falls
+        g = n * p[6]  # l x (l x y), scaled: |l| is kept, the energy falls
         f0 += g * (l1 * x2 - l2 * x1)
         f1 += g * (l2 * x0 - l0 * x2)
         f2 += g * (l0 * x1 - l1 * x0)

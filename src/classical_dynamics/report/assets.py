@@ -11,9 +11,10 @@ from pathlib import Path
 from ..studies import registry
 
 HERE = Path(str(files(__package__)))
-TEMPLATES = HERE / "templates"          # report.html.j2, _macros.html.j2, report.css, screen.css, print.css, report.js
-LEDGER = HERE / "ledger"                # <source>.yaml: every quantitative statement of a source
-LEDGER_SHOWN = "src/classical_dynamics/report/ledger"      # where a reader of the report finds it in the checkout
+# report.html.j2, _macros.html.j2, report.css, screen.css, print.css, report.js
+TEMPLATES = HERE / "templates"
+LEDGER = HERE / "ledger"  # <source>.yaml: every quantitative statement of a source
+LEDGER_SHOWN = "src/classical_dynamics/report/ledger"  # where a reader of the report finds it in the checkout
 BIBLIOGRAPHY = HERE / "references.bib"
 
 
@@ -22,7 +23,8 @@ def claims_file(study: str) -> Path:
 
 
 def chapter_template(study: str) -> str:
-    """A study's chapter as the report's Jinja loader names it (its search path: TEMPLATES, then the studies)."""
+    """A study's chapter as the report's Jinja loader names it (its search path: TEMPLATES, then the
+    studies)."""
     return f"{study}/chapter.html.j2"
 
 

@@ -1,12 +1,12 @@
-"""The report's bibliography: report/references.bib (in this package) read with pybtex, each entry typeset as an HTML fragment,
-and numbered citations in order of first use.
+"""The report's bibliography: report/references.bib (in this package) read with pybtex, each entry typeset as
+an HTML fragment, and numbered citations in order of first use.
 
 pybtex parses the file (entries, @string macros, names split into first/von/last/jr parts). Field values keep
 their TeX markup; they are decoded with latexcodec's ``ulatex`` codec (accents, ``--``/``---`` dashes,
-````...''`` quotes, ``\\&``, ``~``, math-mode Greek) and the braces, text-style commands and inline math that the
-codec leaves are turned into pybtex rich text, which pybtex's html backend renders with proper escaping.
-pybtex's own 'unsrt' style is not used: it lower-cases titles and puts the year last; the layout here is
-"A. B. Name, C. Other and D. Third (year). Title. *Journal* volume(number), pages. doi:…".
+````...''`` quotes, ``\\&``, ``~``, math-mode Greek) and the braces, text-style commands and inline math that
+the codec leaves are turned into pybtex rich text, which pybtex's html backend renders with proper escaping.
+pybtex's own 'unsrt' style is not used: it lower-cases titles and puts the year last; the layout here is "A.
+B. Name, C. Other and D. Third (year). Title. *Journal* volume(number), pages. doi:…".
 
 Anything the typesetter cannot turn into plain text (an unknown TeX command, an unbalanced brace) is a
 ValueError naming the entry and field, so raw TeX can never reach the printed report.
@@ -29,21 +29,62 @@ from pybtex.richtext import HRef, Tag, Text
 _HTML = find_plugin("pybtex.backends", "html")()
 
 # Types whose title is a stand-alone work (set in italics); others (articles, chapters, talks) are parts.
-_ITALIC_TITLE = {"book", "inbook", "booklet", "manual", "phdthesis", "mastersthesis", "techreport", "proceedings"}
+_ITALIC_TITLE = {
+    "book",
+    "inbook",
+    "booklet",
+    "manual",
+    "phdthesis",
+    "mastersthesis",
+    "techreport",
+    "proceedings",
+}
 _THESIS = {"phdthesis": "PhD thesis", "mastersthesis": "Master\N{RIGHT SINGLE QUOTATION MARK}s thesis"}
 # Text-mode commands that take one argument and set it in a style (None: argument printed as it is).
-_STYLE = {"emph": "em", "textit": "em", "textsl": "em", "mathit": "em", "textbf": "strong", "mathbf": "strong",
-          "textsuperscript": "sup", "textsubscript": "sub", "textrm": None, "textup": None, "textnormal": None,
-          "textsc": None, "texttt": None, "textsf": None, "mbox": None, "text": None, "mathrm": None}
+_STYLE = {
+    "emph": "em",
+    "textit": "em",
+    "textsl": "em",
+    "mathit": "em",
+    "textbf": "strong",
+    "mathbf": "strong",
+    "textsuperscript": "sup",
+    "textsubscript": "sub",
+    "textrm": None,
+    "textup": None,
+    "textnormal": None,
+    "textsc": None,
+    "texttt": None,
+    "textsf": None,
+    "mbox": None,
+    "text": None,
+    "mathrm": None,
+}
 # Control symbols the codec leaves alone: \{ \} \$ and friends print the character; spacing commands.
-_SYMBOL = {"{": "{", "}": "}", "$": "$", "%": "%", "&": "&", "#": "#", "_": "_", " ": " ", "\n": " ",
-           ",": "\N{THIN SPACE}", ";": "\N{THIN SPACE}", ":": "\N{THIN SPACE}", "/": "", "-": "", "\\": " "}
+_SYMBOL = {
+    "{": "{",
+    "}": "}",
+    "$": "$",
+    "%": "%",
+    "&": "&",
+    "#": "#",
+    "_": "_",
+    " ": " ",
+    "\n": " ",
+    ",": "\N{THIN SPACE}",
+    ";": "\N{THIN SPACE}",
+    ":": "\N{THIN SPACE}",
+    "/": "",
+    "-": "",
+    "\\": " ",
+}
 _DOTLESS = re.compile(r"(\\[`'^\"~=.uvHcd])\s*\{\\([ij])\}")  # \'{\i} -> \'\i, which the codec decodes to í
 
 
 class Reference(Mapping):
     """One entry of references.bib: a read-only mapping of its raw (TeX) fields by case-insensitive name, the
-    person fields (author, editor) included as BibTeX writes them, plus `.key`, `.type` and the pybtex `.entry`."""
+    person fields (author, editor) included as BibTeX writes them, plus `.key`, `.type` and the pybtex
+    `.entry`."""
 
     def __init__(self, key: str, entry: Entry):
         self.key = key
@@ -69,12 +110,14 @@ class Reference(Mapping):
 
 
 def read_bib(path: Path) -> dict[str, Reference]:
-    """Every entry of a BibTeX file by key, in file order (pybtex raises on a duplicate key or a syntax error)."""
+    """Every entry of a BibTeX file by key, in file order (pybtex raises on a duplicate key or a syntax
+    error)."""
     data = parse_file(str(path), bib_format="bibtex")
     return {key: Reference(key, entry) for key, entry in data.entries.items()}
 
 
-# --- TeX field value -> rich text -----------------------------------------------------------------------------
+# --- TeX field value -> rich text ---------------------------------------------------------------------------
+
 
 class _TeX:
     """A small reader for what the ulatex codec leaves: brace groups, text-style commands, control symbols and
@@ -143,7 +186,7 @@ class _TeX:
         s = self.s
         if self.i >= len(s):
             raise self.fail("a trailing backslash")
-        name = re.match(r"[A-Za-z]+|.", s[self.i:], re.S).group(0)
+        name = re.match(r"[A-Za-z]+|.", s[self.i :], re.S).group(0)
         self.i += len(name)
         if name in _SYMBOL:
             return _SYMBOL[name]
@@ -172,7 +215,8 @@ def _plain(value: str, where: str) -> str:
     return _rich(value, where).render_as("text")
 
 
-# --- names ----------------------------------------------------------------------------------------------------
+# --- names --------------------------------------------------------------------------------------------------
+
 
 def _initials(name: str) -> str:
     """'Horace' -> 'H.', 'Jean-Yves' -> 'J.-Y.'; names already given as initials ('J.', 'J.-Y.') are kept."""
@@ -192,7 +236,8 @@ def _person(person: Person, where: str) -> str:
 
 
 def _names(people: list[Person], where: str) -> str:
-    """'A. B. Name', 'A. B. Name and C. Other', 'A. B. Name, C. Other and D. Third'; a final 'others' -> 'et al.'"""
+    """'A. B. Name', 'A. B. Name and C. Other', 'A. B. Name, C. Other and D. Third'; a final 'others' -> 'et
+    al.'"""
     others = bool(people) and str(people[-1]).strip().lower() == "others"
     names = [_person(p, where) for p in (people[:-1] if others else people)]
     if others:
@@ -203,12 +248,14 @@ def _names(people: list[Person], where: str) -> str:
 
 
 def _unescape(value: str) -> str:
-    """A DOI or URL field as it is meant: verbatim but for TeX-escaped \\_ \\% \\& \\# \\~ and surrounding braces."""
+    """A DOI or URL field as it is meant: verbatim but for TeX-escaped \\_ \\% \\& \\# \\~ and surrounding
+    braces."""
     value = re.sub(r"\\([_%&#~$])", r"\1", value.strip())
     return value[1:-1] if value.startswith("{") and value.endswith("}") else value
 
 
-# --- one entry ------------------------------------------------------------------------------------------------
+# --- one entry ----------------------------------------------------------------------------------------------
+
 
 def _join(*pieces, sep: str = ", ") -> Text:
     return Text(sep).join([p for p in pieces if p])
@@ -271,8 +318,11 @@ def format_entry(entry: Reference | Entry) -> str:
     else:  # book, inbook, booklet, manual, proceedings, misc, unpublished, ...
         edition = Text(field("edition"), " edition") if field("edition") else None
         chapter = Text("chapter ", field("chapter")) if field("chapter") else None
-        blocks += [_join(edition, series, chapter, pages(prefix=True)), field("howpublished"),
-                   _join(publisher, field("organization"), field("institution"), field("school"))]
+        blocks += [
+            _join(edition, series, chapter, pages(prefix=True)),
+            field("howpublished"),
+            _join(publisher, field("organization"), field("institution"), field("school")),
+        ]
     blocks.append(field("note"))
 
     doi = _unescape(fields.get("doi", ""))

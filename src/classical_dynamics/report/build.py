@@ -35,6 +35,7 @@ from .math import latex_data_uri
 from .navigation import add_navigation
 from .numbering import NAMES, Numbering
 
+
 class ResultsIndex:
     """Everything under results/: summaries, provenance, timing tables."""
 
@@ -42,19 +43,23 @@ class ResultsIndex:
         self.dir = Path(results_dir)
         self.summaries, self.provenance = {}, {}
         for study in STUDIES:
-            for folder in io.result_folders(self.dir / study):       # whole ones only: ResultError otherwise
+            for folder in io.result_folders(self.dir / study):  # whole ones only: ResultError otherwise
                 self.provenance[(study, folder.name)] = io.check_result_folder(folder)
                 self.summaries[(study, folder.name)] = io.read_json(folder / "summary.json")
 
     def studies(self):
         present = {study for study, _ in self.summaries}
-        return [s for s in STUDIES if s in present]       # in the registry's order
+        return [s for s in STUDIES if s in present]  # in the registry's order
 
     def scenes(self, study):
-        """A study's scenes. A step drawn from other scenes' results (its provenance lists them as input_scenes, as
-        the self-excited gallery's does) is no scene: its figures are shown, its provenance listed, but not counted."""
-        return sorted(scene for s, scene in self.summaries
-                      if s == study and "input_scenes" not in self.provenance[(s, scene)])
+        """A study's scenes. A step drawn from other scenes' results (its provenance lists them as
+        input_scenes, as the self-excited gallery's does) is no scene: its figures are shown, its provenance
+        listed, but not counted."""
+        return sorted(
+            scene
+            for s, scene in self.summaries
+            if s == study and "input_scenes" not in self.provenance[(s, scene)]
+        )
 
     def summary(self, study, scene):
         try:
@@ -82,15 +87,17 @@ def svg_data_uri(svg: bytes) -> str:
     return "data:image/svg+xml;base64," + base64.b64encode(svg).decode("ascii")
 
 
-def figure_html(label: str, number, uri: str, alt: str, caption: str, source: str, rebuild: str,
-                kind: str = "figure") -> Markup:
+def figure_html(
+    label: str, number, uri: str, alt: str, caption: str, source: str, rebuild: str, kind: str = "figure"
+) -> Markup:
     """A numbered figure: the image, its caption, then where it comes from and how to make it again."""
     return Markup(
         f'<figure id="{label}" class="{kind}"><img src="{uri}" alt="{alt}">'
         f'<figcaption><span class="label">Figure {number}.</span> {caption} '
         f'<span class="source">{source}<span class="rebuild">; {rebuild}</span>.'
-        f'</span>'
-        f'</figcaption></figure>')
+        f"</span>"
+        f"</figcaption></figure>"
+    )
 
 
 def unit_html(key, value=None) -> Markup:
@@ -126,7 +133,9 @@ _CODE = re.compile(r"<code>(.*?)</code>", re.S)
 
 def break_points(page: str) -> str:
     """Identifiers and commands may break only after '/', '_' or '-' (a <wbr> there), never mid-word."""
-    return _CODE.sub(lambda m: "<code>" + re.sub(r"(?<=[/_-])(?=[^<>\s])", "<wbr>", m.group(1)) + "</code>", page)
+    return _CODE.sub(
+        lambda m: "<code>" + re.sub(r"(?<=[/_-])(?=[^<>\s])", "<wbr>", m.group(1)) + "</code>", page
+    )
 
 
 class Report:
@@ -136,21 +145,46 @@ class Report:
         self.citations = Citations(read_bib(assets.BIBLIOGRAPHY))
         self.claim_results = {}
         self.ledger = read_ledger(assets.LEDGER, {study: assets.claims_file(study) for study in STUDIES})
-        self._count, self.cited = 0, {}          # numbers shown so far; per scene, where each is first cited
+        self._count, self.cited = 0, {}  # numbers shown so far; per scene, where each is first cited
         self.env = jinja2.Environment(
             loader=jinja2.FileSystemLoader(assets.template_folders()),
             autoescape=jinja2.select_autoescape(["html", "j2"]),
-            undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True, extensions=[InlineMath])
+            undefined=jinja2.StrictUndefined,
+            trim_blocks=True,
+            lstrip_blocks=True,
+            extensions=[InlineMath],
+        )
         self.env.filters["fmt"] = lambda v, sig=4: format_number(v, sig)
         self.env.filters["math"] = lambda text: Markup(render_text(str(text)))
         self.env.globals.update(
-            num=self.num, value=self.value, shortest=shortest, claim_digits=self.claim_digits, unit=unit_html, label_number=self.numbering.label, fig=self.fig, table=self.table, eq=self.eq, ref=self.ref, cite=self.cite,
-            benchmark_fig=self.benchmark_fig, claims=self.claims, stability=self.stability, scenes=self.scenes_table,
-            summary=self.index.summary, rebuild=self.rebuild, study_scenes=self.index.scenes,
-            all_claims=self.all_claims, claim=self.claim, provenance_json=self.provenance_json, ledger=self.ledger,
+            num=self.num,
+            value=self.value,
+            shortest=shortest,
+            claim_digits=self.claim_digits,
+            unit=unit_html,
+            label_number=self.numbering.label,
+            fig=self.fig,
+            table=self.table,
+            eq=self.eq,
+            ref=self.ref,
+            cite=self.cite,
+            benchmark_fig=self.benchmark_fig,
+            claims=self.claims,
+            stability=self.stability,
+            scenes=self.scenes_table,
+            summary=self.index.summary,
+            rebuild=self.rebuild,
+            study_scenes=self.index.scenes,
+            all_claims=self.all_claims,
+            claim=self.claim,
+            provenance_json=self.provenance_json,
+            ledger=self.ledger,
             cited=lambda study, scene: self.cited.get((study, scene), {}),
-            study_title=lambda study: STUDIES[study].title, every_study=list(STUDIES),
-            chapter_template=assets.chapter_template, ledger_folder=assets.LEDGER_SHOWN)
+            study_title=lambda study: STUDIES[study].title,
+            every_study=list(STUDIES),
+            chapter_template=assets.chapter_template,
+            ledger_folder=assets.LEDGER_SHOWN,
+        )
 
     # --- numbers ---------------------------------------------------------------------------
     def _number_link(self, study, scene, name, value, text, unit_key=None):
@@ -160,15 +194,17 @@ class Report:
         self._count += 1
         anchor = f"n{self._count}"
         self.cited.setdefault((study, scene), {}).setdefault(name, anchor)
-        try:                    # a number shown bare (unit=False) may carry a unit the registry lacks
+        try:  # a number shown bare (unit=False) may carry a unit the registry lacks
             unit = plain_text(unit_text(unit_key, value)).strip() if unit_key else ""
         except UnknownUnit:
             unit = str(unit_key)
         full = repr(value) if isinstance(value, float) else str(value)
-        return (f'<a class="num" id="{anchor}" href="#prov-{study}-{scene}" role="button" '
-                f'aria-haspopup="dialog" data-scene="{study}/{scene}" data-key="{html.escape(name, quote=True)}" '
-                f'data-value="{html.escape(full, quote=True)}" data-unit="{html.escape(unit, quote=True)}">'
-                f'{text}</a>')
+        return (
+            f'<a class="num" id="{anchor}" href="#prov-{study}-{scene}" role="button" '
+            f'aria-haspopup="dialog" data-scene="{study}/{scene}" data-key="{html.escape(name, quote=True)}" '
+            f'data-value="{html.escape(full, quote=True)}" data-unit="{html.escape(unit, quote=True)}">'
+            f"{text}</a>"
+        )
 
     def num(self, where: str, name: str, i=None, sig: int = 4, unit: bool = True, scale: float = 1.0):
         """A computed number with its unit, linked to its provenance. where = 'study/scene'."""
@@ -179,8 +215,14 @@ class Report:
             value = value[i]
         if scale != 1.0 and value is not None:
             value = value * scale
-        out = self._number_link(study, scene, name if i is None else f"{name}[{i}]", value,
-                                format_number(value, sig), entry.get("unit"))
+        out = self._number_link(
+            study,
+            scene,
+            name if i is None else f"{name}[{i}]",
+            value,
+            format_number(value, sig),
+            entry.get("unit"),
+        )
         if unit:
             out += str(unit_html(entry.get("unit"), value))
         return Markup(out)
@@ -195,10 +237,14 @@ class Report:
         data = {}
         for (study, scene), prov in sorted(self.index.provenance.items()):
             data[f"{study}/{scene}"] = {
-                "commit": prov.get("commit", "unknown"), "dirty": bool(prov.get("dirty")),
-                "input": prov.get("scene_sha256", ""), "file": f"results/{study}/{scene}/summary.json",
-                "scene": self._scene_file(study, scene), "command": self.rebuild(study, scene),
-                "finished": prov.get("finished", "")}
+                "commit": prov.get("commit", "unknown"),
+                "dirty": bool(prov.get("dirty")),
+                "input": prov.get("scene_sha256", ""),
+                "file": f"results/{study}/{scene}/summary.json",
+                "scene": self._scene_file(study, scene),
+                "command": self.rebuild(study, scene),
+                "finished": prov.get("finished", ""),
+            }
         # </ cannot end the script early: json escapes no slash, so escape it here.
         return Markup(json.dumps(data, sort_keys=True, ensure_ascii=False).replace("</", "<\\/"))
 
@@ -224,32 +270,63 @@ class Report:
             caption += " " + str(extra)
         note = " Measured times: they vary from run to run." if timing else ""
         alt = html.escape(plain_text(meta["caption"]), quote=True)
-        folder = f"{study}/{'timings/' if timing else ''}{scene}"      # relative to report.html in results/
+        folder = f"{study}/{'timings/' if timing else ''}{scene}"  # relative to report.html in results/
         data = meta.get("data")
-        links = (f'<a href="{folder}/{meta["file"]}">SVG</a>'
-                 + (f' · <a href="{folder}/{data}">data (CSV)</a>' if data else "")
-                 + f' · scene <a href="../{self._scene_file(study, scene)}"><code>{study}/{scene}</code></a>')
-        return figure_html(label, number, uri, alt, caption + note, links,
-                           f"rebuild: <code>{self.rebuild(study, scene)}</code>")
+        links = (
+            f'<a href="{folder}/{meta["file"]}">SVG</a>'
+            + (f' · <a href="{folder}/{data}">data (CSV)</a>' if data else "")
+            + f' · scene <a href="../{self._scene_file(study, scene)}"><code>{study}/{scene}</code></a>'
+        )
+        return figure_html(
+            label,
+            number,
+            uri,
+            alt,
+            caption + note,
+            links,
+            f"rebuild: <code>{self.rebuild(study, scene)}</code>",
+        )
 
     def benchmark_fig(self, name: str, label: str, caption: str):
         """A figure a benchmark measured and saved beside its data in benchmarks/results/ (not a build result:
         its caption says where and when it was measured)."""
-        folder = "../benchmarks/results"               # relative to report.html in results/, as scene files are
+        folder = "../benchmarks/results"  # relative to report.html in results/, as scene files are
         uri = svg_data_uri((self.root / "benchmarks" / "results" / f"{name}.svg").read_bytes())
-        links = (f'<a href="{folder}/{name}.svg">SVG</a> · <a href="{folder}/{name}.json">data (JSON)</a>'
-                 f' · measured by <a href="../benchmarks/{name}.py"><code>benchmarks/{name}.py</code></a>')
-        return figure_html(label, self.numbering.label(label), uri, html.escape(plain_text(caption), quote=True),
-                           render_text(caption) + " Measured times.", links,
-                           f"remeasure: <code>python benchmarks/{name}.py</code>", kind="figure benchmark")
+        links = (
+            f'<a href="{folder}/{name}.svg">SVG</a> · <a href="{folder}/{name}.json">data (JSON)</a>'
+            f' · measured by <a href="../benchmarks/{name}.py"><code>benchmarks/{name}.py</code></a>'
+        )
+        return figure_html(
+            label,
+            self.numbering.label(label),
+            uri,
+            html.escape(plain_text(caption), quote=True),
+            render_text(caption) + " Measured times.",
+            links,
+            f"remeasure: <code>python benchmarks/{name}.py</code>",
+            kind="figure benchmark",
+        )
 
     def _scene_file(self, study, scene) -> str:
-        """The input a results folder was computed from, relative to the checkout: its scene file, or for a step
-        drawn from other scenes (the gallery) the code that draws it."""
-        return self.index.provenance[(study, scene)].get("scene_file", f"workflow/scenes/{study}/{scene}.yaml")
+        """The input a results folder was computed from, relative to the checkout: its scene file, or for a
+        step drawn from other scenes (the gallery) the code that draws it."""
+        return self.index.provenance[(study, scene)].get(
+            "scene_file", f"workflow/scenes/{study}/{scene}.yaml"
+        )
 
-    def table(self, where: str, name: str, label: str, columns=None, timing: bool = False, sig: int = 4,
-              rename=None, keep=None, sigs=None, long: bool = False):
+    def table(
+        self,
+        where: str,
+        name: str,
+        label: str,
+        columns=None,
+        timing: bool = False,
+        sig: int = 4,
+        rename=None,
+        keep=None,
+        sigs=None,
+        long: bool = False,
+    ):
         """A results table: headers as the study declared them ("quantity (unit)", with math), numbers
         right-aligned to `sig` figures (per column in `sigs`), columns of whole numbers printed as such.
         keep = {column: [values]} shows the rows whose values are listed (by value, not position, so a
@@ -273,29 +350,42 @@ class Report:
             numeric[c] = pd.api.types.is_numeric_dtype(frame[c]) and not pd.api.types.is_bool_dtype(frame[c])
             cls = ' class="n"' if numeric[c] else ""
             head.append(f"<th{cls}>{_header_html(headers.get(c, c.replace('_', ' ')))}</th>")
-        whole = {c: numeric[c] and frame[c].dropna().map(float.is_integer).all() for c in frame.columns
-                 if pd.api.types.is_float_dtype(frame[c])}
+        whole = {
+            c: numeric[c] and frame[c].dropna().map(float.is_integer).all()
+            for c in frame.columns
+            if pd.api.types.is_float_dtype(frame[c])
+        }
         body = []
         texts = {}
-        for c in frame.columns:                                    # per column: ints stay ints
-            column = [None if v is None or (isinstance(v, float) and math.isnan(v)) else
-                      (int(v) if isinstance(v, float) and whole.get(c) else v) for v in frame[c].tolist()]
+        for c in frame.columns:  # per column: ints stay ints
+            column = [
+                None
+                if v is None or (isinstance(v, float) and math.isnan(v))
+                else (int(v) if isinstance(v, float) and whole.get(c) else v)
+                for v in frame[c].tolist()
+            ]
             texts[c] = format_column(column, (sigs or {}).get(c, sig))
         for i in range(len(frame)):
             cells = []
             for c in frame.columns:
                 text = texts[c][i]
-                cells.append(f'<td class="n">{html.escape(text)}</td>' if numeric[c]
-                             else f"<td>{_cell_html(text)}</td>")
+                cells.append(
+                    f'<td class="n">{html.escape(text)}</td>'
+                    if numeric[c]
+                    else f"<td>{_cell_html(text)}</td>"
+                )
             body.append("<tr>" + "".join(cells) + "</tr>")
         note = " Measured times: they vary from run to run." if timing else ""
-        csv = f'results/{study}/{"timings/" if timing else ""}{scene}/{name}.csv'
+        csv = f"results/{study}/{'timings/' if timing else ''}{scene}/{name}.csv"
         return Markup(
-            f'<figure id="{label}" class="table{" long" if long else ""}"><figcaption><span class="label">Table {number}.</span> '
+            f'<figure id="{label}" class="table{" long" if long else ""}"><figcaption><span '
+            f'class="label">Table {number}.</span> '
             f'{render_text(meta["caption"])}{note} <span class="source">Scene <code>{study}/{scene}</code>, '
-            f'<code>{csv}</code>.</span></figcaption>'
-            f'<div class="scroll"><table><thead><tr>{"".join(head)}</tr></thead><tbody>{"".join(body)}</tbody>'
-            f'</table></div></figure>')
+            f"<code>{csv}</code>.</span></figcaption>"
+            f'<div class="scroll"><table><thead><tr>{"".join(head)}</tr></thead>'
+            f"<tbody>{''.join(body)}</tbody>"
+            f"</table></div></figure>"
+        )
 
     def eq(self, label: str | None = None, caller=None):
         """{% call eq("eq:name") %}LaTeX{% endcall %}: a displayed, numbered equation."""
@@ -319,7 +409,9 @@ class Report:
         if "relative" in check:
             return sig_for_tolerance(claim.computed, relative=check["relative"], cap=8)
         if "absolute" in check:
-            return sig_for_tolerance(reference if reference else claim.computed, absolute=check["absolute"], cap=8)
+            return sig_for_tolerance(
+                reference if reference else claim.computed, absolute=check["absolute"], cap=8
+            )
         if "factor" in check:
             return 2
         return 3
@@ -327,7 +419,9 @@ class Report:
     def claims(self, study):
         if study not in self.claim_results:
             path = assets.claims_file(study)
-            self.claim_results[study] = claims_mod.evaluate(study, path, self.index.entry) if path.exists() else []
+            self.claim_results[study] = (
+                claims_mod.evaluate(study, path, self.index.entry) if path.exists() else []
+            )
         return self.claim_results[study]
 
     def all_claims(self):
@@ -351,9 +445,14 @@ class Report:
         rows = []
         for scene in self.index.scenes(study):
             prov = self.index.provenance[(study, scene)]
-            rows.append({"scene": scene, "title": self.index.summary(study, scene)["title"],
-                         "effects": ", ".join(prov.get("effects_simulated", [])),
-                         "seconds": prov.get("wall_seconds")})
+            rows.append(
+                {
+                    "scene": scene,
+                    "title": self.index.summary(study, scene)["title"],
+                    "effects": ", ".join(prov.get("effects_simulated", [])),
+                    "seconds": prov.get("wall_seconds"),
+                }
+            )
         return rows
 
     # --- the whole --------------------------------------------------------------------------
@@ -367,26 +466,40 @@ class Report:
         path = results_archive_name(self.index.dir, self.root)
         archive = {"name": path.name, "sha256": sha256_file(path)} if path.is_file() else None
         # The report's date: its commit's, so a rebuild does not change it; outside git, its newest result's.
-        date = commit_date(self.root) or max((p.get("finished", "") for p in self.index.provenance.values()),
-                                             default="")
-        css = {name: (assets.TEMPLATES / f"{name}.css").read_text(encoding="utf-8")
-               for name in ("report", "screen", "print")}
+        date = commit_date(self.root) or max(
+            (p.get("finished", "") for p in self.index.provenance.values()), default=""
+        )
+        css = {
+            name: (assets.TEMPLATES / f"{name}.css").read_text(encoding="utf-8")
+            for name in ("report", "screen", "print")
+        }
         return {
-            "studies": studies, "quick": self.quick, "css": css,
+            "studies": studies,
+            "quick": self.quick,
+            "css": css,
             "script": (assets.TEMPLATES / "report.js").read_text(encoding="utf-8"),
-            "git": git, "packages": package_versions(), "machine": machine(),
+            "git": git,
+            "packages": package_versions(),
+            "machine": machine(),
             "results_archive": archive,
-            "cite_this": citation(self.root, git["commit"], bool(git["dirty"]), archive and archive["sha256"], date),
+            "cite_this": citation(
+                self.root, git["commit"], bool(git["dirty"]), archive and archive["sha256"], date
+            ),
             "commit_date": date,
-            "results_packages": first.get("packages", {}), "results_commit": first.get("commit", "unknown"),
-            "build_times": dict(build_times), "provenance": self.index.provenance,
+            "results_packages": first.get("packages", {}),
+            "results_commit": first.get("commit", "unknown"),
+            "build_times": dict(build_times),
+            "provenance": self.index.provenance,
             "scaling": self._benchmark("pipeline_scaling"),
-            "bibliography": lambda: [(i + 1, k, Markup(format_entry(self.citations.entries[k])))
-                                     for i, k in enumerate(self.citations.order)],
+            "bibliography": lambda: [
+                (i + 1, k, Markup(format_entry(self.citations.entries[k])))
+                for i, k in enumerate(self.citations.order)
+            ],
         }
 
     def _benchmark(self, name: str):
-        """A benchmark's saved measurement (benchmarks/results/<name>.json and .svg), or None if it has none."""
+        """A benchmark's saved measurement (benchmarks/results/<name>.json and .svg), or None if it has
+        none."""
         path = self.root / "benchmarks" / "results" / f"{name}.json"
         if not (path.is_file() and path.with_suffix(".svg").is_file()):
             return None
@@ -403,16 +516,18 @@ class Report:
         if self.numbering.missing:
             raise ValueError("unresolved cross-references: " + ", ".join(sorted(self.numbering.missing)))
         claims_mod.require([r for rs in self.claim_results.values() for r in rs])
-        if set(self.index.studies()) == set(STUDIES):        # a partial build lacks some figures
+        if set(self.index.studies()) == set(STUDIES):  # a partial build lacks some figures
             require_figures(self.ledger, set(self.numbering.numbers))
         return break_points(add_navigation(text))
 
 
-def build_report(results_dir: Path, html_path: Path, pdf_path: Path | None = None, *, quick=False,
-                 root: Path = Path(".")) -> None:
+def build_report(
+    results_dir: Path, html_path: Path, pdf_path: Path | None = None, *, quick=False, root: Path = Path(".")
+) -> None:
     report = Report(ResultsIndex(results_dir), root, quick)
     text = report.render()
     io.atomic_write_text(html_path, text)
     if pdf_path is not None:
         from .pdf import html_to_pdf
+
         html_to_pdf(html_path, pdf_path)

@@ -31,17 +31,20 @@ def version(root: Path, commit: str, dirty: bool) -> str:
 
 
 def _person(author: dict) -> Person:
-    if "name" in author:                              # an entity: braces keep BibTeX from splitting it
+    if "name" in author:  # an entity: braces keep BibTeX from splitting it
         return Person("{" + author["name"] + "}")
     return Person(first=author.get("given-names", ""), last=author.get("family-names", ""))
 
 
 def _author_text(author: dict) -> str:
-    return author.get("name") or f'{author.get("family-names", "")}, {author.get("given-names", "")}'.strip(", ")
+    return author.get("name") or f"{author.get('family-names', '')}, {author.get('given-names', '')}".strip(
+        ", "
+    )
 
 
 def citation(root: Path, commit: str, dirty: bool, archive_sha256: str | None = None, date: str = "") -> dict:
-    """The citation of this build (dated `date`, ISO 8601): plain text, BibTeX and the CFF file it comes from."""
+    """The citation of this build (dated `date`, ISO 8601): plain text, BibTeX and the CFF file it comes
+    from."""
     root = Path(root)
     cff_text = (root / "CITATION.cff").read_text(encoding="utf-8")
     cff = yaml.safe_load(cff_text)
@@ -57,9 +60,15 @@ def citation(root: Path, commit: str, dirty: bool, archive_sha256: str | None = 
     key = "classical_dynamics_" + year
     authors = "; ".join(_author_text(a) for a in cff["authors"])
     return {
-        "version": exact, "base_version": cff.get("version"), "year": year, "commit": commit,
-        "title": cff["title"], "authors": authors, "keywords": cff.get("keywords", []),
+        "version": exact,
+        "base_version": cff.get("version"),
+        "year": year,
+        "commit": commit,
+        "title": cff["title"],
+        "authors": authors,
+        "keywords": cff.get("keywords", []),
         "text": f"{authors} ({year}). {cff['title']}. Version {exact}.",
         "bibtex": BibliographyData({key: entry}).to_string("bibtex").strip(),
-        "cff": cff_text.strip(), "license": cff.get("license", ""),
+        "cff": cff_text.strip(),
+        "license": cff.get("license", ""),
     }

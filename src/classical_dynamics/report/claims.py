@@ -2,10 +2,10 @@
 
 studies/<study>/claims.yaml lists a study's claims. Each names the source's value and where it stands,
 the computed number (scene and name in that scene's summary.json), an optional modern value,
-and a check: {absolute: tol}, {relative: tol} or {factor: f} (within a factor f) against the source
-value, or {at_most: x} / {at_least: x} / {equals: x} on the computed value. A failing claim with must_hold: true fails the build.
-Optional: headline: true puts a claim in the report's key results; explanation says why a claim that may
-fail does (a failing claim without one fails the build: the report explains every failure it shows).
+and a check: {absolute: tol}, {relative: tol} or {factor: f} (within a factor f) against the source value, or
+{at_most: x} / {at_least: x} / {equals: x} on the computed value. A failing claim with must_hold: true fails
+the build. Optional: headline: true puts a claim in the report's key results; explanation says why a claim
+that may fail does (a failing claim without one fails the build: the report explains every failure it shows).
 """
 
 from __future__ import annotations
@@ -92,28 +92,49 @@ def evaluate(study: str, claims_file: Path, lookup) -> list[ClaimResult]:
             elif "at_least" in check:
                 passed = computed >= check["at_least"]
             elif "factor" in check:
-                passed = reference is not None and 1 / check["factor"] <= computed / reference <= check["factor"]
+                passed = (
+                    reference is not None and 1 / check["factor"] <= computed / reference <= check["factor"]
+                )
             elif "equals" in check:
                 passed = computed == check["equals"]
             else:
                 raise ValueError(f"claim {claim['id']}: unknown check {check}")
-        results.append(ClaimResult(
-            id=claim["id"], statement=claim["statement"], study=study, scene=spec["scene"],
-            number=spec["number"], computed=computed, unit=claim.get("unit", unit), source=source,
-            modern=claim.get("modern"), check=check, deviation=deviation, relative_deviation=relative,
-            passed=passed, must_hold=bool(claim.get("must_hold", False)), problem=problem,
-            headline=bool(claim.get("headline", False)), explanation=claim.get("explanation", "")))
+        results.append(
+            ClaimResult(
+                id=claim["id"],
+                statement=claim["statement"],
+                study=study,
+                scene=spec["scene"],
+                number=spec["number"],
+                computed=computed,
+                unit=claim.get("unit", unit),
+                source=source,
+                modern=claim.get("modern"),
+                check=check,
+                deviation=deviation,
+                relative_deviation=relative,
+                passed=passed,
+                must_hold=bool(claim.get("must_hold", False)),
+                problem=problem,
+                headline=bool(claim.get("headline", False)),
+                explanation=claim.get("explanation", ""),
+            )
+        )
     return results
 
 
 def require(results: list[ClaimResult]) -> None:
     unexplained = [r for r in results if not r.passed and not r.must_hold and not r.explanation]
     if unexplained:
-        raise ClaimFailure("claims that fail without an explanation (add explanation: to the claim): "
-                           + ", ".join(f"{r.study}/{r.id}" for r in unexplained))
+        raise ClaimFailure(
+            "claims that fail without an explanation (add explanation: to the claim): "
+            + ", ".join(f"{r.study}/{r.id}" for r in unexplained)
+        )
     failed = [r for r in results if r.must_hold and not r.passed]
     if failed:
-        lines = [f"claim '{r.id}' ({r.study}/{r.scene}: {r.number}) failed: computed {r.computed}, "
-                 f"source {r.source.get('value')}, check {r.check}{'; ' + r.problem if r.problem else ''}"
-                 for r in failed]
+        lines = [
+            f"claim '{r.id}' ({r.study}/{r.scene}: {r.number}) failed: computed {r.computed}, "
+            f"source {r.source.get('value')}, check {r.check}{'; ' + r.problem if r.problem else ''}"
+            for r in failed
+        ]
         raise ClaimFailure("must-hold claims failed:\n  " + "\n  ".join(lines))

@@ -23,6 +23,7 @@ SUFFIXES = {".json", ".csv", ".svg"}
 def results_archive_name(results_dir: Path, root: Path = Path(".")) -> Path:
     """results/dist/<name>-<version>-results.tar.gz: the archive whose SHA-256 the report prints."""
     import tomllib
+
     with open(Path(root) / "pyproject.toml", "rb") as handle:
         project = tomllib.load(handle)["project"]
     return Path(results_dir) / "dist" / f"{project['name']}-{project['version']}-results.tar.gz"
@@ -35,8 +36,12 @@ def archive_members(results_dir: Path, with_report: bool = True) -> list[Path]:
     members = [results_dir / name for name in INCLUDE] if with_report else []
     for path in sorted(results_dir.rglob("*")):
         rel = path.relative_to(results_dir)
-        if (path.is_file() and path.suffix in SUFFIXES and rel.parts[0] not in ("dist", "logs")
-                and not any(io.is_staging(part) for part in rel.parts)):
+        if (
+            path.is_file()
+            and path.suffix in SUFFIXES
+            and rel.parts[0] not in ("dist", "logs")
+            and not any(io.is_staging(part) for part in rel.parts)
+        ):
             members.append(path)
     for folder in {p.parent for p in members if p.name == "summary.json"}:
         io.check_result_folder(folder)
@@ -44,8 +49,9 @@ def archive_members(results_dir: Path, with_report: bool = True) -> list[Path]:
 
 
 def make_archive(results_dir: Path, archive: Path, with_report: bool = True) -> None:
-    """Deterministic tar.gz (sorted, fixed times and owners) with a SHA256SUMS of its members inside, and beside
-    it (SHA256SUMS for the dist archive, <prefix>.SHA256SUMS for the results archive) the archive's own sum.
+    """Deterministic tar.gz (sorted, fixed times and owners) with a SHA256SUMS of its members inside, and
+    beside it (SHA256SUMS for the dist archive, <prefix>.SHA256SUMS for the results archive) the archive's own
+    sum.
 
     Each manifest names files relative to the folder it lies in, so `sha256sum -c` checks it there: beside the
     archive for the archive, inside the unpacked <prefix>/ for the members.
@@ -76,7 +82,9 @@ def make_archive(results_dir: Path, archive: Path, with_report: bool = True) -> 
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser(description="the results archive (no report) whose SHA-256 the report prints")
+    parser = argparse.ArgumentParser(
+        description="the results archive (no report) whose SHA-256 the report prints"
+    )
     parser.add_argument("results")
     parser.add_argument("archive")
     args = parser.parse_args()

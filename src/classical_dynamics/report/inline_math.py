@@ -4,7 +4,8 @@ One syntax everywhere: templates, captions written by the studies, table headers
 matplotlib's mathtext) figure labels, so a symbol reads the same in text and figure. The syntax is
 the TeX subset a physicist types without thinking:
 
-    $\\nu_\\mathrm{c}$   $m_1$   $q_1^2$   $e^{2\\mu_1\\varphi_2}$   $(1 - e^2)^{-3/2}$   $\\dot\\psi$   $\\sqrt{bc}$
+    $\\nu_\\mathrm{c}$   $m_1$   $q_1^2$   $e^{2\\mu_1\\varphi_2}$   $(1 - e^2)^{-3/2}$
+    $\\dot\\psi$   $\\sqrt{bc}$
 
 Latin and lower-case Greek letters are italic, digits and upper-case Greek upright, \\mathrm{} and
 \\text{} upright (a label such as the c of "critical"), function names (\\sin, \\ln) upright. Source
@@ -18,35 +19,149 @@ import html
 import re
 
 GREEK = {
-    "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ϵ", "varepsilon": "ε", "zeta": "ζ",
-    "eta": "η", "theta": "θ", "vartheta": "ϑ", "iota": "ι", "kappa": "κ", "lambda": "λ", "mu": "μ", "nu": "ν",
-    "xi": "ξ", "pi": "π", "rho": "ρ", "sigma": "σ", "tau": "τ", "upsilon": "υ", "phi": "φ", "varphi": "φ",
-    "chi": "χ", "psi": "ψ", "omega": "ω",
-    "Gamma": "Γ", "Delta": "Δ", "Theta": "Θ", "Lambda": "Λ", "Xi": "Ξ", "Pi": "Π", "Sigma": "Σ",
-    "Phi": "Φ", "Psi": "Ψ", "Omega": "Ω",
+    "alpha": "α",
+    "beta": "β",
+    "gamma": "γ",
+    "delta": "δ",
+    "epsilon": "ϵ",
+    "varepsilon": "ε",
+    "zeta": "ζ",
+    "eta": "η",
+    "theta": "θ",
+    "vartheta": "ϑ",
+    "iota": "ι",
+    "kappa": "κ",
+    "lambda": "λ",
+    "mu": "μ",
+    "nu": "ν",
+    "xi": "ξ",
+    "pi": "π",
+    "rho": "ρ",
+    "sigma": "σ",
+    "tau": "τ",
+    "upsilon": "υ",
+    "phi": "φ",
+    "varphi": "φ",
+    "chi": "χ",
+    "psi": "ψ",
+    "omega": "ω",
+    "Gamma": "Γ",
+    "Delta": "Δ",
+    "Theta": "Θ",
+    "Lambda": "Λ",
+    "Xi": "Ξ",
+    "Pi": "Π",
+    "Sigma": "Σ",
+    "Phi": "Φ",
+    "Psi": "Ψ",
+    "Omega": "Ω",
 }
 SYMBOLS = {
-    "times": "×", "cdot": "·", "pm": "±", "mp": "∓", "le": "≤", "leq": "≤", "ge": "≥", "geq": "≥",
-    "ne": "≠", "neq": "≠", "approx": "≈", "sim": "∼", "simeq": "≃", "propto": "∝", "to": "→", "rightarrow": "→",
-    "leftarrow": "←", "ll": "≪", "gg": "≫", "equiv": "≡", "infty": "∞", "partial": "∂", "nabla": "∇",
-    "ldots": "…", "dots": "…", "cdots": "⋯", "circ": "°", "prime": "′", "langle": "⟨", "rangle": "⟩",
-    "{": "{", "}": "}", "|": "‖", "%": "%", "sum": "∑", "int": "∫", "odot": "☉", "star": "⋆", "ast": "∗",
-    "in": "∈", "mid": "|", "lvert": "|", "rvert": "|", "lfloor": "⌊", "rfloor": "⌋", "ell": "ℓ", "hbar": "ħ",
-    "oplus": "⊕", "perp": "⊥", "parallel": "∥", "angle": "∠", "degree": "°", "div": "÷",
+    "times": "×",
+    "cdot": "·",
+    "pm": "±",
+    "mp": "∓",
+    "le": "≤",
+    "leq": "≤",
+    "ge": "≥",
+    "geq": "≥",
+    "ne": "≠",
+    "neq": "≠",
+    "approx": "≈",
+    "sim": "∼",
+    "simeq": "≃",
+    "propto": "∝",
+    "to": "→",
+    "rightarrow": "→",
+    "leftarrow": "←",
+    "ll": "≪",
+    "gg": "≫",
+    "equiv": "≡",
+    "infty": "∞",
+    "partial": "∂",
+    "nabla": "∇",
+    "ldots": "…",
+    "dots": "…",
+    "cdots": "⋯",
+    "circ": "°",
+    "prime": "′",
+    "langle": "⟨",
+    "rangle": "⟩",
+    "{": "{",
+    "}": "}",
+    "|": "‖",
+    "%": "%",
+    "sum": "∑",
+    "int": "∫",
+    "odot": "☉",
+    "star": "⋆",
+    "ast": "∗",
+    "in": "∈",
+    "mid": "|",
+    "lvert": "|",
+    "rvert": "|",
+    "lfloor": "⌊",
+    "rfloor": "⌋",
+    "ell": "ℓ",
+    "hbar": "ħ",
+    "oplus": "⊕",
+    "perp": "⊥",
+    "parallel": "∥",
+    "angle": "∠",
+    "degree": "°",
+    "div": "÷",
 }
 SPACES = {",": "\u2009", ";": " ", ":": " ", " ": " ", "quad": "\u2003", "qquad": "\u2003\u2003", "!": ""}
-FUNCTIONS = {"sin", "cos", "tan", "cot", "sec", "csc", "sinh", "cosh", "tanh", "coth", "arcsin", "arccos",
-             "arctan", "ln", "log", "exp", "max", "min", "det", "sgn", "mod", "Re", "Im", "arg", "si", "ci",
-             "sn", "cn", "dn", "am", "erf", "tr"}
-ACCENTS = {"dot": "\u0307", "ddot": "\u0308", "hat": "\u0302", "bar": "\u0304", "tilde": "\u0303",
-           "vec": "\u20d7", "breve": "\u0306"}
+FUNCTIONS = {
+    "sin",
+    "cos",
+    "tan",
+    "cot",
+    "sec",
+    "csc",
+    "sinh",
+    "cosh",
+    "tanh",
+    "coth",
+    "arcsin",
+    "arccos",
+    "arctan",
+    "ln",
+    "log",
+    "exp",
+    "max",
+    "min",
+    "det",
+    "sgn",
+    "mod",
+    "Re",
+    "Im",
+    "arg",
+    "si",
+    "ci",
+    "sn",
+    "cn",
+    "dn",
+    "am",
+    "erf",
+    "tr",
+}
+ACCENTS = {
+    "dot": "\u0307",
+    "ddot": "\u0308",
+    "hat": "\u0302",
+    "bar": "\u0304",
+    "tilde": "\u0303",
+    "vec": "\u20d7",
+    "breve": "\u0306",
+}
 UPRIGHT = {"mathrm", "text", "textrm", "operatorname", "mathup", "rm", "mathsf"}
 BOLD = {"mathbf", "boldsymbol", "bm"}
 FRACTIONS = {("1", "2"): "½", ("1", "3"): "⅓", ("2", "3"): "⅔", ("1", "4"): "¼", ("3", "4"): "¾"}
 IGNORED = {"left", "right", "big", "Big", "bigl", "bigr", "Bigl", "Bigr", "displaystyle", "textstyle"}
 
 _TOKEN = re.compile(r"\\([A-Za-z]+|.)|(\s+)|(.)", re.S)
-_GLUE = re.compile(r"(</span>) (=|&lt;|&gt;|≤|≥|≈) ")      # "ν = 0.5" never breaks at the "="
+_GLUE = re.compile(r"(</span>) (=|&lt;|&gt;|≤|≥|≈) ")  # "ν = 0.5" never breaks at the "="
 _INLINE = re.compile(r"(?<!\\)\$(.+?)(?<!\\)\$", re.S)
 
 
@@ -76,7 +191,7 @@ class _Parser:
     def argument(self, mode: str) -> str:
         """One argument: a {group} or a single token."""
         while (tok := self.peek()) is not None and tok[1]:
-            self.i += 1                                    # TeX skips spaces before an argument
+            self.i += 1  # TeX skips spaces before an argument
         command, space, char = self.next()
         if char == "{":
             return self.sequence(mode, until="}")
@@ -161,9 +276,9 @@ class _Parser:
             return SPACES[command]
         if command in FUNCTIONS:
             while (following := self.peek()) is not None and following[1]:
-                self.i += 1                                   # the source's space becomes the thin one
+                self.i += 1  # the source's space becomes the thin one
             spaced = following is not None and not (following[2] and following[2] in ",.;:)]}(_^")
-            return f'<span class=fn>{command}</span>' + ("\u2009" if spaced else "")
+            return f"<span class=fn>{command}</span>" + ("\u2009" if spaced else "")
         if command in IGNORED:
             return ""
         if command in UPRIGHT:
@@ -180,7 +295,7 @@ class _Parser:
             return re.sub(r"^((?:<[^>]+>)*)([^<])", lambda m: m.group(1) + m.group(2) + mark, inner, count=1)
         if command == "sqrt":
             inner = self.argument(mode)
-            return f'√<span class=radicand>{inner}</span>'
+            return f"√<span class=radicand>{inner}</span>"
         if command in ("frac", "tfrac", "dfrac"):
             num_source = self._peek_group()
             numerator = self.argument(mode)
@@ -188,7 +303,7 @@ class _Parser:
             denominator = self.argument(mode)
             if (num_source, den_source) in FRACTIONS:
                 return FRACTIONS[(num_source, den_source)]
-            wrap = (lambda s: f"({s})" if re.search(r"[ +\u2212]", re.sub(r"<[^>]+>", "", s)) else s)
+            wrap = lambda s: f"({s})" if re.search(r"[ +\u2212]", re.sub(r"<[^>]+>", "", s)) else s
             return f"{wrap(numerator)}/{wrap(denominator)}"
         self.error(f"unknown command \\{command}")
 
@@ -202,7 +317,7 @@ class _Parser:
         command, space, char = self.tokens[j]
         if char == "{":
             text = []
-            for command, space, char in self.tokens[j + 1:]:
+            for command, space, char in self.tokens[j + 1 :]:
                 if char == "}":
                     return "".join(text)
                 if command or space:
@@ -219,14 +334,14 @@ def math_html(source: str) -> str:
     body = parser.sequence("math")
     # a short formula never breaks across lines; a long one may, at its spaces
     kind = "math" if len(re.sub(r"<[^>]+>", "", body)) <= 24 else "math-long"
-    return f'<span class={kind}>{body}</span>'
+    return f"<span class={kind}>{body}</span>"
 
 
 def render_text(text: str) -> str:
     """Plain text with $...$ as HTML: the text escaped, the math converted."""
     out, last = [], 0
     for match in _INLINE.finditer(text):
-        out.append(html.escape(text[last:match.start()], quote=False))
+        out.append(html.escape(text[last : match.start()], quote=False))
         out.append(math_html(match.group(1)))
         last = match.end()
     out.append(html.escape(text[last:], quote=False))

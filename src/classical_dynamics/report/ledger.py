@@ -1,9 +1,9 @@
 """The source ledger: every quantitative statement of a source, and what in the report checks it.
 
-report/ledger/<source>.yaml (in this package) lists a source's statements (where, what it states, its value as printed). Each
-maps to exactly one of: a claim (claim: <study>/<claim id>), a figure (figure: <label>), a reason it is out of
-scope (out_of_scope: why), or, until the report checks it, missing: what would. A statement that maps to
-nothing, to two things, or to a claim or figure that does not exist stops the build.
+report/ledger/<source>.yaml (in this package) lists a source's statements (where, what it states, its value as
+printed). Each maps to exactly one of: a claim (claim: <study>/<claim id>), a figure (figure: <label>), a
+reason it is out of scope (out_of_scope: why), or, until the report checks it, missing: what would. A
+statement that maps to nothing, to two things, or to a claim or figure that does not exist stops the build.
 """
 
 from __future__ import annotations
@@ -27,8 +27,8 @@ class Statement:
     where: str
     states: str
     printed: str
-    kind: str              # one of KINDS
-    target: str            # the claim or figure label, the reason, or what is missing
+    kind: str  # one of KINDS
+    target: str  # the claim or figure label, the reason, or what is missing
 
     @property
     def study(self) -> str | None:
@@ -79,14 +79,24 @@ def read_ledger(ledger_dir: Path, claims_files: dict[str, Path]) -> list[Source]
             seen.add(sid)
             kinds = [k for k in KINDS if entry.get(k)]
             if len(kinds) != 1:
-                raise LedgerError(f"{where} must map to exactly one of {', '.join(KINDS)}; it maps to "
-                                  f"{', '.join(kinds) or 'nothing'}")
+                raise LedgerError(
+                    f"{where} must map to exactly one of {', '.join(KINDS)}; it maps to "
+                    f"{', '.join(kinds) or 'nothing'}"
+                )
             kind, target = kinds[0], str(entry[kinds[0]])
             if kind == "claim" and target not in known_claims:
                 raise LedgerError(f"{where} maps to claim '{target}', which no study's claims.yaml declares")
-            statements.append(Statement(source=key, id=sid, where=str(entry.get("where", "")),
-                                        states=str(entry.get("states", "")), printed=str(entry.get("printed", "")),
-                                        kind=kind, target=target))
+            statements.append(
+                Statement(
+                    source=key,
+                    id=sid,
+                    where=str(entry.get("where", "")),
+                    states=str(entry.get("states", "")),
+                    printed=str(entry.get("printed", "")),
+                    kind=kind,
+                    target=target,
+                )
+            )
         sources.append(Source(key=key, title=data.get("source", {}).get("title", key), statements=statements))
     return sources
 
@@ -96,5 +106,7 @@ def require_figures(sources: list[Source], labels: set[str]) -> None:
     for source in sources:
         for s in source.statements:
             if s.kind == "figure" and s.target not in labels:
-                raise LedgerError(f"{source.key}: statement '{s.id}' maps to figure '{s.target}', which the report "
-                                  "does not draw")
+                raise LedgerError(
+                    f"{source.key}: statement '{s.id}' maps to figure '{s.target}', which the report "
+                    "does not draw"
+                )

@@ -14,7 +14,9 @@ from dataclasses import dataclass, field
 
 _TOKEN = re.compile(
     r'<section id="(?P<sid>[^"]+)" class="(?P<cls>[^"]*)">\s*<h2>(?P<h2>.*?)</h2>'
-    r'|<h3(?: id="(?P<hid>[^"]+)")?>(?P<h3>.*?)</h3>', re.S)
+    r'|<h3(?: id="(?P<hid>[^"]+)")?>(?P<h3>.*?)</h3>',
+    re.S,
+)
 _TAGS = re.compile(r"<[^>]+>")
 CONTENTS_MARK = "<!--contents-->"
 
@@ -23,7 +25,7 @@ CONTENTS_MARK = "<!--contents-->"
 class Heading:
     id: str
     number: str
-    html: str                      # the heading's inner HTML, typeset
+    html: str  # the heading's inner HTML, typeset
     children: list = field(default_factory=list)
 
     @property
@@ -39,8 +41,10 @@ def _heading(tag: str, id_: str, number: str, inner: str, cls: str = "") -> str:
     label = f"{number} {Heading(id_, number, inner).text}".strip()
     secno = f'<span class="secno">{number}</span> ' if number else ""
     attrs = f' id="{id_}"' if tag == "h3" else ""
-    return (f'<{tag}{attrs} data-toc="{html.escape(label, quote=True)}">{secno}{inner}'
-            f'<a class="permalink" href="#{id_}" aria-label="Link to this section">#</a></{tag}>')
+    return (
+        f'<{tag}{attrs} data-toc="{html.escape(label, quote=True)}">{secno}{inner}'
+        f'<a class="permalink" href="#{id_}" aria-label="Link to this section">#</a></{tag}>'
+    )
 
 
 def number_sections(page: str) -> tuple[str, list[Heading]]:
@@ -64,8 +68,9 @@ def number_sections(page: str) -> tuple[str, list[Heading]]:
                 number = ""
             current = Heading(sid, number, match.group("h2"))
             outline.append(current)
-            return (f'<section id="{sid}" class="{match.group("cls")}">'
-                    + _heading("h2", sid, number, match.group("h2")))
+            return f'<section id="{sid}" class="{match.group("cls")}">' + _heading(
+                "h2", sid, number, match.group("h2")
+            )
         inner = match.group("h3")
         if current is None:
             raise ValueError(f"<h3> outside a section: {inner!r}")
@@ -82,6 +87,7 @@ def number_sections(page: str) -> tuple[str, list[Heading]]:
 
 def contents_html(outline: list[Heading]) -> str:
     """The contents, two levels deep: chapters and their sections, each with its number."""
+
     def item(h: Heading, children: str = "") -> str:
         number = f'<span class="secno">{h.number}</span> ' if h.number else ""
         return f'<li><a href="#{h.id}">{number}{h.html}</a>{children}</li>'

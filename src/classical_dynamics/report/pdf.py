@@ -14,20 +14,26 @@ from .. import io
 def _keep_whole_lines(split_first_line):
     """WeasyPrint 70's line splitter, without its one-word first lines.
 
-    A text box that ends in a collapsible space (the text before an <em> or a link) and fits its line only without
-    that space is measured with it: the splitter then takes the line for unbreakable and keeps just its first word,
-    so a paragraph opens with "This" alone on a line. The space hangs in CSS (css-text-3, white-space processing), so
-    the box fits; WeasyPrint's own inline layout already lets a trailing space overflow the line.
+    A text box that ends in a collapsible space (the text before an <em> or a link) and fits its line only
+    without that space is measured with it: the splitter then takes the line for unbreakable and keeps just
+    its first word, so a paragraph opens with "This" alone on a line. The space hangs in CSS (css-text-3,
+    white-space processing), so the box fits; WeasyPrint's own inline layout already lets a trailing space
+    overflow the line.
     """
 
     def split(text, style, context, max_width, *args, **kwargs):
         result = split_first_line(text, style, context, max_width, *args, **kwargs)
         stripped = text.rstrip(" ")
-        if (result[2] is None or stripped == text or not stripped or max_width is None
-                or style["white_space"] not in ("normal", "pre-line")):
+        if (
+            result[2] is None
+            or stripped == text
+            or not stripped
+            or max_width is None
+            or style["white_space"] not in ("normal", "pre-line")
+        ):
             return result
         if split_first_line(stripped, style, context, max_width, *args, **kwargs)[2] is not None:
-            return result                               # it does not fit even without the space: a real break
+            return result  # it does not fit even without the space: a real break
         return split_first_line(text, style, context, max_width + style["font_size"], *args, **kwargs)
 
     return split
@@ -50,12 +56,15 @@ def html_to_pdf(html_path: Path, pdf_path: Path) -> None:
         inline.split_first_line = _keep_whole_lines(inline.split_first_line)
         inline.split_first_line.keeps_whole_lines = True
     document = weasyprint.HTML(filename=str(html_path), media_type="print").render(pdf_variant=None)
-    # Links to the data beside the report stay relative, as in the HTML: WeasyPrint resolves them to file:// URLs
-    # of this machine, which would put its paths in the PDF and make the archive depend on where it was built.
+    # Links to the data beside the report stay relative, as in the HTML: WeasyPrint resolves them to file://
+    # URLs of this machine, which would put its paths in the PDF and make the archive depend on where it was
+    # built.
     folder = Path(html_path).resolve().parent
     for page in document.pages:
-        page.links = [(kind, _relative(target, folder) if kind == "external" else target, rectangle, box)
-                      for kind, target, rectangle, box in page.links]
+        page.links = [
+            (kind, _relative(target, folder) if kind == "external" else target, rectangle, box)
+            for kind, target, rectangle, box in page.links
+        ]
     with tempfile.TemporaryDirectory() as tmp:
         target = Path(tmp) / "report.pdf"
         document.write_pdf(str(target), pdf_variant=None)

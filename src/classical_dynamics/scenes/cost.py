@@ -1,12 +1,13 @@
 """What a scene will cost, estimated from its fields before anything runs, and the budget it must fit.
 
 Each study's `cost(data)` returns the Work its scene asks for: one term per field that sets a size (steps,
-samples, a matrix's order, a span over a step), each with the seconds and megabytes that field will cost on one
-core of the reference machine (2-core AMD EPYC, where the rates in the studies' cost modules were measured).
-The estimate need not be exact: it is there to refuse the scene that would take hours or exhaust memory, in a
-second and with the field named, and to give each job a time and memory limit with room to spare.
+samples, a matrix's order, a span over a step), each with the seconds and megabytes that field will cost on
+one core of the reference machine (2-core AMD EPYC, where the rates in the studies' cost modules were
+measured). The estimate need not be exact: it is there to refuse the scene that would take hours or exhaust
+memory, in a second and with the field named, and to give each job a time and memory limit with room to spare.
 
-The budget is set in one place, `budget:` in workflow/config.yaml; a user with a bigger machine raises it there.
+The budget is set in one place, `budget:` in workflow/config.yaml; a user with a bigger machine raises it
+there.
 """
 
 from __future__ import annotations
@@ -20,24 +21,26 @@ import yaml
 from ..models.earth import JULIAN_YEAR_DAYS
 from .loader import SceneError, lookup
 
-EPS = 2.220446049250313e-16          # double precision: 1 + EPS is the next number after 1
-BASE_MEMORY_MB = 1000                # the interpreter with numpy, scipy, numba and matplotlib loaded: 200-320 MB seen
-TIME_MARGIN, MEMORY_MARGIN = 10, 2   # a job may take this many times its estimate before it is stopped
-MIN_TIME_LIMIT_S = 300               # imports, numba compilation and a slow machine fit in this
+EPS = 2.220446049250313e-16  # double precision: 1 + EPS is the next number after 1
+BASE_MEMORY_MB = 1000  # the interpreter with numpy, scipy, numba and matplotlib loaded: 200-320 MB seen
+TIME_MARGIN, MEMORY_MARGIN = 10, 2  # a job may take this many times its estimate before it is stopped
+MIN_TIME_LIMIT_S = 300  # imports, numba compilation and a slow machine fit in this
 
 
 @dataclass(frozen=True)
 class Work:
     """What one field of a scene asks for."""
-    field: str              # dotted scene field, named when the scene is refused
-    seconds: float          # estimated wall time, one core of the reference machine
+
+    field: str  # dotted scene field, named when the scene is refused
+    seconds: float  # estimated wall time, one core of the reference machine
     memory_mb: float = 0.0  # estimated peak memory above the interpreter's own
-    what: str = ""          # the size in the field's own terms, e.g. "2.0e10 integration steps"
+    what: str = ""  # the size in the field's own terms, e.g. "2.0e10 integration steps"
 
 
 @dataclass(frozen=True)
 class Budget:
     """The most one scene may cost: workflow/config.yaml, `budget:` (these defaults are its values)."""
+
     seconds: float = 900.0
     memory_mb: float = 6000.0
 
@@ -46,8 +49,13 @@ class Budget:
         config = config or {}
         unknown = set(config) - {"seconds", "memory_mb"}
         if unknown:
-            raise SceneError("workflow/config.yaml", f"budget.{sorted(unknown)[0]}", "seconds or memory_mb",
-                             None, has_got=False)
+            raise SceneError(
+                "workflow/config.yaml",
+                f"budget.{sorted(unknown)[0]}",
+                "seconds or memory_mb",
+                None,
+                has_got=False,
+            )
         values = {}
         for key, value in config.items():
             try:
@@ -68,6 +76,7 @@ class Budget:
 @dataclass(frozen=True)
 class Estimate:
     """A scene's estimated cost, and the limits its job runs under."""
+
     seconds: float
     memory_mb: float
 
@@ -89,22 +98,37 @@ def check_budget(path, data: dict, works: list[Work], budget: Budget) -> Estimat
     memory_mb = max((w.memory_mb for w in works), default=0.0)
     if seconds > budget.seconds:
         worst = max(works, key=lambda w: w.seconds)
-        raise SceneError(path, worst.field, f"a scene of at most {budget.seconds:g} s (budget.seconds in "
-                         f"workflow/config.yaml), not an estimated {_duration(seconds)}"
-                         + (f" ({worst.what})" if worst.what else ""), lookup(data, worst.field))
+        raise SceneError(
+            path,
+            worst.field,
+            f"a scene of at most {budget.seconds:g} s (budget.seconds in "
+            f"workflow/config.yaml), not an estimated {_duration(seconds)}"
+            + (f" ({worst.what})" if worst.what else ""),
+            lookup(data, worst.field),
+        )
     if memory_mb > budget.memory_mb:
         worst = max(works, key=lambda w: w.memory_mb)
-        raise SceneError(path, worst.field, f"a scene of at most {budget.memory_mb:g} MB (budget.memory_mb in "
-                         f"workflow/config.yaml), not an estimated {_megabytes(memory_mb)}"
-                         + (f" ({worst.what})" if worst.what else ""), lookup(data, worst.field))
+        raise SceneError(
+            path,
+            worst.field,
+            f"a scene of at most {budget.memory_mb:g} MB (budget.memory_mb in "
+            f"workflow/config.yaml), not an estimated {_megabytes(memory_mb)}"
+            + (f" ({worst.what})" if worst.what else ""),
+            lookup(data, worst.field),
+        )
     return Estimate(seconds=seconds, memory_mb=memory_mb)
 
 
 def check_step(path, field: str, step: float, span: float) -> None:
     """Refuse a step that double precision cannot take: t + step == t well before the end of the span."""
     if not step > 64 * EPS * abs(span):
-        raise SceneError(path, field, f"a step of at least {64 * EPS * abs(span):.3g} (64 ulp of the span "
-                         f"{span:g}: double precision cannot advance time by less)", step)
+        raise SceneError(
+            path,
+            field,
+            f"a step of at least {64 * EPS * abs(span):.3g} (64 ulp of the span "
+            f"{span:g}: double precision cannot advance time by less)",
+            step,
+        )
 
 
 def count(value: float, unit: str) -> str:

@@ -14,9 +14,9 @@ from typing import Callable
 @dataclass(frozen=True)
 class Effect:
     name: str
-    kind: str          # torque, force, tension, deformation, dissipation, excitation, ...
-    summary: str       # one line for the report
-    build: Callable    # build(params, context) -> the component the model calls
+    kind: str  # torque, force, tension, deformation, dissipation, excitation, ...
+    summary: str  # one line for the report
+    build: Callable  # build(params, context) -> the component the model calls
 
 
 class EffectRegistry:
@@ -30,6 +30,7 @@ class EffectRegistry:
                 raise ValueError(f"effect {name!r} registered twice in {self.study}")
             self._effects[name] = Effect(name, kind, summary, build)
             return build
+
         return decorator
 
     def names(self) -> list[str]:
@@ -40,5 +41,4 @@ class EffectRegistry:
 
     def assemble(self, effects: dict, context) -> dict[str, object]:
         """Build the listed effects only, in the scene's order: {name: component}."""
-        return {name: self._effects[name].build(params or {}, context)
-                for name, params in effects.items()}
+        return {name: self._effects[name].build(params or {}, context) for name, params in effects.items()}

@@ -21,8 +21,8 @@ import yaml
 
 SCENE_NAME = re.compile(r"^[a-z0-9_]+$")
 RESERVED_NAMES = {"timings", "logs", "dist"}
-MAX_BYTES = 1_000_000          # a scene is a page of YAML; a megabyte is already a mistake
-MAX_DEPTH = 12                 # the deepest scene nests 4 levels
+MAX_BYTES = 1_000_000  # a scene is a page of YAML; a megabyte is already a mistake
+MAX_DEPTH = 12  # the deepest scene nests 4 levels
 # Files an editor or a merge leaves beside the scenes: never scenes, never an error.
 LEFTOVER = re.compile(r"^(\.|#)|(~|\.sw[a-p]|\.bak|\.orig|\.tmp|\.rej)$")
 
@@ -56,7 +56,7 @@ class Scene:
     data: dict
     sha256: str
     effects: dict = field(default_factory=dict)
-    estimate: object = None         # scenes.cost.Estimate, once the study has costed the scene
+    estimate: object = None  # scenes.cost.Estimate, once the study has costed the scene
 
     @property
     def title(self) -> str:
@@ -72,13 +72,15 @@ class _UniqueKeyLoader(yaml.SafeLoader):
     def compose_node(self, parent, index):
         if self.check_event(yaml.AliasEvent):
             event = self.peek_event()
-            raise yaml.composer.ComposerError(None, None, f"an alias (*{event.anchor}): scenes take no aliases",
-                                              event.start_mark)
+            raise yaml.composer.ComposerError(
+                None, None, f"an alias (*{event.anchor}): scenes take no aliases", event.start_mark
+            )
         self.depth += 1
         try:
             if self.depth > MAX_DEPTH:
-                raise yaml.composer.ComposerError(None, None, f"nesting deeper than {MAX_DEPTH} levels",
-                                                  self.peek_event().start_mark)
+                raise yaml.composer.ComposerError(
+                    None, None, f"nesting deeper than {MAX_DEPTH} levels", self.peek_event().start_mark
+                )
             return super().compose_node(parent, index)
         finally:
             self.depth -= 1
@@ -90,15 +92,23 @@ def _construct_mapping(loader, node, deep=False):
         key = loader.construct_object(key_node, deep=deep)
         if key in seen:
             raise yaml.constructor.ConstructorError(
-                None, None, f"key {key!r} is given twice", key_node.start_mark)
+                None, None, f"key {key!r} is given twice", key_node.start_mark
+            )
         seen.add(key)
     return yaml.SafeLoader.construct_mapping(loader, node, deep)
 
 
 _UniqueKeyLoader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _construct_mapping)
 
-_TYPE_WORDS = {"number": "a number", "integer": "an integer", "string": "a string",
-               "object": "a mapping", "array": "a list", "boolean": "true or false", "null": "nothing"}
+_TYPE_WORDS = {
+    "number": "a number",
+    "integer": "an integer",
+    "string": "a string",
+    "object": "a mapping",
+    "array": "a list",
+    "boolean": "true or false",
+    "null": "nothing",
+}
 
 
 def _type_words(kind) -> str:
@@ -155,8 +165,9 @@ def read_bytes(path: Path) -> bytes:
     except OSError as exc:
         raise SceneError(path, "(file)", "a readable file", exc.strerror) from None
     if stat.S_ISLNK(info.st_mode):
-        raise SceneError(path, "(file)", "a regular file, not a symbolic link (copy the scene instead)",
-                         os.readlink(path))
+        raise SceneError(
+            path, "(file)", "a regular file, not a symbolic link (copy the scene instead)", os.readlink(path)
+        )
     if not stat.S_ISREG(info.st_mode):
         raise SceneError(path, "(file)", "a regular file, not a device, pipe or folder", None, has_got=False)
     if info.st_size > MAX_BYTES:
@@ -166,7 +177,7 @@ def read_bytes(path: Path) -> bytes:
             data = handle.read(MAX_BYTES + 1)
     except OSError as exc:
         raise SceneError(path, "(file)", "a readable file", exc.strerror) from None
-    if len(data) > MAX_BYTES:               # grew since the stat
+    if len(data) > MAX_BYTES:  # grew since the stat
         raise SceneError(path, "(file)", f"at most {MAX_BYTES // 1000} kB of YAML", "more")
     return data
 
@@ -176,7 +187,9 @@ def read_yaml(path: Path, data: bytes | None = None) -> object:
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as exc:
-        raise SceneError(path, "(file)", "UTF-8 text", f"byte {exc.start}: {data[exc.start:exc.start + 1]!r}") from None
+        raise SceneError(
+            path, "(file)", "UTF-8 text", f"byte {exc.start}: {data[exc.start : exc.start + 1]!r}"
+        ) from None
     try:
         return yaml.load(text, Loader=_UniqueKeyLoader)
     except yaml.YAMLError as exc:
@@ -184,19 +197,30 @@ def read_yaml(path: Path, data: bytes | None = None) -> object:
         where = f"line {mark.line + 1}, column {mark.column + 1}" if mark else "(unknown line)"
         problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
         raise SceneError(path, f"(YAML at {where})", "valid YAML", problem) from None
-    except RecursionError:                  # belt and braces: MAX_DEPTH stops nesting first
-        raise SceneError(path, "(YAML)", f"nesting of at most {MAX_DEPTH} levels", None, has_got=False) from None
+    except RecursionError:  # belt and braces: MAX_DEPTH stops nesting first
+        raise SceneError(
+            path, "(YAML)", f"nesting of at most {MAX_DEPTH} levels", None, has_got=False
+        ) from None
 
 
-def load_scene(path: Path | str, study: str, schema: dict, known_effects: Iterable[str],
-               check: Callable[[Path, dict], None] | None = None) -> Scene:
+def load_scene(
+    path: Path | str,
+    study: str,
+    schema: dict,
+    known_effects: Iterable[str],
+    check: Callable[[Path, dict], None] | None = None,
+) -> Scene:
     """Read and fully validate one scene; raise SceneError on the first problem."""
     path = Path(path)
     name = path.stem
     if path.suffix != ".yaml" or not SCENE_NAME.match(name) or name in RESERVED_NAMES:
-        raise SceneError(path, "(file name)",
-                         "a name of lower-case letters, digits and _ ending in .yaml, not "
-                         + ", ".join(sorted(RESERVED_NAMES)), path.name)
+        raise SceneError(
+            path,
+            "(file name)",
+            "a name of lower-case letters, digits and _ ending in .yaml, not "
+            + ", ".join(sorted(RESERVED_NAMES)),
+            path.name,
+        )
     raw = read_bytes(path)
     data = read_yaml(path, raw)
     if not isinstance(data, dict):
@@ -211,8 +235,9 @@ def load_scene(path: Path | str, study: str, schema: dict, known_effects: Iterab
     if isinstance(effects, dict):
         for effect in effects:
             if effect not in known:
-                raise SceneError(path, f"effects.{effect}",
-                                 "a known effect: " + ", ".join(known), effect, has_got=False)
+                raise SceneError(
+                    path, f"effects.{effect}", "a known effect: " + ", ".join(known), effect, has_got=False
+                )
     validator = jsonschema.Draft202012Validator(schema)
     error = jsonschema.exceptions.best_match(validator.iter_errors(data), key=_depth_first)
     if error is not None:
@@ -223,11 +248,14 @@ def load_scene(path: Path | str, study: str, schema: dict, known_effects: Iterab
             check(path, data)
         except SceneError:
             raise
-        except (ArithmeticError, ValueError, TypeError) as exc:     # e.g. 1e308 squared in a physical check
-            raise SceneError(path, "(values)", "numbers the model can evaluate", f"{type(exc).__name__}: {exc}") from None
-    digest = hashlib.sha256(raw).hexdigest()                      # the bytes that were parsed
-    return Scene(name=name, study=study, path=path, data=data, sha256=digest,
-                 effects=dict(data.get("effects") or {}))
+        except (ArithmeticError, ValueError, TypeError) as exc:  # e.g. 1e308 squared in a physical check
+            raise SceneError(
+                path, "(values)", "numbers the model can evaluate", f"{type(exc).__name__}: {exc}"
+            ) from None
+    digest = hashlib.sha256(raw).hexdigest()  # the bytes that were parsed
+    return Scene(
+        name=name, study=study, path=path, data=data, sha256=digest, effects=dict(data.get("effects") or {})
+    )
 
 
 def _depth_first(error):

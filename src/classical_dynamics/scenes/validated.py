@@ -1,9 +1,9 @@
 """Scene validation remembered between parses of the Snakefile.
 
 A scene is validated again only when its bytes, its schema, the package's code or the budget change: Snakemake
-parses the Snakefile for every command (a dry run, --unlock, each job on a cluster), and validating every scene
-each time cost seconds. The record, {scene file: {digest, estimated seconds and MB}}, lives in .snakemake/; a scene
-that fails is never recorded, so it fails again on the next parse.
+parses the Snakefile for every command (a dry run, --unlock, each job on a cluster), and validating every
+scene each time cost seconds. The record, {scene file: {digest, estimated seconds and MB}}, lives in
+.snakemake/; a scene that fails is never recorded, so it fails again on the next parse.
 """
 
 from __future__ import annotations
@@ -18,12 +18,18 @@ from ..provenance import code_digest
 from .cost import Budget, Estimate
 from .loader import SceneError, read_bytes
 
-def validate_all(scenes: Iterable[tuple[str, Path, Path]], validate: Callable, record: Path,
-                 budget: Budget, optional: Callable[[str, Path], bool] = lambda study, scene: False
-                 ) -> tuple[dict[str, Estimate], list[SceneError]]:
-    """({scene file: Estimate}, errors) after validate(study, scene, budget) for every (study, scene, the study's
-    schema file) not recorded as valid with its present bytes and schema. The first SceneError of a scene not optional(study, scene) propagates (the
-    scenes validated before it are still recorded); those of optional scenes are returned."""
+
+def validate_all(
+    scenes: Iterable[tuple[str, Path, Path]],
+    validate: Callable,
+    record: Path,
+    budget: Budget,
+    optional: Callable[[str, Path], bool] = lambda study, scene: False,
+) -> tuple[dict[str, Estimate], list[SceneError]]:
+    """({scene file: Estimate}, errors) after validate(study, scene, budget) for every (study, scene, the
+    study's schema file) not recorded as valid with its present bytes and schema. The first SceneError of a
+    scene not optional(study, scene) propagates (the scenes validated before it are still recorded); those of
+    optional scenes are returned."""
     try:
         known = json.loads(Path(record).read_text(encoding="utf-8"))
     except (OSError, ValueError):
@@ -48,7 +54,7 @@ def validate_all(scenes: Iterable[tuple[str, Path, Path]], validate: Callable, r
                 entry = {"digest": digest, "seconds": estimate.seconds, "memory_mb": estimate.memory_mb}
             valid[key] = entry
     finally:
-        merged = {**known, **valid}             # scenes not needed by this command keep their record
+        merged = {**known, **valid}  # scenes not needed by this command keep their record
         merged = {key: entry for key, entry in merged.items() if Path(key).exists()}
         if merged != known:
             io.atomic_write_text(record, json.dumps(merged, indent=1, sort_keys=True) + "\n")

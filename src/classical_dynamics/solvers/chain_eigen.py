@@ -29,14 +29,14 @@ def symmetric_tridiagonal(s, d, m, ends: str):
     s, m = np.asarray(s, float), np.asarray(m, float)
     n = m.size
     diag = np.zeros(n) if d is None else np.array(d, float)
-    if ends == "fixed-free":       # segments 0..n-1; segment 0 to the support
+    if ends == "fixed-free":  # segments 0..n-1; segment 0 to the support
         diag += s
         diag[:-1] += s[1:]
         off = -s[1:]
-    elif ends == "fixed-fixed":    # segments 0..n; 0 and n to the supports
+    elif ends == "fixed-fixed":  # segments 0..n; 0 and n to the supports
         diag += s[:-1] + s[1:]
         off = -s[1:-1]
-    elif ends == "free-free":      # segments 0..n-2 between neighbours
+    elif ends == "free-free":  # segments 0..n-2 between neighbours
         diag[:-1] += s
         diag[1:] += s
         off = -s.copy()

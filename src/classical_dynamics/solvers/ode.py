@@ -25,14 +25,14 @@ _NO_TIMES = np.zeros(0)
 _NO_TIMES.flags.writeable = False
 _NO_EVENTS = np.zeros(0, dtype=np.int64)
 _NO_EVENTS.flags.writeable = False
-RTOL_FLOOR = 100 * EPS            # below this a double cannot honour rtol (scipy clamps it silently)
+RTOL_FLOOR = 100 * EPS  # below this a double cannot honour rtol (scipy clamps it silently)
 COMPILED = ("dopri5", "dop853")
 PEERS = ("scipy:RK45", "scipy:DOP853", "scipy:Radau", "scipy:BDF", "scipy:LSODA", "scipy:RK23")
 
 
 @dataclass(frozen=True)
 class Problem:
-    rhs: Callable                      # numba-compiled f(t, y, p, out)
+    rhs: Callable  # numba-compiled f(t, y, p, out)
     y0: np.ndarray
     t_span: tuple
     params: np.ndarray = field(default_factory=lambda: np.zeros(0))
@@ -56,22 +56,24 @@ class Problem:
 def require_signature(func):
     """The integrators take f(t, y, p, out) compiled with RHS_SIG (see runge_kutta.rhs_function)."""
     if rk.RHS_SIG.args not in getattr(func, "signatures", []):
-        raise TypeError(f"{getattr(func, '__name__', func)} must be compiled with the integrators' signature: "
-                        "decorate it with classical_dynamics.solvers.runge_kutta.rhs_function")
+        raise TypeError(
+            f"{getattr(func, '__name__', func)} must be compiled with the integrators' signature: "
+            "decorate it with classical_dynamics.solvers.runge_kutta.rhs_function"
+        )
 
 
 @dataclass(frozen=True)
 class Events:
-    g: Callable                        # numba g(t, y, p, out) filling n values
+    g: Callable  # numba g(t, y, p, out) filling n values
     n: int
-    directions: tuple = ()             # +1 upward only, -1 downward only, 0 both (default)
+    directions: tuple = ()  # +1 upward only, -1 downward only, 0 both (default)
     terminal: tuple = ()
 
 
 @dataclass
 class Solution:
     status: str
-    t: float                           # where the run ended (t1, a terminal event, or the blow-up time)
+    t: float  # where the run ended (t1, a terminal event, or the blow-up time)
     y: np.ndarray
     t_eval: np.ndarray
     y_eval: np.ndarray
@@ -97,15 +99,28 @@ def check_inputs(rtol=None, atol=None, h=None):
         if not (rtol > 0 and atol is not None and atol > 0):
             raise ValueError(f"tolerances must be positive, got rtol={rtol}, atol={atol}")
         if rtol < RTOL_FLOOR:
-            raise ValueError(f"rtol={rtol:g} is below 100*eps = {RTOL_FLOOR:.3g}, which double precision cannot "
-                             "honour (scipy would silently clamp it); use an exact reference or mpmath instead")
+            raise ValueError(
+                f"rtol={rtol:g} is below 100*eps = {RTOL_FLOOR:.3g}, which double precision cannot "
+                "honour (scipy would silently clamp it); use an exact reference or mpmath instead"
+            )
     if h is not None and not h > 0:
         raise ValueError(f"step size must be positive, got h={h}")
 
 
-def solve(problem: Problem, method: str = "dop853", *, rtol: float = 1e-8, atol: float = 1e-11, t_eval=None,
-          events: Events | None = None, max_steps: int = 10**8, bound: float = 1e12, subdivisions: int = 8,
-          record_steps: bool = False, specialize: bool = False) -> Solution:
+def solve(
+    problem: Problem,
+    method: str = "dop853",
+    *,
+    rtol: float = 1e-8,
+    atol: float = 1e-11,
+    t_eval=None,
+    events: Events | None = None,
+    max_steps: int = 10**8,
+    bound: float = 1e12,
+    subdivisions: int = 8,
+    record_steps: bool = False,
+    specialize: bool = False,
+) -> Solution:
     """Integrate `problem` with `method`. With no t_eval, events or step record the final-state loop runs
     (the same steps, without the machinery); specialize=True compiles it for this right-hand side (see
     runge_kutta.specialized_final_state): the fastest path, for sweeps and benchmarks."""
@@ -115,16 +130,39 @@ def solve(problem: Problem, method: str = "dop853", *, rtol: float = 1e-8, atol:
         raise ValueError(f"unknown method {method!r}; known: {', '.join(COMPILED + PEERS)}")
     if t_eval is None and events is None and not record_steps and method in rk.TABLEAUS:
         # the final state only: the lean loop, and as little Python around it as possible
-        args = (problem.params, t0, t1, problem.y0, float(rtol), float(atol), *rk.TABLEAUS[method].stepping_arrays(),
-                int(max_steps), float(bound))
+        args = (
+            problem.params,
+            t0,
+            t1,
+            problem.y0,
+            float(rtol),
+            float(atol),
+            *rk.TABLEAUS[method].stepping_arrays(),
+            int(max_steps),
+            float(bound),
+        )
         if specialize:
             status, t, y, nfev, nacc, nrej = rk.specialized_final_state(problem.rhs)(*args)
         else:
             status, t, y, nfev, nacc, nrej = rk.final_state(problem.rhs, *args)
-        if status != rk.BLOW_UP:          # a blow-up is located on the dense output by the full loop below
+        if status != rk.BLOW_UP:  # a blow-up is located on the dense output by the full loop below
             rows = np.zeros((0, y.size))
-            return Solution(rk.STATUS[status], t, y, _NO_TIMES, rows, nfev, nacc, nrej, _NO_TIMES, rows, _NO_TIMES,
-                            rows, _NO_EVENTS, method)
+            return Solution(
+                rk.STATUS[status],
+                t,
+                y,
+                _NO_TIMES,
+                rows,
+                nfev,
+                nacc,
+                nrej,
+                _NO_TIMES,
+                rows,
+                _NO_TIMES,
+                rows,
+                _NO_EVENTS,
+                method,
+            )
     t_eval = np.zeros(0) if t_eval is None else np.ascontiguousarray(t_eval, dtype=float)
     if t_eval.size and (np.any(np.diff(t_eval) < 0) or t_eval[0] < t0 or t_eval[-1] > t1):
         raise ValueError("t_eval must be increasing and inside the time span")
@@ -137,9 +175,25 @@ def solve(problem: Problem, method: str = "dop853", *, rtol: float = 1e-8, atol:
     terminal = np.array(events.terminal or (False,) * n_events if events else (False,), dtype=np.bool_)
     # the right-hand side goes in as itself (numba's direct calling convention, the fast path per call);
     # the event function by address (usually the no-op: converting it at every call would cost ~20 us)
-    out = rk.integrate(problem.rhs, problem.params, t0, t1, problem.y0, float(rtol), float(atol),
-                       *tableau.arrays(), t_eval, int(max_steps), float(bound), rk.by_address(g), n_events,
-                       directions, terminal, int(subdivisions), bool(record_steps))
+    out = rk.integrate(
+        problem.rhs,
+        problem.params,
+        t0,
+        t1,
+        problem.y0,
+        float(rtol),
+        float(atol),
+        *tableau.arrays(),
+        t_eval,
+        int(max_steps),
+        float(bound),
+        rk.by_address(g),
+        n_events,
+        directions,
+        terminal,
+        int(subdivisions),
+        bool(record_steps),
+    )
     status, t, y, y_eval, nfev, nacc, nrej, ts, ys, et, ey, ei = out
     return Solution(rk.STATUS[status], t, y, t_eval, y_eval, nfev, nacc, nrej, ts, ys, et, ey, ei, method)
 
@@ -151,25 +205,36 @@ def _solve_scipy(problem, method, rtol, atol, t_eval, events, record_steps):
     rhs = problem.rhs
 
     def fun(t, y):
-        y = np.ascontiguousarray(y, dtype=float)          # scipy may pass a strided view
+        y = np.ascontiguousarray(y, dtype=float)  # scipy may pass a strided view
         out = np.empty_like(y)
         rhs(t, y, p, out)
         return out
 
     scipy_events = None
     if events is not None:
+
         def make(e):
             def event(t, y):
                 out = np.empty(events.n)
                 events.g(t, np.ascontiguousarray(y, dtype=float), p, out)
                 return out[e]
+
             event.terminal = bool(events.terminal[e]) if events.terminal else False
             event.direction = float(events.directions[e]) if events.directions else 0.0
             return event
+
         scipy_events = [make(e) for e in range(events.n)]
-    result = solve_ivp(fun, problem.t_span, problem.y0, method=method.split(":")[1], rtol=rtol, atol=atol,
-                       t_eval=t_eval if t_eval.size else None, events=scipy_events,
-                       dense_output=False)
+    result = solve_ivp(
+        fun,
+        problem.t_span,
+        problem.y0,
+        method=method.split(":")[1],
+        rtol=rtol,
+        atol=atol,
+        t_eval=t_eval if t_eval.size else None,
+        events=scipy_events,
+        dense_output=False,
+    )
     n = problem.y0.size
     y_eval = result.y.T if t_eval.size else np.zeros((0, n))
     ev_t, ev_y, ev_i = [], [], []
@@ -182,9 +247,22 @@ def _solve_scipy(problem, method, rtol, atol, t_eval, events, record_steps):
     status = {0: "success", 1: "terminal event", -1: "failed"}[result.status]
     t_steps = result.t if (record_steps and not t_eval.size) else np.zeros(0)
     y_steps = result.y.T if (record_steps and not t_eval.size) else np.zeros((0, n))
-    return Solution(status, float(result.t[-1]), result.y[:, -1].copy(), t_eval, y_eval, int(result.nfev),
-                    len(result.t) - 1, 0, t_steps, y_steps, np.asarray(ev_t)[order],
-                    np.asarray(ev_y).reshape(-1, n)[order], np.asarray(ev_i, dtype=int)[order], method)
+    return Solution(
+        status,
+        float(result.t[-1]),
+        result.y[:, -1].copy(),
+        t_eval,
+        y_eval,
+        int(result.nfev),
+        len(result.t) - 1,
+        0,
+        t_steps,
+        y_steps,
+        np.asarray(ev_t)[order],
+        np.asarray(ev_y).reshape(-1, n)[order],
+        np.asarray(ev_i, dtype=int)[order],
+        method,
+    )
 
 
 def compile_time(problem: Problem, method: str = "dop853") -> float:
@@ -198,8 +276,29 @@ def compile_time(problem: Problem, method: str = "dop853") -> float:
     return first - (time.perf_counter() - start)
 
 
-@njit((rk.FUNC, rk.MAT, rk.F64, rk.F64, rk.MAT, rk.F64, rk.F64, rk.I64, rk.MAT, rk.VEC, rk.VEC, rk.VEC, rk.VEC,
-       rk.MAT, rk.MAT, rk.VEC, rk.VEC, rk.F64), cache=True)
+@njit(
+    (
+        rk.FUNC,
+        rk.MAT,
+        rk.F64,
+        rk.F64,
+        rk.MAT,
+        rk.F64,
+        rk.F64,
+        rk.I64,
+        rk.MAT,
+        rk.VEC,
+        rk.VEC,
+        rk.VEC,
+        rk.VEC,
+        rk.MAT,
+        rk.MAT,
+        rk.VEC,
+        rk.VEC,
+        rk.F64,
+    ),
+    cache=True,
+)
 def _batch(f, P, t0, t1, Y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extra, C_extra, t_eval, bound):
     m, n = Y0.shape
     out = np.full((m, t_eval.size, n), np.nan)
@@ -209,14 +308,50 @@ def _batch(f, P, t0, t1, Y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extra, 
     directions = np.zeros(1, dtype=np.int64)
     terminal = np.zeros(1, dtype=np.bool_)
     for i in range(m):
-        r = rk.integrate(f, P[i], t0, t1, Y0[i], rtol, atol, kind, A, B, C, E5, E3, dense, A_extra, C_extra,
-                         t_eval, 10**8, bound, rk._no_events, 0, directions, terminal, 1, False)
+        r = rk.integrate(
+            f,
+            P[i],
+            t0,
+            t1,
+            Y0[i],
+            rtol,
+            atol,
+            kind,
+            A,
+            B,
+            C,
+            E5,
+            E3,
+            dense,
+            A_extra,
+            C_extra,
+            t_eval,
+            10**8,
+            bound,
+            rk._no_events,
+            0,
+            directions,
+            terminal,
+            1,
+            False,
+        )
         status[i], t_end[i], final[i], out[i] = r[0], r[1], r[2], r[3]
     return status, t_end, final, out
 
 
-def solve_batch(rhs, Y0, t_span, params, method="dop853", *, rtol=1e-8, atol=1e-11, t_eval=None, bound=1e12,
-                specialize=False):
+def solve_batch(
+    rhs,
+    Y0,
+    t_span,
+    params,
+    method="dop853",
+    *,
+    rtol=1e-8,
+    atol=1e-11,
+    t_eval=None,
+    bound=1e12,
+    specialize=False,
+):
     """Many initial conditions (rows of Y0; params one row each or shared) in one compiled call.
 
     Without t_eval only the final states are computed, by the final-state loop (specialize=True: compiled
@@ -226,15 +361,17 @@ def solve_batch(rhs, Y0, t_span, params, method="dop853", *, rtol=1e-8, atol=1e-
     require_signature(rhs)
     Y0 = np.ascontiguousarray(Y0, dtype=float)
     P = np.atleast_1d(np.asarray(params, dtype=float))
-    P = np.array(np.broadcast_to(P, (Y0.shape[0], P.shape[-1])), dtype=float, order="C")   # writable: numba's type
+    # writable: numba's type
+    P = np.array(np.broadcast_to(P, (Y0.shape[0], P.shape[-1])), dtype=float, order="C")
     for row in Y0:
-        Problem(rhs, row, t_span)           # checks the state and the span
+        Problem(rhs, row, t_span)  # checks the state and the span
     check_inputs(rtol, atol)
     t_eval = np.zeros(0) if t_eval is None else np.ascontiguousarray(t_eval, dtype=float)
     t0, t1 = float(t_span[0]), float(t_span[1])
     if t_eval.size:
-        status, t_end, final, out = _batch(rhs, P, t0, t1, Y0, float(rtol), float(atol),
-                                           *rk.TABLEAUS[method].arrays(), t_eval, float(bound))
+        status, t_end, final, out = _batch(
+            rhs, P, t0, t1, Y0, float(rtol), float(atol), *rk.TABLEAUS[method].arrays(), t_eval, float(bound)
+        )
         return [rk.STATUS[s] for s in status], t_end, final, out
     args = (P, t0, t1, Y0, float(rtol), float(atol), *rk.TABLEAUS[method].arrays()[:6], float(bound))
     if specialize:
@@ -242,7 +379,9 @@ def solve_batch(rhs, Y0, t_span, params, method="dop853", *, rtol=1e-8, atol=1e-
     else:
         status, t_end, final = rk.final_state_rows(rhs, *args)
     for i in np.nonzero(status == rk.BLOW_UP)[0]:
-        sol = solve(Problem(rhs, Y0[i], (t0, t1), P[i]), method, rtol=rtol, atol=atol, bound=bound,
-                    record_steps=True)                   # the full loop, which locates the blow-up
+        # the full loop, which locates the blow-up
+        sol = solve(
+            Problem(rhs, Y0[i], (t0, t1), P[i]), method, rtol=rtol, atol=atol, bound=bound, record_steps=True
+        )
         status[i], t_end[i], final[i] = rk.BLOW_UP, sol.t, sol.y
     return [rk.STATUS[s] for s in status], t_end, final, np.zeros((Y0.shape[0], 0, Y0.shape[1]))

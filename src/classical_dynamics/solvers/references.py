@@ -47,10 +47,10 @@ def ellipj(u, m):
     sign_u = np.where(u < 0, -1.0, 1.0)
     v = np.abs(u)
     half_periods = np.floor(v / (2 * K))
-    v = v - 2 * K * half_periods                       # v in [0, 2K)
+    v = v - 2 * K * half_periods  # v in [0, 2K)
     flip = np.where(np.mod(half_periods, 2) == 1, -1.0, 1.0)
     mirror = v > K
-    w = np.where(mirror, 2 * K - v, v)                 # w in [0, K]
+    w = np.where(mirror, 2 * K - v, v)  # w in [0, K]
     sn, cn, dn, ph = _ellipj_agm(w, m)
     cn = np.where(mirror, -cn, cn)
     return sign_u * flip * sn, flip * cn, dn, ph
@@ -86,7 +86,7 @@ def free_rigid_body_rate_and_parameter(I, m0):
 
 
 def _about_largest_axis(I, w0) -> bool:
-    return float(np.sum(I * w0 * w0 * (I - I[1]))) >= 0.0          # M^2 - 2E I2, summed term by term
+    return float(np.sum(I * w0 * w0 * (I - I[1]))) >= 0.0  # M^2 - 2E I2, summed term by term
 
 
 def _differences(I, w0):
@@ -106,7 +106,7 @@ def _rate_and_parameter(I, w0):
 
 def _free_body_branch(I, w0, t):
     I1, I2, I3 = I
-    s3 = 1.0 if w0[2] >= 0 else -1.0                  # (w1, w2, w3) -> (-w1, w2, -w3) is a symmetry
+    s3 = 1.0 if w0[2] >= 0 else -1.0  # (w1, w2, w3) -> (-w1, w2, -w3) is a symmetry
     w0 = w0 * np.array([s3, 1.0, s3])
     d31, d13 = _differences(I, w0)
     # in the swapped branch numerators and denominators are both negative: the ratios stay positive
@@ -115,9 +115,12 @@ def _free_body_branch(I, w0, t):
     a3 = np.sqrt(max(d13 / (I3 * (I3 - I1)), 0.0))
     rate, m = _rate_and_parameter(I, w0)
     phi0 = np.arctan2(w0[1] / a2 if a2 > 0 else 0.0, w0[0] / a1 if a1 > 0 else 1.0)
-    u0 = special.ellipkinc(phi0, m) if abs(phi0) <= np.pi / 2 else (
-        np.sign(phi0) * 2 * special.ellipk(m) - special.ellipkinc(np.sign(phi0) * np.pi - phi0, m))
-    direction = 1.0 if I3 > I1 else -1.0              # the swapped branch runs Landau's form backwards
+    u0 = (
+        special.ellipkinc(phi0, m)
+        if abs(phi0) <= np.pi / 2
+        else (np.sign(phi0) * 2 * special.ellipk(m) - special.ellipkinc(np.sign(phi0) * np.pi - phi0, m))
+    )
+    direction = 1.0 if I3 > I1 else -1.0  # the swapped branch runs Landau's form backwards
     sn, cn, dn, _ = ellipj(direction * rate * np.asarray(t, float) + u0, m)
     w = np.stack([a1 * cn, a2 * sn, a3 * dn], axis=-1)
     return w * np.array([s3, 1.0, s3])
@@ -161,7 +164,7 @@ def bodewadt(I, I3, torque, omega0, t):
     if lam1 == 0.0:
         integral = t if lam0 == 0.0 else (1 - np.exp(-1j * lam0 * t)) / (1j * lam0)
     else:
-        sign = 1.0 if lam1 > 0 else -1.0               # for lam1 < 0 take the complex conjugate problem
+        sign = 1.0 if lam1 > 0 else -1.0  # for lam1 < 0 take the complex conjugate problem
         a = abs(lam1)
         shift = lam0 / lam1
         scale = np.sqrt(a / np.pi)
@@ -185,7 +188,7 @@ def riccati(m, mu, p0, t):
         return k * np.tan(w * t + np.arctan(p0 / k))
     if m < 0 and mu < 0:
         return k * np.tan(np.arctan(p0 / k) - w * t)
-    s = 1.0 if m > 0 else -1.0                        # m mu < 0: tanh or coth about the equilibria +-k
+    s = 1.0 if m > 0 else -1.0  # m mu < 0: tanh or coth about the equilibria +-k
     if abs(p0) < k:
         return s * k * np.tanh(w * t + s * np.arctanh(p0 / k))
     if abs(p0) == k:

@@ -24,7 +24,7 @@ def _rotate_axis(m, q, axis, I, h):
     c, s = np.cos(theta), np.sin(theta)
     j, k = (axis + 1) % 3, (axis + 2) % 3
     mj, mk = m[j], m[k]
-    m[j] = c * mj + s * mk              # m' = m x omega_axis e_axis: a rotation by -theta about e_axis
+    m[j] = c * mj + s * mk  # m' = m x omega_axis e_axis: a rotation by -theta about e_axis
     m[k] = -s * mj + c * mk
     if q is None:
         return
@@ -147,8 +147,9 @@ def free_body(I, m0, h, n_steps, order=2, sample_every=1, q0=(1.0, 0.0, 0.0, 0.0
     m0 = np.asarray(m0, float)
     if not np.all(np.isfinite(m0)):
         raise ValueError(f"initial angular momentum is not finite: {m0}")
-    return integrate_free(np.asarray(I, float), m0, np.asarray(q0, float), float(h), int(n_steps), int(order),
-                          int(sample_every))
+    return integrate_free(
+        np.asarray(I, float), m0, np.asarray(q0, float), float(h), int(n_steps), int(order), int(sample_every)
+    )
 
 
 def energy(I, m):
@@ -224,7 +225,7 @@ def integrate_symmetric_torqued(A, C, m0, q0, h, n_steps, order, sample_every, t
             t += w * h
             torque(t, q, p, tau)
             m += 0.5 * w * h * tau
-        t = i * h                       # no accumulated rounding in the clock
+        t = i * h  # no accumulated rounding in the clock
         if i % sample_every == 0:
             ms[i // sample_every], qs[i // sample_every] = m, q
     return ms, qs

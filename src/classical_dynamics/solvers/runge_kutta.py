@@ -24,7 +24,7 @@ from scipy.integrate._ivp.rk import RK45 as _RK45
 SAFETY, MIN_FACTOR, MAX_FACTOR = 0.9, 0.2, 10.0
 
 F64, I64, VEC, MAT = types.float64, types.int64, types.float64[::1], types.float64[:, ::1]
-RHS_SIG = types.void(F64, VEC, VEC, VEC)          # f(t, y, p, out)
+RHS_SIG = types.void(F64, VEC, VEC, VEC)  # f(t, y, p, out)
 FUNC = types.FunctionType(RHS_SIG)
 
 
@@ -43,6 +43,7 @@ class _ByAddress(types.WrapperAddressProtocol):
 
     def __init__(self, dispatcher):
         from numba.experimental.function_type import _get_wrapper_address
+
         self.dispatcher = dispatcher
         self._address = _get_wrapper_address(dispatcher, RHS_SIG)
 
@@ -61,10 +62,16 @@ def by_address(dispatcher) -> _ByAddress:
         _BY_ADDRESS[dispatcher] = _ByAddress(dispatcher)
     return _BY_ADDRESS[dispatcher]
 
+
 # status codes of a run
 SUCCESS, TERMINAL_EVENT, BLOW_UP, STEP_TOO_SMALL, MAX_STEPS = 0, 1, 2, 3, 4
-STATUS = {SUCCESS: "success", TERMINAL_EVENT: "terminal event", BLOW_UP: "blow-up",
-          STEP_TOO_SMALL: "step size too small (a singularity?)", MAX_STEPS: "too many steps"}
+STATUS = {
+    SUCCESS: "success",
+    TERMINAL_EVENT: "terminal event",
+    BLOW_UP: "blow-up",
+    STEP_TOO_SMALL: "step size too small (a singularity?)",
+    MAX_STEPS: "too many steps",
+}
 
 
 class Tableau:
@@ -75,7 +82,10 @@ class Tableau:
         self.A, self.B, self.C = (np.ascontiguousarray(x, dtype=float) for x in (A, B, C))
         self.E5, self.E3 = np.ascontiguousarray(E5, dtype=float), np.ascontiguousarray(E3, dtype=float)
         self.dense = np.ascontiguousarray(dense, dtype=float)
-        self.A_extra, self.C_extra = np.ascontiguousarray(A_extra, float), np.ascontiguousarray(C_extra, float)
+        self.A_extra, self.C_extra = (
+            np.ascontiguousarray(A_extra, float),
+            np.ascontiguousarray(C_extra, float),
+        )
 
     def arrays(self):
         return (self.kind, self.A, self.B, self.C, self.E5, self.E3, self.dense, self.A_extra, self.C_extra)
@@ -85,10 +95,22 @@ class Tableau:
         return (self.kind, self.A, self.B, self.C, self.E5, self.E3)
 
 
-DOPRI5 = Tableau("dopri5", 0, 5, _RK45.A, _RK45.B, _RK45.C, _RK45.E, np.zeros(1), _RK45.P,
-                 np.zeros((1, 1)), np.zeros(1))
-DOP853 = Tableau("dop853", 1, 8, _d853.A[:12, :12], _d853.B, _d853.C[:12], _d853.E5, _d853.E3, _d853.D,
-                 _d853.A[13:, :16], _d853.C[13:])
+DOPRI5 = Tableau(
+    "dopri5", 0, 5, _RK45.A, _RK45.B, _RK45.C, _RK45.E, np.zeros(1), _RK45.P, np.zeros((1, 1)), np.zeros(1)
+)
+DOP853 = Tableau(
+    "dop853",
+    1,
+    8,
+    _d853.A[:12, :12],
+    _d853.B,
+    _d853.C[:12],
+    _d853.E5,
+    _d853.E3,
+    _d853.D,
+    _d853.A[13:, :16],
+    _d853.C[13:],
+)
 TABLEAUS = {"dopri5": DOPRI5, "dop853": DOP853}
 
 
@@ -153,7 +175,7 @@ def _step_factor(err, exponent):
     """err ** exponent; for DOP853 (exponent -1/8) by three square roots, a third of the cost of pow."""
     if exponent == -0.125:
         return 1.0 / np.sqrt(np.sqrt(np.sqrt(err)))
-    return err ** exponent
+    return err**exponent
 
 
 @njit(cache=True)
@@ -275,15 +297,68 @@ def _no_events(t, y, p, out):
     pass
 
 
-@njit((FUNC, VEC, F64, F64, VEC, F64, F64, I64, MAT, VEC, VEC, VEC, VEC, MAT, MAT, VEC, VEC, I64, F64, FUNC, I64,
-       types.int64[::1], types.boolean[::1], I64, types.boolean), cache=True)
-def integrate(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extra, C_extra,
-              t_eval, max_steps, bound, g, n_events, directions, terminal, subdivisions, record):
+@njit(
+    (
+        FUNC,
+        VEC,
+        F64,
+        F64,
+        VEC,
+        F64,
+        F64,
+        I64,
+        MAT,
+        VEC,
+        VEC,
+        VEC,
+        VEC,
+        MAT,
+        MAT,
+        VEC,
+        VEC,
+        I64,
+        F64,
+        FUNC,
+        I64,
+        types.int64[::1],
+        types.boolean[::1],
+        I64,
+        types.boolean,
+    ),
+    cache=True,
+)
+def integrate(
+    f,
+    p,
+    t0,
+    t1,
+    y0,
+    rtol,
+    atol,
+    kind,
+    A,
+    B,
+    C,
+    E5,
+    E3,
+    dense,
+    A_extra,
+    C_extra,
+    t_eval,
+    max_steps,
+    bound,
+    g,
+    n_events,
+    directions,
+    terminal,
+    subdivisions,
+    record,
+):
     """The compiled loop. Returns a tuple; see ode.solve for its meaning."""
     n = y0.size
     s = B.size
     order = 5 if kind == 0 else 8
-    exponent = -1.0 / (order if kind == 0 else 8.0)     # error estimator order 4 (dopri5), 7 (dop853)
+    exponent = -1.0 / (order if kind == 0 else 8.0)  # error estimator order 4 (dopri5), 7 (dop853)
     K = np.zeros((s + 1, n))
     f_old = np.empty(n)
     tmp = np.empty(n)
@@ -314,7 +389,7 @@ def integrate(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extr
     n_ev = 0
     g_old = np.empty(max(n_events, 1))
     g_new = np.empty(max(n_events, 1))
-    g_mid = np.empty(max(n_events, 1))    # the events at a bisection point (tmp is the stages' scratch)
+    g_mid = np.empty(max(n_events, 1))  # the events at a bisection point (tmp is the stages' scratch)
     if n_events > 0:
         g(t0, y0, p, g_old)
     naccept = 0
@@ -344,7 +419,11 @@ def integrate(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extr
                 h_next = h * factor
                 accepted = True
             else:
-                h *= MIN_FACTOR if not np.isfinite(err) else max(MIN_FACTOR, SAFETY * _step_factor(err, exponent))
+                h *= (
+                    MIN_FACTOR
+                    if not np.isfinite(err)
+                    else max(MIN_FACTOR, SAFETY * _step_factor(err, exponent))
+                )
                 rejected = True
                 nreject += 1
         if status != SUCCESS:
@@ -420,13 +499,25 @@ def integrate(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extr
                 ts, ys, n_rec = _record(ts, ys, n_rec, t, y)
             break
         t = t_new
-        y, y_new = y_new, y          # swap buffers: no copy, no allocation
+        y, y_new = y_new, y  # swap buffers: no copy, no allocation
         f_old[:] = K[s]
         h = h_next
         if record:
             ts, ys, n_rec = _record(ts, ys, n_rec, t, y)
-    return (status, t, y, y_eval, nfev, naccept, nreject, ts[:n_rec], ys[:n_rec],
-            ev_t[:n_ev], ev_y[:n_ev], ev_i[:n_ev])
+    return (
+        status,
+        t,
+        y,
+        y_eval,
+        nfev,
+        naccept,
+        nreject,
+        ts[:n_rec],
+        ys[:n_rec],
+        ev_t[:n_ev],
+        ev_y[:n_ev],
+        ev_i[:n_ev],
+    )
 
 
 def _final_state_loop(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, max_steps, bound):
@@ -480,7 +571,11 @@ def _final_state_loop(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, max_s
                 h_next = h * factor
                 accepted = True
             else:
-                h *= MIN_FACTOR if not np.isfinite(err) else max(MIN_FACTOR, SAFETY * _step_factor(err, exponent))
+                h *= (
+                    MIN_FACTOR
+                    if not np.isfinite(err)
+                    else max(MIN_FACTOR, SAFETY * _step_factor(err, exponent))
+                )
                 rejected = True
                 nreject += 1
         if status != SUCCESS:
@@ -520,15 +615,19 @@ def final_state_rows(f, P, t0, t1, Y0, rtol, atol, kind, A, B, C, E5, E3, bound)
 def specialized_final_state_rows(rhs):
     """final_state_rows compiled for this right-hand side, the rows shared out over the cores."""
     if rhs not in _SPECIALIZED_ROWS:
+
         def rows(P, t0, t1, Y0, rtol, atol, kind, A, B, C, E5, E3, bound):
             m, n = Y0.shape
             final = np.empty((m, n))
             status = np.empty(m, dtype=np.int64)
             t_end = np.empty(m)
             for i in prange(m):
-                r = _final_state_any(rhs, P[i], t0, t1, Y0[i], rtol, atol, kind, A, B, C, E5, E3, 10**8, bound)
+                r = _final_state_any(
+                    rhs, P[i], t0, t1, Y0[i], rtol, atol, kind, A, B, C, E5, E3, 10**8, bound
+                )
                 status[i], t_end[i], final[i] = r[0], r[1], r[2]
             return status, t_end, final
+
         _SPECIALIZED_ROWS[rhs] = njit(parallel=True)(rows)
     return _SPECIALIZED_ROWS[rhs]
 
@@ -542,7 +641,9 @@ def specialized_final_state(rhs):
     is keyed by the function object), so it is opt-in.
     """
     if rhs not in _SPECIALIZED:
+
         def run(p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, max_steps, bound):
             return _final_state_any(rhs, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, max_steps, bound)
+
         _SPECIALIZED[rhs] = njit(run)
     return _SPECIALIZED[rhs]

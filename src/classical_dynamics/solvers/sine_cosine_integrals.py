@@ -9,7 +9,8 @@ Three ways to compute them, each with its own error bound, and one reference:
               for large x (terms grow like x^2n/(2n)!).
   asymptotic  repeated integration by parts of int_x^inf u^-w e^{isu} du (Lee (5.42)-(5.48)); diverges, so it
               is cut at its smallest remainder bound: good for large x only.
-  quadrature  scipy's QAWO (oscillatory weight) over [x, 40], the asymptotic expansion beyond, in double precision.
+  quadrature  scipy's QAWO (oscillatory weight) over [x, 40], the asymptotic expansion beyond, in double
+              precision.
   reference   the incomplete gamma function at 30 digits (mpmath):
               int_x^inf u^-w e^{isu} du = e^{is pi (1-w)/2} Gamma(1 - w, -isx).
 Re w must not be an integer: the reduction needs 0 < Re w' < 1 (Lee: "nu/mu not an integer").
@@ -25,13 +26,13 @@ import mpmath
 import numpy as np
 from scipy import integrate, special
 
-
 EPS = np.finfo(float).eps
 
 
 @dataclass(frozen=True)
 class Value:
     """si and ci at one (x, w), and a bound on the error of each."""
+
     si: complex
     ci: complex
     bound: float
@@ -72,15 +73,15 @@ def _lift(x: float, w1: complex, K: int, S: complex, C: complex, bound: float):
 
 
 def series(x: float, w: complex, terms: int | None = None, tol: float = 1e-16) -> Value:
-    """Taylor series (5.38)/(5.39) with `terms` terms each (or as many as the Lagrange bounds (5.40)/(5.41) need
-    for tol relative to the result), lifted to w by the reduction."""
+    """Taylor series (5.38)/(5.39) with `terms` terms each (or as many as the Lagrange bounds (5.40)/(5.41)
+    need for tol relative to the result), lifted to w by the reduction."""
     K, w1 = split(w)
     alpha = w1.real
-    xw = x ** (-w1)                                   # principal branch: x > 0 real, x^-w' = e^{-w' ln x}
+    xw = x ** (-w1)  # principal branch: x > 0 real, x^-w' = e^{-w' ln x}
     Si = Ci = 0.0j
-    largest = 0.0                                     # the largest term: what round-off costs
-    term_s = x * x * xw                               # (-1)^(n+1) x^(2n-w') / (2n-1)!  for n = 1
-    term_c = x * xw                                   # (-1)^n x^(2n+1-w') / (2n)!  for n = 0
+    largest = 0.0  # the largest term: what round-off costs
+    term_s = x * x * xw  # (-1)^(n+1) x^(2n-w') / (2n-1)!  for n = 1
+    term_c = x * xw  # (-1)^n x^(2n+1-w') / (2n)!  for n = 0
     n = 0
     while True:
         Ci += term_c / (2 * n + 1 - w1)
@@ -88,8 +89,10 @@ def series(x: float, w: complex, terms: int | None = None, tol: float = 1e-16) -
         largest = max(largest, abs(term_c), abs(term_s))
         n += 1
         # Lagrange remainders after n terms, Si (5.40) and Ci (5.41), and the round-off of the sum
-        truncation = max(math.exp((2 * n + 1 - alpha) * math.log(x) - math.lgamma(2 * n + 1)) / (2 * n + 1 - alpha),
-                         math.exp((2 * n - alpha) * math.log(x) - math.lgamma(2 * n)) / (2 * n - alpha))
+        truncation = max(
+            math.exp((2 * n + 1 - alpha) * math.log(x) - math.lgamma(2 * n + 1)) / (2 * n + 1 - alpha),
+            math.exp((2 * n - alpha) * math.log(x) - math.lgamma(2 * n)) / (2 * n - alpha),
+        )
         bound = truncation + 2.0 * n * EPS * largest
         if terms is not None and n >= terms:
             break
@@ -98,14 +101,14 @@ def series(x: float, w: complex, terms: int | None = None, tol: float = 1e-16) -
         term_c *= -x * x / ((2 * n - 1) * (2 * n))
         term_s *= -x * x / ((2 * n) * (2 * n + 1))
     a, b = A(w1), B(w1)
-    bound += 4.0 * EPS * (abs(a) + abs(b) + abs(Si) + abs(Ci))     # Gamma, the products and the subtraction
+    bound += 4.0 * EPS * (abs(a) + abs(b) + abs(Si) + abs(Ci))  # Gamma, the products and the subtraction
     S, C, bound = _lift(x, w1, K, a - Si, b - Ci, bound)
     return Value(si=-S, ci=-C, bound=bound, terms=n)
 
 
 def _remainder_bounds(x: float, w: complex, most: int) -> np.ndarray:
-    """Bound on the rest of the asymptotic series after N = 1..most terms: |(w)_N| x^(1 - N - Re w)/(N - 1 + Re w)
-    (the rest is (-is)^N (w)_N int_x^inf u^-(w+N) e^{isu} du)."""
+    """Bound on the rest of the asymptotic series after N = 1..most terms: |(w)_N| x^(1 - N - Re w)/(N - 1 +
+    Re w) (the rest is (-is)^N (w)_N int_x^inf u^-(w+N) e^{isu} du)."""
     N = np.arange(1, most + 1)
     log_poch = np.cumsum(np.log(np.abs(w + N - 1.0)))
     with np.errstate(over="ignore"):
@@ -131,33 +134,35 @@ def asymptotic(x: float, w: complex, terms: int | None = None) -> Value:
     if terms is None:
         terms = 1 + int(np.argmin(bounds))
     (Ep, moduli), (Em, _) = _tail(x, w, 1, terms), _tail(x, w, -1, terms)
-    bp = float(bounds[terms - 1]) + 4.0 * EPS * terms * moduli            # truncation and summation round-off
+    bp = float(bounds[terms - 1]) + 4.0 * EPS * terms * moduli  # truncation and summation round-off
     S, C = (Ep - Em) / 2j, (Ep + Em) / 2.0
     return Value(si=-S, ci=-C, bound=bp, terms=terms)
 
 
-TAIL_START = 40.0      # beyond it the asymptotic expansion's bound is below 1e-16 for |w| up to a few
+TAIL_START = 40.0  # beyond it the asymptotic expansion's bound is below 1e-16 for |w| up to a few
 
 
 def quadrature(x: float, w: complex, epsabs: float = 1e-14) -> Value:
-    """scipy's QAWO (Clenshaw-Curtis with the sine or cosine weight) over [x, X], X = max(x, 40), on the real and
-    imaginary parts of u^-w = u^-alpha e^{-i beta ln u}, and the asymptotic expansion beyond X. (QAWF over
+    """scipy's QAWO (Clenshaw-Curtis with the sine or cosine weight) over [x, X], X = max(x, 40), on the real
+    and imaginary parts of u^-w = u^-alpha e^{-i beta ln u}, and the asymptotic expansion beyond X. (QAWF over
     [x, inf) alone reports error estimates of order 1 for some x while its values are right.)"""
     w = complex(w)
     split(w)
     alpha, beta = w.real, w.imag
     X = max(x, TAIL_START)
     tail = asymptotic(X, w)
-    re = lambda u: u ** -alpha * np.cos(beta * np.log(u))        # noqa: E731
-    im = lambda u: -(u ** -alpha) * np.sin(beta * np.log(u))     # noqa: E731
+    re = lambda u: u**-alpha * np.cos(beta * np.log(u))
+    im = lambda u: -(u**-alpha) * np.sin(beta * np.log(u))
     parts, bound = {}, tail.bound
     for trig in ("sin", "cos"):
         values = [0.0, 0.0]
         for k, f in enumerate((re, im) if beta != 0.0 else (re,)):
             if X > x:
-                with warnings.catch_warnings():       # QAWO's estimate stands as the bound
+                with warnings.catch_warnings():  # QAWO's estimate stands as the bound
                     warnings.simplefilter("ignore", integrate.IntegrationWarning)
-                    values[k], err = integrate.quad(f, x, X, weight=trig, wvar=1.0, epsabs=epsabs, epsrel=0.0, limit=200)
+                    values[k], err = integrate.quad(
+                        f, x, X, weight=trig, wvar=1.0, epsabs=epsabs, epsrel=0.0, limit=200
+                    )
                 bound += err
         parts[trig] = complex(values[0], values[1])
     return Value(si=-parts["sin"] + tail.si, ci=-parts["cos"] + tail.ci, bound=bound, terms=0)
@@ -167,8 +172,10 @@ def reference(x: float, w: complex, dps: int = 30) -> tuple:
     """(si, ci) as mpmath numbers at dps digits, from the incomplete gamma function."""
     with mpmath.workdps(dps):
         x, w = mpmath.mpf(x), mpmath.mpc(w)
-        E = {s: mpmath.exp(1j * s * mpmath.pi * (1 - w) / 2) * mpmath.gammainc(1 - w, -1j * s * x)
-             for s in (1, -1)}
+        E = {
+            s: mpmath.exp(1j * s * mpmath.pi * (1 - w) / 2) * mpmath.gammainc(1 - w, -1j * s * x)
+            for s in (1, -1)
+        }
         return -(E[1] - E[-1]) / 2j, -(E[1] + E[-1]) / 2
 
 

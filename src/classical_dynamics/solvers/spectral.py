@@ -31,8 +31,8 @@ def hanging_chain_sigma(N: int = 41, k: int = 5) -> np.ndarray:
     D, x = cheb(N)
     D2 = D @ D
     half = (N - 1) // 2
-    inner = np.arange(1, half + 1)              # the positive interior points
-    mirror = N - inner                           # their reflections (-tau)
+    inner = np.arange(1, half + 1)  # the positive interior points
+    mirror = N - inner  # their reflections (-tau)
     D1f = D[np.ix_(inner, inner)] + D[np.ix_(inner, mirror)]
     D2f = D2[np.ix_(inner, inner)] + D2[np.ix_(inner, mirror)]
     L = -(D2f + np.diag(1.0 / x[inner]) @ D1f)

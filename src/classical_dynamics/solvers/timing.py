@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import time
 
-SPREAD = 0.05           # the two fastest runs within 5 % of each other
+SPREAD = 0.05  # the two fastest runs within 5 % of each other
 MIN_SPENT_S = 0.05
 
 
@@ -20,14 +20,16 @@ def min_time(func, *, repeats: int = 10, budget_s: float = 2.0, warmup: bool = T
     At most repeats runs, and one more standing for the warm-up (warmup=True; budget_s counts after it). Stops
     once the two fastest agree within SPREAD (and MIN_SPENT_S is spent) or budget_s is spent.
     """
-    first = 1 if warmup else 0                  # runs before the budget starts counting
+    first = 1 if warmup else 0  # runs before the budget starts counting
     times, result = [], None
     while len(times) < repeats + first:
         start = time.perf_counter()
         result = func()
         times.append(time.perf_counter() - start)
         fastest = sorted(times)[:2]
-        confirmed = len(fastest) == 2 and fastest[1] <= fastest[0] * (1 + SPREAD) and sum(times) >= MIN_SPENT_S
+        confirmed = (
+            len(fastest) == 2 and fastest[1] <= fastest[0] * (1 + SPREAD) and sum(times) >= MIN_SPENT_S
+        )
         if len(times) > first and (confirmed or sum(times[first:]) >= budget_s):
             break
     return min(times), result, len(times)

@@ -10,24 +10,23 @@ never the method itself. Tolerances are paired reltol = 1000 x abstol.
 from __future__ import annotations
 
 import re
-
 from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
 import pandas as pd
 
+from ..formatting import format_number
 from . import rigid_body
 from .ode import Problem, solve
 from .timing import min_time
-from ..formatting import format_number
 
 
 @dataclass
 class Run:
     t_steps: np.ndarray
     y_steps: np.ndarray
-    y_dense: np.ndarray          # on the 100 points of Case.dense_t
+    y_dense: np.ndarray  # on the 100 points of Case.dense_t
     y_final: np.ndarray
     nfev: int
     n_steps: int
@@ -37,8 +36,8 @@ class Run:
 class Case:
     name: str
     problem: Problem
-    exact: Callable               # t -> y
-    invariants: dict              # name -> f(y rows) -> values
+    exact: Callable  # t -> y
+    invariants: dict  # name -> f(y rows) -> values
 
     @property
     def dense_t(self):
@@ -48,9 +47,10 @@ class Case:
 @dataclass
 class Entry:
     """One line of a work-precision diagram: a method and how to run it at a setting."""
+
     label: str
-    kind: str                     # "tolerance" or "step"
-    run: Callable                 # run(setting, record) -> Run (record=False may return only y_final)
+    kind: str  # "tolerance" or "step"
+    run: Callable  # run(setting, record) -> Run (record=False may return only y_final)
     settings: list
 
 
@@ -63,6 +63,7 @@ def adaptive(case: Case, method: str) -> Entry:
         sol = solve(case.problem, method, rtol=rtol, atol=atol, record_steps=True)
         dense = solve(case.problem, method, rtol=rtol, atol=atol, t_eval=case.dense_t)
         return Run(sol.t_steps, sol.y_steps, dense.y_eval, sol.y, sol.nfev, sol.n_steps)
+
     return Entry(method, "tolerance", run, [])
 
 
@@ -73,9 +74,9 @@ def splitting(case: Case, I, order: int) -> Entry:
     m0 = I * case.problem.y0
 
     def run(h, record):
-        n = 99 * max(1, int(round((t1 - t0) / h / 99)))    # a multiple of 99: the 100 dense points are steps
+        n = 99 * max(1, int(round((t1 - t0) / h / 99)))  # a multiple of 99: the 100 dense points are steps
         h = (t1 - t0) / n
-        evals = n * (5 if order == 2 else 15)           # exact rotations (the analogue of f-evaluations)
+        evals = n * (5 if order == 2 else 15)  # exact rotations (the analogue of f-evaluations)
         if not record:
             ms, _ = rigid_body.free_body(I, m0, h, n, order, n)
             return Run(None, None, None, ms[-1] / I, evals, n)
@@ -83,6 +84,7 @@ def splitting(case: Case, I, order: int) -> Entry:
         t = t0 + h * np.arange(n + 1)
         idx = np.arange(100) * (n // 99)
         return Run(t, ms / I, ms[idx] / I, ms[-1] / I, evals, n)
+
     return Entry(f"splitting, order {order}", "step", run, [])
 
 
@@ -98,10 +100,20 @@ def sweep(case: Case, entries: list[Entry], *, repeats: int = 10, budget_s: floa
             exact_steps = case.exact(r.t_steps)
             dense_err = np.max(np.abs(r.y_dense - case.exact(case.dense_t)))
             final_err = np.max(np.abs(r.y_final - y_end))
-            row = {"problem": case.name, "method": entry.label, "kind": entry.kind, "setting": setting,
-                   "error_final": final_err, "error_max_steps": np.max(np.abs(r.y_steps - exact_steps)),
-                   "error_dense": dense_err, "digits": -np.log10(max(final_err / scale, 1e-17)),
-                   "steps": r.n_steps, "evaluations": r.nfev, "seconds": seconds, "runs": runs}
+            row = {
+                "problem": case.name,
+                "method": entry.label,
+                "kind": entry.kind,
+                "setting": setting,
+                "error_final": final_err,
+                "error_max_steps": np.max(np.abs(r.y_steps - exact_steps)),
+                "error_dense": dense_err,
+                "digits": -np.log10(max(final_err / scale, 1e-17)),
+                "steps": r.n_steps,
+                "evaluations": r.nfev,
+                "seconds": seconds,
+                "runs": runs,
+            }
             for name, f in case.invariants.items():
                 values = f(r.y_steps)
                 row[f"{name}_drift"] = float(np.max(np.abs(values - values[0])) / abs(values[0]))
@@ -123,10 +135,11 @@ def _colours(methods) -> dict:
     """Each method's colour of every figure ('splitting, order 2' is splitting2); a method without one takes
     the first palette colour no other method of the figure has (the palette's order otherwise)."""
     from ..figure_style import METHOD_COLOURS, OKABE_ITO, method_colour
+
     known = {name.lower() for name in METHOD_COLOURS}
     keys = {m: m.replace(", order ", "").lower() for m in methods}
     out = {m: method_colour(k) for m, k in keys.items() if k in known}
-    free = [c for c in OKABE_ITO[:-1] if c not in out.values()] + ["#7F7F7F"]   # grey, not the faint yellow
+    free = [c for c in OKABE_ITO[:-1] if c not in out.values()] + ["#7F7F7F"]  # grey, not the faint yellow
     for index, m in enumerate(m for m in methods if m not in out):
         out[m] = free[index] if index < len(free) else method_colour(m, index)
     return out
@@ -136,6 +149,7 @@ def decade_ticks(axis, max_labels: int | None = None) -> None:
     """Label a log axis at powers of ten only, at most max_labels of them (every second or third decade on a
     long axis), so that no two labels run into each other. By default from the width of the axes' column."""
     from matplotlib.ticker import LogLocator, NullFormatter
+
     if max_labels is None:
         fig, spec = axis.axes.figure, axis.axes.get_subplotspec()
         columns = spec.get_gridspec().ncols if spec is not None else 1
@@ -150,19 +164,27 @@ def decade_ticks(axis, max_labels: int | None = None) -> None:
     axis.set_minor_formatter(NullFormatter())
 
 
-def plot(frame: pd.DataFrame, ax, orders: dict | None = None, error: str = "error_final", floor: float = 1e-17,
-         xlabel: str = "error at the final time"):
+def plot(
+    frame: pd.DataFrame,
+    ax,
+    orders: dict | None = None,
+    error: str = "error_final",
+    floor: float = 1e-17,
+    xlabel: str = "error at the final time",
+):
     """Log-log, error on x and wall time on y, one line per method (x inverted: accuracy grows to the right):
     solid for this library's adaptive methods, dashed for SciPy's, dotted squares for fixed-step splittings.
     Each line is labelled with its method's name and drawn in that method's colour of every figure; with
     `orders` the fitted order of a fixed-step method joins its label. The caller places the legend."""
     colours = _colours(list(dict.fromkeys(frame.method)))
     for method, part in frame.groupby("method", sort=False):
-        label = method + (f" (fitted order {format_number(orders[method], 3)})"
-                          if orders and method in orders else "")
+        label = method + (
+            f" (fitted order {format_number(orders[method], 3)})" if orders and method in orders else ""
+        )
         style = "o--" if method.startswith("scipy:") else ("s:" if method.startswith("splitting") else "o-")
-        ax.loglog(np.maximum(part[error], floor), part.seconds, style, ms=3, color=colours[method],
-                  label=label)
+        ax.loglog(
+            np.maximum(part[error], floor), part.seconds, style, ms=3, color=colours[method], label=label
+        )
     ax.set_xlabel(xlabel)
     ax.set_ylabel("wall time (s)")
     ax.invert_xaxis()
@@ -177,7 +199,7 @@ def legend_below(fig, handles=None, labels=None, ncol: int = 4):
     renderer = fig.canvas.get_renderer()
     for n in range(min(ncol, len(labels)), 0, -1):
         legend = fig.legend(handles, labels, loc="outside lower center", ncol=n)
-        if n == 1 or legend.get_window_extent(renderer).width <= 0.93 * fig.bbox.width:   # SVG text runs wider
+        if n == 1 or legend.get_window_extent(renderer).width <= 0.93 * fig.bbox.width:  # SVG text runs wider
             return legend
         legend.remove()
 
@@ -188,13 +210,19 @@ def nominal_order(method: str) -> int | None:
     return int(match.group(1)) if match else None
 
 
-def plot_convergence(frame: pd.DataFrame, ax, orders: dict | None = None, error: str = "error_final",
-                     nominal: dict | None = None, xlabel: str = "step $h$",
-                     ylabel: str = "error at the final time"):
-    """Observed convergence of the fixed-step methods: error against step h (log-log), each method in its colour
-    and style of plot() with its fitted order in the label, and dashed reference slopes h^p for the nominal
-    orders p, drawn through the centre of the method's points and moved down by a factor 4, so that the slopes
-    compare side by side."""
+def plot_convergence(
+    frame: pd.DataFrame,
+    ax,
+    orders: dict | None = None,
+    error: str = "error_final",
+    nominal: dict | None = None,
+    xlabel: str = "step $h$",
+    ylabel: str = "error at the final time",
+):
+    """Observed convergence of the fixed-step methods: error against step h (log-log), each method in its
+    colour and style of plot() with its fitted order in the label, and dashed reference slopes h^p for the
+    nominal orders p, drawn through the centre of the method's points and moved down by a factor 4, so that
+    the slopes compare side by side."""
     steps = frame[frame.kind == "step"]
     colours = _colours(list(dict.fromkeys(steps.method)))
     for method, part in steps.groupby("method", sort=False):
@@ -210,8 +238,14 @@ def plot_convergence(frame: pd.DataFrame, ax, orders: dict | None = None, error:
         h = np.geomspace(part.setting.min(), part.setting.max(), 20)
         centre_h = np.exp(np.mean(np.log(good.setting)))
         centre_e = np.exp(np.mean(np.log(good[error])))
-        ax.loglog(h, centre_e / 4.0 * (h / centre_h) ** p, "--", lw=0.9, color=colour,
-                  label=f"reference slope $h^{{{p}}}$")
+        ax.loglog(
+            h,
+            centre_e / 4.0 * (h / centre_h) ** p,
+            "--",
+            lw=0.9,
+            color=colour,
+            label=f"reference slope $h^{{{p}}}$",
+        )
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     decade_ticks(ax.xaxis)

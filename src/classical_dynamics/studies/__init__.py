@@ -1,5 +1,5 @@
-"""The studies (registered in registry.py). Each study module exposes EFFECTS, check(path, data), cost(data) and
-run(scene, quick)."""
+"""The studies (registered in registry.py). Each study module exposes EFFECTS, check(path, data), cost(data)
+and run(scene, quick)."""
 
 from __future__ import annotations
 
@@ -37,11 +37,15 @@ def _schema(path: Path, mtime_ns: int) -> dict:
 def validate(study: str, scene_path: Path | str, budget: Budget | None = None) -> Scene:
     """Fully validate one scene file of a study (its schema, effects, physics, cost within the budget); raise
     SceneError. The scene returned carries its cost estimate, from which its job's limits follow."""
-    module = study_module(study)        # also refuses an unknown study
-    scene = load_scene(scene_path, study, load_schema(STUDIES[study].schema), module.EFFECTS.names(), module.check)
+    module = study_module(study)  # also refuses an unknown study
+    scene = load_scene(
+        scene_path, study, load_schema(STUDIES[study].schema), module.EFFECTS.names(), module.check
+    )
     try:
         works = module.cost(scene.data)
-    except (ArithmeticError, ValueError, TypeError) as exc:       # sizes too large to even estimate
-        raise SceneError(scene_path, "(values)", "sizes the machine can hold", f"{type(exc).__name__}: {exc}") from None
+    except (ArithmeticError, ValueError, TypeError) as exc:  # sizes too large to even estimate
+        raise SceneError(
+            scene_path, "(values)", "sizes the machine can hold", f"{type(exc).__name__}: {exc}"
+        ) from None
     estimate = check_budget(scene_path, scene.data, works, budget or Budget.from_file())
     return dataclasses.replace(scene, estimate=estimate)

@@ -29,14 +29,14 @@ def _xy_blocks(ax):
             if len(xy):
                 k += 1
                 yield _series_name(artist, kind, k), xy
-        elif isinstance(artist, PathCollection):                     # scatter: the offsets are the points
+        elif isinstance(artist, PathCollection):  # scatter: the offsets are the points
             xy = np.asarray(artist.get_offsets(), dtype=float).reshape(-1, 2)
             if len(xy):
                 k += 1
                 yield _series_name(artist, "points", k), xy
-        elif isinstance(artist, Collection):       # contours, line collections, filled bands: each piece
+        elif isinstance(artist, Collection):  # contours, line collections, filled bands: each piece
             paths = artist.get_paths()
-            levels = getattr(artist, "levels", None)         # a contour set: one path per level
+            levels = getattr(artist, "levels", None)  # a contour set: one path per level
             k += 1
             name = _series_name(artist, "curve", k)
             for i, path in enumerate(paths):
@@ -47,7 +47,10 @@ def _xy_blocks(ax):
                 pieces = path.to_polygons(closed_only=False)
                 for j, piece in enumerate(pieces):
                     if len(piece):
-                        yield (f"{name_i}, piece {j + 1}" if len(pieces) > 1 else name_i), np.asarray(piece, float)
+                        yield (
+                            (f"{name_i}, piece {j + 1}" if len(pieces) > 1 else name_i),
+                            np.asarray(piece, float),
+                        )
 
 
 def figure_data(fig) -> tuple[pd.DataFrame, list[dict]]:

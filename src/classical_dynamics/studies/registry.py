@@ -20,8 +20,8 @@ HERE = Path(str(files(__package__)))
 
 @dataclass(frozen=True)
 class Study:
-    name: str       # the package's and the scenes folder's name; also the Snakemake target
-    title: str      # its chapter's title
+    name: str  # the package's and the scenes folder's name; also the Snakemake target
+    title: str  # its chapter's title
 
     @property
     def module(self) -> str:
@@ -36,16 +36,23 @@ class Study:
         return self.file("schema.yaml")
 
 
-STUDIES = {study.name: study for study in (
-    Study("precession", "Precession of the equinoxes"),
-    Study("chandler", "The Chandler wobble"),
-    Study("chains", "Vibrations of chains"),
-    Study("self_excited", "The self-excited rigid body"),
-    Study("solvers", "The solver layer: what accuracy costs"),
-)}
+STUDIES = {
+    study.name: study
+    for study in (
+        Study("precession", "Precession of the equinoxes"),
+        Study("chandler", "The Chandler wobble"),
+        Study("chains", "Vibrations of chains"),
+        Study("self_excited", "The self-excited rigid body"),
+        Study("solvers", "The solver layer: what accuracy costs"),
+    )
+}
 
 
 def resource_files() -> list[Path]:
     """Every file the studies ship beside their code (schemas, chapters, claims): what the report reads."""
-    return sorted(path for study in STUDIES for path in (HERE / study).iterdir()
-                  if path.is_file() and path.suffix != ".py")
+    return sorted(
+        path
+        for study in STUDIES
+        for path in (HERE / study).iterdir()
+        if path.is_file() and path.suffix != ".py"
+    )

@@ -36,7 +36,7 @@ class Results:
     timing_tables: dict = field(default_factory=dict)
     timing_figures: dict = field(default_factory=dict)
     notes: list = field(default_factory=list)
-    _drawn: dict = field(default_factory=dict, repr=False)     # figure_data per figure: read once, used twice
+    _drawn: dict = field(default_factory=dict, repr=False)  # figure_data per figure: read once, used twice
 
     def number(self, name, value, unit, *, reference=None, tolerance=None, note=None):
         """tolerance: how far a rebuild may move the value before `verify` fails, {"absolute": a},
@@ -65,19 +65,33 @@ class Results:
 
     def hard_case(self, name, description, measured, bound, unit=""):
         """A numerically hard case: what was measured against the bound it must meet."""
-        self.stability.append({"name": name, "description": description, "measured": measured,
-                               "bound": bound, "unit": unit, "holds": bool(abs(measured) <= bound)})
+        self.stability.append(
+            {
+                "name": name,
+                "description": description,
+                "measured": measured,
+                "bound": bound,
+                "unit": unit,
+                "holds": bool(abs(measured) <= bound),
+            }
+        )
 
     def summary(self) -> dict:
         return {
-            "study": self.study, "scene": self.scene, "title": self.title,
+            "study": self.study,
+            "scene": self.scene,
+            "title": self.title,
             "numbers": self.numbers,
-            "tables": {k: {"file": f"{k}.csv", "caption": c, "columns": list(f.columns), "headers": h}
-                       for k, (f, c, h) in self.tables.items()},
+            "tables": {
+                k: {"file": f"{k}.csv", "caption": c, "columns": list(f.columns), "headers": h}
+                for k, (f, c, h) in self.tables.items()
+            },
             "figures": self._figure_entries(self.figures, self.tables),
             "timings": {
-                "tables": {k: {"file": f"{k}.csv", "caption": c, "headers": h}
-                           for k, (_, c, h) in self.timing_tables.items()},
+                "tables": {
+                    k: {"file": f"{k}.csv", "caption": c, "headers": h}
+                    for k, (_, c, h) in self.timing_tables.items()
+                },
                 "figures": self._figure_entries(self.timing_figures, self.timing_tables),
             },
             "stability": self.stability,
@@ -105,14 +119,16 @@ class Results:
         """Write everything into staging folders, then move both into place."""
         out_dir, timings_dir = Path(out_dir), Path(timings_dir)
         staged = []
-        for target, files in ((out_dir, self._result_files(provenance)),
-                              (timings_dir, self._timing_files(timing_rows))):
+        for target, files in (
+            (out_dir, self._result_files(provenance)),
+            (timings_dir, self._timing_files(timing_rows)),
+        ):
             target.parent.mkdir(parents=True, exist_ok=True)
-            for leftover in target.parent.glob(f".{target.name}.*"):     # staged by a run that was killed
+            for leftover in target.parent.glob(f".{target.name}.*"):  # staged by a run that was killed
                 shutil.rmtree(leftover, ignore_errors=True)
             staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.", dir=target.parent))
             for name, data in files.items():
-                (staging / name).write_bytes(data)       # ordinary permissions: the folder is new
+                (staging / name).write_bytes(data)  # ordinary permissions: the folder is new
             staged.append((staging, target))
         try:
             for staging, target in staged:
@@ -125,28 +141,38 @@ class Results:
         files = {"summary.json": io.dumps_json(self.summary()).encode()}
         files.update({f"{k}.csv": io.csv_text(f).encode() for k, (f, _, _) in self.tables.items()})
         files.update({f"{k}.svg": io.svg_bytes(f) for k, (f, _) in self.figures.items()})
-        if self.stability:                     # the hard cases as a table too: the report links it
+        if self.stability:  # the hard cases as a table too: the report links it
             import pandas as pd
+
             files["hard_cases.csv"] = io.csv_text(pd.DataFrame(self.stability)).encode()
-        files.update({f"{k}.csv": io.csv_text(data).encode()
-                      for k, (data, _) in self._plotted(self.figures, self.tables).items()})
+        files.update(
+            {
+                f"{k}.csv": io.csv_text(data).encode()
+                for k, (data, _) in self._plotted(self.figures, self.tables).items()
+            }
+        )
         # provenance.json carries every other file's checksum: readers refuse a folder that does not match it
         files["provenance.json"] = io.dumps_json({**provenance, "files": io.file_digests(files)}).encode()
         return files
 
     def _timing_files(self, timing_rows):
         import pandas as pd
+
         files = {f"{k}.csv": io.csv_text(f).encode() for k, (f, _, _) in self.timing_tables.items()}
         files.update({f"{k}.svg": io.svg_bytes(f) for k, (f, _) in self.timing_figures.items()})
-        files.update({f"{k}.csv": io.csv_text(data).encode()
-                      for k, (data, _) in self._plotted(self.timing_figures, self.timing_tables).items()})
+        files.update(
+            {
+                f"{k}.csv": io.csv_text(data).encode()
+                for k, (data, _) in self._plotted(self.timing_figures, self.timing_tables).items()
+            }
+        )
         files["run.csv"] = io.csv_text(pd.DataFrame([timing_rows])).encode()
         return files
 
 
 def figure(*, figsize, layout="constrained") -> Figure:
-    """pyplot.figure without pyplot: a Figure on an Agg canvas of its own (which measures text, as layouts need),
-    in no list of open figures; savefig still writes SVG."""
+    """pyplot.figure without pyplot: a Figure on an Agg canvas of its own (which measures text, as layouts
+    need), in no list of open figures; savefig still writes SVG."""
     fig = Figure(figsize=figsize, layout=layout)
     FigureCanvasAgg(fig)
     return fig

@@ -22,8 +22,9 @@ def rayleigh_quotient(beta):
 def rayleigh_ritz_2x2():
     """Ritz values (sigma^2 l / g) in the basis {s, s^2}: exact integrals of the two energies."""
     from scipy.linalg import eigh
-    T = np.array([[1 / 3, 1 / 4], [1 / 4, 1 / 5]])   # integral of phi_i phi_j
-    V = np.array([[1 / 2, 1 / 3], [1 / 3, 1 / 3]])   # integral of (1 - s) phi_i' phi_j'
+
+    T = np.array([[1 / 3, 1 / 4], [1 / 4, 1 / 5]])  # integral of phi_i phi_j
+    V = np.array([[1 / 2, 1 / 3], [1 / 3, 1 / 3]])  # integral of (1 - s) phi_i' phi_j'
     return eigh(V, T, eigvals_only=True)
 
 
@@ -37,7 +38,7 @@ def run(scene, results, quick):
     results.number("n", 0, "particles (0: the continuum)")
     if "spectral_check" in analysis:
         intervals = analysis["spectral_check"]["intervals"]
-        sigma = hanging_chain_sigma(intervals, k)          # sigma tau_1 with tau_1 = 1
+        sigma = hanging_chain_sigma(intervals, k)  # sigma tau_1 with tau_1 = 1
         computed = sigma / 2 * np.sqrt(effects["gravity"]["g_m_per_s2"] / length)
         method = f"Chebyshev collocation in $\\tau = 2\\sqrt{{x/g}}$, {intervals} intervals"
     else:
@@ -46,42 +47,75 @@ def run(scene, results, quick):
     rel = (computed - exact) / exact
     results.number(f"frequencies_{unit_name}", computed / unit, unit_label, note=method)
     results.number("frequencies_rad_per_s", computed, "rad/s")
-    results.number("relative_error_vs_continuum", rel, "1",
-                   note="against the closed form (J0 zeros)" if "gravity" in effects else "closed form itself")
+    results.number(
+        "relative_error_vs_continuum",
+        rel,
+        "1",
+        note="against the closed form (J0 zeros)" if "gravity" in effects else "closed form itself",
+    )
     if "gravity" not in effects:
         return
     j = bessel_j0_zeros(k)
-    results.number("gravest_period_sqrt_l_over_g", 4 * np.pi / j[0], "√(l/g)",
-                   note="$2\\pi/\\omega_1 = 4\\pi/j_{01}$")
-    results.number("gravest_period_s", 4 * np.pi / j[0] * np.sqrt(length / effects["gravity"]["g_m_per_s2"]), "s")
+    results.number(
+        "gravest_period_sqrt_l_over_g", 4 * np.pi / j[0], "√(l/g)", note="$2\\pi/\\omega_1 = 4\\pi/j_{01}$"
+    )
+    results.number(
+        "gravest_period_s", 4 * np.pi / j[0] * np.sqrt(length / effects["gravity"]["g_m_per_s2"]), "s"
+    )
     results.number("lamb_roots_over_pi", j / np.pi, "1", note="$\\sigma\\tau_1/\\pi$, Lamb Art. 90 (23)")
     results.number("frequency_ratio_2_to_1", j[1] / j[0], "1")
-    if "spectral_check" in analysis:      # the first zero of J0 without a Bessel routine: the drum's coefficient too
-        results.number("first_zero_j0_collocation", float(sigma[0]), "1",
-                       note="$j_{0,1}$ from the collocation; a drum's lowest mode is "
-                       "$\\omega_{01} = j_{0,1}\\sqrt{T/\\sigma}/a$")
-    results.number("second_mode_node_x_over_l", (j[0] / j[1]) ** 2, "x/l from the free end",
-                   note="$J_0(j_{02}\\sqrt{x/l}) = 0$ where $j_{02}\\sqrt{x/l} = j_{01}$")
-    table = pd.DataFrame({
-        "k": np.arange(1, k + 1), "j0k": j, "j0k_over_pi": j / np.pi,
-        "sigma2_l_over_g": (j / 2) ** 2, "period_sqrt_l_over_g": 4 * np.pi / j,
-        "spectral_relative_error": rel})
-    results.table("continuum_modes", table, "Modes of the continuous hanging chain: the zeros $j_{0k}$ of $J_0$, "
-                  "the frequencies $\\sigma^2 l/g = (j_{0k}/2)^2$, the periods, and the relative error of the "
-                  "collocation solution's frequencies.",
-                  headers={"k": "$k$", "j0k": "$j_{0k}$", "j0k_over_pi": "$j_{0k}/\\pi$",
-                           "sigma2_l_over_g": "$\\sigma^2 l/g$", "period_sqrt_l_over_g": "period ($\\sqrt{l/g}$)",
-                           "spectral_relative_error": "collocation, relative error"})
+    # the first zero of J0 without a Bessel routine: the drum's coefficient too
+    if "spectral_check" in analysis:
+        results.number(
+            "first_zero_j0_collocation",
+            float(sigma[0]),
+            "1",
+            note="$j_{0,1}$ from the collocation; a drum's lowest mode is "
+            "$\\omega_{01} = j_{0,1}\\sqrt{T/\\sigma}/a$",
+        )
+    results.number(
+        "second_mode_node_x_over_l",
+        (j[0] / j[1]) ** 2,
+        "x/l from the free end",
+        note="$J_0(j_{02}\\sqrt{x/l}) = 0$ where $j_{02}\\sqrt{x/l} = j_{01}$",
+    )
+    table = pd.DataFrame(
+        {
+            "k": np.arange(1, k + 1),
+            "j0k": j,
+            "j0k_over_pi": j / np.pi,
+            "sigma2_l_over_g": (j / 2) ** 2,
+            "period_sqrt_l_over_g": 4 * np.pi / j,
+            "spectral_relative_error": rel,
+        }
+    )
+    results.table(
+        "continuum_modes",
+        table,
+        "Modes of the continuous hanging chain: the zeros $j_{0k}$ of $J_0$, "
+        "the frequencies $\\sigma^2 l/g = (j_{0k}/2)^2$, the periods, and the relative error of the "
+        "collocation solution's frequencies.",
+        headers={
+            "k": "$k$",
+            "j0k": "$j_{0k}$",
+            "j0k_over_pi": "$j_{0k}/\\pi$",
+            "sigma2_l_over_g": "$\\sigma^2 l/g$",
+            "period_sqrt_l_over_g": "period ($\\sqrt{l/g}$)",
+            "spectral_relative_error": "collocation, relative error",
+        },
+    )
     _mode_shape_figure(results, j)
     if "rayleigh" in analysis:
         _rayleigh(results, analysis["rayleigh"], (j[0] / 2) ** 2, quick)
     if "mcmahon_check" in analysis:
         _high_index_zeros(results, analysis["mcmahon_check"]["k_max"])
-    if "galerkin" in analysis:           # Lamb Art. 100: the same chain from Hamilton's principle
+    if "galerkin" in analysis:  # Lamb Art. 100: the same chain from Hamilton's principle
         from . import stability
+
         stability.hamilton_chain(results, analysis["galerkin"]["elements"])
-    if "membrane" in analysis:           # the drum of the lecture notes: Bessel's equation again, all m
+    if "membrane" in analysis:  # the drum of the lecture notes: Bessel's equation again, all m
         from . import stability
+
         stability.drum(results, analysis["membrane"]["points"])
 
 
@@ -90,67 +124,121 @@ def _mode_shape_figure(results, j):
     x = np.linspace(0, 1, 801)
     for idx, style in zip(range(3), ("-", "--", "-.")):
         y = special.j0(j[idx] * np.sqrt(x))
-        ax.plot(y / np.max(np.abs(y)), x, style, label=f"mode {idx + 1}: $\\sigma^2 l/g$ = "
-                f"{format_number((j[idx] / 2) ** 2, 4)}")
+        ax.plot(
+            y / np.max(np.abs(y)),
+            x,
+            style,
+            label=f"mode {idx + 1}: $\\sigma^2 l/g$ = {format_number((j[idx] / 2) ** 2, 4)}",
+        )
     node = (j[0] / j[1]) ** 2
     ax.axhline(node, color="0.4", lw=0.8)
-    ax.annotate(f"node of mode 2, $x/l$ = {format_number(node, 4)}", (0.02, node), xytext=(0.05, node + 0.06),
-                bbox={"fc": "white", "ec": "none", "pad": 1.5}, zorder=5)      # no curve runs through the text
+    # no curve runs through the text
+    ax.annotate(
+        f"node of mode 2, $x/l$ = {format_number(node, 4)}",
+        (0.02, node),
+        xytext=(0.05, node + 0.06),
+        bbox={"fc": "white", "ec": "none", "pad": 1.5},
+        zorder=5,
+    )
     ax.axvline(0, color="0.2", lw=0.6)
     ax.set_xlabel("horizontal displacement (largest = 1)")
     ax.set_ylabel("height above the free end, $x/l$")
     ax.set_ylim(0, 1)
     ax.legend(loc="upper right")
-    results.figure("mode_shapes", fig, "The first three modes of the hanging chain, $y \\propto J_0(2\\sigma"
-                   "\\sqrt{x/g})$ with $x$ the height above the free end, drawn as in Lamb's Fig. 58 (suspension at "
-                   "the top). Mode $k$ has $k - 1$ nodes; the node of mode 2 is marked.")
+    results.figure(
+        "mode_shapes",
+        fig,
+        "The first three modes of the hanging chain, $y \\propto J_0(2\\sigma"
+        "\\sqrt{x/g})$ with $x$ the height above the free end, drawn as in Lamb's Fig. 58 (suspension at "
+        "the top). Mode $k$ has $k - 1$ nodes; the node of mode 2 is marked.",
+    )
 
 
 def _rayleigh(results, spec, exact1, quick):
     beta = np.linspace(spec["beta_min"], spec["beta_max"], 241 if quick else 1201)
     f = rayleigh_quotient(beta)
-    beta_star = (-2 + np.sqrt(34)) / 6                      # root of 6 beta^2 + 4 beta - 5 = 0
+    beta_star = (-2 + np.sqrt(34)) / 6  # root of 6 beta^2 + 4 beta - 5 = 0
     ritz = rayleigh_ritz_2x2()
     results.number("rayleigh_rigid_bar_sigma2_l_over_g", rayleigh_quotient(0.0), "g/l", note="beta = 0")
-    results.number("rayleigh_rigid_bar_period_sqrt_l_over_g", 2 * np.pi / np.sqrt(rayleigh_quotient(0.0)),
-                   "√(l/g)")
+    results.number(
+        "rayleigh_rigid_bar_period_sqrt_l_over_g", 2 * np.pi / np.sqrt(rayleigh_quotient(0.0)), "√(l/g)"
+    )
     from . import symbolic
+
     integral, membrane = symbolic.hanging_chain_tau()
-    results.number("tau_substitution_exact", int(integral and membrane), "1",
-                   note="1: $\\int_0^x dx/\\sqrt{gx} = 2\\sqrt{x/g}$ and $x = g\\tau^2/4$ turns (15) into (19) (sympy)")
-    results.number("rayleigh_formula_exact", int(symbolic.hanging_chain_quotient_is_printed()), "1",
-                   note="1: Lamb's quotient (11) equals the one sympy derives from $T$ and $V$ for every $\\beta$")
-    results.number("rayleigh_best_beta", beta_star, "1", note="stationary point, $6\\beta^2 + 4\\beta - 5 = 0$")
+    results.number(
+        "tau_substitution_exact",
+        int(integral and membrane),
+        "1",
+        note="1: $\\int_0^x dx/\\sqrt{gx} = 2\\sqrt{x/g}$ and $x = g\\tau^2/4$ turns (15) into (19) (sympy)",
+    )
+    results.number(
+        "rayleigh_formula_exact",
+        int(symbolic.hanging_chain_quotient_is_printed()),
+        "1",
+        note="1: Lamb's quotient (11) equals the one sympy derives from $T$ and $V$ for every $\\beta$",
+    )
+    results.number(
+        "rayleigh_best_beta", beta_star, "1", note="stationary point, $6\\beta^2 + 4\\beta - 5 = 0$"
+    )
     results.number("rayleigh_best_sigma2_l_over_g", rayleigh_quotient(beta_star), "g/l")
-    results.number("rayleigh_best_period_sqrt_l_over_g", 2 * np.pi / np.sqrt(rayleigh_quotient(beta_star)),
-                   "√(l/g)")
-    results.number("rayleigh_best_relative_excess", rayleigh_quotient(beta_star) / exact1 - 1, "1",
-                   note="over the exact $(j_{01}/2)^2$")
-    results.number("rayleigh_min_excess_over_scan", float(np.min(f - exact1)), "g/l",
-                   note=f"smallest over {beta.size} values of $\\beta$ from "
-                        f"{format_number(float(spec['beta_min']), 3)} to {format_number(float(spec['beta_max']), 3)}")
+    results.number(
+        "rayleigh_best_period_sqrt_l_over_g", 2 * np.pi / np.sqrt(rayleigh_quotient(beta_star)), "√(l/g)"
+    )
+    results.number(
+        "rayleigh_best_relative_excess",
+        rayleigh_quotient(beta_star) / exact1 - 1,
+        "1",
+        note="over the exact $(j_{01}/2)^2$",
+    )
+    results.number(
+        "rayleigh_min_excess_over_scan",
+        float(np.min(f - exact1)),
+        "g/l",
+        note=f"smallest over {beta.size} values of $\\beta$ from "
+        f"{format_number(float(spec['beta_min']), 3)} to {format_number(float(spec['beta_max']), 3)}",
+    )
     results.number("ritz_2x2_sigma2_l_over_g", ritz, "g/l", note="basis $s$, $s^2$")
-    results.hard_case("rayleigh_upper_bound", "Rayleigh's quotient never falls below the exact gravest "
-                      "$\\sigma^2$ (largest excess of the exact value over the quotient on the $\\beta$ scan, "
-                      "floored at 0)",
-                      float(max(0.0, np.max(exact1 - f))), 0.0, "g/l")
-    results.table("rayleigh_scan", pd.DataFrame({"beta": beta, "sigma2_l_over_g": f}),
-                  "Rayleigh's quotient for the assumed type $y = s + \\beta s^2/l$ over a range of $\\beta$.",
-                  headers={"beta": "$\\beta$", "sigma2_l_over_g": "$\\sigma^2 l/g$"})
+    results.hard_case(
+        "rayleigh_upper_bound",
+        "Rayleigh's quotient never falls below the exact gravest "
+        "$\\sigma^2$ (largest excess of the exact value over the quotient on the $\\beta$ scan, "
+        "floored at 0)",
+        float(max(0.0, np.max(exact1 - f))),
+        0.0,
+        "g/l",
+    )
+    results.table(
+        "rayleigh_scan",
+        pd.DataFrame({"beta": beta, "sigma2_l_over_g": f}),
+        "Rayleigh's quotient for the assumed type $y = s + \\beta s^2/l$ over a range of $\\beta$.",
+        headers={"beta": "$\\beta$", "sigma2_l_over_g": "$\\sigma^2 l/g$"},
+    )
     fig, ax = new_figure(5.2, 3.2)
     ax.plot(beta, f, color="C4", label=r"Rayleigh quotient, $y = s + \beta s^2/l$")
-    ax.axhline(exact1, color="k", lw=0.9, ls="--", label=f"exact $(j_{{01}}/2)^2$ = {format_number(exact1, 6)}")
+    ax.axhline(
+        exact1, color="k", lw=0.9, ls="--", label=f"exact $(j_{{01}}/2)^2$ = {format_number(exact1, 6)}"
+    )
     ax.plot([0], [rayleigh_quotient(0.0)], "o", color="C5", label=r"$\beta = 0$: rigid bar, 3/2")
-    ax.plot([beta_star], [rayleigh_quotient(beta_star)], "s", color="C3",
-            label=f"stationary $\\beta$ = {format_number(beta_star, 5)}")
+    ax.plot(
+        [beta_star],
+        [rayleigh_quotient(beta_star)],
+        "s",
+        color="C3",
+        label=f"stationary $\\beta$ = {format_number(beta_star, 5)}",
+    )
     ax.set_xlabel(r"$\beta$")
     ax.set_ylabel(r"$\sigma^2 l/g$")
     ax.set_ylim(exact1 - 0.05, 2.0)
     ax.legend(loc="upper right")
-    results.figure("rayleigh", fig, "Rayleigh's estimate $\\sigma^2 l/g$ of the gravest frequency for the assumed "
-                   "type $y = s + \\beta s^2/l$ ($s$ from the top) as a function of $\\beta$: always above the exact "
-                   "value (dashed), closest to it at the stationary $\\beta$, "
-                   f"{format_number(rayleigh_quotient(beta_star) / exact1 - 1, 2)} above it in relative terms.")
+    results.figure(
+        "rayleigh",
+        fig,
+        "Rayleigh's estimate $\\sigma^2 l/g$ of the gravest frequency for the assumed "
+        "type $y = s + \\beta s^2/l$ ($s$ from the top) as a function of $\\beta$: always above the exact "
+        "value (dashed), closest to it at the stationary $\\beta$, "
+        f"{format_number(rayleigh_quotient(beta_star) / exact1 - 1, 2)} above it in relative terms.",
+    )
 
 
 def _high_index_zeros(results, k_max):
@@ -158,10 +246,15 @@ def _high_index_zeros(results, k_max):
     k = np.arange(1, k_max + 1)
     zeros = bessel_j0_zeros(k_max)
     from ...solvers.special import mcmahon_j0_zero
+
     b = (k - 0.25) * np.pi
     gap = np.abs(zeros - mcmahon_j0_zero(k)) / zeros
     tail = k >= 50
-    bound = float(np.max(0.3 / (b[tail] ** 5 * zeros[tail]))) + 1e-15   # next term 3779/(15360 b^5)
-    results.hard_case("high_index_j0_zeros", f"$J_0$ zeros $k$ = 50 to {format_number(int(k_max))}: SciPy's "
-                      "against McMahon's expansion (relative gap; McMahon's own error there is below the bound)",
-                      float(np.max(gap[tail])), bound)
+    bound = float(np.max(0.3 / (b[tail] ** 5 * zeros[tail]))) + 1e-15  # next term 3779/(15360 b^5)
+    results.hard_case(
+        "high_index_j0_zeros",
+        f"$J_0$ zeros $k$ = 50 to {format_number(int(k_max))}: SciPy's "
+        "against McMahon's expansion (relative gap; McMahon's own error there is below the bound)",
+        float(np.max(gap[tail])),
+        bound,
+    )

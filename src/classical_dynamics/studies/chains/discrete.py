@@ -6,47 +6,76 @@ import numpy as np
 import pandas as pd
 import scipy.linalg as sla
 
+from ...figure_style import FULL_WIDTH_IN
 from ...formatting import format_number
-from ...models.chains import (RESTORING, continuum_frequencies, exact_discrete_frequencies, frequency_unit,
-                              particle_chain, rigid_links_matrices)
+from ...lazy import lazy_module
+from ...models.chains import (
+    RESTORING,
+    continuum_frequencies,
+    exact_discrete_frequencies,
+    frequency_unit,
+    particle_chain,
+    rigid_links_matrices,
+)
 from ...provenance import software_stamp
 from ...solvers import chain_eigen
 from ...solvers.special import bessel_j0_zeros, laguerre_lowest_zero_asymptotic, laguerre_zero_mp
 from ...solvers.timing import min_time
-from ...figure_style import FULL_WIDTH_IN
 from ..results import new_figure, subplots
-from ...lazy import lazy_module
 from . import small_oscillations
 
-symbolic = lazy_module(f"{__package__}.symbolic")     # sympy, for the scenes that ask for a closed form
+symbolic = lazy_module(f"{__package__}.symbolic")  # sympy, for the scenes that ask for a closed form
 
 
 SOLVER_LIMITS = chain_eigen.SOLVER_LIMITS
 
 # What the reader sees: each frequency unit typeset, each solver and scheme by name and in one colour in
 # every figure (Okabe-Ito).
-UNIT_MATH = {"sqrt_g_over_l": "$\\sqrt{g/l}$", "over_omega": "$\\omega$",
-             "over_fundamental": "$(\\pi/l)\\sqrt{P/\\rho}$", "sqrt_k_over_m": "$\\sqrt{k/m}$"}
-SOLVERS = {"dense": ("dense (LAPACK)", "#56B4E9", "^"), "tridiagonal": ("tridiagonal (LAPACK)", "#CC79A7", "s"),
-           "tridiagonal_select": ("tridiagonal, lowest only (LAPACK)", "#D55E00", "o"),
-           "pliability": ("pliability (factored)", "#0072B2", "D")}
+UNIT_MATH = {
+    "sqrt_g_over_l": "$\\sqrt{g/l}$",
+    "over_omega": "$\\omega$",
+    "over_fundamental": "$(\\pi/l)\\sqrt{P/\\rho}$",
+    "sqrt_k_over_m": "$\\sqrt{k/m}$",
+}
+SOLVERS = {
+    "dense": ("dense (LAPACK)", "#56B4E9", "^"),
+    "tridiagonal": ("tridiagonal (LAPACK)", "#CC79A7", "s"),
+    "tridiagonal_select": ("tridiagonal, lowest only (LAPACK)", "#D55E00", "o"),
+    "pliability": ("pliability (factored)", "#0072B2", "D"),
+}
 # scheme -> (legend label, colour, the order it should converge at: its reference slope)
-SCHEMES = {"plain": (r"$l = na$", "#E69F00", 1), "end": (r"$l = (n + \frac{1}{2})a$", "#009E73", 2),
-           "richardson": (r"Richardson, $n/2$ and $n$", "#000000", 4),
-           "links": (r"rigid links, $l = na$", "#CC79A7", 2)}
+SCHEMES = {
+    "plain": (r"$l = na$", "#E69F00", 1),
+    "end": (r"$l = (n + \frac{1}{2})a$", "#009E73", 2),
+    "richardson": (r"Richardson, $n/2$ and $n$", "#000000", 4),
+    "links": (r"rigid links, $l = na$", "#CC79A7", 2),
+}
 
 
 def _solver_line(ax, method, n, y):
     """One solver's line: its colour and marker in every figure; open markers show lines that coincide."""
     label, colour, marker = SOLVERS.get(method, (method, None, "o"))
-    ax.loglog(n, y, marker=marker, ms=4.5 if marker == "^" else 3.5, mfc="none" if marker in "^s" else colour,
-              color=colour, lw=1.0, label=label)
+    ax.loglog(
+        n,
+        y,
+        marker=marker,
+        ms=4.5 if marker == "^" else 3.5,
+        mfc="none" if marker in "^s" else colour,
+        color=colour,
+        lw=1.0,
+        label=label,
+    )
 
 
 def _scheme(name: str) -> str:
     """The scheme a row or route belongs to, from its name."""
     lowered = name.lower()
-    for key, words in (("richardson", "richardson"), ("links", "links"), ("end", "+ 1/2"), ("end", "end-corrected")):
+    for key, words in (
+        ("richardson", "richardson"),
+        ("links", "links"),
+        ("end", "+ 1/2"),
+        ("end", "end-corrected"),
+    ):
         if words in lowered:
             return key
     return "plain"
@@ -94,31 +123,44 @@ def run(scene, results, quick):
         shapes = None
     else:
         built = particle_chain(n, ends, length, masses, effects)
-        effects = {name: p for name, p in effects.items() if name in RESTORING}   # the free frequencies' effects
+        # the free frequencies' effects
+        effects = {name: p for name, p in effects.items() if name in RESTORING}
         lam, shapes = chain_eigen.modes(built.segment_stiffness, built.diagonal, built.masses, ends, k)
         zero_floor = 1e-12 * np.max(np.abs(lam)) if lam.size else 0.0
         clipped = np.where(np.abs(lam) <= zero_floor, 0.0, lam)
         if np.any(clipped < 0):
             raise RuntimeError(f"negative eigenvalue {clipped.min():.3g}: the chain is unstable")
         values = np.sqrt(clipped)
-        unit, unit_name, unit_label = frequency_unit(effects, length, total, built.geometry.spacing_m, masses[0])
+        unit, unit_name, unit_label = frequency_unit(
+            effects, length, total, built.geometry.spacing_m, masses[0]
+        )
         exact = exact_discrete_frequencies(built, effects, k)
         if np.any(np.abs(lam) <= zero_floor):
             # the neutral motion: a translation of a free chain, a rigid turn (y ~ r) of a whirling one
             rigid = built.geometry.positions_m if "rotation" in effects else np.ones(n)
-            _zero_modes(results, lam, shapes, rigid, "rigid rotation ($y \\propto r$)" if "rotation" in effects
-                        else "rigid translation")
+            _zero_modes(
+                results,
+                lam,
+                shapes,
+                rigid,
+                "rigid rotation ($y \\propto r$)" if "rotation" in effects else "rigid translation",
+            )
     cont = continuum_frequencies(effects, ends, length, total, len(values), n=n)
     results.number(f"frequencies_{unit_name}", values / unit, unit_label)
     results.number("frequencies_rad_per_s", values, "rad/s")
     if cont is not None:
         results.number("relative_error_vs_continuum", _relative(values, cont), "1")
     if exact is not None:
-        results.number("relative_error_vs_exact_discrete", _relative(values, exact), "1",
-                       note="against the closed form of the discrete chain")
+        results.number(
+            "relative_error_vs_exact_discrete",
+            _relative(values, exact),
+            "1",
+            note="against the closed form of the discrete chain",
+        )
     table = {"mode": np.arange(1, len(values) + 1), f"omega_{unit_name}": values / unit}
     unit_math = UNIT_MATH.get(unit_name, unit_label)
-    symbol = "$\\sigma$" if unit_name == "over_omega" else "$\\omega$"     # a whirling chain: sigma in units of omega
+    # a whirling chain: sigma in units of omega
+    symbol = "$\\sigma$" if unit_name == "over_omega" else "$\\omega$"
     headers = {"mode": "mode", f"omega_{unit_name}": f"{symbol} ({unit_math})"}
     if cont is not None:
         table[f"continuum_{unit_name}"] = cont / unit
@@ -126,11 +168,21 @@ def run(scene, results, quick):
     if exact is not None:
         table[f"exact_discrete_{unit_name}"] = exact / unit
         headers[f"exact_discrete_{unit_name}"] = f"closed form ({unit_math})"
-    beside = [what for what, there in (("the continuum's", cont is not None),
-                                       ("the discrete chain's closed form", exact is not None)) if there]
-    results.table("frequencies", pd.DataFrame(table),
-                  f"Frequencies {symbol} of the {n}-{'link' if model == 'links' else 'particle'} chain in units of "
-                  f"{unit_math}" + (f", beside {' and '.join(beside)}." if beside else "."), headers=headers)
+    beside = [
+        what
+        for what, there in (
+            ("the continuum's", cont is not None),
+            ("the discrete chain's closed form", exact is not None),
+        )
+        if there
+    ]
+    results.table(
+        "frequencies",
+        pd.DataFrame(table),
+        f"Frequencies {symbol} of the {n}-{'link' if model == 'links' else 'particle'} chain in units of "
+        f"{unit_math}" + (f", beside {' and '.join(beside)}." if beside else "."),
+        headers=headers,
+    )
     if "closed_form" in analysis:
         _closed_form(results, masses, built.segment_stiffness, ends, analysis["closed_form"], values)
         if analysis["closed_form"] in symbolic.SOURCE_SHAPES:
@@ -142,7 +194,9 @@ def run(scene, results, quick):
     if analysis.get("rayleigh_symmetric"):
         small_oscillations.rayleigh_symmetric(results, built, masses)
     if "constraint" in analysis:
-        small_oscillations.constraint(results, built, analysis["constraint"]["samples"], analysis["constraint"]["seed"])
+        small_oscillations.constraint(
+            results, built, analysis["constraint"]["samples"], analysis["constraint"]["seed"]
+        )
     if "forced" in analysis:
         small_oscillations.forced(results, built, analysis["forced"])
     if "friction" in analysis:
@@ -150,20 +204,30 @@ def run(scene, results, quick):
         small_oscillations.dissipation(results, built, analysis["friction"]["aperiodic_scale"])
     if analysis.get("parabola_type"):
         quotient = float(symbolic.string_parabola_quotient())
-        results.number("parabola_sigma2_rho_l2_over_p", quotient, "1",
-                       note="$\\sigma^2\\rho l^2/P$ of the type $x(l - x)$ (Lamb Ex. XIV.12), derived with sympy")
-        results.number("parabola_over_continuum", quotient / np.pi**2, "1",
-                       note="over the continuous string's exact $\\pi^2$: above 1, as Art. 94 requires")
+        results.number(
+            "parabola_sigma2_rho_l2_over_p",
+            quotient,
+            "1",
+            note="$\\sigma^2\\rho l^2/P$ of the type $x(l - x)$ (Lamb Ex. XIV.12), derived with sympy",
+        )
+        results.number(
+            "parabola_over_continuum",
+            quotient / np.pi**2,
+            "1",
+            note="over the continuous string's exact $\\pi^2$: above 1, as Art. 94 requires",
+        )
     if "continuum_limit" in analysis:
         _continuum_limit(results, chain, effects, ends, analysis["continuum_limit"]["n_values"])
     if "initial_value" in analysis:
         small_oscillations.initial_value(results, built, analysis["initial_value"])
     if analysis.get("stability"):
         from . import stability
+
         stability.equilibrium(results, built)
         stability.ball_modes(results)
     if analysis.get("revolving"):
         from . import stability
+
         stability.revolving(results)
     if shapes is not None and analysis.get("mode_shapes") and "gravity" in effects:
         _mode_shapes(results, shapes, n, k)
@@ -190,55 +254,101 @@ def _continuum_limit(results, chain, effects, ends, n_values):
         intervals.append(built.geometry.n_segments)
     errors = np.array(errors)
     orders = [-np.polyfit(np.log(intervals), np.log(errors[:, s]), 1)[0] for s in range(3)]
-    results.number("continuum_limit_order", float(min(orders)), "1",
-                   note=f"fitted order in the number of intervals of the lowest three frequencies' approach to the "
-                        f"harmonics, $n$ = "
-                        f"{n_values[0]} to {n_values[-1]} (smallest of the three)")
-    results.number("continuum_limit_error_at_largest", float(errors[-1].max()), "1",
-                   note=f"largest relative difference from the harmonics at $n$ = {n_values[-1]}")
+    results.number(
+        "continuum_limit_order",
+        float(min(orders)),
+        "1",
+        note=f"fitted order in the number of intervals of the lowest three frequencies' approach to the "
+        f"harmonics, $n$ = "
+        f"{n_values[0]} to {n_values[-1]} (smallest of the three)",
+    )
+    results.number(
+        "continuum_limit_error_at_largest",
+        float(errors[-1].max()),
+        "1",
+        note=f"largest relative difference from the harmonics at $n$ = {n_values[-1]}",
+    )
     results.number("continuum_limit_n_largest", int(n_values[-1]), "particles")
 
 
 def _closed_form(results, masses, springs, ends, name, values):
     """ω² derived with sympy (the characteristic polynomial's roots), against the eigensolver's numbers and
-    against the source's printed formula, which must equal the derived roots for every value of its symbols."""
+    against the source's printed formula, which must equal the derived roots for every value of its
+    symbols."""
     _, roots, symbols = symbolic.derive(masses, springs, ends)
     derived = np.sqrt(np.clip(symbolic.evaluate(roots, symbols), 0.0, None))
     printed = symbolic.SOURCE_FORMULAS[name]
     from_source = np.sqrt(np.clip(symbolic.evaluate(printed, symbols), 0.0, None))
-    scale = np.max(derived)                       # zero modes compare on the scale of the largest frequency
+    scale = np.max(derived)  # zero modes compare on the scale of the largest frequency
     solver_vs_derived = float(np.max(np.abs(values - derived) / np.maximum(derived, scale)))
-    results.number("closed_form_frequencies_rad_per_s", derived, "rad/s", note="roots of the characteristic "
-                   "polynomial derived with sympy, evaluated at 30 digits")
-    results.number("closed_form_squared_over_k_per_m", derived**2 / (symbols[symbolic.k] / symbols[symbolic.m1]),
-                   "k/m", note="$\\omega^2$ in units of the softest spring (or $P/a$) over the first mass")
-    results.number("solver_vs_closed_form", solver_vs_derived, "1",
-                   note="largest relative difference, eigensolver against the sympy derivation")
-    results.number("source_formula_exact", int(symbolic.formula_is_exact(printed, roots)), "1",
-                   note="1: the printed formula equals the derived roots for every value of its symbols")
-    results.number("source_formula_vs_solver", float(np.max(np.abs(values - from_source) /
-                                                            np.maximum(from_source, scale))), "1")
-    results.hard_case("closed_form", "The eigensolver's frequencies against the roots of the characteristic "
-                      "polynomial derived with sympy (largest relative difference)", solver_vs_derived, 1e-12)
+    results.number(
+        "closed_form_frequencies_rad_per_s",
+        derived,
+        "rad/s",
+        note="roots of the characteristic polynomial derived with sympy, evaluated at 30 digits",
+    )
+    results.number(
+        "closed_form_squared_over_k_per_m",
+        derived**2 / (symbols[symbolic.k] / symbols[symbolic.m1]),
+        "k/m",
+        note="$\\omega^2$ in units of the softest spring (or $P/a$) over the first mass",
+    )
+    results.number(
+        "solver_vs_closed_form",
+        solver_vs_derived,
+        "1",
+        note="largest relative difference, eigensolver against the sympy derivation",
+    )
+    results.number(
+        "source_formula_exact",
+        int(symbolic.formula_is_exact(printed, roots)),
+        "1",
+        note="1: the printed formula equals the derived roots for every value of its symbols",
+    )
+    results.number(
+        "source_formula_vs_solver",
+        float(np.max(np.abs(values - from_source) / np.maximum(from_source, scale))),
+        "1",
+    )
+    results.hard_case(
+        "closed_form",
+        "The eigensolver's frequencies against the roots of the characteristic "
+        "polynomial derived with sympy (largest relative difference)",
+        solver_vs_derived,
+        1e-12,
+    )
 
 
 def _zero_modes(results, lam, shapes, rigid, rigid_name):
     zero = np.argmin(np.abs(lam))
     v = shapes[:, zero] / np.linalg.norm(shapes[:, zero])
     rigid = rigid / np.linalg.norm(rigid)
-    results.number("zero_mode_eigenvalue_relative", abs(lam[zero]) / np.max(np.abs(lam)), "1",
-                   note="$|\\lambda_0|/\\lambda_\\mathrm{max}$ before clipping")
-    results.hard_case("zero_mode", f"The zero mode is a {rigid_name}: $1 - |\\cos\\theta|$, $\\theta$ the angle between "
-                      "them; its eigenvalue is round-off, clipped to 0, not reported as an instability",
-                      float(1 - abs(v @ rigid)), 1e-12)
-    results.hard_case("zero_mode_eigenvalue", "$|\\lambda_0|/\\lambda_\\mathrm{max}$ of the free chain's zero mode",
-                      float(abs(lam[zero]) / np.max(np.abs(lam))), 1e-12)
+    results.number(
+        "zero_mode_eigenvalue_relative",
+        abs(lam[zero]) / np.max(np.abs(lam)),
+        "1",
+        note="$|\\lambda_0|/\\lambda_\\mathrm{max}$ before clipping",
+    )
+    results.hard_case(
+        "zero_mode",
+        f"The zero mode is a {rigid_name}: $1 - |\\cos\\theta|$, $\\theta$ the angle between "
+        "them; its eigenvalue is round-off, clipped to 0, not reported as an instability",
+        float(1 - abs(v @ rigid)),
+        1e-12,
+    )
+    results.hard_case(
+        "zero_mode_eigenvalue",
+        "$|\\lambda_0|/\\lambda_\\mathrm{max}$ of the free chain's zero mode",
+        float(abs(lam[zero]) / np.max(np.abs(lam))),
+        1e-12,
+    )
 
 
 def _mode_shapes(results, shapes, n, k):
     from scipy import special
+
     j = bessel_j0_zeros(3)
-    height = 1 - np.arange(1, n + 1) / n                    # particle heights above the free end, x/l
+    height = 1 - np.arange(1, n + 1) / n  # particle heights above the free end, x/l
     fig, ax = new_figure(4.4, 3.65)
     x = np.linspace(0, 1, 400)
     for idx in range(min(3, k, n)):
@@ -250,10 +360,14 @@ def _mode_shapes(results, shapes, n, k):
     ax.set_xlabel("displacement (free end = 1)")
     ax.set_ylabel("height above the free end, $x/l$")
     ax.legend(loc="upper right")
-    results.figure("mode_shapes", fig, f"The first three mode shapes of the {n}-particle chain (points) over the "
-                   "continuum's modes $J_0(j_{0k}\\sqrt{x/l})$ (lines in the same colours), both scaled so that the "
-                   "free end, at height 0, moves 1. Mode 1 lies on the continuum's curve; modes 2 and 3 have the "
-                   f"continuum's nodes, one and two, but with {n} particles follow its shape only roughly.")
+    results.figure(
+        "mode_shapes",
+        fig,
+        f"The first three mode shapes of the {n}-particle chain (points) over the "
+        "continuum's modes $J_0(j_{0k}\\sqrt{x/l})$ (lines in the same colours), both scaled so that the "
+        "free end, at height 0, moves 1. Mode 1 lies on the continuum's curve; modes 2 and 3 have the "
+        f"continuum's nodes, one and two, but with {n} particles follow its shape only roughly.",
+    )
     if n >= 3 and k >= 2:
         y2 = shapes[:, 1]
         sign = np.nonzero(np.sign(y2[:-1]) != np.sign(y2[1:]))[0]
@@ -261,8 +375,12 @@ def _mode_shapes(results, shapes, n, k):
             i = sign[-1]
             h0, h1 = height[i], height[i + 1]
             node = h0 + (h1 - h0) * y2[i] / (y2[i] - y2[i + 1])
-            results.number("second_mode_node_x_over_l", node, "x/l from the free end",
-                           note="linear interpolation between particles")
+            results.number(
+                "second_mode_node_x_over_l",
+                node,
+                "x/l from the free end",
+                note="linear interpolation between particles",
+            )
 
 
 def _fit_order(n_values, errors):
@@ -274,16 +392,23 @@ def _fit_order(n_values, errors):
 
 def _convergence(results, model, n_values, quick):
     n_values = [n for n in n_values if not quick or n <= 1024]
-    exact = bessel_j0_zeros(1)[0] / 2                       # omega_1 / sqrt(g/l)
+    exact = bessel_j0_zeros(1)[0] / 2  # omega_1 / sqrt(g/l)
     rows = []
     if model == "links":
         for n in n_values:
             w = links_frequencies(n, 1)[0]
-            rows.append({"n": n, "scheme": "rigid links, l = n a", "omega1_sqrt_g_over_l": w,
-                         "relative_error": w / exact - 1})
+            rows.append(
+                {
+                    "n": n,
+                    "scheme": "rigid links, l = n a",
+                    "omega1_sqrt_g_over_l": w,
+                    "relative_error": w / exact - 1,
+                }
+            )
         order = _fit_order(n_values, [r["relative_error"] for r in rows])
-        results.number("links_convergence_order", order, "1", note=f"fitted over $n$ = {n_values[0]} to "
-                       f"{n_values[-1]}")
+        results.number(
+            "links_convergence_order", order, "1", note=f"fitted over $n$ = {n_values[0]} to {n_values[-1]}"
+        )
         fitted = {"links": (order, n_values[0], n_values[-1])}
         results.number("links_all_above_continuum", all(r["relative_error"] > 0 for r in rows), "bool")
     else:
@@ -292,37 +417,77 @@ def _convergence(results, model, n_values, quick):
             lam = hanging_particles_scaled(n, 1)[0]
             plain = np.sqrt(n * lam)
             corrected = np.sqrt((n + 0.5) * lam)
-            rows.append({"n": n, "scheme": "particles, l = n a", "omega1_sqrt_g_over_l": plain,
-                         "relative_error": plain / exact - 1})
-            rows.append({"n": n, "scheme": "particles, l = (n + 1/2) a", "omega1_sqrt_g_over_l": corrected,
-                         "relative_error": corrected / exact - 1})
+            rows.append(
+                {
+                    "n": n,
+                    "scheme": "particles, l = n a",
+                    "omega1_sqrt_g_over_l": plain,
+                    "relative_error": plain / exact - 1,
+                }
+            )
+            rows.append(
+                {
+                    "n": n,
+                    "scheme": "particles, l = (n + 1/2) a",
+                    "omega1_sqrt_g_over_l": corrected,
+                    "relative_error": corrected / exact - 1,
+                }
+            )
             if previous is not None:
                 rich = _richardson(previous, (n, lam))
-                rows.append({"n": n, "scheme": "Richardson, from n/2 and n", "omega1_sqrt_g_over_l": rich,
-                             "relative_error": rich / exact - 1})
+                rows.append(
+                    {
+                        "n": n,
+                        "scheme": "Richardson, from n/2 and n",
+                        "omega1_sqrt_g_over_l": rich,
+                        "relative_error": rich / exact - 1,
+                    }
+                )
             previous = (n, lam)
         frame = pd.DataFrame(rows)
         fitted = {}
-        for scheme, name in (("particles, l = n a", "plain"), ("particles, l = (n + 1/2) a", "end_corrected"),
-                             ("Richardson, from n/2 and n", "richardson")):
+        for scheme, name in (
+            ("particles, l = n a", "plain"),
+            ("particles, l = (n + 1/2) a", "end_corrected"),
+            ("Richardson, from n/2 and n", "richardson"),
+        ):
             part = frame[frame.scheme == scheme]
             tail = part[part.n >= 16] if name != "richardson" else part[(part.n >= 16) & (part.n <= 256)]
             order = _fit_order(tail.n, tail.relative_error)
-            results.number(f"{name}_convergence_order", order, "1",
-                           note=f"least-squares slope of $\\log|\\text{{error}}|$ against $\\log n$, $n$ = "
-                                f"{int(tail.n.min())} to {int(tail.n.max())}")
+            results.number(
+                f"{name}_convergence_order",
+                order,
+                "1",
+                note=f"least-squares slope of $\\log|\\text{{error}}|$ against $\\log n$, $n$ = "
+                f"{int(tail.n.min())} to {int(tail.n.max())}",
+            )
             fitted[_scheme(scheme)] = (order, int(tail.n.min()), int(tail.n.max()))
         rich = frame[frame.scheme == "Richardson, from n/2 and n"]
         reach = rich[np.abs(rich.relative_error) <= 1e-10]
-        results.number("richardson_n_for_1e-10", int(reach.n.min()) if len(reach) else None, "particles",
-                       note="smallest $n$ (with $n/2$) whose Richardson value of $\\omega_1$ is within $10^{-10}$")
-        results.number("plain_all_below_continuum",
-                       bool((frame[frame.scheme == "particles, l = n a"].relative_error < 0).all()), "bool")
+        results.number(
+            "richardson_n_for_1e-10",
+            int(reach.n.min()) if len(reach) else None,
+            "particles",
+            note="smallest $n$ (with $n/2$) whose Richardson value of $\\omega_1$ is within $10^{-10}$",
+        )
+        results.number(
+            "plain_all_below_continuum",
+            bool((frame[frame.scheme == "particles, l = n a"].relative_error < 0).all()),
+            "bool",
+        )
     frame = pd.DataFrame(rows)
-    results.table("convergence", frame, "Gravest frequency $\\omega_1$ of the discrete chain against $n$, with its "
-                  "relative error against the continuum's $(j_{01}/2)\\sqrt{g/l}$.",
-                  headers={"n": "$n$", "scheme": "scheme", "omega1_sqrt_g_over_l": "$\\omega_1$ ($\\sqrt{g/l}$)",
-                           "relative_error": "relative error"})
+    results.table(
+        "convergence",
+        frame,
+        "Gravest frequency $\\omega_1$ of the discrete chain against $n$, with its "
+        "relative error against the continuum's $(j_{01}/2)\\sqrt{g/l}$.",
+        headers={
+            "n": "$n$",
+            "scheme": "scheme",
+            "omega1_sqrt_g_over_l": "$\\omega_1$ ($\\sqrt{g/l}$)",
+            "relative_error": "relative error",
+        },
+    )
     _convergence_figure(results, model, frame, exact, fitted)
 
 
@@ -334,10 +499,17 @@ def _convergence_figure(results, model, frame, exact, fitted):
         label, colour, _ = SCHEMES[key]
         ax.semilogx(part.n, part.omega1_sqrt_g_over_l, "o-", ms=3, lw=0.9, color=colour, label=label)
         error = np.abs(part.relative_error.to_numpy())
-        shown = error > 0                                    # an exact zero has no place on a log axis
+        shown = error > 0  # an exact zero has no place on a log axis
         order, n_lo, n_hi = fitted[key]
-        bx.loglog(part.n[shown], error[shown], "o-", ms=3, lw=0.9, color=colour,
-                  label=f"{label}: fitted order {format_number(order, 3)}")
+        bx.loglog(
+            part.n[shown],
+            error[shown],
+            "o-",
+            ms=3,
+            lw=0.9,
+            color=colour,
+            label=f"{label}: fitted order {format_number(order, 3)}",
+        )
     ax.axhline(exact, color="0.3", ls="--", lw=0.8, label=r"continuum, $j_{01}/2$")
     ax.set_xlabel("$n$")
     ax.set_ylabel(r"$\omega_1$ ($\sqrt{g/l}$)")
@@ -353,33 +525,49 @@ def _convergence_figure(results, model, frame, exact, fitted):
         ns = np.geomspace(n_lo, n_hi, 50)
         ref = abs(float(middle.relative_error)) / 3.0 * (ns / float(middle.n)) ** -slope
         bx.loglog(ns, ref, ls=(0, (4, 3)), lw=0.8, color="0.45")
-        bx.annotate(f"$n^{{-{slope}}}$", (ns[25], ref[25]), xytext=(-4, -4), textcoords="offset points",
-                    ha="right", va="top", color="0.3")
+        bx.annotate(
+            f"$n^{{-{slope}}}$",
+            (ns[25], ref[25]),
+            xytext=(-4, -4),
+            textcoords="offset points",
+            ha="right",
+            va="top",
+            color="0.3",
+        )
     bx.set_xlabel("$n$")
     bx.set_ylabel(r"|relative error| of $\omega_1$")
     low, high = bx.get_ylim()
-    bx.set_ylim(low / 10 ** (0.3 * np.log10(high / low)), high)     # room below the data for the legend
+    bx.set_ylim(low / 10 ** (0.3 * np.log10(high / low)), high)  # room below the data for the legend
     bx.legend(loc="lower left")
     for axis in (ax, bx):
         axis.grid(True, which="both", alpha=0.25, linewidth=0.6)
     if model == "links":
         order, n_lo, n_hi = fitted["links"]
-        caption = ("The gravest frequency $\\omega_1$ of $n$ uniform rigid links hanging from the top, against $n$ "
-                   "(left; dashed: the continuum's $j_{01}/2$), and its relative error against the continuum (right; "
-                   "dashed: the reference slope $n^{-2}$). The links converge from above at second order: fitted "
-                   f"order {format_number(order, 3)} over $n$ = {n_lo} to {n_hi}.")
+        caption = (
+            "The gravest frequency $\\omega_1$ of $n$ uniform rigid links hanging from the top, against $n$ "
+            "(left; dashed: the continuum's $j_{01}/2$), and its relative error against the continuum "
+            "(right; "
+            "dashed: the reference slope $n^{-2}$). The links converge from above at second order: fitted "
+            f"order {format_number(order, 3)} over $n$ = {n_lo} to {n_hi}."
+        )
     else:
         orders = {key: format_number(value[0], 3) for key, value in fitted.items()}
-        caption = ("The gravest frequency $\\omega_1$ of $n$ particles hanging on a light string, against $n$ "
-                   "(left; dashed: the continuum's $j_{01}/2$), with the length taken as $l = na$, with the end "
-                   "correction $l = (n + \\tfrac12)a$, and after Richardson extrapolation from $n/2$ and $n$; "
-                   "right: the relative error against the continuum, with reference slopes $n^{-1}$, $n^{-2}$ and "
-                   "$n^{-4}$ (dashed). The fitted orders are first ("
-                   f"{orders['plain']}), second ({orders['end']}) and fourth ({orders['richardson']})")
+        caption = (
+            "The gravest frequency $\\omega_1$ of $n$ particles hanging on a light string, against $n$ "
+            "(left; dashed: the continuum's $j_{01}/2$), with the length taken as $l = na$, with the end "
+            "correction $l = (n + \\tfrac12)a$, and after Richardson extrapolation from $n/2$ and $n$; "
+            "right: the relative error against the continuum, with reference slopes $n^{-1}$, $n^{-2}$ and "
+            "$n^{-4}$ (dashed). The fitted orders are first ("
+            f"{orders['plain']}), second ({orders['end']}) and fourth ({orders['richardson']})"
+        )
         rich = frame[frame.scheme.map(_scheme) == "richardson"]
         zero = rich[rich.relative_error == 0]
-        caption += (f"; at $n$ = {format_number(int(zero.n.min()))} Richardson's error is exactly 0, at round-off, "
-                    "and is not drawn." if len(zero) else ".")
+        caption += (
+            f"; at $n$ = {format_number(int(zero.n.min()))} Richardson's error is exactly 0, at round-off, "
+            "and is not drawn."
+            if len(zero)
+            else "."
+        )
     results.figure("convergence", fig, caption)
 
 
@@ -407,48 +595,85 @@ def _accuracy_cost(results, spec, quick):
         for method in chain_eigen.METHODS:
             if n > SOLVER_LIMITS[method]:
                 continue
-            seconds, lam, runs = min_time(lambda: hanging_particles_scaled(n, 5, method)[0],
-                                          repeats=repeats, budget_s=1.0 if quick else 3.0)
-            rows.append({"n": n, "solver": method, "seconds": seconds, "runs": runs,
-                         "algebraic_relative_error": abs(lam / lam_exact - 1),
-                         "discretization_relative_error": abs(np.sqrt((n + 0.5) * lam) / j1 - 1)})
+            seconds, lam, runs = min_time(
+                lambda: hanging_particles_scaled(n, 5, method)[0],
+                repeats=repeats,
+                budget_s=1.0 if quick else 3.0,
+            )
+            rows.append(
+                {
+                    "n": n,
+                    "solver": method,
+                    "seconds": seconds,
+                    "runs": runs,
+                    "algebraic_relative_error": abs(lam / lam_exact - 1),
+                    "discretization_relative_error": abs(np.sqrt((n + 0.5) * lam) / j1 - 1),
+                }
+            )
     frame = pd.DataFrame(rows)
-    results.timing_table("solver_cost", frame, "Lowest five eigenvalues of the hanging chain of $n$ particles, by "
-                         "solver: wall time (minimum over repeats), the relative error of $\\lambda_1$ against the "
-                         "exact Laguerre zero, and the relative error of $\\omega_1$ (end-corrected) against the "
-                         f"continuum. {software_stamp()}.",
-                         headers={"n": "$n$", "solver": "solver", "seconds": "wall time (s)", "runs": "runs",
-                                  "algebraic_relative_error": "error of $\\lambda_1$",
-                                  "discretization_relative_error": "error of $\\omega_1$"})
+    results.timing_table(
+        "solver_cost",
+        frame,
+        "Lowest five eigenvalues of the hanging chain of $n$ particles, by "
+        "solver: wall time (minimum over repeats), the relative error of $\\lambda_1$ against the "
+        "exact Laguerre zero, and the relative error of $\\omega_1$ (end-corrected) against the "
+        f"continuum. {software_stamp()}.",
+        headers={
+            "n": "$n$",
+            "solver": "solver",
+            "seconds": "wall time (s)",
+            "runs": "runs",
+            "algebraic_relative_error": "error of $\\lambda_1$",
+            "discretization_relative_error": "error of $\\omega_1$",
+        },
+    )
     fig, ax = new_figure(5.4, 2.1)
     for method, part in frame.groupby("solver", sort=False):
         _solver_line(ax, method, part.n, part.seconds)
     ax.set_xlabel("$n$")
     ax.set_ylabel("wall time (s)")
     ax.legend(loc="upper left")
-    results.timing_figure("solver_cost", fig, "Wall time for the lowest five modes of the chain of $n$ particles "
-                          "against $n$, by solver (minimum over repeats). The dense solver's cost grows fastest, the "
-                          "full tridiagonal solver's next; the tridiagonal solver that computes only the lowest modes "
-                          "and the pliability solver grow about linearly and are the only ones run up to the "
-                          "largest $n$.")
+    results.timing_figure(
+        "solver_cost",
+        fig,
+        "Wall time for the lowest five modes of the chain of $n$ particles "
+        "against $n$, by solver (minimum over repeats). The dense solver's cost grows fastest, the "
+        "full tridiagonal solver's next; the tridiagonal solver that computes only the lowest modes "
+        "and the pliability solver grow about linearly and are the only ones run up to the "
+        "largest $n$.",
+    )
     fig, ax = new_figure(5.4, 2.1)
     for method, part in frame.groupby("solver", sort=False):
         _solver_line(ax, method, part.n, np.maximum(part.algebraic_relative_error, 1e-17))
     ns = np.array(sorted(frame.n.unique()), float)
-    ax.loglog(ns, 2.8 * ns ** 2 * np.finfo(float).eps, ls=(0, (4, 3)), color="0.45", lw=0.9,
-              label=r"$2.8\,n^2\epsilon$: condition number × $\epsilon$")
+    ax.loglog(
+        ns,
+        2.8 * ns**2 * np.finfo(float).eps,
+        ls=(0, (4, 3)),
+        color="0.45",
+        lw=0.9,
+        label=r"$2.8\,n^2\epsilon$: condition number × $\epsilon$",
+    )
     ax.set_xlabel("$n$")
     ax.set_ylabel(r"relative error of $\lambda_1$")
     ax.legend(loc="upper left")
-    results.figure("solver_accuracy", fig, "Relative error of the lowest eigenvalue $\\lambda_1$ of the chain of "
-                   "$n$ particles against the exact Laguerre zero, by solver (errors below "
-                   f"{format_number(1e-17, 1)} drawn at that floor); dashed: the condition number $2.8n^2$ times the "
-                   "machine $\\epsilon$. The standard solvers lose accuracy like $n^2\\epsilon$; the pliability "
-                   "solver keeps it.")
+    results.figure(
+        "solver_accuracy",
+        fig,
+        "Relative error of the lowest eigenvalue $\\lambda_1$ of the chain of "
+        "$n$ particles against the exact Laguerre zero, by solver (errors below "
+        f"{format_number(1e-17, 1)} drawn at that floor); dashed: the condition number $2.8n^2$ times the "
+        "machine $\\epsilon$. The standard solvers lose accuracy like $n^2\\epsilon$; the pliability "
+        "solver keeps it.",
+    )
     for method in chain_eigen.METHODS:
         part = frame[frame.solver == method]
-        results.number(f"{method}_worst_relative_error_lambda1", float(part.algebraic_relative_error.max()), "1",
-                       note=f"$n$ up to {format_number(int(part.n.max()))}")
+        results.number(
+            f"{method}_worst_relative_error_lambda1",
+            float(part.algebraic_relative_error.max()),
+            "1",
+            note=f"$n$ up to {format_number(int(part.n.max()))}",
+        )
     _cost_to_target(results, spec["targets"], quick)
 
 
@@ -463,11 +688,15 @@ def _cost_to_target(results, targets, quick):
     errors = {
         "plain n (l = na)": {n: abs(np.sqrt(n * lam[n]) / j1 - 1) for n in ns},
         "end-corrected (l = (n + ½)a)": {n: abs(np.sqrt((n + 0.5) * lam[n]) / j1 - 1) for n in ns},
-        "Richardson (n/2 and n)": {n: abs(_richardson((n // 2, lam[n // 2]), (n, lam[n])) / j1 - 1)
-                                   for n in ns[1:]},
+        "Richardson (n/2 and n)": {
+            n: abs(_richardson((n // 2, lam[n // 2]), (n, lam[n])) / j1 - 1) for n in ns[1:]
+        },
     }
-    cost = {"plain n (l = na)": lambda n: seconds[n], "end-corrected (l = (n + ½)a)": lambda n: seconds[n],
-            "Richardson (n/2 and n)": lambda n: seconds[n] + seconds[n // 2]}
+    cost = {
+        "plain n (l = na)": lambda n: seconds[n],
+        "end-corrected (l = (n + ½)a)": lambda n: seconds[n],
+        "Richardson (n/2 and n)": lambda n: seconds[n] + seconds[n // 2],
+    }
     orders = {"plain n (l = na)": 1.0, "end-corrected (l = (n + ½)a)": 2.0, "Richardson (n/2 and n)": 4.0}
     rows = []
     for scheme, err in errors.items():
@@ -475,22 +704,48 @@ def _cost_to_target(results, targets, quick):
             hit = [n for n in sorted(err) if err[n] <= target]
             if hit:
                 n = hit[0]
-                rows.append({"scheme": scheme, "target": target, "n": n, "error": err[n],
-                             "seconds": cost[scheme](n), "measured": True})
+                rows.append(
+                    {
+                        "scheme": scheme,
+                        "target": target,
+                        "n": n,
+                        "error": err[n],
+                        "seconds": cost[scheme](n),
+                        "measured": True,
+                    }
+                )
             else:
                 # beyond the sweep: extrapolate n from the largest run along the scheme's known order
                 n_last = max(err)
                 n_need = n_last * (err[n_last] / target) ** (1 / orders[scheme])
-                rows.append({"scheme": scheme, "target": target, "n": float(n_need), "error": None,
-                             "seconds": None, "measured": False})
+                rows.append(
+                    {
+                        "scheme": scheme,
+                        "target": target,
+                        "n": float(n_need),
+                        "error": None,
+                        "seconds": None,
+                        "measured": False,
+                    }
+                )
     _work_precision_figure(results, errors, cost, ns)
     frame = pd.DataFrame(rows)
-    results.timing_table("cost_to_target", frame, "What it costs to reach a given relative error of $\\omega_1$ "
-                         "against the continuum, with the pliability solver: the smallest $n = 2^p$ that reaches it "
-                         f"and its time; where no $n$ up to $2^{{{top}}}$ reaches it, the $n$ the error law predicts "
-                         f"(not run, no time). {software_stamp()}.",
-                         headers={"scheme": "scheme", "target": "target error", "n": "$n$", "error": "error reached",
-                                  "seconds": "wall time (s)", "measured": "run"})
+    results.timing_table(
+        "cost_to_target",
+        frame,
+        "What it costs to reach a given relative error of $\\omega_1$ "
+        "against the continuum, with the pliability solver: the smallest $n = 2^p$ that reaches it "
+        f"and its time; where no $n$ up to $2^{{{top}}}$ reaches it, the $n$ the error law predicts "
+        f"(not run, no time). {software_stamp()}.",
+        headers={
+            "scheme": "scheme",
+            "target": "target error",
+            "n": "$n$",
+            "error": "error reached",
+            "seconds": "wall time (s)",
+            "measured": "run",
+        },
+    )
 
 
 def _work_precision_figure(results, errors, cost, ns):
@@ -500,51 +755,83 @@ def _work_precision_figure(results, errors, cost, ns):
     for scheme, err in errors.items():
         n_sorted = sorted(err)
         label, colour, _ = SCHEMES[_scheme(scheme)]
-        ax.loglog([max(err[n], 1e-17) for n in n_sorted], [cost[scheme](n) for n in n_sorted], "o-", ms=3,
-                  color=colour, label=f"{label}, pliability")
+        ax.loglog(
+            [max(err[n], 1e-17) for n in n_sorted],
+            [cost[scheme](n) for n in n_sorted],
+            "o-",
+            ms=3,
+            color=colour,
+            label=f"{label}, pliability",
+        )
     lapack = [n for n in ns if n <= SOLVER_LIMITS["tridiagonal_select"]]
     lapack_err, lapack_time = [], []
     for n in lapack:
-        seconds, lam, _ = min_time(lambda: hanging_particles_scaled(n, 1, "tridiagonal_select")[0],
-                                   repeats=3, budget_s=0.5)
+        seconds, lam, _ = min_time(
+            lambda: hanging_particles_scaled(n, 1, "tridiagonal_select")[0], repeats=3, budget_s=0.5
+        )
         lapack_err.append(max(abs(np.sqrt((n + 0.5) * lam) / j1 - 1), 1e-17))
         lapack_time.append(seconds)
-    ax.loglog(lapack_err, lapack_time, "o--", ms=3, color=SOLVERS["tridiagonal_select"][1],
-              label=f"{SCHEMES['end'][0]}, LAPACK (lowest only)")
+    ax.loglog(
+        lapack_err,
+        lapack_time,
+        "o--",
+        ms=3,
+        color=SOLVERS["tridiagonal_select"][1],
+        label=f"{SCHEMES['end'][0]}, LAPACK (lowest only)",
+    )
     ax.set_xlabel(r"relative error of $\omega_1$ against the continuum")
     ax.set_ylabel("wall time (s)")
     ax.invert_xaxis()
     ax.legend(loc="lower right")
-    results.timing_figure("work_precision", fig, "Wall time against the relative error of the gravest frequency, "
-                          "$n$ = 2, 4, 8, … along each line (errors below "
-                          f"{format_number(1e-17, 1)} drawn at that floor; accuracy grows to the right). Richardson "
-                          "extrapolation buys six orders of magnitude over the end correction at equal time; with "
-                          "LAPACK's solver the end-corrected chain stalls where its $n^2\\epsilon$ error overtakes the "
-                          "discretization error.")
+    results.timing_figure(
+        "work_precision",
+        fig,
+        "Wall time against the relative error of the gravest frequency, "
+        "$n$ = 2, 4, 8, … along each line (errors below "
+        f"{format_number(1e-17, 1)} drawn at that floor; accuracy grows to the right). Richardson "
+        "extrapolation buys six orders of magnitude over the end correction at equal time; with "
+        "LAPACK's solver the end-corrected chain stalls where its $n^2\\epsilon$ error overtakes the "
+        "discretization error.",
+    )
 
 
 def _large_n(results, n, quick):
     """The lowest mode of a very long chain: relative accuracy survives only in the factored form."""
     n = min(n, 20000) if quick else n
-    reference = laguerre_lowest_zero_asymptotic(n)   # error O(n^-5): below 1e-20 relative here
+    reference = laguerre_lowest_zero_asymptotic(n)  # error O(n^-5): below 1e-20 relative here
     measured = {}
     for method in ("tridiagonal_select", "pliability"):
         lam = hanging_particles_scaled(n, 1, method)[0]
         measured[method] = abs(lam / reference - 1)
-        results.number(f"large_n_{method}_relative_error", measured[method], "1", note=f"$n$ = {format_number(n)}")
-    results.hard_case("large_n_lowest_mode", f"Lowest mode of a chain of $n$ = {format_number(n)} particles to "
-                      "$10^{-12}$ relative (pliability solver against Tricomi's expansion of the Laguerre zero)",
-                      measured["pliability"], 1e-12)
-    # Lamb Art. 87: the pliabilities are reciprocal, sum Q q' = sum Q' q, here for the long chain's factored K^-1
+        results.number(
+            f"large_n_{method}_relative_error", measured[method], "1", note=f"$n$ = {format_number(n)}"
+        )
+    results.hard_case(
+        "large_n_lowest_mode",
+        f"Lowest mode of a chain of $n$ = {format_number(n)} particles to "
+        "$10^{-12}$ relative (pliability solver against Tricomi's expansion of the Laguerre zero)",
+        measured["pliability"],
+        1e-12,
+    )
+    # Lamb Art. 87: the pliabilities are reciprocal, sum Q q' = sum Q' q, here for the long chain's factored
+    # K^-1
     rng = np.random.default_rng(7)
     loads = rng.standard_normal((n, 2))
     q = chain_eigen._apply_pliability(loads, np.arange(n, 0, -1.0), np.ones(n))
-    results.number("reciprocity_relative", float(abs(loads[:, 0] @ q[:, 1] - loads[:, 1] @ q[:, 0]) /
-                                                 (np.linalg.norm(loads[:, 0]) * np.linalg.norm(q[:, 1]))), "1",
-                   note=f"$|Q\\cdot q' - Q'\\cdot q|/|Q||q'|$ for two random loads, $n$ = {format_number(n)}")
-    results.notes.append(f"At $n$ = {format_number(n)} LAPACK's tridiagonal solver gives $\\lambda_1$ to "
-                         f"{format_number(measured['tridiagonal_select'], 2)} relative: the $n^2\\epsilon$ loss the "
-                         "pliability form avoids.")
+    results.number(
+        "reciprocity_relative",
+        float(
+            abs(loads[:, 0] @ q[:, 1] - loads[:, 1] @ q[:, 0])
+            / (np.linalg.norm(loads[:, 0]) * np.linalg.norm(q[:, 1]))
+        ),
+        "1",
+        note=f"$|Q\\cdot q' - Q'\\cdot q|/|Q||q'|$ for two random loads, $n$ = {format_number(n)}",
+    )
+    results.notes.append(
+        f"At $n$ = {format_number(n)} LAPACK's tridiagonal solver gives $\\lambda_1$ to "
+        f"{format_number(measured['tridiagonal_select'], 2)} relative: the $n^2\\epsilon$ loss the "
+        "pliability form avoids."
+    )
 
 
 def _dispersion(results, built, values, unit, unit_name, unit_label):
@@ -557,19 +844,36 @@ def _dispersion(results, built, values, unit, unit_name, unit_label):
     law = 2 * np.sqrt(stiffness / m) * np.abs(np.sin(q * a / 2))
     qq = np.linspace(0, np.pi / a, 300)
     fig, ax = new_figure(5.2, 3.2)
-    ax.plot(qq * a / np.pi, 2 * np.sqrt(stiffness / m) * np.sin(qq * a / 2) / unit, color="C4",
-            label=r"$\omega = 2\sqrt{k/m}\,|\sin(qa/2)|$")
-    ax.plot(qq * a / np.pi, qq * a * np.sqrt(stiffness / m) / unit, "--", lw=0.9, color="0.4",
-            label=r"continuum, $\omega = qa\sqrt{k/m}$")
+    ax.plot(
+        qq * a / np.pi,
+        2 * np.sqrt(stiffness / m) * np.sin(qq * a / 2) / unit,
+        color="C4",
+        label=r"$\omega = 2\sqrt{k/m}\,|\sin(qa/2)|$",
+    )
+    ax.plot(
+        qq * a / np.pi,
+        qq * a * np.sqrt(stiffness / m) / unit,
+        "--",
+        lw=0.9,
+        color="0.4",
+        label=r"continuum, $\omega = qa\sqrt{k/m}$",
+    )
     ax.plot(q[: len(values)] * a / np.pi, values / unit, "o", ms=4, color="C5", label="computed modes")
     ax.set_xlabel(r"wavenumber $qa/\pi$")
     ax.set_ylabel(f"$\\omega$ ({UNIT_MATH.get(unit_name, unit_label)})")
     ax.set_xlim(0, 1)
     ax.set_ylim(bottom=0)
     ax.legend(loc="upper left")
-    results.figure("dispersion", fig, "Dispersion of the discrete chain of springs: frequency against wavenumber. "
-                   "The computed frequencies lie on $\\omega = 2\\sqrt{k/m}\\,|\\sin(qa/2)|$, below the "
-                   "continuum's line, up to the cut-off $2\\sqrt{k/m}$ at $qa = \\pi$.")
-    results.number("dispersion_max_relative_deviation",
-                   float(np.max(np.abs(values - law[: len(values)]) / law[: len(values)])), "1")
+    results.figure(
+        "dispersion",
+        fig,
+        "Dispersion of the discrete chain of springs: frequency against wavenumber. "
+        "The computed frequencies lie on $\\omega = 2\\sqrt{k/m}\\,|\\sin(qa/2)|$, below the "
+        "continuum's line, up to the cut-off $2\\sqrt{k/m}$ at $qa = \\pi$.",
+    )
+    results.number(
+        "dispersion_max_relative_deviation",
+        float(np.max(np.abs(values - law[: len(values)]) / law[: len(values)])),
+        "1",
+    )
     results.number("cutoff_over_unit", 2 * np.sqrt(stiffness / m) / unit, unit_label)

@@ -18,8 +18,8 @@ from __future__ import annotations
 
 import numpy as np
 import pandas as pd
-import sympy as sp
 import scipy.linalg as sla
+import sympy as sp
 
 
 def equilibrium(n: int, radius_m: float, mass_kg: float, omega: float):
@@ -28,7 +28,7 @@ def equilibrium(n: int, radius_m: float, mass_kg: float, omega: float):
     theta = 2 * np.pi * np.arange(n) / n
     positions = radius_m * np.column_stack([np.cos(theta), np.sin(theta)])
     m = mass_kg / n
-    tension = m * omega**2 * radius_m / (2 * np.sin(np.pi / n))    # two neighbours pull each bead inward
+    tension = m * omega**2 * radius_m / (2 * np.sin(np.pi / n))  # two neighbours pull each bead inward
     return theta, positions, m, tension
 
 
@@ -42,7 +42,7 @@ def spring_stiffness(positions, edges, k: float, tension: float = 0.0):
         e = d / length
         block = k * np.outer(e, e) + tension / length * (np.eye(2) - np.outer(e, e))
         for a, b, sign in ((i, i, 1), (j, j, 1), (i, j, -1), (j, i, -1)):
-            K[2 * a:2 * a + 2, 2 * b:2 * b + 2] += sign * block
+            K[2 * a : 2 * a + 2, 2 * b : 2 * b + 2] += sign * block
     return K
 
 
@@ -61,15 +61,15 @@ def modes(theta, positions, M, G, K_eff):
     A = np.block([[np.zeros_like(M), np.eye(2 * n)], [-np.linalg.solve(M, K_eff), -np.linalg.solve(M, G)]])
     lam, vectors = np.linalg.eig(A)
     radial = positions / np.linalg.norm(positions, axis=1)[:, None]
-    u = np.einsum("jc,jcm->jm", radial, vectors[:2 * n].reshape(n, 2, -1))
-    spectrum = np.fft.fft(u, axis=0)                         # u_j ~ exp(i s theta_j): the peak at s
+    u = np.einsum("jc,jcm->jm", radial, vectors[: 2 * n].reshape(n, 2, -1))
+    spectrum = np.fft.fft(u, axis=0)  # u_j ~ exp(i s theta_j): the peak at s
     s = np.fft.fftfreq(n, 1.0 / n).astype(int)[np.argmax(np.abs(spectrum), axis=0)]
     return lam, s
 
 
 def dispersion():
-    """Lamb's (44) for v ~ cos(s theta - sigma t): sigma^2 (s^2 + 1) + 4 omega s sigma - omega^2 s^2 (s^2 - 3) = 0;
-    sympy's roots, and whether they are -s omega and s omega (s^2 - 3)/(s^2 + 1) exactly."""
+    """Lamb's (44) for v ~ cos(s theta - sigma t): sigma^2 (s^2 + 1) + 4 omega s sigma - omega^2 s^2 (s^2 - 3)
+    = 0; sympy's roots, and whether they are -s omega and s omega (s^2 - 3)/(s^2 + 1) exactly."""
     s, w = sp.symbols("s omega", positive=True)
     sigma = sp.Symbol("sigma", real=True)
     roots = sp.solve(sigma**2 * (s**2 + 1) + 4 * w * s * sigma - w**2 * s**2 * (s**2 - 3), sigma)
@@ -81,70 +81,129 @@ def dispersion():
 def run_ring(scene, results, quick):
     chain, effects = scene.data["chain"], scene.data["effects"]
     spec = scene.data["analysis"]["ring_waves"]
-    n = chain["n"]                                   # 400 beads: a few seconds, quick or not
+    n = chain["n"]  # 400 beads: a few seconds, quick or not
     radius = chain["length_m"] / (2 * np.pi)
     omega, k = effects["rotation"]["omega_rad_per_s"], float(effects["springs"]["k_n_per_m"])
     theta, positions, m, tension = equilibrium(n, radius, chain["mass_kg"], omega)
     rho = chain["mass_kg"] / chain["length_m"]
     results.number("n", n, "particles")
-    results.number("stiffness_ratio", k / (m * omega**2), "1", note="$k/m\\omega^2$: large, the chain nearly "
-                   "inextensible")
-    results.number("tension_over_rho_omega2_a2", tension / (rho * omega**2 * radius**2), "1",
-                   note="the beads' steady tension against Lamb's $\\rho\\omega^2a^2$")
+    results.number(
+        "stiffness_ratio",
+        k / (m * omega**2),
+        "1",
+        note="$k/m\\omega^2$: large, the chain nearly inextensible",
+    )
+    results.number(
+        "tension_over_rho_omega2_a2",
+        tension / (rho * omega**2 * radius**2),
+        "1",
+        note="the beads' steady tension against Lamb's $\\rho\\omega^2a^2$",
+    )
     M, G, K_eff = matrices(positions, m, omega, k, tension)
     lam, s = modes(theta, positions, M, G, K_eff)
     # Two roots are defective: s = 0 at zero (a change of spin: the ring's angle drifts in the rotating frame)
-    # and s = 1 at omega (a displaced circle: the whole ring drifts, t exp(-i omega t)). Rounding splits each by
-    # about sqrt(eps), into a real pair or a quartet. Every other root must be imaginary.
+    # and s = 1 at omega (a displaced circle: the whole ring drifts, t exp(-i omega t)). Rounding splits each
+    # by about sqrt(eps), into a real pair or a quartet. Every other root must be imaginary.
     defective = (np.abs(lam) < 1e-3 * omega) | (np.abs(np.abs(lam) - omega) < 1e-3 * omega)
     regular = ~defective
-    results.number("largest_real_part", float(np.max(np.abs(lam[regular].real)) / np.max(np.abs(lam))), "1",
-                   note="$\\max|\\operatorname{Re}\\lambda|/\\max|\\lambda|$ but the two defective roots: "
-                        "gyroscopic and stable, the roots imaginary")
-    results.number("defective_real_part", float(np.max(np.abs(lam[defective].real)) / omega), "1",
-                   note="the defective roots ($s$ = 0, 1) split by rounding, $|\\operatorname{Re}\\lambda|/\\omega$")
+    results.number(
+        "largest_real_part",
+        float(np.max(np.abs(lam[regular].real)) / np.max(np.abs(lam))),
+        "1",
+        note="$\\max|\\operatorname{Re}\\lambda|/\\max|\\lambda|$ but the two defective roots: "
+        "gyroscopic and stable, the roots imaginary",
+    )
+    results.number(
+        "defective_real_part",
+        float(np.max(np.abs(lam[defective].real)) / omega),
+        "1",
+        note="the defective roots ($s$ = 0, 1) split by rounding, $|\\operatorname{Re}\\lambda|/\\omega$",
+    )
     rows = []
     for wave in range(1, spec["s_max"] + 1):
         candidates = lam[s == wave]
-        flexural = candidates[np.argsort(np.abs(candidates))[:2]]      # the stretching waves are far faster
+        flexural = candidates[np.argsort(np.abs(candidates))[:2]]  # the stretching waves are far faster
         speeds = np.sort(-flexural.imag / wave / omega)
         expected = (-1.0, (wave**2 - 3) / (wave**2 + 1))
-        rows.append({"s": wave, "relative_1": speeds[0], "relative_2": speeds[1],
-                     "space_1": speeds[0] + 1, "space_2": speeds[1] + 1,
-                     "lamb_space_2": 2 * (wave**2 - 1) / (wave**2 + 1),
-                     "deviation": max(abs(speeds[0] - expected[0]), abs(speeds[1] - expected[1]))})
+        rows.append(
+            {
+                "s": wave,
+                "relative_1": speeds[0],
+                "relative_2": speeds[1],
+                "space_1": speeds[0] + 1,
+                "space_2": speeds[1] + 1,
+                "lamb_space_2": 2 * (wave**2 - 1) / (wave**2 + 1),
+                "deviation": max(abs(speeds[0] - expected[0]), abs(speeds[1] - expected[1])),
+            }
+        )
     frame = pd.DataFrame(rows)
     waves = frame[frame.s >= 2]
-    results.number("stationary_wave_speed_max", float(waves.space_1.abs().max()), "1",
-                   note="largest $|$pattern speed in space$|/\\omega$ of the first wave, $s$ = 2 to "
-                        f"{spec['s_max']}: Lamb's 0")
-    results.number("second_wave_deviation_max", float((waves.space_2 - waves.lamb_space_2).abs().max()), "1",
-                   note="largest deviation of the second wave's speed in space from $2\\omega(s^2 - 1)/(s^2 + 1)$, "
-                        "over $\\omega$")
+    results.number(
+        "stationary_wave_speed_max",
+        float(waves.space_1.abs().max()),
+        "1",
+        note="largest $|$pattern speed in space$|/\\omega$ of the first wave, $s$ = 2 to "
+        f"{spec['s_max']}: Lamb's 0",
+    )
+    results.number(
+        "second_wave_deviation_max",
+        float((waves.space_2 - waves.lamb_space_2).abs().max()),
+        "1",
+        note="largest deviation of the second wave's speed in space from $2\\omega(s^2 - 1)/(s^2 + 1)$, "
+        "over $\\omega$",
+    )
     one = frame[frame.s == 1].iloc[0]
-    results.number("s1_space_speeds", [float(one.space_1), float(one.space_2)], "1",
-                   note="$s = 1$: both waves at rest in space (the disturbed form is a displaced circle)")
+    results.number(
+        "s1_space_speeds",
+        [float(one.space_1), float(one.space_2)],
+        "1",
+        note="$s = 1$: both waves at rest in space (the disturbed form is a displaced circle)",
+    )
     _, exact = dispersion()
-    results.number("dispersion_roots_exact", int(exact), "1",
-                   note="1: sympy's roots of (44) are $-s\\omega$ and $s\\omega(s^2 - 3)/(s^2 + 1)$ exactly")
-    results.hard_case("ring_roots_imaginary", "Rotating ring: the gyroscopic eigenproblem's largest real part, "
-                      "relative, but the defective roots (rounding; a growing mode would be an instability)",
-                      float(np.max(np.abs(lam[regular].real)) / np.max(np.abs(lam))), 1e-9)
-    results.hard_case("ring_defective_root", "Rotating ring: the defective double roots, a change of spin ($s$ = "
-                      "0) and a drifting ring ($s$ = 1), split by about $\\sqrt{\\epsilon}$, not by an instability: "
-                      "$|\\operatorname{Re}\\lambda|/\\omega$", float(np.max(np.abs(lam[defective].real)) / omega), 1e-3)
-    results.table("waves", frame[["s", "relative_1", "relative_2", "space_2", "lamb_space_2", "deviation"]],
-                  "Waves on the rotating ring (Lamb Art. 98): pattern speeds over $\\omega$ relative to the chain "
-                  "and, for the second wave, in space beside Lamb's $2(s^2 - 1)/(s^2 + 1)$; the first wave is at "
-                  "rest in space. The deviation is from Lamb's relative speeds.",
-                  headers={"s": "$s$", "relative_1": "wave 1", "relative_2": "wave 2", "space_2": "wave 2 in space",
-                           "lamb_space_2": "Lamb", "deviation": "deviation"})
-    if "gyroscopic" in scene.data["analysis"]:      # Lamb Art. 99: kinetic stability, secular instability
+    results.number(
+        "dispersion_roots_exact",
+        int(exact),
+        "1",
+        note="1: sympy's roots of (44) are $-s\\omega$ and $s\\omega(s^2 - 3)/(s^2 + 1)$ exactly",
+    )
+    results.hard_case(
+        "ring_roots_imaginary",
+        "Rotating ring: the gyroscopic eigenproblem's largest real part, "
+        "relative, but the defective roots (rounding; a growing mode would be an instability)",
+        float(np.max(np.abs(lam[regular].real)) / np.max(np.abs(lam))),
+        1e-9,
+    )
+    results.hard_case(
+        "ring_defective_root",
+        "Rotating ring: the defective double roots, a change of spin ($s$ = "
+        "0) and a drifting ring ($s$ = 1), split by about $\\sqrt{\\epsilon}$, not by an instability: "
+        "$|\\operatorname{Re}\\lambda|/\\omega$",
+        float(np.max(np.abs(lam[defective].real)) / omega),
+        1e-3,
+    )
+    results.table(
+        "waves",
+        frame[["s", "relative_1", "relative_2", "space_2", "lamb_space_2", "deviation"]],
+        "Waves on the rotating ring (Lamb Art. 98): pattern speeds over $\\omega$ relative to the chain "
+        "and, for the second wave, in space beside Lamb's $2(s^2 - 1)/(s^2 + 1)$; the first wave is at "
+        "rest in space. The deviation is from Lamb's relative speeds.",
+        headers={
+            "s": "$s$",
+            "relative_1": "wave 1",
+            "relative_2": "wave 2",
+            "space_2": "wave 2 in space",
+            "lamb_space_2": "Lamb",
+            "deviation": "deviation",
+        },
+    )
+    if "gyroscopic" in scene.data["analysis"]:  # Lamb Art. 99: kinetic stability, secular instability
         from . import stability
+
         stability.gyroscopic(results, scene.data["analysis"]["gyroscopic"])
 
 
 # --- The triangle: three equal atoms on three equal springs ------------------------------------------------
+
 
 def triangle_polynomial():
     """det(K - lambda M) of the equilateral triangle, factored by sympy (K exact: the corners' coordinates in
@@ -154,9 +213,9 @@ def triangle_polynomial():
     K = sp.zeros(6, 6)
     for i, j in ((0, 1), (1, 2), (2, 0)):
         e = corners[j] - corners[i]
-        block = k * e * e.T                                   # unit sides, no tension
+        block = k * e * e.T  # unit sides, no tension
         for a, b, sign in ((i, i, 1), (j, j, 1), (i, j, -1), (j, i, -1)):
-            K[2 * a:2 * a + 2, 2 * b:2 * b + 2] += sign * block
+            K[2 * a : 2 * a + 2, 2 * b : 2 * b + 2] += sign * block
     polynomial = sp.factor((K - lam * m * sp.eye(6)).det())
     roots = sp.roots(sp.Poly(polynomial, lam))
     return polynomial, {sp.simplify(r * m / k): multiplicity for r, multiplicity in roots.items()}
@@ -175,25 +234,58 @@ def run_triangle(scene, results, quick):
     lam = np.where(np.abs(lam) <= 1e-12 * scale, 0.0, lam)
     results.number("omega_squared_over_k_per_m", lam / (k / m), "k/m")
     _, exact = triangle_polynomial()
-    results.number("sympy_roots_over_k_per_m", [float(r) for r in sorted(exact) for _ in range(exact[r])], "k/m",
-                   note="roots of $\\det(K - \\omega^2M)$, factored by sympy, with their multiplicities")
-    results.number("solver_vs_sympy", float(np.max(np.abs(lam / (k / m) - np.array(
-        [float(r) for r in sorted(exact) for _ in range(exact[r])])))), "1")
+    results.number(
+        "sympy_roots_over_k_per_m",
+        [float(r) for r in sorted(exact) for _ in range(exact[r])],
+        "k/m",
+        note="roots of $\\det(K - \\omega^2M)$, factored by sympy, with their multiplicities",
+    )
+    results.number(
+        "solver_vs_sympy",
+        float(
+            np.max(
+                np.abs(lam / (k / m) - np.array([float(r) for r in sorted(exact) for _ in range(exact[r])]))
+            )
+        ),
+        "1",
+    )
     # The rigid motions span the zero modes: two translations and the turn about the centre (y ~ r x e_z).
-    rigid = np.column_stack([np.tile([1.0, 0.0], 3), np.tile([0.0, 1.0], 3),
-                             np.column_stack([-positions[:, 1], positions[:, 0]]).ravel()])
+    rigid = np.column_stack(
+        [
+            np.tile([1.0, 0.0], 3),
+            np.tile([0.0, 1.0], 3),
+            np.column_stack([-positions[:, 1], positions[:, 0]]).ravel(),
+        ]
+    )
     zero = shapes[:, :3]
-    results.number("zero_modes_vs_rigid", float(np.max(sla.subspace_angles(zero, rigid))), "rad",
-                   note="largest principal angle between the zero modes and the rigid motions")
+    results.number(
+        "zero_modes_vs_rigid",
+        float(np.max(sla.subspace_angles(zero, rigid))),
+        "rad",
+        note="largest principal angle between the zero modes and the rigid motions",
+    )
     breathing = positions.ravel() / np.linalg.norm(positions)
-    results.number("breathing_mode_vs_radial", float(1 - abs(shapes[:, 5] @ breathing)), "1",
-                   note="$1 - |\\cos\\theta|$: the top mode against the radial breathing")
+    results.number(
+        "breathing_mode_vs_radial",
+        float(1 - abs(shapes[:, 5] @ breathing)),
+        "1",
+        note="$1 - |\\cos\\theta|$: the top mode against the radial breathing",
+    )
     pair = shapes[:, 3:5]
-    expected = sla.null_space(np.column_stack([rigid, breathing]).T)     # what is left: the degenerate plane
+    expected = sla.null_space(np.column_stack([rigid, breathing]).T)  # what is left: the degenerate plane
     pair_angle = float(np.max(sla.subspace_angles(pair, expected)))
-    results.number("degenerate_pair_subspace", pair_angle, "rad",
-                   note="largest principal angle between the solver's pair and the plane orthogonal to the "
-                        "rigid motions and the breathing (vectors of a degenerate pair are not unique)")
-    results.hard_case("degenerate_pair", "Ozone: the doubly degenerate pair compared as a plane (principal "
-                      "angles), not as vectors, which any rotation within it changes",
-                      pair_angle, 1e-12, "rad")
+    results.number(
+        "degenerate_pair_subspace",
+        pair_angle,
+        "rad",
+        note="largest principal angle between the solver's pair and the plane orthogonal to the "
+        "rigid motions and the breathing (vectors of a degenerate pair are not unique)",
+    )
+    results.hard_case(
+        "degenerate_pair",
+        "Ozone: the doubly degenerate pair compared as a plane (principal "
+        "angles), not as vectors, which any rotation within it changes",
+        pair_angle,
+        1e-12,
+        "rad",
+    )

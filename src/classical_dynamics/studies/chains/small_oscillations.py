@@ -15,10 +15,10 @@ import scipy.linalg as sla
 from scipy.integrate import solve_ivp
 
 from ...figure_style import FULL_WIDTH_IN
-from ..results import new_figure
 from ...lazy import lazy_module
+from ..results import new_figure
 
-symbolic = lazy_module(f"{__package__}.symbolic")     # sympy, for the scenes that ask for a closed form
+symbolic = lazy_module(f"{__package__}.symbolic")  # sympy, for the scenes that ask for a closed form
 
 
 def _matrices(built):
@@ -43,30 +43,49 @@ def printed_shapes(results, built, masses, name):
     """The source's mode shapes: exact eigenvectors (sympy) and the eigensolver's shapes against them."""
     K, M = symbolic.stiffness_and_mass(masses, built.segment_stiffness, built.geometry.ends)
     exact = symbolic.shapes_are_exact(K, M, symbolic.SOURCE_FORMULAS[name], symbolic.SOURCE_SHAPES[name])
-    results.number("source_shapes_exact", int(exact), "1",
-                   note="1: each printed shape is annulled by $K - \\sigma^2 M$ at its printed $\\sigma^2$ (sympy)")
+    results.number(
+        "source_shapes_exact",
+        int(exact),
+        "1",
+        note="1: each printed shape is annulled by $K - \\sigma^2 M$ at its printed $\\sigma^2$ (sympy)",
+    )
     _, phi = _modes(built)
     _, _, values = symbolic.derive(masses, built.segment_stiffness, built.geometry.ends)
-    printed = np.array([symbolic.evaluate([symbolic.sp.sympify(x) for x in v], values)
-                        for v in symbolic.SOURCE_SHAPES[name]]).T
-    cosines = [abs(phi[:, i] @ printed[:, i]) / (np.linalg.norm(phi[:, i]) * np.linalg.norm(printed[:, i]))
-               for i in range(printed.shape[1])]
-    results.number("source_shapes_vs_solver", float(max(1 - c for c in cosines)), "1",
-                   note="largest $1 - |\\cos\\theta|$ between a printed shape and the eigensolver's")
-    if built.geometry.ends == "free-free":        # a free molecule: its vibrations carry no momentum
+    printed = np.array(
+        [symbolic.evaluate([symbolic.sp.sympify(x) for x in v], values) for v in symbolic.SOURCE_SHAPES[name]]
+    ).T
+    cosines = [
+        abs(phi[:, i] @ printed[:, i]) / (np.linalg.norm(phi[:, i]) * np.linalg.norm(printed[:, i]))
+        for i in range(printed.shape[1])
+    ]
+    results.number(
+        "source_shapes_vs_solver",
+        float(max(1 - c for c in cosines)),
+        "1",
+        note="largest $1 - |\\cos\\theta|$ between a printed shape and the eigensolver's",
+    )
+    if built.geometry.ends == "free-free":  # a free molecule: its vibrations carry no momentum
         sigma, _ = _modes(built)
         moving = phi[:, sigma > 1e-6 * sigma.max()]
         momentum = np.abs(built.masses @ moving) / (built.masses.sum() * np.max(np.abs(moving), axis=0))
-        results.number("vibration_momentum", float(momentum.max()), "1",
-                       note="largest $|\\sum m_iX_i|$ of a vibration over $\\sum m_i\\max|X_i|$")
+        results.number(
+            "vibration_momentum",
+            float(momentum.max()),
+            "1",
+            note="largest $|\\sum m_iX_i|$ of a vibration over $\\sum m_i\\max|X_i|$",
+        )
 
 
 def separation(results, built):
     """Art. 90 Ex. 1: the roots are separated by a/m and b/m (sympy shows f = -h^2 there), and the mode
     directions obey h (F^2 - G^2) = (a - b) F G; both on this scene's two-particle chain."""
     at_a, at_b, expected = symbolic.separation_by_diagonal()
-    results.number("separation_proved", int(at_a == expected and at_b == expected), "1",
-                   note="1: sympy finds $-h^2$ at $\\sigma^2 = a/m$ and at $b/m$")
+    results.number(
+        "separation_proved",
+        int(at_a == expected and at_b == expected),
+        "1",
+        note="1: sympy finds $-h^2$ at $\\sigma^2 = a/m$ and at $b/m$",
+    )
     K, M = _matrices(built)
     if not np.allclose(np.diag(M), M[0, 0]):
         raise ValueError("separation (Lamb Art. 90 Ex. 1) is stated for equal masses")
@@ -75,12 +94,20 @@ def separation(results, built):
     sigma, phi = _modes(built)
     diagonal = sorted([a / m, b / m])
     margin = min(diagonal[0] - sigma[0] ** 2, sigma[1] ** 2 - diagonal[1]) / sigma[1] ** 2
-    results.number("separation_margin", float(margin), "1",
-                   note="$\\min(\\min(a, b)/m - \\sigma_1^2,\\ \\sigma_2^2 - \\max(a, b)/m)/\\sigma_2^2$: "
-                        "not negative when the diagonal values separate the roots")
+    results.number(
+        "separation_margin",
+        float(margin),
+        "1",
+        note="$\\min(\\min(a, b)/m - \\sigma_1^2,\\ \\sigma_2^2 - \\max(a, b)/m)/\\sigma_2^2$: "
+        "not negative when the diagonal values separate the roots",
+    )
     residual = max(abs(h * (F**2 - G**2) - (a - b) * F * G) / (abs(h) * (F**2 + G**2)) for F, G in phi.T)
-    results.number("mode_direction_residual", float(residual), "1",
-                   note="largest $|h(F^2 - G^2) - (a - b)FG|$ over $|h|(F^2 + G^2)$, Lamb's (8)")
+    results.number(
+        "mode_direction_residual",
+        float(residual),
+        "1",
+        note="largest $|h(F^2 - G^2) - (a - b)FG|$ over $|h|(F^2 + G^2)$, Lamb's (8)",
+    )
 
 
 def rayleigh_symmetric(results, built, masses):
@@ -88,17 +115,30 @@ def rayleigh_symmetric(results, built, masses):
     K, M = symbolic.stiffness_and_mass(masses, built.segment_stiffness, built.geometry.ends)
     theta, quotient, stationary = symbolic.rayleigh_symmetric_type(K, M)
     printed = [-1 / symbolic.sp.sqrt(2), 1 / symbolic.sp.sqrt(2)]
-    exact = len(stationary) == 2 and all(symbolic.sp.simplify(s - p) == 0 for s, p in zip(stationary, printed))
-    results.number("rayleigh_stationary_theta", [float(s) for s in stationary], "1",
-                   note="roots of $d\\sigma^2/d\\theta$ for the type $(\\theta, 1, \\theta)$ (sympy)")
-    results.number("rayleigh_stationary_exact", int(exact), "1", note="1: the roots are exactly $\\pm1/\\sqrt2$")
+    exact = len(stationary) == 2 and all(
+        symbolic.sp.simplify(s - p) == 0 for s, p in zip(stationary, printed)
+    )
+    results.number(
+        "rayleigh_stationary_theta",
+        [float(s) for s in stationary],
+        "1",
+        note="roots of $d\\sigma^2/d\\theta$ for the type $(\\theta, 1, \\theta)$ (sympy)",
+    )
+    results.number(
+        "rayleigh_stationary_exact", int(exact), "1", note="1: the roots are exactly $\\pm1/\\sqrt2$"
+    )
     sigma, _ = _modes(built)
-    values = symbolic.evaluate([quotient.subs(theta, s) for s in stationary],
-                               {symbolic.k: float(built.segment_stiffness.min()), symbolic.m1: float(masses[0])})
-    symmetric = np.sort(sigma[[0, 2]] ** 2)              # the two symmetric modes: (1, ±√2, 1)
-    results.number("rayleigh_stationary_vs_solver", float(np.max(np.abs(np.sort(values) - symmetric) / symmetric)),
-                   "1", note="the quotient at its stationary points against the eigensolver's $\\sigma_1^2$, "
-                             "$\\sigma_3^2$")
+    values = symbolic.evaluate(
+        [quotient.subs(theta, s) for s in stationary],
+        {symbolic.k: float(built.segment_stiffness.min()), symbolic.m1: float(masses[0])},
+    )
+    symmetric = np.sort(sigma[[0, 2]] ** 2)  # the two symmetric modes: (1, ±√2, 1)
+    results.number(
+        "rayleigh_stationary_vs_solver",
+        float(np.max(np.abs(np.sort(values) - symmetric) / symmetric)),
+        "1",
+        note="the quotient at its stationary points against the eigensolver's $\\sigma_1^2$, $\\sigma_3^2$",
+    )
 
 
 def orthogonality(results, built):
@@ -106,11 +146,19 @@ def orthogonality(results, built):
     K, M = _matrices(built)
     sigma, phi = _modes(built)
     lam, n = sigma**2, len(sigma)
-    results.number("orthogonality_mass", float(np.max(np.abs(phi.T @ M @ phi - np.eye(n)))), "1",
-                   note="largest $|\\phi_i^T M \\phi_j - \\delta_{ij}|$")
+    results.number(
+        "orthogonality_mass",
+        float(np.max(np.abs(phi.T @ M @ phi - np.eye(n)))),
+        "1",
+        note="largest $|\\phi_i^T M \\phi_j - \\delta_{ij}|$",
+    )
     off = phi.T @ K @ phi - np.diag(lam)
-    results.number("orthogonality_stiffness", float(np.max(np.abs(off)) / lam.max()), "1",
-                   note="largest $|\\phi_i^T K \\phi_j|$, $i \\ne j$, over $\\sigma_n^2$")
+    results.number(
+        "orthogonality_stiffness",
+        float(np.max(np.abs(off)) / lam.max()),
+        "1",
+        note="largest $|\\phi_i^T K \\phi_j|$, $i \\ne j$, over $\\sigma_n^2$",
+    )
 
 
 def constraint(results, built, samples: int, seed: int):
@@ -123,7 +171,7 @@ def constraint(results, built, samples: int, seed: int):
     relations = list(np.eye(n)) + list(rng.standard_normal((samples, n)))
     worst, violations = np.inf, 0
     for c in relations:
-        basis = sla.null_space(c[None, :])                # y = basis z satisfies the constraint
+        basis = sla.null_space(c[None, :])  # y = basis z satisfies the constraint
         reduced = sla.eigh(basis.T @ K @ basis, basis.T @ M @ basis, eigvals_only=True)
         margin = np.minimum(reduced - lam[:-1], lam[1:] - reduced) / lam.max()
         worst = min(worst, float(margin.min()))
@@ -131,8 +179,12 @@ def constraint(results, built, samples: int, seed: int):
     # Art. 93: held orthogonal (in T) to the gravest mode, the system's roots are the remaining ones exactly
     basis = sla.null_space((M @ phi[:, 0])[None, :])
     rest = sla.eigh(basis.T @ K @ basis, basis.T @ M @ basis, eigvals_only=True)
-    results.number("successive_minima_error", float(np.max(np.abs(rest - lam[1:]) / lam[1:])), "1",
-                   note="constrained by $\\phi_1^TMy = 0$, the roots against $\\sigma_2^2, \\ldots$ (relative)")
+    results.number(
+        "successive_minima_error",
+        float(np.max(np.abs(rest - lam[1:]) / lam[1:])),
+        "1",
+        note="constrained by $\\phi_1^TMy = 0$, the roots against $\\sigma_2^2, \\ldots$ (relative)",
+    )
     # Art. 94: the quotient is stationary at a mode: a type off by epsilon errs by epsilon^2
     direction = rng.standard_normal(n)
     epsilons = np.array([1e-2, 1e-3, 1e-4])
@@ -140,8 +192,12 @@ def constraint(results, built, samples: int, seed: int):
     for eps in epsilons:
         y = phi[:, 0] + eps * direction
         errors.append(abs((y @ K @ y) / (y @ M @ y) - lam[0]) / lam[0])
-    results.number("stationary_order", float(np.polyfit(np.log(epsilons), np.log(errors), 1)[0]), "1",
-                   note="fitted order of the quotient's error for the type $\\phi_1 + \\epsilon\\eta$, $\\eta$ random")
+    results.number(
+        "stationary_order",
+        float(np.polyfit(np.log(epsilons), np.log(errors), 1)[0]),
+        "1",
+        note="fitted order of the quotient's error for the type $\\phi_1 + \\epsilon\\eta$, $\\eta$ random",
+    )
     # Art. 92: the roots of det(V - lambda T) are real for any symmetric T > 0 and V, and positive when V > 0;
     # asked of the general (non-symmetric) QZ solver, which could return complex roots
     worst_imaginary, negative = 0.0, 0
@@ -152,14 +208,29 @@ def constraint(results, built, samples: int, seed: int):
             roots = sla.eig(V, T, right=False)
             worst_imaginary = max(worst_imaginary, float(np.max(np.abs(roots.imag) / np.abs(roots))))
             negative += int(np.sum(roots.real <= 0))
-    results.number("general_roots_imaginary", worst_imaginary, "1",
-                   note="largest $|\\operatorname{Im}\\lambda|/|\\lambda|$ over 180 random pairs $T$, $V$ of sizes 2 to 10")
+    results.number(
+        "general_roots_imaginary",
+        worst_imaginary,
+        "1",
+        note=(
+            "largest $|\\operatorname{Im}\\lambda|/|\\lambda|$ over 180 random pairs $T$, $V$ of sizes 2 to "
+            "10"
+        ),
+    )
     results.number("general_roots_not_positive", negative, "1")
     results.number("constraints_tried", len(relations), "1")
-    results.number("interlacing_violations", violations, "1",
-                   note="roots outside $[\\sigma_k^2, \\sigma_{k+1}^2]$ after one constraint")
-    results.number("interlacing_margin", worst, "1",
-                   note="smallest distance of a constrained root inside its interval, over $\\sigma_n^2$")
+    results.number(
+        "interlacing_violations",
+        violations,
+        "1",
+        note="roots outside $[\\sigma_k^2, \\sigma_{k+1}^2]$ after one constraint",
+    )
+    results.number(
+        "interlacing_margin",
+        worst,
+        "1",
+        note="smallest distance of a constrained root inside its interval, over $\\sigma_n^2$",
+    )
 
 
 def forced(results, built, spec):
@@ -167,7 +238,7 @@ def forced(results, built, spec):
     K, M = _matrices(built)
     F = built.force
     sigma, phi = _modes(built)
-    modal_force = phi.T @ F                             # Theta of each normal coordinate
+    modal_force = phi.T @ F  # Theta of each normal coordinate
 
     def direct(s):
         return np.linalg.solve(K - s**2 * M, F)
@@ -178,15 +249,25 @@ def forced(results, built, spec):
     grid = np.linspace(0.0, spec["sigma_max_over_lowest"] * sigma[0], spec["points"])
     away = [s for s in grid if np.min(np.abs(sigma - s)) > 1e-3 * sigma[0]]
     deviation = max(np.linalg.norm(direct(s) - normal(s)) / np.linalg.norm(normal(s)) for s in away)
-    results.number("forced_direct_vs_normal", float(deviation), "1",
-                   note="largest relative difference, $(K - \\sigma^2 M)^{-1}F$ against Lamb's sum over normal "
-                        "coordinates")
+    results.number(
+        "forced_direct_vs_normal",
+        float(deviation),
+        "1",
+        note="largest relative difference, $(K - \\sigma^2 M)^{-1}F$ against Lamb's sum over normal "
+        "coordinates",
+    )
     static = np.linalg.solve(K, F)
-    results.number("forced_static_limit", float(np.linalg.norm(normal(0.0) - static) / np.linalg.norm(static)),
-                   "1", note="the sum at $\\sigma = 0$ against the statical displacement $K^{-1}F$")
+    results.number(
+        "forced_static_limit",
+        float(np.linalg.norm(normal(0.0) - static) / np.linalg.norm(static)),
+        "1",
+        note="the sum at $\\sigma = 0$ against the statical displacement $K^{-1}F$",
+    )
+
     # Near the gravest resonance the response grows as 1/(sigma_1^2 - sigma^2), its shape the first mode's.
-    # sigma = sigma_1 (1 - delta) rounds sigma^2 to eps, so forming K - sigma^2 M loses eps/delta of the answer;
-    # in normal coordinates the detuning stays exact: sigma_1^2 - sigma^2 = sigma_1^2 delta (2 - delta).
+    # sigma = sigma_1 (1 - delta) rounds sigma^2 to eps, so forming K - sigma^2 M loses eps/delta of the
+    # answer; in normal coordinates the detuning stays exact: sigma_1^2 - sigma^2 = sigma_1^2 delta (2 -
+    # delta).
     def detuned(delta):
         s = sigma[0] * (1 - delta)
         gap = sigma**2 - s**2
@@ -199,29 +280,54 @@ def forced(results, built, spec):
     for d in np.logspace(-2, -10, 9):
         y, s = detuned(d)
         reference = _response_mp(built, exact_sigma1, d)
-        rows.append({"detuning": d, "amplitude_over_static": np.linalg.norm(y) / np.linalg.norm(static),
-                     "residue_deviation": np.linalg.norm(sigma[0] ** 2 * d * (2 - d) * y - residue)
-                     / np.linalg.norm(residue),
-                     "normal_error": np.linalg.norm(y - reference) / np.linalg.norm(reference),
-                     "direct_error": np.linalg.norm(direct(s) - reference) / np.linalg.norm(reference)})
+        rows.append(
+            {
+                "detuning": d,
+                "amplitude_over_static": np.linalg.norm(y) / np.linalg.norm(static),
+                "residue_deviation": np.linalg.norm(sigma[0] ** 2 * d * (2 - d) * y - residue)
+                / np.linalg.norm(residue),
+                "normal_error": np.linalg.norm(y - reference) / np.linalg.norm(reference),
+                "direct_error": np.linalg.norm(direct(s) - reference) / np.linalg.norm(reference),
+            }
+        )
     frame = pd.DataFrame(rows)
     slope = float(np.polyfit(np.log(frame.detuning), np.log(frame.residue_deviation), 1)[0])
-    results.number("resonance_residue_slope", slope, "1",
-                   note="$(\\sigma_1^2 - \\sigma^2)y$ tends to the first mode's term as the detuning $\\delta$: "
-                        "fitted order of its deviation")
+    results.number(
+        "resonance_residue_slope",
+        slope,
+        "1",
+        note="$(\\sigma_1^2 - \\sigma^2)y$ tends to the first mode's term as the detuning $\\delta$: "
+        "fitted order of its deviation",
+    )
     closest = frame.iloc[-1]
-    results.number("resonance_direct_error_at_closest", float(closest.direct_error), "1",
-                   note="$(K - \\sigma^2 M)^{-1}F$ in double precision at $\\delta = 10^{-10}$, against 50 digits")
-    results.hard_case("resonance_normal", "Forced response $10^{-10}$ from the gravest resonance in normal "
-                      "coordinates, the detuning kept apart, against a 50-digit solve (mpmath)",
-                      float(frame.normal_error.max()), 1e-12)
-    results.table("resonance", frame, "Forced response near the gravest resonance (Lamb Art. 95): detuning "
-                  "$\\delta = 1 - \\sigma/\\sigma_1$, amplitude over the statical one, how far "
-                  "$(\\sigma_1^2 - \\sigma^2)y$ is from the first mode's term, and the relative error of the "
-                  "response in normal coordinates and by a direct solve, against 50 digits.",
-                  headers={"detuning": "$\\delta$", "amplitude_over_static": "$|y|/|y_0|$",
-                           "residue_deviation": "from mode 1", "normal_error": "normal coordinates",
-                           "direct_error": "direct solve"})
+    results.number(
+        "resonance_direct_error_at_closest",
+        float(closest.direct_error),
+        "1",
+        note="$(K - \\sigma^2 M)^{-1}F$ in double precision at $\\delta = 10^{-10}$, against 50 digits",
+    )
+    results.hard_case(
+        "resonance_normal",
+        "Forced response $10^{-10}$ from the gravest resonance in normal "
+        "coordinates, the detuning kept apart, against a 50-digit solve (mpmath)",
+        float(frame.normal_error.max()),
+        1e-12,
+    )
+    results.table(
+        "resonance",
+        frame,
+        "Forced response near the gravest resonance (Lamb Art. 95): detuning "
+        "$\\delta = 1 - \\sigma/\\sigma_1$, amplitude over the statical one, how far "
+        "$(\\sigma_1^2 - \\sigma^2)y$ is from the first mode's term, and the relative error of the "
+        "response in normal coordinates and by a direct solve, against 50 digits.",
+        headers={
+            "detuning": "$\\delta$",
+            "amplitude_over_static": "$|y|/|y_0|$",
+            "residue_deviation": "from mode 1",
+            "normal_error": "normal coordinates",
+            "direct_error": "direct solve",
+        },
+    )
     _transient(results, built, sigma, phi, modal_force, spec)
     _response_figure(results, grid, direct, static, sigma)
 
@@ -235,6 +341,7 @@ def _exact_lowest(built):
 def _response_mp(built, sigma1, delta):
     """(K - sigma^2 M)^{-1} F at 50 digits, sigma = sigma_1 (1 - delta) with sigma_1 exact."""
     import mpmath
+
     with mpmath.workdps(50):
         K, M = _matrices(built)
         s = mpmath.mpf(str(sigma1)) * (1 - mpmath.mpf(delta))
@@ -244,8 +351,8 @@ def _response_mp(built, sigma1, delta):
 
 
 def _transient(results, built, sigma, phi, modal_force, spec):
-    """Started from rest at detuning delta, y(t) = sum phi_k Theta_k (cos sigma t - cos sigma_k t)/(sigma_k^2 -
-    sigma^2). Written so the difference of cosines cancels; the product of sines keeps every digit."""
+    """Started from rest at detuning delta, y(t) = sum phi_k Theta_k (cos sigma t - cos sigma_k t)/(sigma_k^2
+    - sigma^2). Written so the difference of cosines cancels; the product of sines keeps every digit."""
     delta = spec["transient_detuning"]
     s = sigma[0] * (1 - delta)
     t = np.linspace(0.0, spec["transient_periods"] * 2 * np.pi / sigma[0], 401)
@@ -256,8 +363,13 @@ def _transient(results, built, sigma, phi, modal_force, spec):
 
     def stable(t):
         half_sum, half_diff = (sigma[:, None] + s) / 2, (sigma[:, None] - s) / 2
-        q = modal_force[:, None] * 2 * np.sin(half_sum * t) * np.sin(half_diff * t) / (
-            (sigma[:, None] - s) * (sigma[:, None] + s))
+        q = (
+            modal_force[:, None]
+            * 2
+            * np.sin(half_sum * t)
+            * np.sin(half_diff * t)
+            / ((sigma[:, None] - s) * (sigma[:, None] + s))
+        )
         return phi @ q
 
     K, M = _matrices(built)
@@ -270,15 +382,26 @@ def _transient(results, built, sigma, phi, modal_force, spec):
     run = solve_ivp(rhs, (0.0, t[-1]), np.zeros(2 * n), method="DOP853", t_eval=t, rtol=1e-13, atol=1e-16)
     scale = np.max(np.abs(stable(t)))
     results.number("transient_detuning", delta, "1")
-    results.number("transient_integrator_vs_closed_form", float(np.max(np.abs(run.y[:n] - stable(t))) / scale),
-                   "1", note="DOP853 (scipy, rtol $10^{-13}$) against the product-of-sines form")
-    results.number("transient_difference_of_cosines_error", float(np.max(np.abs(naive(t) - stable(t))) / scale),
-                   "1", note="the textbook difference of cosines against the product of sines: the digits "
-                             "cancellation loses")
+    results.number(
+        "transient_integrator_vs_closed_form",
+        float(np.max(np.abs(run.y[:n] - stable(t))) / scale),
+        "1",
+        note="DOP853 (scipy, rtol $10^{-13}$) against the product-of-sines form",
+    )
+    results.number(
+        "transient_difference_of_cosines_error",
+        float(np.max(np.abs(naive(t) - stable(t))) / scale),
+        "1",
+        note="the textbook difference of cosines against the product of sines: the digits cancellation loses",
+    )
     exponent = int(round(np.log10(delta)))
-    results.hard_case("resonance_transient", f"Started from rest at detuning $\\delta = 10^{{{exponent}}}$: the "
-                      "closed form as a product of sines against DOP853",
-                      float(np.max(np.abs(run.y[:n] - stable(t))) / scale), 1e-8)
+    results.hard_case(
+        "resonance_transient",
+        f"Started from rest at detuning $\\delta = 10^{{{exponent}}}$: the "
+        "closed form as a product of sines against DOP853",
+        float(np.max(np.abs(run.y[:n] - stable(t))) / scale),
+        1e-8,
+    )
 
 
 def _response_figure(results, grid, direct, static, sigma):
@@ -293,9 +416,13 @@ def _response_figure(results, grid, direct, static, sigma):
     ax.set_ylabel("$|y_j|/|y_0|$")
     ax.set_ylim(1e-2, 1e3)
     ax.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=3, frameon=False)
-    results.figure("forced_response", fig, "Amplitude of each particle under a force $F\\cos\\sigma t$ on the "
-                   "first, over the statical displacement $|y_0|$ (Lamb Art. 95); grey lines mark the free "
-                   "frequencies, where it is infinite.")
+    results.figure(
+        "forced_response",
+        fig,
+        "Amplitude of each particle under a force $F\\cos\\sigma t$ on the "
+        "first, over the statical displacement $|y_0|$ (Lamb Art. 95); grey lines mark the free "
+        "frequencies, where it is infinite.",
+    )
 
 
 def friction(results, built, spec):
@@ -304,7 +431,7 @@ def friction(results, built, spec):
     K, M = _matrices(built)
     sigma, phi = _modes(built)
     n = len(sigma)
-    C0 = phi.T @ np.diag(built.damping) @ phi            # the dissipation in normal coordinates, at scale 1
+    C0 = phi.T @ np.diag(built.damping) @ phi  # the dissipation in normal coordinates, at scale 1
     shift = [symbolic.damped_frequency_shift(n, k) for k in range(n)]
     rows = []
     for eps in spec["scales"]:
@@ -313,51 +440,91 @@ def friction(results, built, spec):
         lam = np.sort_complex(lam[lam.imag > 0])
         lam = lam[np.argsort(lam.imag)]
         for k, (symbols, C, l1, l2) in enumerate(shift):
-            values = {**dict(zip(symbols, sigma)), **{C[i, j]: eps * C0[i, j] for i in range(n) for j in range(n)}}
+            values = {
+                **dict(zip(symbols, sigma)),
+                **{C[i, j]: eps * C0[i, j] for i in range(n) for j in range(n)},
+            }
             first = complex(symbolic.sp.N(l1.subs(values)))
             second = complex(symbolic.sp.N(l2.subs(values)))
-            rows.append({"scale": eps, "mode": k + 1,
-                         "frequency_shift": abs(lam[k].imag - sigma[k]) / sigma[k],
-                         "decay_vs_first_order": abs(-lam[k].real - (-first.real)) / (-first.real),
-                         "second_order_remainder": abs(lam[k] - (1j * sigma[k] + first + second)) / sigma[k]})
+            rows.append(
+                {
+                    "scale": eps,
+                    "mode": k + 1,
+                    "frequency_shift": abs(lam[k].imag - sigma[k]) / sigma[k],
+                    "decay_vs_first_order": abs(-lam[k].real - (-first.real)) / (-first.real),
+                    "second_order_remainder": abs(lam[k] - (1j * sigma[k] + first + second)) / sigma[k],
+                }
+            )
     frame = pd.DataFrame(rows)
     for column in ("frequency_shift", "decay_vs_first_order", "second_order_remainder"):
         slopes = [np.polyfit(np.log(g.scale), np.log(g[column]), 1)[0] for _, g in frame.groupby("mode")]
-        results.number(f"{column}_order", float(min(slopes)), "1",
-                       note="smallest fitted order in the friction scale over the modes")
-    results.number("frequency_shift_at_largest", float(frame[frame.scale == max(spec["scales"])]
-                                                       .frequency_shift.max()), "1")
+        results.number(
+            f"{column}_order",
+            float(min(slopes)),
+            "1",
+            note="smallest fitted order in the friction scale over the modes",
+        )
+    results.number(
+        "frequency_shift_at_largest",
+        float(frame[frame.scale == max(spec["scales"])].frequency_shift.max()),
+        "1",
+    )
     results.number("friction_scale_largest", float(max(spec["scales"])), "1")
-    results.table("friction", frame, "Small friction (Lamb Arts. 96 and 97): at each scale of the dashpot, each "
-                  "mode's relative frequency change, its decay rate against the first-order $c_{kk}/2$, and what "
-                  "the second-order term derived with sympy leaves.",
-                  headers={"scale": "scale", "mode": "mode", "frequency_shift": "$|\\Delta\\sigma|/\\sigma$",
-                           "decay_vs_first_order": "decay rate vs $c_{kk}/2$",
-                           "second_order_remainder": "after 2nd order"})
+    results.table(
+        "friction",
+        frame,
+        "Small friction (Lamb Arts. 96 and 97): at each scale of the dashpot, each "
+        "mode's relative frequency change, its decay rate against the first-order $c_{kk}/2$, and what "
+        "the second-order term derived with sympy leaves.",
+        headers={
+            "scale": "scale",
+            "mode": "mode",
+            "frequency_shift": "$|\\Delta\\sigma|/\\sigma$",
+            "decay_vs_first_order": "decay rate vs $c_{kk}/2$",
+            "second_order_remainder": "after 2nd order",
+        },
+    )
 
 
 def initial_value(results, built, spec):
-    """Art. 91: any motion is the sum of the modes, each started by the mass-weighted projections of the initial
-    state; Ex. XIV.1: its energy is the sum of the modes' energies. Against DOP853 from a random start (seeded)."""
+    """Art. 91: any motion is the sum of the modes, each started by the mass-weighted projections of the
+    initial state; Ex. XIV.1: its energy is the sum of the modes' energies. Against DOP853 from a random start
+    (seeded)."""
     K, M = _matrices(built)
     sigma, phi = _modes(built)
     n = len(sigma)
     rng = np.random.default_rng(spec["seed"])
     y0, v0 = rng.standard_normal(n), rng.standard_normal(n)
-    a, b = phi.T @ M @ y0, phi.T @ M @ v0                    # the normal coordinates and their rates at t = 0
+    a, b = phi.T @ M @ y0, phi.T @ M @ v0  # the normal coordinates and their rates at t = 0
     t = np.linspace(0.0, spec["periods"] * 2 * np.pi / sigma[0], 801)
-    modal = phi @ (a[:, None] * np.cos(sigma[:, None] * t) + (b / sigma)[:, None] * np.sin(sigma[:, None] * t))
+    modal = phi @ (
+        a[:, None] * np.cos(sigma[:, None] * t) + (b / sigma)[:, None] * np.sin(sigma[:, None] * t)
+    )
     Minv_K = np.linalg.solve(M, K)
-    run = solve_ivp(lambda _, z: np.concatenate([z[n:], -Minv_K @ z[:n]]), (0.0, t[-1]), np.concatenate([y0, v0]),
-                    method="DOP853", t_eval=t, rtol=1e-13, atol=1e-14)
-    results.number("initial_value_modal_vs_integrator", float(np.max(np.abs(run.y[:n] - modal)) /
-                                                              np.max(np.abs(modal))), "1",
-                   note="the sum of modes against DOP853 (rtol $10^{-13}$), largest difference over the largest "
-                        "displacement")
+    run = solve_ivp(
+        lambda _, z: np.concatenate([z[n:], -Minv_K @ z[:n]]),
+        (0.0, t[-1]),
+        np.concatenate([y0, v0]),
+        method="DOP853",
+        t_eval=t,
+        rtol=1e-13,
+        atol=1e-14,
+    )
+    results.number(
+        "initial_value_modal_vs_integrator",
+        float(np.max(np.abs(run.y[:n] - modal)) / np.max(np.abs(modal))),
+        "1",
+        note="the sum of modes against DOP853 (rtol $10^{-13}$), largest difference over the largest "
+        "displacement",
+    )
     energy = 0.5 * v0 @ M @ v0 + 0.5 * y0 @ K @ y0
     by_modes = float(np.sum(0.5 * b**2 + 0.5 * sigma**2 * a**2))
-    results.number("energy_sum_of_modes", abs(by_modes - energy) / energy, "1",
-                   note="$T + V$ against the sum of the modes' energies (relative)")
+    results.number(
+        "energy_sum_of_modes",
+        abs(by_modes - energy) / energy,
+        "1",
+        note="$T + V$ against the sum of the modes' energies (relative)",
+    )
 
 
 def dissipation(results, built, scale):
@@ -370,18 +537,26 @@ def dissipation(results, built, scale):
     A = _state_matrix(K, M, B)
     t = np.linspace(0.0, 10 * 2 * np.pi / sigma[0], 401)
 
-    def rhs(_, z):                     # the state, and the work done against friction, integral of 2F
+    def rhs(_, z):  # the state, and the work done against friction, integral of 2F
         return np.concatenate([A @ z[:-1], [z[n:-1] @ B @ z[n:-1]]])
 
     z0 = np.concatenate([np.ones(n), np.zeros(n), [0.0]])
     run = solve_ivp(rhs, (0.0, t[-1]), z0, method="DOP853", t_eval=t, rtol=1e-13, atol=1e-14)
     q, v, lost = run.y[:n], run.y[n:-1], run.y[-1]
     energy = 0.5 * np.einsum("it,ij,jt->t", v, M, v) + 0.5 * np.einsum("it,ij,jt->t", q, K, q)
-    results.number("dissipation_balance", float(np.max(np.abs(energy - (energy[0] - lost))) / energy[0]), "1",
-                   note="$T + V$ along DOP853 against its start less $\\int 2F\\,dt$ (relative to the start)")
+    results.number(
+        "dissipation_balance",
+        float(np.max(np.abs(energy - (energy[0] - lost))) / energy[0]),
+        "1",
+        note="$T + V$ along DOP853 against its start less $\\int 2F\\,dt$ (relative to the start)",
+    )
     lam = np.linalg.eigvals(_state_matrix(K, M, scale * B))
     real = lam[np.abs(lam.imag) <= 1e-12 * np.abs(lam).max()].real
     results.number("aperiodic_scale", scale, "1", note="the dashpot raised past critical")
     results.number("aperiodic_real_roots", int(real.size), "1")
-    results.number("aperiodic_largest_real_root", float(real.max()) / sigma[0] if real.size else None, "1",
-                   note="over the free $\\sigma_1$; negative: the displacements decay without oscillation")
+    results.number(
+        "aperiodic_largest_real_root",
+        float(real.max()) / sigma[0] if real.size else None,
+        "1",
+        note="over the free $\\sigma_1$; negative: the displacements decay without oscillation",
+    )

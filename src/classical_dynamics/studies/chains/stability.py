@@ -1,4 +1,5 @@
-"""Lamb's stability of equilibrium and of steady motion (Higher Mechanics, Arts. 85-92, 99, 100; Exs. XIV.9, 16, 18).
+"""Lamb's stability of equilibrium and of steady motion (Higher Mechanics, Arts. 85-92, 99, 100; Exs. XIV.9,
+16, 18).
 
 Each function checks one statement on a small system built from the scene's numbers and records what it
 measures: an indefinite V gives a real root and exponential growth (Arts. 85-89); equal roots of a symmetric
@@ -6,8 +7,8 @@ system bring no secular terms, the first minors vanishing (Art. 92); gyroscopic 
 small dissipation then makes the slower mode grow (Art. 99, secular instability), as for a particle in a
 rotating bowl (Art. 99, Ex. 2); Ball's normal modes of a body about a point (Ex. XIV.9); circular orbits under
 e^{-r/a}/r^2 (Ex. XIV.16); two particles on a revolving string (Ex. XIV.18); the hanging chain from Hamilton's
-principle by finite elements (Art. 100). The numbers come from eigensolvers and integrators; the references from
-sympy (symbolic.py) or closed forms.
+principle by finite elements (Art. 100). The numbers come from eigensolvers and integrators; the references
+from sympy (symbolic.py) or closed forms.
 """
 
 from __future__ import annotations
@@ -44,56 +45,95 @@ def _bisect(unstable, lo, hi, tol=1e-12):
 
 # --- Arts. 85-89 and 92: equilibrium ------------------------------------------------------------------------
 
+
 def equilibrium(results, built):
     """Art. 85-89: springs k, -k, k between the walls give V indefinite (K's eigenvalues +-k): a real root
-    lambda = sqrt(k/m), and a small start grows as exp(lambda t) (DOP853). Art. 92: three particles on a closed
-    ring of springs k, each tied down by k, have a double root 4k/m; sympy finds every first minor of Delta zero
-    there, and the motion over 10^4 periods stays bounded; a non-symmetric K with a double root grows as t."""
+    lambda = sqrt(k/m), and a small start grows as exp(lambda t) (DOP853). Art. 92: three particles on a
+    closed ring of springs k, each tied down by k, have a double root 4k/m; sympy finds every first minor of
+    Delta zero there, and the motion over 10^4 periods stays bounded; a non-symmetric K with a double root
+    grows as t."""
     K, M = built.stiffness_matrix(), np.diag(built.masses)
     k, m = float(np.min(built.segment_stiffness)), float(built.masses[0])
-    results.number("scene_smallest_stiffness_eigenvalue", float(sla.eigh(K, M, eigvals_only=True)[0]) / (k / m), "k/m",
-                   note="this stable scene's smallest $\\lambda$ of $(K, M)$: positive, $V$ a minimum")
-    Kind = np.array([[0.0, k], [k, 0.0]])       # springs k, -k, k: each diagonal k + (-k), the coupling -(-k)
+    results.number(
+        "scene_smallest_stiffness_eigenvalue",
+        float(sla.eigh(K, M, eigvals_only=True)[0]) / (k / m),
+        "k/m",
+        note="this stable scene's smallest $\\lambda$ of $(K, M)$: positive, $V$ a minimum",
+    )
+    Kind = np.array([[0.0, k], [k, 0.0]])  # springs k, -k, k: each diagonal k + (-k), the coupling -(-k)
     eig = np.linalg.eigvalsh(Kind)
-    results.number("indefinite_V_eigenvalues_over_k", (eig / k).tolist(), "k",
-                   note="springs $k, -k, k$: $K$ has the eigenvalues $\\pm k$, $V$ neither a minimum nor a maximum")
+    results.number(
+        "indefinite_V_eigenvalues_over_k",
+        (eig / k).tolist(),
+        "k",
+        note="springs $k, -k, k$: $K$ has the eigenvalues $\\pm k$, $V$ neither a minimum nor a maximum",
+    )
     A = _state(Kind, m * np.eye(2))
     rate_exact = np.sqrt(k / m)
     lam = np.linalg.eigvals(A)
-    results.number("indefinite_real_root_vs_exact", float(abs(lam.real.max() - rate_exact) / rate_exact), "1",
-                   note="largest real root of the state matrix against $\\sqrt{k/m}$")
+    results.number(
+        "indefinite_real_root_vs_exact",
+        float(abs(lam.real.max() - rate_exact) / rate_exact),
+        "1",
+        note="largest real root of the state matrix against $\\sqrt{k/m}$",
+    )
     rng = np.random.default_rng(85)
     z0 = 1e-8 * rng.standard_normal(4)
     t1, t2 = 15 / rate_exact, 30 / rate_exact
-    run = solve_ivp(lambda _, z: A @ z, (0.0, t2), z0, method="DOP853", t_eval=[t1, t2], rtol=1e-13, atol=1e-30)
+    run = solve_ivp(
+        lambda _, z: A @ z, (0.0, t2), z0, method="DOP853", t_eval=[t1, t2], rtol=1e-13, atol=1e-30
+    )
     fitted = np.log(np.linalg.norm(run.y[:2, 1]) / np.linalg.norm(run.y[:2, 0])) / (t2 - t1)
-    results.number("indefinite_growth_rate_over_root", float(fitted / rate_exact), "1",
-                   note="rate of growth of $|q|$ between $\\lambda t$ = 15 and 30 (DOP853, rtol $10^{-13}$) over "
-                        "$\\sqrt{k/m}$: Lamb's $He^{\\lambda t}$")
-    results.number("indefinite_growth_factor", float(np.linalg.norm(run.y[:2, 1]) / np.linalg.norm(z0[:2])), "1")
+    results.number(
+        "indefinite_growth_rate_over_root",
+        float(fitted / rate_exact),
+        "1",
+        note="rate of growth of $|q|$ between $\\lambda t$ = 15 and 30 (DOP853, rtol $10^{-13}$) over "
+        "$\\sqrt{k/m}$: Lamb's $He^{\\lambda t}$",
+    )
+    results.number(
+        "indefinite_growth_factor", float(np.linalg.norm(run.y[:2, 1]) / np.linalg.norm(z0[:2])), "1"
+    )
 
-    # Art. 92: equal roots. Three particles on a ring, each tied down: K = k I + k L (L the triangle's Laplacian).
+    # Art. 92: equal roots. Three particles on a ring, each tied down: K = k I + k L (L the triangle's
+    # Laplacian).
     L = np.array([[2.0, -1, -1], [-1, 2, -1], [-1, -1, 2]])
     Kr, Mr = k * (np.eye(3) + L), m * np.eye(3)
     roots = sla.eigh(Kr, Mr, eigvals_only=True)
     results.number("equal_roots_over_k_per_m", (roots / (k / m)).tolist(), "k/m", note="1 and 4 twice")
     minors_zero, multiplicity = symbolic.equal_root_minors()
-    results.number("equal_roots_minors_vanish", int(minors_zero), "1",
-                   note="1: every first minor of $\\Delta(\\lambda)$ is zero at the double root (sympy)")
+    results.number(
+        "equal_roots_minors_vanish",
+        int(minors_zero),
+        "1",
+        note="1: every first minor of $\\Delta(\\lambda)$ is zero at the double root (sympy)",
+    )
     results.number("equal_roots_multiplicity", multiplicity, "1")
     periods = 10_000
-    T = 2 * np.pi / np.sqrt(roots[0])                         # the roots 1 and 4: the motion has this period
+    T = 2 * np.pi / np.sqrt(roots[0])  # the roots 1 and 4: the motion has this period
     growth = _bounded(Kr, Mr, T, periods, rng)
-    results.number("equal_roots_amplitude_growth", growth - 1, "1",
-                   note=f"largest $|q|$ over {periods} periods (8 samples a period, exact propagator) over "
-                        "that of the first period, less 1")
-    jordan = np.array([[k, k], [0.0, k]])                     # a double root, not from a potential
-    results.number("non_symmetric_amplitude_growth", _bounded(jordan, m * np.eye(2), 2 * np.pi / np.sqrt(k / m),
-                                                               periods, rng), "1",
-                   note="the same for $K = k[(1, 1), (0, 1)]$ (non-symmetric, a double root): grows as $t$")
-    results.hard_case("equal_roots_bounded", "Equal roots (Lamb Art. 92): a symmetric system with a double "
-                      f"root stays bounded over {periods} periods (largest amplitude over the first period's, "
-                      "less 1)", growth - 1, 1e-9)
+    results.number(
+        "equal_roots_amplitude_growth",
+        growth - 1,
+        "1",
+        note=f"largest $|q|$ over {periods} periods (8 samples a period, exact propagator) over "
+        "that of the first period, less 1",
+    )
+    jordan = np.array([[k, k], [0.0, k]])  # a double root, not from a potential
+    results.number(
+        "non_symmetric_amplitude_growth",
+        _bounded(jordan, m * np.eye(2), 2 * np.pi / np.sqrt(k / m), periods, rng),
+        "1",
+        note="the same for $K = k[(1, 1), (0, 1)]$ (non-symmetric, a double root): grows as $t$",
+    )
+    results.hard_case(
+        "equal_roots_bounded",
+        "Equal roots (Lamb Art. 92): a symmetric system with a double "
+        f"root stays bounded over {periods} periods (largest amplitude over the first period's, "
+        "less 1)",
+        growth - 1,
+        1e-9,
+    )
 
 
 def _bounded(K, M, period, periods, rng, samples=8):
@@ -121,35 +161,62 @@ def ball_modes(results, seed=9):
     I = a @ a.T + 0.5 * np.eye(3)
     V = b @ b.T + 0.2 * np.eye(3) + 1.5 * np.diag([1.0, 1.0, 0.0])
     lam, phi = sla.eigh(V, I)
-    off = lambda S: np.max(np.abs(S - np.diag(np.diag(S)))) / np.max(np.abs(np.diag(S)))   # noqa: E731
-    results.number("ball_conjugate_inertia", float(off(phi.T @ I @ phi)), "1",
-                   note="largest off-diagonal of $\\Phi^TI\\Phi$ over its diagonal")
-    results.number("ball_conjugate_potential", float(off(phi.T @ V @ phi)), "1",
-                   note="largest off-diagonal of $\\Phi^TV\\Phi$ over its diagonal")
+    off = lambda S: np.max(np.abs(S - np.diag(np.diag(S)))) / np.max(np.abs(np.diag(S)))
+    results.number(
+        "ball_conjugate_inertia",
+        float(off(phi.T @ I @ phi)),
+        "1",
+        note="largest off-diagonal of $\\Phi^TI\\Phi$ over its diagonal",
+    )
+    results.number(
+        "ball_conjugate_potential",
+        float(off(phi.T @ V @ phi)),
+        "1",
+        note="largest off-diagonal of $\\Phi^TV\\Phi$ over its diagonal",
+    )
     A = _state(V, I)
     worst = 0.0
     for j in range(3):
         axis = phi[:, j] / np.linalg.norm(phi[:, j])
-        run = solve_ivp(lambda _, z: A @ z, (0.0, 5 * 2 * np.pi / np.sqrt(lam[0])), np.concatenate([axis, 0 * axis]),
-                        method="DOP853", rtol=1e-13, atol=1e-15, t_eval=np.linspace(0, 5 * 2 * np.pi / np.sqrt(lam[0]),
-                                                                                    401))
+        run = solve_ivp(
+            lambda _, z: A @ z,
+            (0.0, 5 * 2 * np.pi / np.sqrt(lam[0])),
+            np.concatenate([axis, 0 * axis]),
+            method="DOP853",
+            rtol=1e-13,
+            atol=1e-15,
+            t_eval=np.linspace(0, 5 * 2 * np.pi / np.sqrt(lam[0]), 401),
+        )
         theta = run.y[:3]
         sideways = np.linalg.norm(theta - np.outer(axis, axis @ theta), axis=0)
         worst = max(worst, float(sideways.max()))
-    results.number("ball_mode_axis_fixed", worst, "1",
-                   note="largest component of $\\boldsymbol\\theta(t)$ off its starting axis, unit start, five "
-                        "gravest periods (DOP853): each mode is a rotation about a fixed axis")
+    results.number(
+        "ball_mode_axis_fixed",
+        worst,
+        "1",
+        note="largest component of $\\boldsymbol\\theta(t)$ off its starting axis, unit start, five "
+        "gravest periods (DOP853): each mode is a rotation about a fixed axis",
+    )
 
 
 # --- Art. 99: kinetic stability ---------------------------------------------------------------------------
 
+
 def gyroscopic(results, spec):
     """Art. 99: a1 q1'' + beta q2' + c1 q1 = 0, a2 q2'' - beta q1' + c2 q2 = 0 (unit a1 = a2)."""
     discriminant_exact, polynomial_exact = symbolic.kinetic_stability()
-    results.number("kinetic_polynomial_exact", int(polynomial_exact), "1",
-                   note="1: the determinant of the gyroscopic system is Lamb's (2) (sympy)")
-    results.number("kinetic_condition_is_discriminant", int(discriminant_exact), "1",
-                   note="1: Lamb's condition (3) is the discriminant of (2) in $\\lambda^2$ (sympy)")
+    results.number(
+        "kinetic_polynomial_exact",
+        int(polynomial_exact),
+        "1",
+        note="1: the determinant of the gyroscopic system is Lamb's (2) (sympy)",
+    )
+    results.number(
+        "kinetic_condition_is_discriminant",
+        int(discriminant_exact),
+        "1",
+        note="1: Lamb's condition (3) is the discriminant of (2) in $\\lambda^2$ (sympy)",
+    )
     I2 = np.eye(2)
     J = np.array([[0.0, 1.0], [-1.0, 0.0]])
 
@@ -158,39 +225,66 @@ def gyroscopic(results, spec):
         return bool(np.max(lam.real) > 1e-7)
 
     switch = _bisect(lambda b: unstable(b, -1.0), 1.0, 3.0, 1e-13)
-    results.number("kinetic_switch_beta", switch, "1",
-                   note="$\\beta$ at which the state matrix's roots for $c_1 = c_2 = -1$ become imaginary "
-                        "(bisection): Lamb's (3) gives $\\beta^2 = 4$")
+    results.number(
+        "kinetic_switch_beta",
+        switch,
+        "1",
+        note="$\\beta$ at which the state matrix's roots for $c_1 = c_2 = -1$ become imaginary "
+        "(bisection): Lamb's (3) gives $\\beta^2 = 4$",
+    )
     betas = np.linspace(0.0, 5.0, 51)
-    results.number("kinetic_positive_c_unstable_count", int(sum(unstable(b, 1.0) for b in betas)), "1",
-                   note="$c_1 = c_2 = 1$: values of $\\beta$ in [0, 5] with a growing root (none)")
-    results.number("kinetic_mixed_c_stable_count",
-                   int(sum(not bool(np.max(np.linalg.eigvals(_state(np.diag([1.0, -1.0]), I2, G=b * J)).real) > 1e-7)
-                           for b in betas)), "1",
-                   note="$c_1 = 1$, $c_2 = -1$: values of $\\beta$ with no growing root (none: $c_1c_2 < 0$)")
+    results.number(
+        "kinetic_positive_c_unstable_count",
+        int(sum(unstable(b, 1.0) for b in betas)),
+        "1",
+        note="$c_1 = c_2 = 1$: values of $\\beta$ in [0, 5] with a growing root (none)",
+    )
+    results.number(
+        "kinetic_mixed_c_stable_count",
+        int(
+            sum(
+                not bool(np.max(np.linalg.eigvals(_state(np.diag([1.0, -1.0]), I2, G=b * J)).real) > 1e-7)
+                for b in betas
+            )
+        ),
+        "1",
+        note="$c_1 = 1$, $c_2 = -1$: values of $\\beta$ with no growing root (none: $c_1c_2 < 0$)",
+    )
     # Secular stability: a small dashpot eps on both coordinates.
     eps, beta = spec["epsilon"], spec["beta"]
     rho = symbolic.gyroscopic_first_order_rho()
     for c, label in ((-1.0, "negative"), (1.0, "positive")):
         lam = np.linalg.eigvals(_state(c * I2, I2, B=eps * I2, G=beta * J))
         upper = lam[lam.imag > 0]
-        upper = upper[np.argsort(upper.imag)]                 # slower, faster
+        upper = upper[np.argsort(upper.imag)]  # slower, faster
         sigma = np.sort(np.abs(np.linalg.eigvals(_state(c * I2, I2, G=beta * J)).imag))[::2]
         first = np.array([float(rho.subs({"c": c, "beta": beta, "epsilon": eps, "sigma": s})) for s in sigma])
-        results.number(f"secular_real_parts_c_{label}", upper.real.tolist(), "1",
-                       note=f"$c_1 = c_2 = {int(c)}$, $\\beta$ = {beta}, $\\epsilon$ = {eps}: real parts of the slower "
-                            "and the faster root")
-        results.number(f"secular_first_order_c_{label}", first.tolist(), "1",
-                       note="the first-order $\\rho$ (sympy, Lamb's (8)-(10)) at the same roots")
-        results.number(f"secular_vs_first_order_c_{label}", float(np.max(np.abs(upper.real - first) / np.abs(first))),
-                       "1", note="largest relative difference")
+        results.number(
+            f"secular_real_parts_c_{label}",
+            upper.real.tolist(),
+            "1",
+            note=f"$c_1 = c_2 = {int(c)}$, $\\beta$ = {beta}, $\\epsilon$ = {eps}: real parts of the slower "
+            "and the faster root",
+        )
+        results.number(
+            f"secular_first_order_c_{label}",
+            first.tolist(),
+            "1",
+            note="the first-order $\\rho$ (sympy, Lamb's (8)-(10)) at the same roots",
+        )
+        results.number(
+            f"secular_vs_first_order_c_{label}",
+            float(np.max(np.abs(upper.real - first) / np.abs(first))),
+            "1",
+            note="largest relative difference",
+        )
     _bowl(results, spec["bowl_friction"])
 
 
 def _bowl(results, friction):
-    """Art. 99 Ex. 2: a particle near the bottom of a spherical bowl (radius a) turning at omega, in axes turning
-    with it: x'' - 2 omega y' + (n^2 - omega^2) x + k x' = 0 and y'' + 2 omega x' + (n^2 - omega^2) y + k y' = 0,
-    n^2 = g/a, friction k times the velocity relative to the bowl. Units n = 1."""
+    """Art. 99 Ex. 2: a particle near the bottom of a spherical bowl (radius a) turning at omega, in axes
+    turning with it: x'' - 2 omega y' + (n^2 - omega^2) x + k x' = 0 and y'' + 2 omega x' + (n^2 - omega^2) y
+    + k y' = 0, n^2 = g/a, friction k times the velocity relative to the bowl. Units n = 1."""
     J = np.array([[0.0, -1.0], [1.0, 0.0]])
     I2 = np.eye(2)
 
@@ -202,65 +296,103 @@ def _bowl(results, friction):
         return bool(np.max(roots(omega, friction)[0].real) > 0)
 
     switch = _bisect(growing, 0.5, 2.0, 1e-13)
-    results.number("bowl_switch_omega_over_n", switch, "n",
-                   note="$\\omega/n$ at which the largest real part changes sign, friction on (bisection): Lamb's "
-                        "$\\omega^2 = g/a$")
+    results.number(
+        "bowl_switch_omega_over_n",
+        switch,
+        "n",
+        note="$\\omega/n$ at which the largest real part changes sign, friction on (bisection): Lamb's "
+        "$\\omega^2 = g/a$",
+    )
     lam, vec = roots(2.0, 0.0)
     space = []
     for j in np.where(lam.imag > 0)[0]:
         x, y = vec[0, j], vec[1, j]
-        ccw = np.imag(np.conj(x) * y) < 0                    # (1, -i): counter-clockwise, the sense of omega
+        ccw = np.imag(np.conj(x) * y) < 0  # (1, -i): counter-clockwise, the sense of omega
         space.append((1 if ccw else -1) * lam[j].imag + 2.0)
-    results.number("bowl_space_rates_frictionless", [float(v) for v in sorted(space)], "n",
-                   note="$\\omega = 2n$, no friction: the angular speed in space of each circular vibration "
-                        "(positive: the sense of $\\omega$); Lamb's $\\pm n$")
+    results.number(
+        "bowl_space_rates_frictionless",
+        [float(v) for v in sorted(space)],
+        "n",
+        note="$\\omega = 2n$, no friction: the angular speed in space of each circular vibration "
+        "(positive: the sense of $\\omega$); Lamb's $\\pm n$",
+    )
     lam, vec = roots(2.0, friction)
     j = int(np.argmax(lam.real))
     x, y = vec[0, j], vec[1, j]
-    ccw = np.imag(np.conj(x) * y) * np.sign(lam[j].imag) < 0     # counter-clockwise in the turning axes
+    ccw = np.imag(np.conj(x) * y) * np.sign(lam[j].imag) < 0  # counter-clockwise in the turning axes
     relative = abs(lam[j].imag) * (1 if ccw else -1)
-    results.number("bowl_growing_mode_space_rate", float(relative + 2.0), "n",
-                   note="$\\omega = 2n$ with friction: the angular speed in space of the growing circular "
-                        "vibration (positive: the sense of $\\omega$) and its real part")
+    results.number(
+        "bowl_growing_mode_space_rate",
+        float(relative + 2.0),
+        "n",
+        note="$\\omega = 2n$ with friction: the angular speed in space of the growing circular "
+        "vibration (positive: the sense of $\\omega$) and its real part",
+    )
     results.number("bowl_growing_real_part", float(lam[j].real), "n")
-    results.number("bowl_conical_pendulum_exact", int(symbolic.bowl_relative_equilibrium()), "1",
-                   note="1: sympy finds the relative equilibrium $\\cos\\theta = g/a\\omega^2$, a minimum of the "
-                        "effective potential when $\\omega^2 > g/a$ and the lowest point then a maximum")
+    results.number(
+        "bowl_conical_pendulum_exact",
+        int(symbolic.bowl_relative_equilibrium()),
+        "1",
+        note="1: sympy finds the relative equilibrium $\\cos\\theta = g/a\\omega^2$, a minimum of the "
+        "effective potential when $\\omega^2 > g/a$ and the lowest point then a maximum",
+    )
 
 
 # --- Exs. XIV.16 and 18: steady motions -------------------------------------------------------------------
 
+
 def revolving(results):
-    """Ex. XIV.16: circular orbits under f ~ e^{-r/a}/r^2 (units a = 1); Ex. XIV.18: two particles on a string."""
+    """Ex. XIV.16: circular orbits under f ~ e^{-r/a}/r^2 (units a = 1); Ex. XIV.18: two particles on a
+    string."""
     r_printed, r_ocr = symbolic.exponential_force_bounds()
-    results.number("exponential_force_bound_sympy", [float(r_printed), float(r_ocr)], "a",
-                   note="sympy: $d(r^3f)/dr > 0$ for $r$ below these, $f = e^{-r/a}/r^2$ and $e^{-r/a}/r$")
+    results.number(
+        "exponential_force_bound_sympy",
+        [float(r_printed), float(r_ocr)],
+        "a",
+        note="sympy: $d(r^3f)/dr > 0$ for $r$ below these, $f = e^{-r/a}/r^2$ and $e^{-r/a}/r$",
+    )
 
     def kappa2(r, power):
         """Radial frequency squared of the circular orbit at r: 3 f/r + f' (f' by the complex step)."""
-        f = lambda x: np.exp(-x) / x**power                   # noqa: E731
+        f = lambda x: np.exp(-x) / x**power
         h = 1e-30
         return 3 * f(r) / r + np.imag(f(r + 1j * h)) / h
 
-    results.number("exponential_force_switch", _bisect(lambda r: kappa2(r, 2) < 0, 0.2, 3.0, 1e-13), "a",
-                   note="radius at which the radial frequency squared $3f/r + f'$ of the circular orbit changes "
-                        "sign, $f = e^{-r/a}/r^2$ (bisection, complex-step $f'$)")
-    results.number("exponential_force_switch_ocr_reading", _bisect(lambda r: kappa2(r, 1) < 0, 0.2, 5.0, 1e-13), "a",
-                   note="the same for $f = e^{-r/a}/r$, the OCR's reading")
+    results.number(
+        "exponential_force_switch",
+        _bisect(lambda r: kappa2(r, 2) < 0, 0.2, 3.0, 1e-13),
+        "a",
+        note="radius at which the radial frequency squared $3f/r + f'$ of the circular orbit changes "
+        "sign, $f = e^{-r/a}/r^2$ (bisection, complex-step $f'$)",
+    )
+    results.number(
+        "exponential_force_switch_ocr_reading",
+        _bisect(lambda r: kappa2(r, 1) < 0, 0.2, 5.0, 1e-13),
+        "a",
+        note="the same for $f = e^{-r/a}/r$, the OCR's reading",
+    )
     # Ex. XIV.18: M at a from O, m at a + b, rigid links, no gravity, the straight form turning at Omega.
     M, m, a, b, omega = 2.0, 1.0, 1.0, 0.7, 1.0
     sigma2, printed, five = symbolic.revolving_string()
-    results.number("revolving_routh_is_printed", int(printed), "1",
-                   note="1: Routh's reduction (sympy) gives $\\sigma^2 = \\mu^2/[Mab(Ma^2 + m(a + b)^2)]$")
-    results.number("revolving_equal_case_over_omega2", float(five), "Ω²",
-                   note="sympy's $\\sigma^2/\\Omega^2$ for $M = m$, $a = b$")
+    results.number(
+        "revolving_routh_is_printed",
+        int(printed),
+        "1",
+        note="1: Routh's reduction (sympy) gives $\\sigma^2 = \\mu^2/[Mab(Ma^2 + m(a + b)^2)]$",
+    )
+    results.number(
+        "revolving_equal_case_over_omega2",
+        float(five),
+        "Ω²",
+        note="sympy's $\\sigma^2/\\Omega^2$ for $M = m$, $a = b$",
+    )
     eps = 1e-5
-    z0 = np.array([0.0, 0.0, omega, eps])                     # phi1, psi = phi2 - phi1, and their rates
+    z0 = np.array([0.0, 0.0, omega, eps])  # phi1, psi = phi2 - phi1, and their rates
     mu = (M + m) * a**2 * omega + m * b**2 * (omega + eps) + m * a * b * (2 * omega + eps)
     expected = float(sigma2.subs(dict(zip(symbolic.REVOLVING, (M, m, a, b, mu)))))
 
-    def rhs(_, z):                      # Lagrange's equations in phi1, phi2, written for phi1 and psi (no
-        d = -z[1]                       # difference of two large angles: psi is small)
+    def rhs(_, z):  # Lagrange's equations in phi1, phi2, written for phi1 and psi (no
+        d = -z[1]  # difference of two large angles: psi is small)
         rates = (z[2], z[2] + z[3])
         mass = np.array([[(M + m) * a**2, m * a * b * np.cos(d)], [m * a * b * np.cos(d), m * b**2]])
         force = np.array([-m * a * b * np.sin(d) * rates[1] ** 2, m * a * b * np.sin(d) * rates[0] ** 2])
@@ -269,6 +401,7 @@ def revolving(results):
 
     def crossing(_, z):
         return z[1]
+
     crossing.direction = 1.0
     span = 30 * 2 * np.pi / np.sqrt(expected)
     run = solve_ivp(rhs, (0.0, span), z0, method="DOP853", rtol=1e-13, atol=1e-16, events=crossing)
@@ -276,13 +409,18 @@ def revolving(results):
     times = times[times > 1e-9]
     period = (times[-1] - times[0]) / (len(times) - 1)
     fitted = (2 * np.pi / period) ** 2
-    results.number("revolving_sigma2_fitted_vs_formula", float(abs(fitted - expected) / expected), "1",
-                   note=f"$M = 2m$, $b = 0.7a$: $\\sigma^2$ from the period of $\\phi_2 - \\phi_1$ over "
-                        f"{len(times) - 1} oscillations (DOP853, nonlinear, disturbance $10^{{-5}}$) against "
-                        "$\\mu^2/[Mab(Ma^2 + m(a + b)^2)]$")
+    results.number(
+        "revolving_sigma2_fitted_vs_formula",
+        float(abs(fitted - expected) / expected),
+        "1",
+        note=f"$M = 2m$, $b = 0.7a$: $\\sigma^2$ from the period of $\\phi_2 - \\phi_1$ over "
+        f"{len(times) - 1} oscillations (DOP853, nonlinear, disturbance $10^{{-5}}$) against "
+        "$\\mu^2/[Mab(Ma^2 + m(a + b)^2)]$",
+    )
 
 
 # --- Art. 100: the hanging chain from Hamilton's principle -------------------------------------------------
+
 
 def hamilton_chain(results, elements_list, modes=5):
     """2T = rho int y'^2 ds, 2V = g rho int (l - s) y_s^2 ds, s from the top, y(0) = 0 and nothing imposed at
@@ -290,12 +428,13 @@ def hamilton_chain(results, elements_list, modes=5):
     from scipy import sparse
     from scipy.sparse.linalg import eigsh
     from scipy.special import jn_zeros
+
     exact = (jn_zeros(0, modes) / 2) ** 2
     errors, finest = [], []
     for n in elements_list:
         h = 1.0 / n
         mid = (np.arange(n) + 0.5) * h
-        stiff = (1.0 - mid) / h                               # int (l - s) over an element / h^2
+        stiff = (1.0 - mid) / h  # int (l - s) over an element / h^2
         main = np.zeros(n + 1)
         main[:-1] += stiff
         main[1:] += stiff
@@ -303,24 +442,32 @@ def hamilton_chain(results, elements_list, modes=5):
         mm = np.full(n + 1, 4 * h / 6)
         mm[0] = mm[-1] = 2 * h / 6
         M = sparse.diags([mm, np.full(n, h / 6), np.full(n, h / 6)], [0, 1, -1], format="csc")
-        K, M = K[1:, 1:], M[1:, 1:]                            # the top held: y(0) = 0; the free end left free
+        K, M = K[1:, 1:], M[1:, 1:]  # the top held: y(0) = 0; the free end left free
         # a fixed start vector: ARPACK's random one moves the eigenvalues in the last digits from run to run
         lam = np.sort(eigsh(K, k=modes, M=M, sigma=0.0, which="LM", v0=np.ones(n), return_eigenvectors=False))
         errors.append(float(np.max(np.abs(lam - exact) / exact)))
         finest.append(lam)
     order = float(-np.polyfit(np.log(elements_list), np.log(errors), 1)[0])
     results.number("galerkin_elements", list(elements_list), "1")
-    results.number("galerkin_relative_errors", errors, "1",
-                   note="largest relative error of the lowest five $\\sigma^2l/g$ against $(j_{0k}/2)^2$")
+    results.number(
+        "galerkin_relative_errors",
+        errors,
+        "1",
+        note="largest relative error of the lowest five $\\sigma^2l/g$ against $(j_{0k}/2)^2$",
+    )
     results.number("galerkin_finest_error", errors[-1], "1")
     results.number("galerkin_order", order, "1", note="fitted order in the number of elements")
-    richardson = (4 * finest[-1] - finest[-2]) / 3             # the h^2 term removed (the mesh halved)
-    results.number("galerkin_richardson_error", float(np.max(np.abs(richardson - exact) / exact)), "1",
-                   note="the two finest meshes extrapolated, $(4\\lambda_{h/2} - \\lambda_h)/3$, against "
-                        "$(j_{0k}/2)^2$")
+    richardson = (4 * finest[-1] - finest[-2]) / 3  # the h^2 term removed (the mesh halved)
+    results.number(
+        "galerkin_richardson_error",
+        float(np.max(np.abs(richardson - exact) / exact)),
+        "1",
+        note="the two finest meshes extrapolated, $(4\\lambda_{h/2} - \\lambda_h)/3$, against $(j_{0k}/2)^2$",
+    )
 
 
 # --- The membrane (lecture notes): the drum's modes -------------------------------------------------------
+
 
 def _cheb(N):
     """Trefethen's cheb: differentiation matrix and points cos(j pi/N), j = 0..N."""
@@ -333,22 +480,24 @@ def _cheb(N):
 
 
 def drum(results, N, m_max=2, n_max=2):
-    """The membrane y_tt = (T/sigma) lap y on the disc r < a, y = 0 on the rim: in each Fourier mode cos m theta
-    (and sin, the same radial problem: a double frequency for m >= 1), u'' + u'/r - m^2 u/r^2 = -k^2 u, solved by
-    Chebyshev collocation on the diameter with u(-r) = (-1)^m u(r) (Trefethen, Program 28). Units a = 1."""
-    from scipy.special import jn_zeros
+    """The membrane y_tt = (T/sigma) lap y on the disc r < a, y = 0 on the rim: in each Fourier mode cos m
+    theta (and sin, the same radial problem: a double frequency for m >= 1), u'' + u'/r - m^2 u/r^2 = -k^2 u,
+    solved by Chebyshev collocation on the diameter with u(-r) = (-1)^m u(r) (Trefethen, Program 28). Units a
+    = 1."""
     import mpmath
+    from scipy.special import jn_zeros
+
     D, r = _cheb(N)
     D2 = D @ D
     half = (N - 1) // 2
     rows = slice(1, half + 1)
     mirror = list(range(N - 1, N - 1 - half, -1))
-    R = np.diag(1 / r[1:half + 1])
+    R = np.diag(1 / r[1 : half + 1])
     computed, reference, labels = [], [], []
     for m in range(m_max + 1):
         p = (-1) ** m
-        E1, E2 = D2[rows, 1:half + 1], D2[rows][:, mirror]
-        F1, F2 = D[rows, 1:half + 1], D[rows][:, mirror]
+        E1, E2 = D2[rows, 1 : half + 1], D2[rows][:, mirror]
+        F1, F2 = D[rows, 1 : half + 1], D[rows][:, mirror]
         L = (E1 + p * E2) + R @ (F1 + p * F2) - m**2 * R @ R
         k = np.sort(np.sqrt(-np.linalg.eigvals(L).real))[:n_max]
         computed.extend(k)
@@ -359,12 +508,28 @@ def drum(results, N, m_max=2, n_max=2):
     with mpmath.workdps(30):
         mp = np.array([float(mpmath.besseljzero(m, n)) for m, n in labels])
     results.number("drum_modes_mn", [list(labels[i]) for i in order], "1", note="$(m, n)$ of each frequency")
-    results.number("drum_frequencies_collocation", computed[order].tolist(), "√(T/σ)/a",
-                   note=f"$\\omega a\\sqrt{{\\sigma/T}}$ from Chebyshev collocation, {N} points on the diameter")
+    results.number(
+        "drum_frequencies_collocation",
+        computed[order].tolist(),
+        "√(T/σ)/a",
+        note=f"$\\omega a\\sqrt{{\\sigma/T}}$ from Chebyshev collocation, {N} points on the diameter",
+    )
     results.number("drum_bessel_zeros", reference[order].tolist(), "1", note="$j_{m,n}$ (scipy jn_zeros)")
-    results.number("drum_collocation_vs_bessel", float(np.max(np.abs(computed - reference) / reference)), "1",
-                   note="largest relative difference")
-    results.number("drum_scipy_vs_mpmath", float(np.max(np.abs(reference - mp) / mp)), "1",
-                   note="scipy's zeros against mpmath's besseljzero at 30 digits")
-    results.number("drum_overtone_ratios", (computed[order][1:] / computed[order][0]).tolist(), "1",
-                   note="each frequency over the gravest: not whole numbers")
+    results.number(
+        "drum_collocation_vs_bessel",
+        float(np.max(np.abs(computed - reference) / reference)),
+        "1",
+        note="largest relative difference",
+    )
+    results.number(
+        "drum_scipy_vs_mpmath",
+        float(np.max(np.abs(reference - mp) / mp)),
+        "1",
+        note="scipy's zeros against mpmath's besseljzero at 30 digits",
+    )
+    results.number(
+        "drum_overtone_ratios",
+        (computed[order][1:] / computed[order][0]).tolist(),
+        "1",
+        note="each frequency over the gravest: not whole numbers",
+    )

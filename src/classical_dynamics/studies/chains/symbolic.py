@@ -16,13 +16,16 @@ from ...models.chains import difference_matrix
 k = sp.Symbol("k", positive=True)
 m1, m2, m3 = sp.symbols("m1 m2 m3", positive=True)
 
-# Formulas for ω² as the sources print them, in the symbols of derive() (a scene names one: analysis.closed_form).
+# Formulas for ω² as the sources print them, in the symbols of derive() (a scene names one:
+# analysis.closed_form).
 SOURCE_FORMULAS = {
     # lecture notes: two equal masses between three equal springs
     "equal_springs": [k / m1, 3 * k / m1],
     # lecture notes: unequal masses m1, m2 between three equal springs
-    "unequal_masses": [k / (m1 * m2) * ((m1 + m2) - sp.sqrt(m1**2 - m1 * m2 + m2**2)),
-                       k / (m1 * m2) * ((m1 + m2) + sp.sqrt(m1**2 - m1 * m2 + m2**2))],
+    "unequal_masses": [
+        k / (m1 * m2) * ((m1 + m2) - sp.sqrt(m1**2 - m1 * m2 + m2**2)),
+        k / (m1 * m2) * ((m1 + m2) + sp.sqrt(m1**2 - m1 * m2 + m2**2)),
+    ],
     # handbook Ex. 2.4: springs k, 3k, k
     "springs_k_3k_k": [k / m1, 7 * k / m1],
     # lecture notes: the linear triatomic molecule m-M-m, free in space (m1 = m, m2 = M)
@@ -52,7 +55,8 @@ def _symbols_for(values, names):
 
 
 def stiffness_and_mass(masses_kg, springs_n_per_m, ends: str):
-    """K and M in symbols: one mass symbol per distinct mass, springs as k times their ratio to the softest."""
+    """K and M in symbols: one mass symbol per distinct mass, springs as k times their ratio to the
+    softest."""
     masses, _ = _symbols_for(masses_kg, [m1, m2, m3])
     springs = np.atleast_1d(springs_n_per_m).astype(float)
     B = sp.Matrix(difference_matrix(len(masses), ends).astype(int))
@@ -68,7 +72,9 @@ def derive(masses_kg, springs_n_per_m, ends: str):
     _, mass_values = _symbols_for(masses_kg, [m1, m2, m3])
     lam = sp.Symbol("lambda")
     polynomial = sp.factor((K - lam * M).det())
-    roots = sorted(sp.roots(sp.Poly(polynomial, lam)).keys(), key=lambda r: float(r.subs({k: 1, **mass_values})))
+    roots = sorted(
+        sp.roots(sp.Poly(polynomial, lam)).keys(), key=lambda r: float(r.subs({k: 1, **mass_values}))
+    )
     values = {k: float(np.min(springs_n_per_m)), **mass_values}
     return polynomial, roots, values
 
@@ -91,10 +97,11 @@ def rayleigh_symmetric_type(K, M):
 def separation_by_diagonal():
     """Lamb Art. 90 Ex. 1: for 2V = a x^2 + 2h xy + b y^2 and equal masses m, the frequency polynomial
     (a - m s)(b - m s) - h^2 takes the value -h^2 <= 0 at s = a/m and at s = b/m, so its two real roots lie
-    outside [min(a, b)/m, max(a, b)/m]: the diagonal values separate them. Returns that value at both points."""
+    outside [min(a, b)/m, max(a, b)/m]: the diagonal values separate them. Returns that value at both
+    points."""
     a, b, h, m, s2 = sp.symbols("a b h m s2", real=True)
     f = sp.expand((a - m * s2) * (b - m * s2) - h**2)
-    return sp.simplify(f.subs(s2, a / m)), sp.simplify(f.subs(s2, b / m)), -h**2
+    return sp.simplify(f.subs(s2, a / m)), sp.simplify(f.subs(s2, b / m)), -(h**2)
 
 
 def damped_frequency_shift(n_modes: int, mode: int):
@@ -107,9 +114,11 @@ def damped_frequency_shift(n_modes: int, mode: int):
     l1, l2 = sp.symbols("l1 l2")
     x1 = sp.symbols(f"x1_1:{n_modes + 1}")
     others = [i for i in range(n_modes) if i != mode]
-    x = sp.Matrix([1 if i == mode else eps * x1[i] for i in range(n_modes)])   # normalized: x_k = 1
+    x = sp.Matrix([1 if i == mode else eps * x1[i] for i in range(n_modes)])  # normalized: x_k = 1
     lam = sp.I * sigma[mode] + eps * l1 + eps**2 * l2
-    residual = ((lam**2 * sp.eye(n_modes) + eps * lam * C + sp.diag(*[s**2 for s in sigma])) * x).applyfunc(sp.expand)
+    residual = ((lam**2 * sp.eye(n_modes) + eps * lam * C + sp.diag(*[s**2 for s in sigma])) * x).applyfunc(
+        sp.expand
+    )
     first = sp.solve([r.coeff(eps, 1) for r in residual], [l1] + [x1[i] for i in others], dict=True)[0]
     second = sp.solve([sp.expand(residual[mode].coeff(eps, 2).subs(first))], [l2], dict=True)[0]
     return sigma, C, sp.simplify(first[l1]), sp.simplify(second[l2])
@@ -127,22 +136,22 @@ def hanging_chain_quotient_is_printed() -> bool:
 
 
 def hanging_chain_tau():
-    """Lamb Art. 90 Ex. 3: the time to run from the free end to x at the local wave speed sqrt(g x) is
-    tau = 2 sqrt(x/g); with x = g tau^2/4 the chain's g d/dx (x dy/dx) becomes y'' + y'/tau, the membrane's (19).
+    """Lamb Art. 90 Ex. 3: the time to run from the free end to x at the local wave speed sqrt(g x) is tau = 2
+    sqrt(x/g); with x = g tau^2/4 the chain's g d/dx (x dy/dx) becomes y'' + y'/tau, the membrane's (19).
     Returns whether each holds exactly."""
     x, g, tau = sp.symbols("x g tau", positive=True)
     integral = sp.simplify(sp.integrate(1 / sp.sqrt(g * x), (x, 0, x)) - 2 * sp.sqrt(x / g)) == 0
     f = sp.Function("y")(tau)
     x_of_tau = g * tau**2 / 4
-    d_dx = lambda e: sp.diff(e, tau) / sp.diff(x_of_tau, tau)                      # noqa: E731
+    d_dx = lambda e: sp.diff(e, tau) / sp.diff(x_of_tau, tau)
     chain = g * d_dx(x_of_tau * d_dx(f))
     membrane = sp.diff(f, tau, 2) + sp.diff(f, tau) / tau
     return integral, sp.simplify(chain - membrane) == 0
 
 
 def string_parabola_quotient():
-    """Lamb Ex. XIV.12: the type y = x (l - x) on a string (tension P, density rho) gives sigma^2 = 10 P/(rho l^2),
-    the period 2 pi/sqrt(10) in units of l sqrt(rho/P). Returns sigma^2 rho l^2 / P, derived."""
+    """Lamb Ex. XIV.12: the type y = x (l - x) on a string (tension P, density rho) gives sigma^2 = 10 P/(rho
+    l^2), the period 2 pi/sqrt(10) in units of l sqrt(rho/P). Returns sigma^2 rho l^2 / P, derived."""
     x, l = sp.symbols("x l", positive=True)
     y = x * (l - x)
     return sp.simplify(sp.integrate(sp.diff(y, x) ** 2, (x, 0, l)) / sp.integrate(y**2, (x, 0, l)) * l**2)
@@ -150,9 +159,11 @@ def string_parabola_quotient():
 
 def formula_is_exact(formula, roots) -> bool:
     """The printed ω² are exactly the derived roots, for every value of the symbols."""
+    # equal power sums: the same multiset of roots
     return len(formula) == len(roots) and all(
         sp.simplify(sp.expand(sum(f**p for f in formula) - sum(r**p for r in roots))) == 0
-        for p in range(1, len(roots) + 1))          # equal power sums: the same multiset of roots
+        for p in range(1, len(roots) + 1)
+    )
 
 
 def evaluate(expressions, values) -> np.ndarray:
@@ -160,6 +171,7 @@ def evaluate(expressions, values) -> np.ndarray:
 
 
 # --- Lamb's stability (Arts. 92, 99; Exs. XIV.16, 18): the references of studies/chains/stability.py ------
+
 
 def equal_root_minors():
     """Lamb Art. 92: three particles m on a closed ring of springs k, each tied down by k: K = k(I + L).
@@ -197,9 +209,9 @@ def gyroscopic_first_order_rho():
 
 
 def bowl_relative_equilibrium() -> bool:
-    """Lamb Art. 99 Ex. 2: in the bowl turning at omega the effective potential per unit mass is
-    -g a cos theta - omega^2 a^2 sin^2 theta / 2; its stationary point off the bottom is cos theta = g/(a omega^2),
-    a minimum, and the bottom is then a maximum (omega^2 > g/a)."""
+    """Lamb Art. 99 Ex. 2: in the bowl turning at omega the effective potential per unit mass is -g a cos
+    theta - omega^2 a^2 sin^2 theta / 2; its stationary point off the bottom is cos theta = g/(a omega^2), a
+    minimum, and the bottom is then a maximum (omega^2 > g/a)."""
     g, a, w, th = sp.symbols("g a omega theta", positive=True)
     U = -g * a * sp.cos(th) - w**2 * a**2 * sp.sin(th) ** 2 / 2
     dU = sp.diff(U, th)
@@ -230,17 +242,19 @@ REVOLVING = sp.symbols("M m a b mu", positive=True)
 def revolving_string():
     """Lamb Ex. XIV.18: particles M, m at a and a + b from O on a light string, revolving in a plane with
     angular momentum mu. phi the first link's angle (cyclic), psi the second's relative to it; Routh's
-    reduction: the Routhian's kinetic part in psi and the effective potential mu^2/(2 A(psi)). Returns sigma^2,
-    whether it is mu^2/[Mab(Ma^2 + m(a + b)^2)], and sigma^2/Omega^2 for M = m, a = b."""
+    reduction: the Routhian's kinetic part in psi and the effective potential mu^2/(2 A(psi)). Returns
+    sigma^2, whether it is mu^2/[Mab(Ma^2 + m(a + b)^2)], and sigma^2/Omega^2 for M = m, a = b."""
     M, m, a, b, mu = REVOLVING
     psi = sp.Symbol("psi")
-    A = (M + m) * a**2 + m * b**2 + 2 * m * a * b * sp.cos(psi)      # p_phi = A phi' + B psi'
+    A = (M + m) * a**2 + m * b**2 + 2 * m * a * b * sp.cos(psi)  # p_phi = A phi' + B psi'
     B = m * b**2 + m * a * b * sp.cos(psi)
-    inertia = (m * b**2 - B**2 / A).subs(psi, 0)                       # the Routhian's coefficient of psi'^2/2
+    inertia = (m * b**2 - B**2 / A).subs(psi, 0)  # the Routhian's coefficient of psi'^2/2
     potential = mu**2 / (2 * A)
-    assert sp.simplify(sp.diff(potential, psi).subs(psi, 0)) == 0     # the straight form is a steady motion
+    assert sp.simplify(sp.diff(potential, psi).subs(psi, 0)) == 0  # the straight form is a steady motion
     sigma2 = sp.simplify(sp.diff(potential, psi, 2).subs(psi, 0) / inertia)
     printed = mu**2 / (M * a * b * (M * a**2 + m * (a + b) ** 2))
     omega = sp.Symbol("Omega", positive=True)
-    equal = sp.simplify((sigma2 / omega**2).subs(mu, omega * (M * a**2 + m * (a + b) ** 2)).subs({M: m, b: a}))
+    equal = sp.simplify(
+        (sigma2 / omega**2).subs(mu, omega * (M * a**2 + m * (a + b) ** 2)).subs({M: m, b: a})
+    )
     return sigma2, sp.simplify(sigma2 - printed) == 0, equal

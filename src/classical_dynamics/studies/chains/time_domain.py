@@ -14,6 +14,7 @@ from ..results import new_figure
 def _mode_angles(n: int, mode: int, amplitude_rad: float):
     """Link angles of linear mode `mode` (1-based), scaled so the largest angle is amplitude_rad."""
     from ...solvers.chain_eigen import modes
+
     s = np.arange(n, 0, -1.0)
     _, shapes = modes(s, None, np.ones(n), "fixed-free", mode)
     u = shapes[:, mode - 1]
@@ -29,7 +30,7 @@ def simulate(n, length, g, mode, amplitude_rad, periods, steps_per_fastest):
     n_steps = int(np.ceil(periods * 2 * np.pi / omega[mode - 1] / h))
     q0 = rattle.positions_from_angles(_mode_angles(n, mode, amplitude_rad), a)
     p0 = np.zeros_like(q0)
-    sample = max(1, int(round(2 * np.pi / omega[0] / h / 4)))       # four energy samples per period
+    sample = max(1, int(round(2 * np.pi / omega[0] / h / 4)))  # four energy samples per period
     tip, energies, constraint = rattle.integrate(q0, p0, np.full(n, 1.0 / n), a, g, h, n_steps, sample)
     return omega, h, tip, energies, constraint, sample
 
@@ -47,38 +48,63 @@ def run(scene, results, quick):
     for mode in range(1, min(3, n) + 1):
         omega, h, tip, _, _, _ = simulate(n, length, g, mode, small, 30 if quick else 100, steps)
         measured, cycles = rattle.crossing_frequency(tip, h)
-        rows.append({"mode": mode, "eigenvalue_omega_sqrt_g_over_l": omega[mode - 1] / unit,
-                     "measured_omega_sqrt_g_over_l": measured / unit, "cycles": cycles,
-                     "relative_difference": measured / omega[mode - 1] - 1})
+        rows.append(
+            {
+                "mode": mode,
+                "eigenvalue_omega_sqrt_g_over_l": omega[mode - 1] / unit,
+                "measured_omega_sqrt_g_over_l": measured / unit,
+                "cycles": cycles,
+                "relative_difference": measured / omega[mode - 1] - 1,
+            }
+        )
     frame = pd.DataFrame(rows)
-    results.table("time_domain_small_amplitude", frame, "Frequencies read from the zero crossings of the free end "
-                  f"in RATTLE runs started in each linear mode at {shortest(spec['small_amplitude_deg'])}°, against "
-                  f"the eigenvalues ({steps} steps per period of the fastest mode), in units of $\\sqrt{{g/l}}$; "
-                  "they differ by the method's small phase error.",
-                  headers={"mode": "mode", "eigenvalue_omega_sqrt_g_over_l": "eigenvalue $\\omega$ ($\\sqrt{g/l}$)",
-                           "measured_omega_sqrt_g_over_l": "measured $\\omega$ ($\\sqrt{g/l}$)",
-                           "cycles": "cycles", "relative_difference": "relative difference"})
-    results.number("time_domain_max_relative_frequency_difference",
-                   float(frame.relative_difference.abs().max()), "1",
-                   note=f"modes 1 to {len(rows)}, amplitude {shortest(spec['small_amplitude_deg'])}°")
+    results.table(
+        "time_domain_small_amplitude",
+        frame,
+        "Frequencies read from the zero crossings of the free end "
+        f"in RATTLE runs started in each linear mode at {shortest(spec['small_amplitude_deg'])}°, against "
+        f"the eigenvalues ({steps} steps per period of the fastest mode), in units of $\\sqrt{{g/l}}$; "
+        "they differ by the method's small phase error.",
+        headers={
+            "mode": "mode",
+            "eigenvalue_omega_sqrt_g_over_l": "eigenvalue $\\omega$ ($\\sqrt{g/l}$)",
+            "measured_omega_sqrt_g_over_l": "measured $\\omega$ ($\\sqrt{g/l}$)",
+            "cycles": "cycles",
+            "relative_difference": "relative difference",
+        },
+    )
+    results.number(
+        "time_domain_max_relative_frequency_difference",
+        float(frame.relative_difference.abs().max()),
+        "1",
+        note=f"modes 1 to {len(rows)}, amplitude {shortest(spec['small_amplitude_deg'])}°",
+    )
     # 2. energy over a long run
     periods = min(spec["long_run_periods"], 1000) if quick else spec["long_run_periods"]
     amp = np.radians(spec["long_run_amplitude_deg"])
     omega, h, tip, energies, constraint, sample = simulate(n, length, g, 1, amp, periods, steps)
-    rest = -g * length * (n + 1) / 2 / n * 1.0        # sum over particles of m g y at rest (total mass 1)
-    scale = energies[0] - rest                        # the oscillation's own energy
+    rest = -g * length * (n + 1) / 2 / n * 1.0  # sum over particles of m g y at rest (total mass 1)
+    scale = energies[0] - rest  # the oscillation's own energy
     drift = (energies - energies[0]) / scale
     t_periods = np.arange(energies.size) * sample * h * omega[0] / (2 * np.pi)
     tenth = max(2, energies.size // 10)
     results.number("time_domain_periods", periods, "gravest periods")
-    results.number("time_domain_energy_error_max", float(np.max(np.abs(drift))), "1",
-                   note="largest $|E - E_0|/(E_0 - E_\\mathrm{rest})$ over the run")
+    results.number(
+        "time_domain_energy_error_max",
+        float(np.max(np.abs(drift))),
+        "1",
+        note="largest $|E - E_0|/(E_0 - E_\\mathrm{rest})$ over the run",
+    )
     results.number("time_domain_energy_error_first_tenth", float(np.max(np.abs(drift[:tenth]))), "1")
     results.number("time_domain_energy_error_last_tenth", float(np.max(np.abs(drift[-tenth:]))), "1")
     results.number("time_domain_constraint_error_m", constraint, "m", note="largest $||q_j - q_{j-1}| - a|$")
-    results.hard_case("energy_bounded", f"Energy error over {format_number(periods)} gravest periods does not "
-                      "grow: its largest value in the last tenth of the run over its largest in the first tenth",
-                      float(np.max(np.abs(drift[-tenth:])) / max(np.max(np.abs(drift[:tenth])), 1e-300)), 2.0)
+    results.hard_case(
+        "energy_bounded",
+        f"Energy error over {format_number(periods)} gravest periods does not "
+        "grow: its largest value in the last tenth of the run over its largest in the first tenth",
+        float(np.max(np.abs(drift[-tenth:])) / max(np.max(np.abs(drift[:tenth])), 1e-300)),
+        2.0,
+    )
     fig, ax = new_figure(5.2, 2.05)
     running = np.maximum.accumulate(np.abs(drift))
     keep = t_periods > 0
@@ -86,10 +112,14 @@ def run(scene, results, quick):
     ax.set_xlabel("time (gravest periods)")
     ax.set_ylabel(r"running max of $|E - E_0|/(E_0 - E_\mathrm{rest})$")
     ax.set_ylim(running[keep].max() / 100, running[keep].max() * 10)
-    results.figure("energy_error", fig, f"Energy error of RATTLE over {format_number(periods)} gravest periods "
-                   f"({n} particles, amplitude {shortest(spec['long_run_amplitude_deg'])}°): the running maximum of "
-                   "$|E - E_0|$ relative to the oscillation's energy $E_0 - E_\\mathrm{rest}$, sampled four times a "
-                   "period. It reaches its level within the first period and stays there (bounded, no drift).")
+    results.figure(
+        "energy_error",
+        fig,
+        f"Energy error of RATTLE over {format_number(periods)} gravest periods "
+        f"({n} particles, amplitude {shortest(spec['long_run_amplitude_deg'])}°): the running maximum of "
+        "$|E - E_0|$ relative to the oscillation's energy $E_0 - E_\\mathrm{rest}$, sampled four times a "
+        "period. It reaches its level within the first period and stays there (bounded, no drift).",
+    )
     # 3. large amplitude: the frequency shift
     rows = []
     for deg in spec["large_amplitudes_deg"]:
@@ -97,13 +127,21 @@ def run(scene, results, quick):
         measured, _ = rattle.crossing_frequency(tip, h)
         rows.append({"amplitude_deg": deg, "omega_over_linear": measured / omega[0]})
     shift = pd.DataFrame(rows)
-    results.table("amplitude_shift", shift, "Mean frequency $\\omega$ of the free end against the initial amplitude "
-                  "(largest link angle) of a mode-1 start, relative to the linear $\\omega_1$.",
-                  headers={"amplitude_deg": "amplitude (°)", "omega_over_linear": "$\\omega/\\omega_1$"})
+    results.table(
+        "amplitude_shift",
+        shift,
+        "Mean frequency $\\omega$ of the free end against the initial amplitude "
+        "(largest link angle) of a mode-1 start, relative to the linear $\\omega_1$.",
+        headers={"amplitude_deg": "amplitude (°)", "omega_over_linear": "$\\omega/\\omega_1$"},
+    )
     fig, ax = new_figure(4.6, 2.5)
     ax.plot(shift.amplitude_deg, shift.omega_over_linear, "o-", color="C4")
     ax.set_xlabel("initial amplitude, largest link angle (°)")
     ax.set_ylabel(r"$\omega/\omega_1$")
-    results.figure("amplitude_shift", fig, "The frequency read from the motion of a mode-1 start, relative to the "
-                   "linear $\\omega_1$, against the initial amplitude (largest link angle): at large amplitude the "
-                   "chain swings more slowly.")
+    results.figure(
+        "amplitude_shift",
+        fig,
+        "The frequency read from the motion of a mode-1 start, relative to the "
+        "linear $\\omega_1$, against the initial amplitude (largest link angle): at large amplitude the "
+        "chain swings more slowly.",
+    )

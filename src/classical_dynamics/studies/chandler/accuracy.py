@@ -49,10 +49,18 @@ def run(scene, results, quick):
     def record(method, setting, kind, seconds, z, steps):
         rho = abs(z) / amplitude
         log_rho = np.log(rho)
-        rows.append({"method": method, "kind": kind, "setting": setting,
-                     "error_final": abs(z - exact) / amplitude, "amplitude_change": rho - 1.0,
-                     "spurious_Q": sigma * T / (-2.0 * log_rho) if log_rho != 0.0 else np.inf,
-                     "steps": steps, "seconds": seconds})
+        rows.append(
+            {
+                "method": method,
+                "kind": kind,
+                "setting": setting,
+                "error_final": abs(z - exact) / amplitude,
+                "amplitude_change": rho - 1.0,
+                "spurious_Q": sigma * T / (-2.0 * log_rho) if log_rho != 0.0 else np.inf,
+                "steps": steps,
+                "seconds": seconds,
+            }
+        )
 
     for method in spec["methods"]:
         if method.startswith("splitting"):
@@ -60,41 +68,57 @@ def run(scene, results, quick):
             for h in spec["steps"]:
                 n = int(round(T / h))
                 m0 = I * model.n * np.array([amplitude, 0.0, 1.0])
-                run = lambda: rigid_body.free_body(I, m0, T / n, n, order, n)      # noqa: E731
+                run = lambda: rigid_body.free_body(I, m0, T / n, n, order, n)
                 seconds, (ms, _), _ = min_time(run, repeats=min(repeats, 3), budget_s=2.0)
                 y = ms[-1] / I / model.n
                 record(f"splitting, order {order}", h, "step", seconds, y[0] + 1j * y[1], n)
             continue
         for rtol in spec["tolerances"]:
-            run = lambda: wobble_model.integrate(model, amplitude, T, rtol, None, method)    # noqa: E731
+            run = lambda: wobble_model.integrate(model, amplitude, T, rtol, None, method)
             seconds, sol, _ = min_time(run, repeats=repeats, budget_s=1.0)
             record(method, rtol, "tolerance", seconds, sol.y[0] + 1j * sol.y[1], sol.n_steps)
     frame = pd.DataFrame(rows)
     results.number("accuracy_span_years", span_years, "yr")
     span_text = f"{shortest(span_years)} {plural(span_years, 'year')}"
-    results.table("accuracy", frame.drop(columns=["seconds"]),
-                  f"A {arcsec_text(amplitude)}″ wobble over {span_text}, by method and step (d) or "
-                  "tolerance (rtol): the error at the end relative to the wobble's amplitude, the amplitude's "
-                  "relative change, and the quality factor $Q_\\mathrm{num}$ that change amounts to (negative: the "
-                  "method pumps energy in; ∞: no change at all in double precision). Compare with the Earth's "
-                  "$Q \\approx 100$.", headers=HEADERS)
-    results.timing_table("accuracy", frame, f"Work-precision of the {shortest(span_years)}-year wobble: the runs "
-                         "of the accuracy table with their wall times (minimum of repeats).",
-                         headers={**HEADERS, "seconds": "wall time (s)"})
+    results.table(
+        "accuracy",
+        frame.drop(columns=["seconds"]),
+        f"A {arcsec_text(amplitude)}″ wobble over {span_text}, by method and step (d) or "
+        "tolerance (rtol): the error at the end relative to the wobble's amplitude, the amplitude's "
+        "relative change, and the quality factor $Q_\\mathrm{num}$ that change amounts to (negative: the "
+        "method pumps energy in; ∞: no change at all in double precision). Compare with the Earth's "
+        "$Q \\approx 100$.",
+        headers=HEADERS,
+    )
+    results.timing_table(
+        "accuracy",
+        frame,
+        f"Work-precision of the {shortest(span_years)}-year wobble: the runs "
+        "of the accuracy table with their wall times (minimum of repeats).",
+        headers={**HEADERS, "seconds": "wall time (s)"},
+    )
     fig, ax = new_figure(6.2, 3.6)
     wp.plot(frame, ax, floor=1e-16, xlabel="error at the final time / wobble amplitude")
-    wp.legend_below(fig)                 # below the axes: no line hidden under it
-    results.timing_figure("work_precision", fig, f"Wall time against the error at the end of {span_text} of wobble "
-                          "(relative to the amplitude; errors below "
-                          f"{format_number(1e-16, 1)} drawn at that floor), one line per method: adaptive Runge–Kutta "
-                          "in the body frame, compiled (solid) and through SciPy (dashed), and the "
-                          "Lie–Poisson splitting (fixed steps, dotted). Runge–Kutta follows only the slow wobble; "
-                          "the splitting turns the body through every day of spin and pays for it.")
+    wp.legend_below(fig)  # below the axes: no line hidden under it
+    results.timing_figure(
+        "work_precision",
+        fig,
+        f"Wall time against the error at the end of {span_text} of wobble "
+        "(relative to the amplitude; errors below "
+        f"{format_number(1e-16, 1)} drawn at that floor), one line per method: adaptive Runge–Kutta "
+        "in the body frame, compiled (solid) and through SciPy (dashed), and the "
+        "Lie–Poisson splitting (fixed steps, dotted). Runge–Kutta follows only the slow wobble; "
+        "the splitting turns the body through every day of spin and pays for it.",
+    )
     for key, (best, setting) in wp.best_by_method(frame).items():
         results.number(f"best_error_{key}", best, "1", note=f"at {format_number(setting, 3)}")
     for method, part in frame.groupby("method", sort=False):
-        results.number(f"min_abs_spurious_Q_{wp.method_key(method)}", float(np.min(np.abs(part.spurious_Q))), "1",
-                       note="smallest $|Q_\\mathrm{num}|$ over the settings")
+        results.number(
+            f"min_abs_spurious_Q_{wp.method_key(method)}",
+            float(np.min(np.abs(part.spurious_Q))),
+            "1",
+            note="smallest $|Q_\\mathrm{num}|$ over the settings",
+        )
     _speedup(results, frame)
 
 
@@ -102,18 +126,37 @@ def _speedup(results, frame):
     """Compiled DOP853 against scipy's DOP853 at the same tolerance: same steps, the ratio is overhead."""
     ours, peer = frame[frame.method == "dop853"], frame[frame.method == "scipy:DOP853"]
     common = sorted(set(ours.setting) & set(peer.setting))
-    rows = [{"rtol": s, "dop853_seconds": float(ours[ours.setting == s].seconds.iloc[0]),
-             "scipy_DOP853_seconds": float(peer[peer.setting == s].seconds.iloc[0])} for s in common]
+    rows = [
+        {
+            "rtol": s,
+            "dop853_seconds": float(ours[ours.setting == s].seconds.iloc[0]),
+            "scipy_DOP853_seconds": float(peer[peer.setting == s].seconds.iloc[0]),
+        }
+        for s in common
+    ]
     for row in rows:
         row["speedup"] = row["scipy_DOP853_seconds"] / row["dop853_seconds"]
     if rows:
-        results.timing_table("speedup", pd.DataFrame(rows),
-                             "The compiled DOP853 against SciPy's at the same tolerance (same method, same steps): "
-                             "the ratio of wall times is the overhead of the interpreted loop.",
-                             headers={"rtol": "rtol", "dop853_seconds": "DOP853, compiled (s)",
-                                      "scipy_DOP853_seconds": "SciPy DOP853 (s)", "speedup": "speed-up"})
+        results.timing_table(
+            "speedup",
+            pd.DataFrame(rows),
+            "The compiled DOP853 against SciPy's at the same tolerance (same method, same steps): "
+            "the ratio of wall times is the overhead of the interpreted loop.",
+            headers={
+                "rtol": "rtol",
+                "dop853_seconds": "DOP853, compiled (s)",
+                "scipy_DOP853_seconds": "SciPy DOP853 (s)",
+                "speedup": "speed-up",
+            },
+        )
 
 
-HEADERS = {"method": "method", "kind": "control", "setting": "step (d) or rtol",
-           "error_final": "final error / amplitude", "amplitude_change": "amplitude change",
-           "spurious_Q": "$Q_\\mathrm{num}$", "steps": "steps"}
+HEADERS = {
+    "method": "method",
+    "kind": "control",
+    "setting": "step (d) or rtol",
+    "error_final": "final error / amplitude",
+    "amplitude_change": "amplitude change",
+    "spurious_Q": "$Q_\\mathrm{num}$",
+    "steps": "steps",
+}

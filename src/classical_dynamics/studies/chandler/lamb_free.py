@@ -1,11 +1,11 @@
 """Lamb's free rigid body (Arts. 48-55, Examples X, Ex. XIII.11) and the lecture notes' free precession.
 
 Each statement is checked twice: a sympy derivation of the closed form (for every value of its symbols), and
-an integration of Euler's equations with the attitude (scipy's DOP853 on omega and the rotation matrix, not the
-study's own integrators) measured against that closed form.
+an integration of Euler's equations with the attitude (scipy's DOP853 on omega and the rotation matrix, not
+the study's own integrators) measured against that closed form.
 
-free_body(results, spec)           a strongly triaxial body (the scene's moments A < B < C), a rectangular plate
-                                   and a forced spin (scene: triaxial, analysis.lamb_free_body)
+free_body(results, spec)           a strongly triaxial body (the scene's moments A < B < C), a rectangular
+                                   plate and a forced spin (scene: triaxial, analysis.lamb_free_body)
 symmetric_earth(results, model, amplitude)
                                    the rigid symmetric Earth: the space frequency, the Eulerian nutation, the
                                    sense of the body frequency, the oblateness (scene: rigid_modern,
@@ -32,8 +32,10 @@ def _rhs(I):
         p, q, r = y[0], y[1], y[2]
         R = y[3:].reshape(3, 3)
         W = np.array([[0.0, -r, q], [r, 0.0, -p], [-q, p, 0.0]])
-        return np.concatenate([[(B - C) * q * r / A, (C - A) * r * p / B, (A - B) * p * q / C],
-                               (R @ W).ravel()])
+        return np.concatenate(
+            [[(B - C) * q * r / A, (C - A) * r * p / B, (A - B) * p * q / C], (R @ W).ravel()]
+        )
+
     return f
 
 
@@ -41,8 +43,15 @@ def integrate(I, omega0, span, samples=2001, rtol=RTOL):
     """omega (body, (n, 3)) and R (body -> space, (n, 3, 3)) at `samples` times over [0, span]."""
     t = np.linspace(0.0, span, samples)
     y0 = np.concatenate([omega0, np.eye(3).ravel()])
-    sol = solve_ivp(_rhs(np.asarray(I, float)), (0.0, span), y0, method="DOP853", rtol=rtol,
-                    atol=rtol * 1e-6 * np.linalg.norm(omega0), t_eval=t)
+    sol = solve_ivp(
+        _rhs(np.asarray(I, float)),
+        (0.0, span),
+        y0,
+        method="DOP853",
+        rtol=rtol,
+        atol=rtol * 1e-6 * np.linalg.norm(omega0),
+        t_eval=t,
+    )
     return t, sol.y[:3].T, sol.y[3:].T.reshape(-1, 3, 3)
 
 
@@ -52,6 +61,7 @@ def _euler_batch(I):
     def f(t, y):
         p, q, r = y.reshape(3, -1)
         return np.concatenate([(B - C) * q * r / A, (C - A) * r * p / B, (A - B) * p * q / C])
+
     return f
 
 
@@ -59,17 +69,17 @@ def polhode_period(I, omega0):
     """4K(k)/lambda (Landau & Lifshitz, Mechanics, §37), for I1 < I2 < I3, either side of the separatrix."""
     I1, I2, I3 = I
     L2 = float(np.sum((I * omega0) ** 2))
-    E2 = float(np.sum(I * omega0 ** 2))                  # 2T
-    if L2 > E2 * I2:                                      # about the greatest axis
+    E2 = float(np.sum(I * omega0**2))  # 2T
+    if L2 > E2 * I2:  # about the greatest axis
         k2 = (I2 - I1) * (E2 * I3 - L2) / ((I3 - I2) * (L2 - E2 * I1))
         lam = np.sqrt((I3 - I2) * (L2 - E2 * I1) / (I1 * I2 * I3))
-    else:                                                 # about the least axis: I1 and I3 exchanged
+    else:  # about the least axis: I1 and I3 exchanged
         k2 = (I3 - I2) * (L2 - E2 * I1) / ((I2 - I1) * (E2 * I3 - L2))
         lam = np.sqrt((I2 - I1) * (E2 * I3 - L2) / (I1 * I2 * I3))
     return 4.0 * float(ellipk(k2)) / lam, k2
 
 
-# --- sympy: the closed forms, for every value of their symbols -----------------------------------------------
+# --- sympy: the closed forms, for every value of their symbols ----------------------------------------------
 A_, B_, C_ = sp.symbols("A B C", positive=True)
 p_, q_, r_ = sp.symbols("p q r", real=True)
 
@@ -78,13 +88,15 @@ def symbolic_residuals() -> dict:
     """name -> 0 when sympy reduces the statement to an identity (else the number of the residual's terms)."""
     out = {}
     H2 = A_**2 * p_**2 + B_**2 * q_**2 + C_**2 * r_**2
-    T2 = A_ * p_**2 + B_ * q_**2 + C_ * r_**2                   # 2T
-    # Art. 52 (10): A^2p^2 + C^2r^2 < B(Ap^2 + Cr^2) is k^2 < 1, k^2 = (A - B)(H^2 - 2CT)/((B - C)(2AT - H^2)):
-    # for Lamb's order A > B > C the denominator is positive, so k^2 < 1 is (B - C)(2AT - H^2) - (A - B)(H^2 - 2CT)
-    # > 0, and that is (A - C)(2BT - H^2), 2BT - H^2 being (10)'s B(Ap^2 + Cr^2) - A^2p^2 - C^2r^2
+    T2 = A_ * p_**2 + B_ * q_**2 + C_ * r_**2  # 2T
+    # Art. 52 (10): A^2p^2 + C^2r^2 < B(Ap^2 + Cr^2) is k^2 < 1, k^2 = (A - B)(H^2 - 2CT)/((B - C)(2AT -
+    # H^2)): for Lamb's order A > B > C the denominator is positive, so k^2 < 1 is (B - C)(2AT - H^2) - (A -
+    # B)(H^2 - 2CT) > 0, and that is (A - C)(2BT - H^2), 2BT - H^2 being (10)'s B(Ap^2 + Cr^2) - A^2p^2 -
+    # C^2r^2
     lhs = (B_ - C_) * (A_ * T2 - H2) - (A_ - B_) * (H2 - C_ * T2)
-    out["art52_10_is_k2_lt_1"] = sp.expand(lhs - (A_ - C_) * (B_ * (A_ * p_**2 + C_ * r_**2)
-                                                              - A_**2 * p_**2 - C_**2 * r_**2))
+    out["art52_10_is_k2_lt_1"] = sp.expand(
+        lhs - (A_ - C_) * (B_ * (A_ * p_**2 + C_ * r_**2) - A_**2 * p_**2 - C_**2 * r_**2)
+    )
     # Ex. X.1: the central section of Ax^2 + By^2 + Cz^2 = 1 by the plane with unit normal n has the area
     # pi/sqrt(det of the form on the plane), and that determinant is -det([[Q, n], [n^T, 0]]) = ABC n.Q^-1 n;
     # with n = (Ap, Bq, Cr)/H it is ABC 2T/H^2, so the area is pi H/sqrt(2ABCT)
@@ -111,24 +123,29 @@ def symbolic_residuals() -> dict:
     x = s * n
     out["ex_x_5_on_ellipsoid"] = sp.simplify(x[0] ** 2 / A_ + x[1] ** 2 / B_ + x[2] ** 2 / C_ - 1)
     normal = sp.Matrix([x[0] / A_, x[1] / B_, x[2] / C_])
-    out["ex_x_5_normal_along_omega"] = sp.simplify((normal - s / sp.sqrt(H2) * sp.Matrix([p_, q_, r_])).norm())
-    # Ex. X.22: the plane of OZ (along H) and the axis A turns about OZ at psi' = H(Bq^2 + Cr^2)/(B^2q^2 + C^2r^2)
-    # (the Euler-angle rate about the invariable line, axis A as the polar axis); with cos(alpha) = Ap/H,
-    # sin^2(alpha) psi' = 2T/H - (H/A) cos^2(alpha)
+    out["ex_x_5_normal_along_omega"] = sp.simplify(
+        (normal - s / sp.sqrt(H2) * sp.Matrix([p_, q_, r_])).norm()
+    )
+    # Ex. X.22: the plane of OZ (along H) and the axis A turns about OZ at psi' = H(Bq^2 + Cr^2)/(B^2q^2 +
+    # C^2r^2) (the Euler-angle rate about the invariable line, axis A as the polar axis); with cos(alpha) =
+    # Ap/H, sin^2(alpha) psi' = 2T/H - (H/A) cos^2(alpha)
     psi_dot = sp.sqrt(H2) * (B_ * q_**2 + C_ * r_**2) / (B_**2 * q_**2 + C_**2 * r_**2)
     cos_alpha = A_ * p_ / sp.sqrt(H2)
-    out["ex_x_22_rate"] = sp.simplify((1 - cos_alpha**2) * psi_dot - (T2 / sp.sqrt(H2)
-                                                                       - sp.sqrt(H2) / A_ * cos_alpha**2))
-    # Ex. X.3: the circular cylinder that envelopes Ax^2 + By^2 + Cz^2 = 1 along d = (sin phi, 0, cos phi): its
-    # shadow on the plane normal to d has the form B along y and AC/(A sin^2 + C cos^2) across; circular when
-    # that is B. It touches along the diametral plane conjugate to d, d.Qx = 0: A sin(phi) x + C cos(phi) z = 0,
-    # so (z/x)^2 = A^2 tan^2(phi)/C^2; the separatrix planes A(A - B)x^2 = C(B - C)z^2 (2BT = H^2) have
+    out["ex_x_22_rate"] = sp.simplify(
+        (1 - cos_alpha**2) * psi_dot - (T2 / sp.sqrt(H2) - sp.sqrt(H2) / A_ * cos_alpha**2)
+    )
+    # Ex. X.3: the circular cylinder that envelopes Ax^2 + By^2 + Cz^2 = 1 along d = (sin phi, 0, cos phi):
+    # its shadow on the plane normal to d has the form B along y and AC/(A sin^2 + C cos^2) across; circular
+    # when that is B. It touches along the diametral plane conjugate to d, d.Qx = 0: A sin(phi) x + C cos(phi)
+    # z = 0, so (z/x)^2 = A^2 tan^2(phi)/C^2; the separatrix planes A(A - B)x^2 = C(B - C)z^2 (2BT = H^2) have
     # (z/x)^2 = A(A - B)/(C(B - C))
     phi, t2 = sp.symbols("phi t2", positive=True)
     d = sp.Matrix([sp.sin(phi), 0, sp.cos(phi)])
     e_perp = sp.Matrix([sp.cos(phi), 0, -sp.sin(phi)])
     across = (e_perp.T * Q * e_perp)[0] - (e_perp.T * Q * d)[0] ** 2 / (d.T * Q * d)[0]
-    out["ex_x_3_shadow_form"] = sp.simplify(across - A_ * C_ / (A_ * sp.sin(phi) ** 2 + C_ * sp.cos(phi) ** 2))
+    out["ex_x_3_shadow_form"] = sp.simplify(
+        across - A_ * C_ / (A_ * sp.sin(phi) ** 2 + C_ * sp.cos(phi) ** 2)
+    )
     # circular: A sin^2 + C cos^2 = AC/B, i.e. (divide by cos^2, t2 = tan^2) A t2 + C = AC(1 + t2)/B
     tan2 = sp.solve(sp.Eq(A_ * t2 + C_, A_ * C_ * (1 + t2) / B_), t2)[0]
     out["ex_x_3_contact_plane"] = sp.simplify(A_**2 * tan2 / C_**2 - A_ * (A_ - B_) / (C_ * (B_ - C_)))
@@ -138,14 +155,18 @@ def symbolic_residuals() -> dict:
     return {k: (0 if v == 0 else len(sp.Add.make_args(v))) for k, v in out.items()}
 
 
-# --- the analyses --------------------------------------------------------------------------------------------
+# --- the analyses -------------------------------------------------------------------------------------------
 def free_body(results, spec) -> None:
     I = np.array(spec["moments"], float)
     if not (I[0] < I[1] < I[2]):
         raise ValueError("lamb_free_body.moments: A < B < C")
     for name, residual in symbolic_residuals().items():
-        results.number(f"sympy_{name}", residual, "1",
-                       note="0: sympy reduces the statement to an identity (else the residual's number of terms)")
+        results.number(
+            f"sympy_{name}",
+            residual,
+            "1",
+            note="0: sympy reduces the statement to an identity (else the residual's number of terms)",
+        )
     _polhode_side(results, I, spec["samples"], spec["seed"])
     _stable_axes(results, I, np.radians(spec["tilt_deg"]))
     _poinsot(results, I)
@@ -161,22 +182,34 @@ def _polhode_side(results, I, samples, seed):
     w = rng.normal(size=(samples, 3))
     w /= np.linalg.norm(w, axis=1)[:, None]
     p, q, r = w.T
-    least = A**2 * p**2 + C**2 * r**2 < B * (A * p**2 + C * r**2)       # Lamb (10): round the least axis A
+    least = A**2 * p**2 + C**2 * r**2 < B * (A * p**2 + C * r**2)  # Lamb (10): round the least axis A
     span = 1.05 * max(polhode_period(I, wi)[0] for wi in w)
     t = np.linspace(0.0, span, 4001)
-    sol = solve_ivp(_euler_batch(I), (0.0, span), w.T.ravel(), method="DOP853", rtol=1e-11, atol=1e-13, t_eval=t)
+    sol = solve_ivp(
+        _euler_batch(I), (0.0, span), w.T.ravel(), method="DOP853", rtol=1e-11, atol=1e-13, t_eval=t
+    )
     pp, _, rr = sol.y.reshape(3, samples, -1)
-    keeps_p = np.all(pp * p[:, None] > 0, axis=1)                       # the least axis' component keeps its sign
+    keeps_p = np.all(pp * p[:, None] > 0, axis=1)  # the least axis' component keeps its sign
     keeps_r = np.all(rr * r[:, None] > 0, axis=1)
     agree = (least & keeps_p & ~keeps_r) | (~least & keeps_r & ~keeps_p)
     margin = np.abs(B * (A * p**2 + C * r**2) - A**2 * p**2 - C**2 * r**2)
-    results.number("polhode_side_samples", samples, "1", note="random directions of ω, moments " + _moments(I))
-    results.number("polhode_side_agreements", int(np.sum(agree)), "1",
-                   note="(10) predicts the axis the polhode surrounds, and the integration agrees (the component "
-                        "along that axis keeps its sign for 1.05 of the longest period, the other changes sign)")
+    results.number(
+        "polhode_side_samples", samples, "1", note="random directions of ω, moments " + _moments(I)
+    )
+    results.number(
+        "polhode_side_agreements",
+        int(np.sum(agree)),
+        "1",
+        note="(10) predicts the axis the polhode surrounds, and the integration agrees (the component "
+        "along that axis keeps its sign for 1.05 of the longest period, the other changes sign)",
+    )
     results.number("polhode_side_round_least", int(np.sum(least)), "1")
-    results.number("polhode_side_smallest_margin", float(np.min(margin)), "1",
-                   note="nearest start to the separatrix: $|B(Ap_0^2 + Cr_0^2) - A^2p_0^2 - C^2r_0^2|$")
+    results.number(
+        "polhode_side_smallest_margin",
+        float(np.min(margin)),
+        "1",
+        note="nearest start to the separatrix: $|B(Ap_0^2 + Cr_0^2) - A^2p_0^2 - C^2r_0^2|$",
+    )
 
 
 def _moments(I):
@@ -197,28 +230,37 @@ def _stable_axes(results, I, tilt):
         t, w, _ = integrate(I, w0, period, samples=20001)
         axis = 2 if name == "greatest" else 0
         angle = np.degrees(np.arccos(np.abs(w[:, axis]) / np.linalg.norm(w, axis=1)))
-        results.number(f"{name}_axis_conic_ratio", float(np.max(np.abs(w[:, j]))) / predicted, "1",
-                       note=f"largest $|\\omega_2|$ over a period from {np.degrees(tilt):g}° off the {name} axis, "
-                            "over the conic's value")
+        results.number(
+            f"{name}_axis_conic_ratio",
+            float(np.max(np.abs(w[:, j]))) / predicted,
+            "1",
+            note=f"largest $|\\omega_2|$ over a period from {np.degrees(tilt):g}° off the {name} axis, "
+            "over the conic's value",
+        )
         results.number(f"{name}_axis_largest_angle_deg", float(np.max(angle)), "°")
     w0 = np.array([d, 1.0, 0.0])
     t, w, _ = integrate(I, w0, 2.0 * polhode_period(I, w0)[0], samples=20001)
     angle = np.degrees(np.arccos(np.clip(w[:, 1] / np.linalg.norm(w, axis=1), -1, 1)))
-    results.number("middle_axis_largest_angle_deg", float(np.max(angle)), "°",
-                   note=f"{np.degrees(tilt):g}° off the middle axis: ω swings over to the opposite side")
+    results.number(
+        "middle_axis_largest_angle_deg",
+        float(np.max(angle)),
+        "°",
+        note=f"{np.degrees(tilt):g}° off the middle axis: ω swings over to the opposite side",
+    )
 
 
 def _poinsot(results, I):
-    """Exx. X.1, X.4, X.5, X.22 along one integrated motion, measured in space and against the closed forms."""
+    """Exx. X.1, X.4, X.5, X.22 along one integrated motion, measured in space and against the closed
+    forms."""
     A, B, C = I
     w0 = np.array([0.8, 0.5, 0.6])
     period, k2 = polhode_period(I, w0)
     t, w, R = integrate(I, w0, 3.0 * period, samples=3001)
-    L_space = I * w0                                           # R(0) = 1
+    L_space = I * w0  # R(0) = 1
     H = float(np.linalg.norm(L_space))
     T2 = float(np.sum(I * w0**2))
     L_hat = L_space / H
-    n = np.einsum("kji,j->ki", R, L_hat)                       # the invariable line in the body, from the attitude
+    n = np.einsum("kji,j->ki", R, L_hat)  # the invariable line in the body, from the attitude
     results.number("poinsot_modulus_squared", k2, "1", note="$k^2$ of the motion, moments " + _moments(I))
     # Ex. X.1: the section's area from the form on the plane (an orthonormal basis of the plane, by SVD)
     Q = np.diag(I)
@@ -227,56 +269,97 @@ def _poinsot(results, I):
         P = np.linalg.svd(nk[None, :])[2][1:].T
         areas.append(np.pi / np.sqrt(np.linalg.det(P.T @ Q @ P)))
     areas = np.array(areas)
-    closed = np.pi * H / np.sqrt(T2 * A * B * C)             # pi H / sqrt(2ABCT), 2T = T2
-    results.number("section_area_max_relative_deviation", float(np.max(np.abs(areas / closed - 1.0))), "1",
-                   note="Ex. X.1: the central section by the plane normal to $\\mathbf{H}$, against "
-                        "$\\pi H/\\sqrt{2ABCT}$, over three polhode periods")
+    closed = np.pi * H / np.sqrt(T2 * A * B * C)  # pi H / sqrt(2ABCT), 2T = T2
+    results.number(
+        "section_area_max_relative_deviation",
+        float(np.max(np.abs(areas / closed - 1.0))),
+        "1",
+        note="Ex. X.1: the central section by the plane normal to $\\mathbf{H}$, against "
+        "$\\pi H/\\sqrt{2ABCT}$, over three polhode periods",
+    )
     # Ex. X.4: the ends of the axes (1/sqrt I_i along e_i) from the invariable line
     ends = np.eye(3) / np.sqrt(I)[:, None]
     dist2 = sum(np.linalg.norm(np.cross(ends[i], n), axis=1) ** 2 for i in range(3))
     closed = 1 / A + 1 / B + 1 / C - T2 / H**2
-    results.number("poinsot_sum_max_relative_deviation", float(np.max(np.abs(dist2 / closed - 1.0))), "1",
-                   note="Ex. X.4: sum of the squared distances against $1/A + 1/B + 1/C - 2T/H^2$")
-    # Ex. X.5: the point s n, s fixed at the start, stays on x^2/A + y^2/B + z^2/C = 1; the normal there is along
-    # omega; the distance from the centre to the tangent plane times |omega| is constant
+    results.number(
+        "poinsot_sum_max_relative_deviation",
+        float(np.max(np.abs(dist2 / closed - 1.0))),
+        "1",
+        note="Ex. X.4: sum of the squared distances against $1/A + 1/B + 1/C - 2T/H^2$",
+    )
+    # Ex. X.5: the point s n, s fixed at the start, stays on x^2/A + y^2/B + z^2/C = 1; the normal there is
+    # along omega; the distance from the centre to the tangent plane times |omega| is constant
     s = 1.0 / np.sqrt(np.sum(n[0] ** 2 / I))
     x = s * n
     on = np.abs(np.sum(x**2 / I, axis=1) - 1.0)
     normal = x / I
-    sinang = np.linalg.norm(np.cross(normal, w), axis=1) / (np.linalg.norm(normal, axis=1) * np.linalg.norm(w, axis=1))
+    sinang = np.linalg.norm(np.cross(normal, w), axis=1) / (
+        np.linalg.norm(normal, axis=1) * np.linalg.norm(w, axis=1)
+    )
     perp = 1.0 / np.linalg.norm(normal, axis=1)
     product = perp * np.linalg.norm(w, axis=1)
-    results.number("gyration_point_off_ellipsoid", float(np.max(on)), "1",
-                   note="Ex. X.5: largest $|x^2/A + y^2/B + z^2/C - 1|$ at the fixed point of the invariable line")
-    results.number("gyration_normal_angle_rad", float(np.max(np.arcsin(np.minimum(sinang, 1.0)))), "rad",
-                   note="largest angle between the normal there and $\\boldsymbol\\omega$")
-    results.number("gyration_perpendicular_times_omega_drift", float(np.max(np.abs(product / product[0] - 1))), "1",
-                   note="largest relative change of (perpendicular on the tangent plane) × $|\\boldsymbol\\omega|$")
-    results.number("gyration_omega_range", float(np.ptp(np.linalg.norm(w, axis=1)) / np.linalg.norm(w0)), "1",
-                   note="how much $|\\boldsymbol\\omega|$ itself varies (relative): the test is not empty")
-    # Ex. X.22: the rate at which the plane of OZ and the axis A turns about OZ, from the attitude (space frame)
+    results.number(
+        "gyration_point_off_ellipsoid",
+        float(np.max(on)),
+        "1",
+        note="Ex. X.5: largest $|x^2/A + y^2/B + z^2/C - 1|$ at the fixed point of the invariable line",
+    )
+    results.number(
+        "gyration_normal_angle_rad",
+        float(np.max(np.arcsin(np.minimum(sinang, 1.0)))),
+        "rad",
+        note="largest angle between the normal there and $\\boldsymbol\\omega$",
+    )
+    results.number(
+        "gyration_perpendicular_times_omega_drift",
+        float(np.max(np.abs(product / product[0] - 1))),
+        "1",
+        note="largest relative change of (perpendicular on the tangent plane) × $|\\boldsymbol\\omega|$",
+    )
+    results.number(
+        "gyration_omega_range",
+        float(np.ptp(np.linalg.norm(w, axis=1)) / np.linalg.norm(w0)),
+        "1",
+        note="how much $|\\boldsymbol\\omega|$ itself varies (relative): the test is not empty",
+    )
+    # Ex. X.22: the rate at which the plane of OZ and the axis A turns about OZ, from the attitude (space
+    # frame)
     eA = R[:, :, 0]
     w_space = np.einsum("kij,kj->ki", R, w)
     u = eA - np.outer(eA @ L_hat, L_hat)
     u_dot = np.cross(w_space, eA)
     u_dot -= np.outer(u_dot @ L_hat, L_hat)
-    measured = np.einsum("ki,ki->k", np.cross(u, u_dot), np.broadcast_to(L_hat, u.shape)) / np.sum(u**2, axis=1)
+    measured = np.einsum("ki,ki->k", np.cross(u, u_dot), np.broadcast_to(L_hat, u.shape)) / np.sum(
+        u**2, axis=1
+    )
     cos_a = eA @ L_hat
     formula = (T2 / H - H / A * cos_a**2) / (1.0 - cos_a**2)
-    results.number("plane_rate_max_relative_deviation", float(np.max(np.abs(measured / formula - 1.0))), "1",
-                   note="Ex. X.22: $\\dot\\psi$ of the plane $ZOA$ about $OZ$ measured in space against "
-                        "$(2T/H - (H/A)\\cos^2\\alpha)/\\sin^2\\alpha$ at the measured $\\alpha$")
-    results.number("plane_rate_range", float(np.ptp(measured) / np.mean(measured)), "1",
-                   note="how much that rate varies along the motion (relative)")
-    # ... and the same rate by differences of the plane's azimuth (no kinematics): 2nd-order central differences
+    results.number(
+        "plane_rate_max_relative_deviation",
+        float(np.max(np.abs(measured / formula - 1.0))),
+        "1",
+        note="Ex. X.22: $\\dot\\psi$ of the plane $ZOA$ about $OZ$ measured in space against "
+        "$(2T/H - (H/A)\\cos^2\\alpha)/\\sin^2\\alpha$ at the measured $\\alpha$",
+    )
+    results.number(
+        "plane_rate_range",
+        float(np.ptp(measured) / np.mean(measured)),
+        "1",
+        note="how much that rate varies along the motion (relative)",
+    )
+    # ... and the same rate by differences of the plane's azimuth (no kinematics): 2nd-order central
+    # differences
     e1 = np.cross(L_hat, [0.0, 1.0, 0.0])
     e1 /= np.linalg.norm(e1)
     e2 = np.cross(L_hat, e1)
     azimuth = np.unwrap(np.arctan2(u @ e2, u @ e1))
     fd = np.gradient(azimuth, t, edge_order=2)
-    results.number("plane_rate_differences_max_relative_deviation",
-                   float(np.max(np.abs(fd[1:-1] / formula[1:-1] - 1.0))), "1",
-                   note="the azimuth differenced (central differences, step " f"{t[1] - t[0]:.3g}" ")")
+    results.number(
+        "plane_rate_differences_max_relative_deviation",
+        float(np.max(np.abs(fd[1:-1] / formula[1:-1] - 1.0))),
+        "1",
+        note=f"the azimuth differenced (central differences, step {t[1] - t[0]:.3g})",
+    )
 
 
 def _separatrix(results, I):
@@ -289,26 +372,45 @@ def _separatrix(results, I):
     normal /= np.linalg.norm(normal)
     t, w, _ = integrate(I, w0, 10.0 / np.linalg.norm(w0), samples=2001)
     off = np.abs(w @ normal) / np.linalg.norm(w, axis=1)
-    # the plane of contact of the enveloping circular cylinder, numerically: tan^2 phi = C(A - B)/(A(B - C)), the
-    # normal (A sin phi, 0, C cos phi) of the diametral plane conjugate to its axis
+    # the plane of contact of the enveloping circular cylinder, numerically: tan^2 phi = C(A - B)/(A(B - C)),
+    # the normal (A sin phi, 0, C cos phi) of the diametral plane conjugate to its axis
     phi = np.arctan(np.sqrt(C * (A - B) / (A * (B - C))))
     contact = np.array([A * np.sin(phi), 0.0, C * np.cos(phi)])
     contact /= np.linalg.norm(contact)
-    mirror = normal * np.array([1.0, 1.0, -1.0])              # the other separatrix plane
+    mirror = normal * np.array([1.0, 1.0, -1.0])  # the other separatrix plane
     radius, roundness = _shadow_radius(I, np.array([np.sin(phi), 0.0, np.cos(phi)]))
-    results.number("separatrix_largest_offset", float(np.max(off)), "rad",
-                   note="Ex. X.3: largest angle of $\\boldsymbol\\omega$ from the plane $A(B - A)p^2 = C(C - B)r^2$ "
-                        "over the run, from a start in it")
-    results.number("separatrix_y_range", float(np.ptp(w[:, 1]) / np.linalg.norm(w0)), "1",
-                   note="how far ω moves within the plane (relative): the test is not empty")
-    results.number("cylinder_contact_vs_separatrix_angle",
-                   float(np.arccos(min(1.0, max(abs(contact @ normal), abs(contact @ mirror))))), "rad",
-                   note="angle between the enveloping cylinder's plane of contact and a separatrix plane")
-    results.number("cylinder_shadow_radius_times_sqrt_B", radius * np.sqrt(B), "1",
-                   note="the enveloping cylinder's radius (largest distance of the ellipsoid from its axis, by "
-                        "sampling) × $\\sqrt B$: 1 for a circular cylinder through the middle axis' ends")
-    results.number("cylinder_contact_curve_roundness", roundness, "1",
-                   note="the spread of those distances over their mean: 0 for a circular cylinder")
+    results.number(
+        "separatrix_largest_offset",
+        float(np.max(off)),
+        "rad",
+        note="Ex. X.3: largest angle of $\\boldsymbol\\omega$ from the plane $A(B - A)p^2 = C(C - B)r^2$ "
+        "over the run, from a start in it",
+    )
+    results.number(
+        "separatrix_y_range",
+        float(np.ptp(w[:, 1]) / np.linalg.norm(w0)),
+        "1",
+        note="how far ω moves within the plane (relative): the test is not empty",
+    )
+    results.number(
+        "cylinder_contact_vs_separatrix_angle",
+        float(np.arccos(min(1.0, max(abs(contact @ normal), abs(contact @ mirror))))),
+        "rad",
+        note="angle between the enveloping cylinder's plane of contact and a separatrix plane",
+    )
+    results.number(
+        "cylinder_shadow_radius_times_sqrt_B",
+        radius * np.sqrt(B),
+        "1",
+        note="the enveloping cylinder's radius (largest distance of the ellipsoid from its axis, by "
+        "sampling) × $\\sqrt B$: 1 for a circular cylinder through the middle axis' ends",
+    )
+    results.number(
+        "cylinder_contact_curve_roundness",
+        roundness,
+        "1",
+        note="the spread of those distances over their mean: 0 for a circular cylinder",
+    )
 
 
 def _shadow_radius(I, d, n=2001):
@@ -330,7 +432,7 @@ def _shadow_radius(I, d, n=2001):
 
 def _plate(results, a, b):
     """Ex. X.15: a plate (edges 2a, 2b) spun about a diagonal spins about the other after half a period."""
-    I = np.array([b * b, a * a, a * a + b * b]) / 3.0          # M = 1
+    I = np.array([b * b, a * a, a * a + b * b]) / 3.0  # M = 1
     order = np.argsort(I)
     if not np.all(order == [0, 1, 2]):
         raise ValueError("lamb_free_body.plate_half_sides: a > b (moments b²/3 < a²/3 < (a² + b²)/3)")
@@ -340,22 +442,44 @@ def _plate(results, a, b):
 
     def crossing(t, y):
         return y[2]
+
     crossing.direction = 0.0
     y0 = np.concatenate([w0, np.eye(3).ravel()])
-    sol = solve_ivp(_rhs(I), (0.0, 1.5 * half), y0, method="DOP853", rtol=1e-13, atol=1e-16, events=crossing,
-                    dense_output=True)
+    sol = solve_ivp(
+        _rhs(I),
+        (0.0, 1.5 * half),
+        y0,
+        method="DOP853",
+        rtol=1e-13,
+        atol=1e-16,
+        events=crossing,
+        dense_output=True,
+    )
     times = [tc for tc in sol.t_events[0] if tc > 1e-9 * half]
     t_star = times[0]
     w_star = sol.sol(t_star)[:3]
     other = np.array([a, -b, 0.0]) / np.hypot(a, b)
     angle = np.arcsin(min(1.0, np.linalg.norm(np.cross(w_star, other)) / np.linalg.norm(w_star)))
-    results.number("plate_other_diagonal_time", t_star, "time units",
-                   note=f"Ex. X.15: first time ω is again in the plate, half-sides a = {a:g}, b = {b:g} (time unit $1/|\\boldsymbol\\omega|$)")
-    results.number("plate_half_period_closed_form", half, "time units", note="$2K(k)/\\lambda$, Landau & Lifshitz §37")
+    results.number(
+        "plate_other_diagonal_time",
+        t_star,
+        "time units",
+        note=(
+            f"Ex. X.15: first time ω is again in the plate, half-sides a = {a:g}, b = {b:g} (time unit "
+            "$1/|\\boldsymbol\\omega|$)"
+        ),
+    )
+    results.number(
+        "plate_half_period_closed_form", half, "time units", note="$2K(k)/\\lambda$, Landau & Lifshitz §37"
+    )
     results.number("plate_time_relative_error", t_star / half - 1.0, "1")
     results.number("plate_modulus_squared", k2, "1")
-    results.number("plate_angle_from_other_diagonal_rad", float(angle), "rad",
-                   note="then the angle between ω and the other diagonal")
+    results.number(
+        "plate_angle_from_other_diagonal_rad",
+        float(angle),
+        "rad",
+        note="then the angle between ω and the other diagonal",
+    )
 
 
 def _constraining_couples(results, I, spin_over_turn, phases=64):
@@ -397,46 +521,65 @@ def _constraining_couples(results, I, spin_over_turn, phases=64):
     worst_z = worst_perp = worst_along = 0.0
     spread = 0.0
     for tk in np.linspace(0.0, 20.0, 41):
-        G = np.array([np.imag(momentum(tk + 1j * h, c0)) / h for c0 in np.linspace(0, 2 * np.pi, phases + 1)[:-1]])
+        G = np.array(
+            [np.imag(momentum(tk + 1j * h, c0)) / h for c0 in np.linspace(0, 2 * np.pi, phases + 1)[:-1]]
+        )
         Gm = G.mean(axis=0)
         c_hat = np.array([np.cos(phi(tk)), np.sin(phi(tk)), 0.0])
         perp = np.cross([0.0, 0.0, 1.0], c_hat)
         z_expected, perp_expected = 0.5 * (A + B) * v_dot(tk), C * n * v(tk)
         scale_z = 0.5 * (A + B) * 0.5 * v0 * w_mod
         worst_z = max(worst_z, abs(Gm[2] - z_expected) / scale_z)
-        # dH/dt = C n dc/dt = C n v z x c: the couple's axis is along z x OC, at right angles to the plane of OC's
-        # turning (the couple "at right angles to it")
+        # dH/dt = C n dc/dt = C n v z x c: the couple's axis is along z x OC, at right angles to the plane of
+        # OC's turning (the couple "at right angles to it")
         worst_perp = max(worst_perp, abs(Gm @ perp - perp_expected) / perp_expected)
         worst_along = max(worst_along, abs(Gm @ c_hat) / perp_expected)
         spread = max(spread, float(np.ptp(G[:, 2])) / scale_z)
     # over one turn of the body at a fixed phase the mean in-plane couple is (H_z(t0 + P) - H_z(t0))/P, and
-    # H_z = v(A sin^2 chi + B cos^2 chi) (at chi = 0 the body's e2 is along z): the mean is about B v' from a turn
-    # starting at chi = 0 and A v' from chi = pi/2, not (A + B) v'/2, however fast the spin: only the average over
-    # the phase gives Lamb's value
+    # H_z = v(A sin^2 chi + B cos^2 chi) (at chi = 0 the body's e2 is along z): the mean is about B v' from a
+    # turn starting at chi = 0 and A v' from chi = pi/2, not (A + B) v'/2, however fast the spin: only the
+    # average over the phase gives Lamb's value
     period, t0 = 2 * np.pi / n, 3.0
     for label, c0 in (("0", 0.0), ("90", 0.5 * np.pi)):
-        c0 -= n * t0                                           # the body's phase at t0 is chi = n t0 + chi0
+        c0 -= n * t0  # the body's phase at t0 is chi = n t0 + chi0
         mean = (momentum(t0 + period, c0)[2] - momentum(t0, c0)[2]).real / period
-        results.number(f"constraining_one_turn_ratio_chi0_{label}", mean / (0.5 * (A + B) * v_dot(t0 + period / 2)),
-                       "1", note=f"mean in-plane couple over one turn from $\\chi$ = {label}°, over "
-                                 "$\\tfrac12(A + B)\\dot v$")
+        results.number(
+            f"constraining_one_turn_ratio_chi0_{label}",
+            mean / (0.5 * (A + B) * v_dot(t0 + period / 2)),
+            "1",
+            note=f"mean in-plane couple over one turn from $\\chi$ = {label}°, over "
+            "$\\tfrac12(A + B)\\dot v$",
+        )
     results.number("constraining_spin_over_turn", spin_over_turn, "1", note="$n/v_0$, moments " + _moments(I))
-    results.number("constraining_in_plane_deviation", worst_z, "1",
-                   note="Ex. XIII.11: the couple about the normal to the plane, averaged over the body's phase, "
-                        "against $\\tfrac12(A + B)\\dot v$ (largest over 41 times, relative to its largest value)")
-    results.number("constraining_perpendicular_deviation", worst_perp, "1",
-                   note="the couple about $\\hat z\\times OC$ against $Cnv$ (relative)")
+    results.number(
+        "constraining_in_plane_deviation",
+        worst_z,
+        "1",
+        note="Ex. XIII.11: the couple about the normal to the plane, averaged over the body's phase, "
+        "against $\\tfrac12(A + B)\\dot v$ (largest over 41 times, relative to its largest value)",
+    )
+    results.number(
+        "constraining_perpendicular_deviation",
+        worst_perp,
+        "1",
+        note="the couple about $\\hat z\\times OC$ against $Cnv$ (relative)",
+    )
     results.number("constraining_along_axis", worst_along, "1", note="the mean couple about $OC$, over $Cnv$")
-    results.number("constraining_in_plane_phase_spread", spread, "1",
-                   note="how much the in-plane couple swings with the body's phase (over the largest "
-                        "$\\tfrac12(A + B)\\dot v$): why Lamb says 'on the average'")
+    results.number(
+        "constraining_in_plane_phase_spread",
+        spread,
+        "1",
+        note="how much the in-plane couple swings with the body's phase (over the largest "
+        "$\\tfrac12(A + B)\\dot v$): why Lamb says 'on the average'",
+    )
 
 
 def symmetric_earth(results, model, amplitude, days=20.0) -> None:
     """The rigid symmetric Earth (units C = 1, days): the plane of omega and the figure axis turns about L at
-    |L|/A (the space frequency, Lamb's Eulerian nutation Cn/(A cos theta)); the pole turns about the figure axis
-    in the spin's sense; the oblateness (C - A)/A and omega^2 R/g against the notes' 1/300."""
+    |L|/A (the space frequency, Lamb's Eulerian nutation Cn/(A cos theta)); the pole turns about the figure
+    axis in the spin's sense; the oblateness (C - A)/A and omega^2 R/g against the notes' 1/300."""
     from ...models import wobble
+
     a = model.parameters()[wobble.A_C]
     I = np.array([a, a, 1.0])
     w0 = model.n * np.array([amplitude, 0.0, 1.0])
@@ -452,27 +595,51 @@ def symmetric_earth(results, model, amplitude, days=20.0) -> None:
     e2 = np.cross(L_hat, e1)
     azimuth = np.unwrap(np.arctan2(N_space @ e2, N_space @ e1))
     space_rate = float(np.polyfit(t, azimuth, 1)[0])
-    cos_theta = R[:, :, 2] @ L_hat                             # the figure axis against L, from the attitude
-    n_spin = w[:, 2]                                            # Lamb's n: the spin about the figure axis
-    euler = n_spin / (a * cos_theta)                            # Cn/(A cos theta), C = 1
-    results.number("space_rate_measured_rad_per_s", space_rate / earth.SECONDS_PER_DAY, "rad/s",
-                   note=f"the plane of $\\boldsymbol\\omega$ and the figure axis about $\\mathbf{{L}}$, fitted over "
-                        f"{days:g} days of the integrated attitude")
+    cos_theta = R[:, :, 2] @ L_hat  # the figure axis against L, from the attitude
+    n_spin = w[:, 2]  # Lamb's n: the spin about the figure axis
+    euler = n_spin / (a * cos_theta)  # Cn/(A cos theta), C = 1
+    results.number(
+        "space_rate_measured_rad_per_s",
+        space_rate / earth.SECONDS_PER_DAY,
+        "rad/s",
+        note=f"the plane of $\\boldsymbol\\omega$ and the figure axis about $\\mathbf{{L}}$, fitted over "
+        f"{days:g} days of the integrated attitude",
+    )
     results.number("space_rate_over_L_over_A", space_rate / (L / a), "1", note="over $|\\mathbf{L}|/A$")
-    results.number("space_rate_over_eulerian_nutation", space_rate / float(np.mean(euler)), "1",
-                   note="over $Cn/(A\\cos\\theta)$ (Lamb Art. 55 (7)), $\\theta$ from the attitude")
+    results.number(
+        "space_rate_over_eulerian_nutation",
+        space_rate / float(np.mean(euler)),
+        "1",
+        note="over $Cn/(A\\cos\\theta)$ (Lamb Art. 55 (7)), $\\theta$ from the attitude",
+    )
     results.number("eulerian_nutation_spread", float(np.ptp(euler) / np.mean(euler)), "1")
     phase = np.unwrap(np.arctan2(w[:, 1], w[:, 0]))
-    body_rate = float(np.polyfit(t, phase, 1)[0])              # right-handed about e3
-    omega_b = (a - 1.0) * model.n / a                          # the notes' Omega_b = (I1 - I3) omega3 / I1
-    results.number("body_rate_measured_rad_per_s", body_rate / earth.SECONDS_PER_DAY, "rad/s",
-                   note="the pole about the figure axis, right-handed about $\\hat e_3$ (spin positive)")
-    results.number("body_rate_over_notes_omega_b", body_rate / omega_b, "1",
-                   note="over the notes' $\\Omega_\\mathrm{b} = (I_1 - I_3)\\omega_3/I_1$: −1, the pole turns at "
-                        "$-\\Omega_\\mathrm{b}$, prograde")
-    results.number("notes_omega_b_sign", float(np.sign(omega_b)), "1",
-                   note="sign of $\\Omega_\\mathrm{b}$ for the oblate Earth (spin positive)")
+    body_rate = float(np.polyfit(t, phase, 1)[0])  # right-handed about e3
+    omega_b = (a - 1.0) * model.n / a  # the notes' Omega_b = (I1 - I3) omega3 / I1
+    results.number(
+        "body_rate_measured_rad_per_s",
+        body_rate / earth.SECONDS_PER_DAY,
+        "rad/s",
+        note="the pole about the figure axis, right-handed about $\\hat e_3$ (spin positive)",
+    )
+    results.number(
+        "body_rate_over_notes_omega_b",
+        body_rate / omega_b,
+        "1",
+        note="over the notes' $\\Omega_\\mathrm{b} = (I_1 - I_3)\\omega_3/I_1$: −1, the pole turns at "
+        "$-\\Omega_\\mathrm{b}$, prograde",
+    )
+    results.number(
+        "notes_omega_b_sign",
+        float(np.sign(omega_b)),
+        "1",
+        note="sign of $\\Omega_\\mathrm{b}$ for the oblate Earth (spin positive)",
+    )
     results.number("C_minus_A_over_A", 1.0 / a - 1.0, "1", note="$(I_3 - I_1)/I_1$ of this scene")
     g = earth.GM_M3_PER_S2 / earth.EQUATORIAL_RADIUS_M**2
-    results.number("omega2_R_over_g", earth.OMEGA_RAD_PER_S**2 * earth.EQUATORIAL_RADIUS_M / g, "1",
-                   note="$\\omega^2R/g$, $g = GM/R^2$, IERS (2010) constants, $R$ the equatorial radius")
+    results.number(
+        "omega2_R_over_g",
+        earth.OMEGA_RAD_PER_S**2 * earth.EQUATORIAL_RADIUS_M / g,
+        "1",
+        note="$\\omega^2R/g$, $g = GM/R^2$, IERS (2010) constants, $R$ the equatorial radius",
+    )

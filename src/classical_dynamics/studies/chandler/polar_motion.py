@@ -19,12 +19,13 @@ import numpy as np
 from ...models import earth
 
 MJD_J2000 = 51544.5
-ANNUAL_CPY = earth.JULIAN_YEAR_DAYS / earth.TROPICAL_YEAR_DAYS       # cycles per Julian year
+ANNUAL_CPY = earth.JULIAN_YEAR_DAYS / earth.TROPICAL_YEAR_DAYS  # cycles per Julian year
 
 
 def eop_file() -> Path:
     """The EOP C04 series shipped by astropy-iers-data (no network)."""
     import astropy_iers_data
+
     return Path(astropy_iers_data.__file__).parent / "data" / "eopc04.1962-now"
 
 
@@ -55,8 +56,16 @@ def read_eop(path: Path, start_year: float, end_year: float):
 
 
 def _design(t, f_c):
-    return np.stack([np.ones_like(t), t, np.exp(2j * np.pi * f_c * t), np.exp(2j * np.pi * ANNUAL_CPY * t),
-                     np.exp(-2j * np.pi * ANNUAL_CPY * t)], axis=1).astype(complex)
+    return np.stack(
+        [
+            np.ones_like(t),
+            t,
+            np.exp(2j * np.pi * f_c * t),
+            np.exp(2j * np.pi * ANNUAL_CPY * t),
+            np.exp(-2j * np.pi * ANNUAL_CPY * t),
+        ],
+        axis=1,
+    ).astype(complex)
 
 
 def _linear_fit(t, m, f_c):
@@ -69,9 +78,9 @@ def _linear_fit(t, m, f_c):
 class WobbleFit:
     chandler_cpy: float
     chandler_period_days: float
-    chandler_period_sigma_days: float        # formal, inflated by the residuals' correlation length
+    chandler_period_sigma_days: float  # formal, inflated by the residuals' correlation length
     chandler_amplitude_mas: float
-    chandler_phase_deg: float                # of a_c at J2000
+    chandler_phase_deg: float  # of a_c at J2000
     annual_prograde_mas: float
     annual_retrograde_mas: float
     drift_mas_per_year: complex
@@ -87,7 +96,7 @@ def fit(t, m, search_cpy=(0.70, 1.0)) -> WobbleFit:
         return float(np.sum(np.abs(_linear_fit(t, m, f)[1]) ** 2))
 
     span = t[-1] - t[0]
-    grid = np.arange(search_cpy[0], search_cpy[1], 0.05 / span)       # 20 points per resolution element
+    grid = np.arange(search_cpy[0], search_cpy[1], 0.05 / span)  # 20 points per resolution element
     costs = np.array([cost(f) for f in grid])
     i = int(np.argmin(costs))
     lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, grid.size - 1)]
@@ -98,13 +107,22 @@ def fit(t, m, search_cpy=(0.70, 1.0)) -> WobbleFit:
     df = 1e-4
     curvature = (cost(f_c + df) - 2 * cost(f_c) + cost(f_c - df)) / df**2
     n = t.size
-    sigma2 = np.sum(np.abs(resid) ** 2) / (2 * n - 10)          # per real component
+    sigma2 = np.sum(np.abs(resid) ** 2) / (2 * n - 10)  # per real component
     corr = _correlation_length(resid)
     sigma_f = np.sqrt(2.0 * sigma2 * corr / curvature)
     period = earth.JULIAN_YEAR_DAYS / f_c
-    return WobbleFit(f_c, period, period * sigma_f / f_c, abs(coef[2]), float(np.degrees(np.angle(coef[2]))),
-                     abs(coef[3]), abs(coef[4]), complex(coef[1]), float(np.sqrt(np.mean(np.abs(resid) ** 2))),
-                     corr)
+    return WobbleFit(
+        f_c,
+        period,
+        period * sigma_f / f_c,
+        abs(coef[2]),
+        float(np.degrees(np.angle(coef[2]))),
+        abs(coef[3]),
+        abs(coef[4]),
+        complex(coef[1]),
+        float(np.sqrt(np.mean(np.abs(resid) ** 2))),
+        corr,
+    )
 
 
 def _correlation_length(resid) -> float:
@@ -135,7 +153,14 @@ def windowed_amplitudes(t, m, f_c, window_years, step_years):
     while start + window_years <= t[-1] + 1e-9:
         keep = (t >= start) & (t < start + window_years)
         coef, _ = _linear_fit(t[keep], m[keep], f_c)
-        rows.append((start + 0.5 * window_years + 2000.0, abs(coef[2]), float(np.degrees(np.angle(coef[2]))),
-                     abs(coef[3]), abs(coef[4])))
+        rows.append(
+            (
+                start + 0.5 * window_years + 2000.0,
+                abs(coef[2]),
+                float(np.degrees(np.angle(coef[2]))),
+                abs(coef[3]),
+                abs(coef[4]),
+            )
+        )
         start += step_years
     return np.array(rows)

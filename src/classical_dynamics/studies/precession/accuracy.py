@@ -11,12 +11,12 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from ...formatting import format_number, plural, shortest
 from ...models import earth
 from ...models import precession as prec
 from ...solvers import rigid_body
 from ...solvers import workprecision as wp
 from ...solvers.ode import Problem, solve
-from ...formatting import format_number, plural, shortest
 from ...solvers.timing import min_time
 from ..results import new_figure
 from . import full
@@ -33,7 +33,9 @@ def _axis_splitting(model, span, step_hours, order):
 
 def _axis_rk(model, span, method, rtol):
     m0, q0 = prec.initial_state(model)
-    problem = Problem(prec.full_rhs, np.concatenate([m0, q0]), (0.0, span), model.parameters(), name="full Earth")
+    problem = Problem(
+        prec.full_rhs, np.concatenate([m0, q0]), (0.0, span), model.parameters(), name="full Earth"
+    )
     sol = solve(problem, method, rtol=rtol, atol=rtol * model.n)
     q = sol.y[3:] / np.linalg.norm(sol.y[3:])
     return _unit(rigid_body.rotate_to_space(q, sol.y[:3])[0]), sol.n_steps
@@ -56,51 +58,92 @@ def run(scene, model, results, quick):
     check, _ = _axis_rk(model, span, "dop853", 1e-12)
     agreement = _angle_mas(reference, check)
     results.number("accuracy_span_years", span_years, "yr")
-    results.number("reference_agreement_mas", agreement, "mas",
-                   note=f"splitting (order 4, {shortest(REFERENCE_STEP_HOURS)} h) against DOP853 at rtol "
-                        "$10^{-12}$")
-    results.hard_case("reference_agreement", "Two independent references for the work-precision sweep agree "
-                      "(final angular-momentum axis, mas)", agreement, REFERENCE_AGREEMENT_BOUND_MAS, "mas")
+    results.number(
+        "reference_agreement_mas",
+        agreement,
+        "mas",
+        note=f"splitting (order 4, {shortest(REFERENCE_STEP_HOURS)} h) against DOP853 at rtol $10^{{-12}}$",
+    )
+    results.hard_case(
+        "reference_agreement",
+        "Two independent references for the work-precision sweep agree (final angular-momentum axis, mas)",
+        agreement,
+        REFERENCE_AGREEMENT_BOUND_MAS,
+        "mas",
+    )
     rows = []
     for method in spec["methods"]:
         if method.startswith("splitting"):
             order = int(method[-1])
             for h in spec["steps_hours"]:
-                seconds, axis, _ = min_time(lambda: _axis_splitting(model, span, h, order), repeats=repeats,
-                                            budget_s=2.0)
-                rows.append({"method": f"splitting, order {order}", "kind": "step", "setting": h,
-                             "error_mas": _angle_mas(axis, reference), "steps": int(round(span / (h / 24.0))),
-                             "seconds": seconds})
+                seconds, axis, _ = min_time(
+                    lambda: _axis_splitting(model, span, h, order), repeats=repeats, budget_s=2.0
+                )
+                rows.append(
+                    {
+                        "method": f"splitting, order {order}",
+                        "kind": "step",
+                        "setting": h,
+                        "error_mas": _angle_mas(axis, reference),
+                        "steps": int(round(span / (h / 24.0))),
+                        "seconds": seconds,
+                    }
+                )
             continue
         for rtol in spec["tolerances"]:
             budget = 0.5 if method.startswith("scipy") else 2.0
-            seconds, (axis, n_steps), _ = min_time(lambda: _axis_rk(model, span, method, rtol),
-                                                   repeats=1 if method.startswith("scipy") else repeats,
-                                                   budget_s=budget)
-            rows.append({"method": method, "kind": "tolerance", "setting": rtol,
-                         "error_mas": _angle_mas(axis, reference), "steps": n_steps, "seconds": seconds})
+            seconds, (axis, n_steps), _ = min_time(
+                lambda: _axis_rk(model, span, method, rtol),
+                repeats=1 if method.startswith("scipy") else repeats,
+                budget_s=budget,
+            )
+            rows.append(
+                {
+                    "method": method,
+                    "kind": "tolerance",
+                    "setting": rtol,
+                    "error_mas": _angle_mas(axis, reference),
+                    "steps": n_steps,
+                    "seconds": seconds,
+                }
+            )
     frame = pd.DataFrame(rows)
     span_text = f"{shortest(span_years)} {plural(span_years, 'year')}"
-    results.table("accuracy", frame.drop(columns=["seconds"]),
-                  f"The spin-resolved Earth over {span_text}, by method and step (h) or tolerance (rtol): the "
-                  "angle between the final angular-momentum axis and the reference's, and the steps taken. The "
-                  "splittings' error falls with the step until round-off in the kicks takes over.",
-                  headers=HEADERS)
-    results.timing_table("accuracy", frame, f"Work-precision of the spin-resolved Earth over {span_text}: the runs "
-                         "of the accuracy table with their wall times (minimum of repeats).",
-                         headers={**HEADERS, "seconds": "wall time (s)"})
+    results.table(
+        "accuracy",
+        frame.drop(columns=["seconds"]),
+        f"The spin-resolved Earth over {span_text}, by method and step (h) or tolerance (rtol): the "
+        "angle between the final angular-momentum axis and the reference's, and the steps taken. The "
+        "splittings' error falls with the step until round-off in the kicks takes over.",
+        headers=HEADERS,
+    )
+    results.timing_table(
+        "accuracy",
+        frame,
+        f"Work-precision of the spin-resolved Earth over {span_text}: the runs "
+        "of the accuracy table with their wall times (minimum of repeats).",
+        headers={**HEADERS, "seconds": "wall time (s)"},
+    )
     fig, ax = new_figure(6.2, 3.3)
     wp.plot(frame, ax, error="error_mas", floor=1e-9, xlabel=r"error of the final $\mathbf{L}$ axis (mas)")
     ax.legend(loc="best")
-    results.timing_figure("work_precision", fig, f"Wall time against the error of the final angular-momentum axis "
-                          f"after {span_text} of the spin-resolved Earth, one line per method (errors below "
-                          f"{format_number(1e-9, 1)} mas drawn at that floor): the splitting with the exact free flow "
-                          "(fixed steps, dotted) against adaptive Runge–Kutta on Euler's equations and the quaternion, "
-                          "compiled (solid) and through SciPy (dashed). Accuracy grows to the right.")
+    results.timing_figure(
+        "work_precision",
+        fig,
+        f"Wall time against the error of the final angular-momentum axis "
+        f"after {span_text} of the spin-resolved Earth, one line per method (errors below "
+        f"{format_number(1e-9, 1)} mas drawn at that floor): the splitting with the exact free flow "
+        "(fixed steps, dotted) against adaptive Runge–Kutta on Euler's equations and the quaternion, "
+        "compiled (solid) and through SciPy (dashed). Accuracy grows to the right.",
+    )
     for key, (best, setting) in wp.best_by_method(frame, "error_mas").items():
         results.number(f"best_error_mas_{key}", best, "mas", note=f"at {format_number(setting, 3)}")
 
 
-HEADERS = {"method": "method", "kind": "control", "setting": "step (h) or rtol", "error_mas": "error (mas)",
-           "steps": "steps"}
-
+HEADERS = {
+    "method": "method",
+    "kind": "control",
+    "setting": "step (h) or rtol",
+    "error_mas": "error (mas)",
+    "steps": "steps",
+}

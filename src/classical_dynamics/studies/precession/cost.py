@@ -1,9 +1,9 @@
 """What a precession scene costs, from its fields (scenes/cost.py).
 
-Rates measured here (2-core AMD EPYC): the spin-resolved Earth (the torqued splitting) takes ~4 us a step with its
-daily samples: 1000 years at 3-hour steps (2.9e6 steps) ran in 13 s with everything around it, a century with the
-IAU comparison, the effect ladder, aliasing windows and the accuracy sweep in 8.8 s; the averaged equations cross a
-whole 26 000-year cycle in 0.1 s. A daily sample of the full run holds ~300 bytes.
+Rates measured here (2-core AMD EPYC): the spin-resolved Earth (the torqued splitting) takes ~4 us a step with
+its daily samples: 1000 years at 3-hour steps (2.9e6 steps) ran in 13 s with everything around it, a century
+with the IAU comparison, the effect ladder, aliasing windows and the accuracy sweep in 8.8 s; the averaged
+equations cross a whole 26 000-year cycle in 0.1 s. A daily sample of the full run holds ~300 bytes.
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ from ...scenes.cost import Work, count
 
 S_PER_STEP = 4e-6
 BYTES_PER_SAMPLE = 300.0
-RK_STEPS_PER_DAY = 8.0               # DOP853 on the spinning Earth at rtol 1e-8 (calibrated on full_century)
+RK_STEPS_PER_DAY = 8.0  # DOP853 on the spinning Earth at rtol 1e-8 (calibrated on full_century)
 MB = 1e-6
 
 
@@ -27,13 +27,24 @@ def cost(data: dict) -> list[Work]:
         steps = span_days * 24.0 / analysis["step_hours"]
         runs = 1 + 0.5 * bool(analysis.get("free_nutation")) + bool(analysis.get("aliasing_windows_years"))
         field = "analysis.step_hours" if analysis["step_hours"] < 1.0 else "analysis.span_years"
-        works.append(Work(field, steps * S_PER_STEP * runs, span_days * BYTES_PER_SAMPLE * MB,
-                          count(steps, "integration steps")))
+        works.append(
+            Work(
+                field,
+                steps * S_PER_STEP * runs,
+                span_days * BYTES_PER_SAMPLE * MB,
+                count(steps, "integration steps"),
+            )
+        )
         windows = analysis.get("aliasing_windows_years")
-        if windows:                     # sampled at every step over the longest window
-            works.append(Work("analysis.aliasing_windows_years", 0.0,
-                              max(windows) * YEAR_DAYS * 24.0 / analysis["step_hours"] * 120 * MB,
-                              count(max(windows), "years sampled at every step")))
+        if windows:  # sampled at every step over the longest window
+            works.append(
+                Work(
+                    "analysis.aliasing_windows_years",
+                    0.0,
+                    max(windows) * YEAR_DAYS * 24.0 / analysis["step_hours"] * 120 * MB,
+                    count(max(windows), "years sampled at every step"),
+                )
+            )
         if analysis.get("effect_ladder") or analysis.get("compare_iau"):
             works.append(Work("analysis.effect_ladder", 3.0, 0.0, "the effect ladder and the IAU comparison"))
     spec = analysis.get("accuracy_cost")
@@ -52,5 +63,7 @@ def cost(data: dict) -> list[Work]:
                 steps = span_days * RK_STEPS_PER_DAY * (1e-8 / rtol) ** (1 / (8 if "853" in method else 5))
                 adapt += steps * (6e-5 if scipy else 2e-6) * (2 if scipy else 1 + repeats)
         works.append(Work("analysis.accuracy_cost.steps_hours", split, 0.0, "the splittings' steps"))
-        works.append(Work("analysis.accuracy_cost.tolerances", adapt, 0.0, "the adaptive methods' tolerances"))
+        works.append(
+            Work("analysis.accuracy_cost.tolerances", adapt, 0.0, "the adaptive methods' tolerances")
+        )
     return works

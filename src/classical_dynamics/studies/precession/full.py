@@ -11,26 +11,33 @@ import numpy as np
 import pandas as pd
 from matplotlib.ticker import MaxNLocator
 
+from ...figure_style import FULL_WIDTH_IN
 from ...formatting import format_number, plural, shortest
 from ...models import earth
 from ...models import precession as prec
 from ...solvers import rigid_body
 from ...solvers.timing import min_time
-from ...figure_style import FULL_WIDTH_IN
 from ..results import subplots
 from . import averaged, fitting
 from .secular import ARCSEC_PER_TURN
 
-
 QUICK_SPAN_YEARS = 20.0
 FREE_NUTATION_YEARS = 3.0
-L_BOUND = 1e-12                  # hard case: |L| kept over the run (relative); the torque is normal to e3
-OBLIQUITY_RATE_BOUND = 1e-3      # ″ per century: no secular obliquity change against a fixed ecliptic
-ALIASING_BOUND = 1e-4            # relative spread of the rate fitted with the periodic terms, over windows
+L_BOUND = 1e-12  # hard case: |L| kept over the run (relative); the torque is normal to e3
+OBLIQUITY_RATE_BOUND = 1e-3  # ″ per century: no secular obliquity change against a fixed ecliptic
+ALIASING_BOUND = 1e-4  # relative spread of the rate fitted with the periodic terms, over windows
 FREE_NUTATION_STEP_HOURS = 0.75  # the diurnal forced wobble must be resolved to ~1 % to see the free one
-NUTATION_TERMS = {"18.6 yr": "18p6yr", "9.3 yr": "9p3yr", "annual": "annual", "semi-annual": "semiannual",
-                  "122-day": "122day", "monthly": "monthly", "fortnightly": "fortnightly",
-                  "13.6-day": "13p6day", "9.1-day": "9p1day"}
+NUTATION_TERMS = {
+    "18.6 yr": "18p6yr",
+    "9.3 yr": "9p3yr",
+    "annual": "annual",
+    "semi-annual": "semiannual",
+    "122-day": "122day",
+    "monthly": "monthly",
+    "fortnightly": "fortnightly",
+    "13.6-day": "13p6day",
+    "9.1-day": "9p1day",
+}
 
 
 def integrate(model, span_days, step_days, order=2, sample_days=1.0, forced=True):
@@ -39,8 +46,9 @@ def integrate(model, span_days, step_days, order=2, sample_days=1.0, forced=True
     h = span_days / n
     every = max(1, int(round(sample_days / h)))
     m0, q0 = prec.initial_state(model, forced)
-    ms, qs = rigid_body.integrate_symmetric_torqued(1.0 - model.H, 1.0, m0, q0, h, n, order, every,
-                                                    prec.torque_body, model.parameters())
+    ms, qs = rigid_body.integrate_symmetric_torqued(
+        1.0 - model.H, 1.0, m0, q0, h, n, order, every, prec.torque_body, model.parameters()
+    )
     return h * every * np.arange(len(ms)), ms, qs
 
 
@@ -63,12 +71,35 @@ def run(scene, model, results, quick):
     order = analysis.get("order", 2)
     seconds, (t, ms, qs), _ = min_time(lambda: integrate(model, span, step, order), repeats=3, budget_s=3.0)
     steps = int(round(span / step))
-    results.timing_table("cost", pd.DataFrame([{
-        "rung": "full", "effects": ", ".join(model.listed), "span_years": span_years, "step_hours": step * 24,
-        "order": order, "steps": steps, "seconds": seconds, "ns_per_step": seconds / steps * 1e9}]),
-        f"Cost of the spin-resolved run over {_years(span_years)} (splitting of order {order}, minimum of repeats).",
-        headers={"rung": "rung", "effects": "effects", "span_years": "span (yr)", "step_hours": "step (h)",
-                 "order": "order", "steps": "steps", "seconds": "wall time (s)", "ns_per_step": "per step (ns)"})
+    results.timing_table(
+        "cost",
+        pd.DataFrame(
+            [
+                {
+                    "rung": "full",
+                    "effects": ", ".join(model.listed),
+                    "span_years": span_years,
+                    "step_hours": step * 24,
+                    "order": order,
+                    "steps": steps,
+                    "seconds": seconds,
+                    "ns_per_step": seconds / steps * 1e9,
+                }
+            ]
+        ),
+        f"Cost of the spin-resolved run over {_years(span_years)} (splitting of order {order}, minimum of "
+        "repeats).",
+        headers={
+            "rung": "rung",
+            "effects": "effects",
+            "span_years": "span (yr)",
+            "step_hours": "step (h)",
+            "order": "order",
+            "steps": "steps",
+            "seconds": "wall time (s)",
+            "ns_per_step": "per step (ns)",
+        },
+    )
     results.number("span_years", span_years, "yr")
     results.number("step_hours", step * 24.0, "h")
     results.number("steps", steps, "1")
@@ -77,41 +108,73 @@ def run(scene, model, results, quick):
     psi, eps = prec.precession_angles(L)
     fp, fe, args = fit_series(model, t, psi, eps)
     rate_y = fitting.per_year_arcsec(fp.rate)
-    results.number("precession_rate_arcsec_per_year", rate_y, "″/yr",
-                   note="fitted to $\\psi$ of $\\mathbf{L}$ together with the periodic terms")
+    results.number(
+        "precession_rate_arcsec_per_year",
+        rate_y,
+        "″/yr",
+        note="fitted to $\\psi$ of $\\mathbf{L}$ together with the periodic terms",
+    )
     results.number("precession_period_years", ARCSEC_PER_TURN / rate_y, "yr", note="360° / fitted rate")
     results.number("full_minus_secular_relative", fp.rate / model.secular_rate() - 1.0, "1")
     avg = averaged.integrate(model, span, t)
     a_psi, _ = prec.precession_angles(avg.y_eval)
     fa = fitting.fit(t, a_psi, args)
-    results.number("averaged_rate_arcsec_per_year", fitting.per_year_arcsec(fa.rate), "″/yr",
-                   note="the averaged equations over the same span")
+    results.number(
+        "averaged_rate_arcsec_per_year",
+        fitting.per_year_arcsec(fa.rate),
+        "″/yr",
+        note="the averaged equations over the same span",
+    )
     results.number("full_minus_averaged_relative", fp.rate / fa.rate - 1.0, "1")
-    results.hard_case("retrograde", "The equinox moves westward (1 if it moves eastward)",
-                      0.0 if fp.rate > 0 else 1.0, 0.0)
-    results.number("lamb_psi_dot_sign", -1 if fp.rate > 0 else 1, "1",
-                   note="the sign of $\\dot\\psi$ in Lamb's sense (Art. 61 (6)): −1, the axis moves retrograde")
+    results.hard_case(
+        "retrograde", "The equinox moves westward (1 if it moves eastward)", 0.0 if fp.rate > 0 else 1.0, 0.0
+    )
+    results.number(
+        "lamb_psi_dot_sign",
+        -1 if fp.rate > 0 else 1,
+        "1",
+        note="the sign of $\\dot\\psi$ in Lamb's sense (Art. 61 (6)): −1, the axis moves retrograde",
+    )
     for term, key in NUTATION_TERMS.items():
         if term in args:
-            results.number(f"nutation_longitude_{key}_arcsec", fitting.amplitude(fp, term) / earth.ARCSEC, "″",
-                           note=f"{term} term of $\\Delta\\psi$, fitted")
-            results.number(f"nutation_obliquity_{key}_arcsec", fitting.amplitude(fe, term) / earth.ARCSEC, "″",
-                           note=f"{term} term of $\\Delta\\varepsilon$, fitted")
-    for name, (closed_psi, closed_eps) in (("18p6yr", model.nutation_18p6yr()), ("semiannual", model.semiannual())):
+            results.number(
+                f"nutation_longitude_{key}_arcsec",
+                fitting.amplitude(fp, term) / earth.ARCSEC,
+                "″",
+                note=f"{term} term of $\\Delta\\psi$, fitted",
+            )
+            results.number(
+                f"nutation_obliquity_{key}_arcsec",
+                fitting.amplitude(fe, term) / earth.ARCSEC,
+                "″",
+                note=f"{term} term of $\\Delta\\varepsilon$, fitted",
+            )
+    for name, (closed_psi, closed_eps) in (
+        ("18p6yr", model.nutation_18p6yr()),
+        ("semiannual", model.semiannual()),
+    ):
         if closed_psi:
             results.number(f"nutation_longitude_{name}_first_order_arcsec", closed_psi / earth.ARCSEC, "″")
             results.number(f"nutation_obliquity_{name}_first_order_arcsec", closed_eps / earth.ARCSEC, "″")
-    results.number("fit_residual_longitude_mas", fp.residual_rms / earth.MAS, "mas",
-                   note="rms of $\\psi$ after the line and the fitted terms")
+    results.number(
+        "fit_residual_longitude_mas",
+        fp.residual_rms / earth.MAS,
+        "mas",
+        note="rms of $\\psi$ after the line and the fitted terms",
+    )
     if "18.6 yr" in args:
         _node_period(results, t, eps, args)
 
     _invariants(results, ms, fe, span_years)
     e3 = rigid_body.rotate_to_space(qs, np.array([0.0, 0.0, 1.0]))
     cosang = np.clip(np.sum(L * e3, axis=1) / np.linalg.norm(L, axis=1), -1.0, 1.0)
-    results.number("figure_axis_offset_mas", float(np.max(np.arccos(cosang))) / earth.MAS, "mas",
-                   note="largest angle between $\\mathbf{L}$ and the figure axis (forced diurnal wobble, Oppolzer "
-                        "terms)")
+    results.number(
+        "figure_axis_offset_mas",
+        float(np.max(np.arccos(cosang))) / earth.MAS,
+        "mas",
+        note="largest angle between $\\mathbf{L}$ and the figure axis (forced diurnal wobble, Oppolzer "
+        "terms)",
+    )
     if analysis.get("compare_iau"):
         _iau_nutation(results, model, t, psi, eps, fp, fe, args)
     if analysis.get("aliasing_windows_years"):
@@ -133,13 +196,13 @@ def _node_period(results, t, eps, args):
     fixed = {k: f for k, f in args.items() if k not in ("18.6 yr", "9.3 yr", "13.6-day")}
     moon2 = None
     if "13.6-day" in args and "fortnightly" in args:
-        moon2 = args["fortnightly"]                    # 2 L_moon
+        moon2 = args["fortnightly"]  # 2 L_moon
 
     def terms(period_days):
-        node = lambda x: 2.0 * np.pi * x / period_days          # noqa: E731 (its phase is fitted)
-        free = dict(fixed, node=node, node2=lambda x: 2.0 * node(x))      # noqa: E731
+        node = lambda x: 2.0 * np.pi * x / period_days
+        free = dict(fixed, node=node, node2=lambda x: 2.0 * node(x))
         if moon2 is not None:
-            free["lunar"] = lambda x: moon2(x) + node(x)        # noqa: E731 (the node regresses: -(-2 pi t/P))
+            free["lunar"] = lambda x: moon2(x) + node(x)
         return free
 
     def residual(period_years):
@@ -147,27 +210,51 @@ def _node_period(results, t, eps, args):
 
     best = minimize_scalar(residual, bounds=(14.0, 24.0), method="bounded", options={"xatol": 1e-7})
     period = float(best.x)
-    step = 1e-3                                                  # Julian centuries
+    step = 1e-3  # Julian centuries
     omega = np.unwrap([erfa.faom03(-step), erfa.faom03(step)])
     iau = 2.0 * np.pi / abs(omega[1] - omega[0]) * 2.0 * step * 100.0
-    results.number("node_period_fitted_years", period, "yr",
-                   note="period of the long nutation in obliquity, fitted freely (least squares over the period)")
-    results.number("node_period_iau_years", iau, "yr", note="$2\\pi/|\\dot\\Omega|$, IAU 2000 (pyerfa faom03)")
+    results.number(
+        "node_period_fitted_years",
+        period,
+        "yr",
+        note="period of the long nutation in obliquity, fitted freely (least squares over the period)",
+    )
+    results.number(
+        "node_period_iau_years", iau, "yr", note="$2\\pi/|\\dot\\Omega|$, IAU 2000 (pyerfa faom03)"
+    )
     results.number("node_period_fitted_over_iau_minus_one", period / iau - 1.0, "1")
 
 
 def _invariants(results, ms, fe, span_years):
     norms = np.linalg.norm(ms, axis=1)
     drift = float(np.max(np.abs(norms / norms[0] - 1.0)))
-    results.number("angular_momentum_drift", drift, "1",
-                   note="largest $|\\Delta|\\mathbf{L}||/|\\mathbf{L}|$ over the run")
-    results.hard_case("angular_momentum_kept", f"$|\\mathbf{{L}}|$ over {_years(span_years)} of daily spin (relative; "
-                      "the couple is normal to the figure axis)", drift, L_BOUND)
+    results.number(
+        "angular_momentum_drift",
+        drift,
+        "1",
+        note="largest $|\\Delta|\\mathbf{L}||/|\\mathbf{L}|$ over the run",
+    )
+    results.hard_case(
+        "angular_momentum_kept",
+        f"$|\\mathbf{{L}}|$ over {_years(span_years)} of daily spin (relative; "
+        "the couple is normal to the figure axis)",
+        drift,
+        L_BOUND,
+    )
     rate_cy = fe.rate * 36525.0 / earth.ARCSEC
-    results.number("obliquity_rate_arcsec_per_century", rate_cy, "″/cy",
-                   note="secular part of the fitted obliquity; IAU 2006's −46.8″/cy comes from the moving ecliptic")
-    results.hard_case("no_obliquity_drift", f"Secular obliquity change over {_years(span_years)} against the fixed "
-                      "ecliptic (″/cy)", rate_cy, OBLIQUITY_RATE_BOUND, "″/cy")
+    results.number(
+        "obliquity_rate_arcsec_per_century",
+        rate_cy,
+        "″/cy",
+        note="secular part of the fitted obliquity; IAU 2006's −46.8″/cy comes from the moving ecliptic",
+    )
+    results.hard_case(
+        "no_obliquity_drift",
+        f"Secular obliquity change over {_years(span_years)} against the fixed ecliptic (″/cy)",
+        rate_cy,
+        OBLIQUITY_RATE_BOUND,
+        "″/cy",
+    )
 
 
 def _iau_nutation(results, model, t, psi, eps, fp, fe, args):
@@ -179,40 +266,74 @@ def _iau_nutation(results, model, t, psi, eps, fp, fe, args):
     ip, ie = fitting.fit(t, d_psi, iau_args), fitting.fit(t, d_eps, iau_args)
     rows = []
     for term in args:
-        rows.append({"term": term,
-                     "longitude_arcsec": fitting.amplitude(fp, term) / earth.ARCSEC,
-                     "longitude_iau2000b_arcsec": fitting.amplitude(ip, term) / earth.ARCSEC,
-                     "obliquity_arcsec": fitting.amplitude(fe, term) / earth.ARCSEC,
-                     "obliquity_iau2000b_arcsec": fitting.amplitude(ie, term) / earth.ARCSEC})
+        rows.append(
+            {
+                "term": term,
+                "longitude_arcsec": fitting.amplitude(fp, term) / earth.ARCSEC,
+                "longitude_iau2000b_arcsec": fitting.amplitude(ip, term) / earth.ARCSEC,
+                "obliquity_arcsec": fitting.amplitude(fe, term) / earth.ARCSEC,
+                "obliquity_iau2000b_arcsec": fitting.amplitude(ie, term) / earth.ARCSEC,
+            }
+        )
     frame = pd.DataFrame(rows)
-    results.table("nutation", frame, "Amplitudes of the nutation terms in longitude ($\\Delta\\psi$) and obliquity "
-                  "($\\Delta\\varepsilon$): the full model's, fitted, beside the IAU 2000B series evaluated on the "
-                  "same days and fitted the same way with the IAU arguments.",
-                  headers={"term": "term", "longitude_arcsec": "$\\Delta\\psi$ (″)",
-                           "longitude_iau2000b_arcsec": "$\\Delta\\psi$, IAU 2000B (″)",
-                           "obliquity_arcsec": "$\\Delta\\varepsilon$ (″)",
-                           "obliquity_iau2000b_arcsec": "$\\Delta\\varepsilon$, IAU 2000B (″)"})
+    results.table(
+        "nutation",
+        frame,
+        "Amplitudes of the nutation terms in longitude ($\\Delta\\psi$) and obliquity "
+        "($\\Delta\\varepsilon$): the full model's, fitted, beside the IAU 2000B series evaluated on the "
+        "same days and fitted the same way with the IAU arguments.",
+        headers={
+            "term": "term",
+            "longitude_arcsec": "$\\Delta\\psi$ (″)",
+            "longitude_iau2000b_arcsec": "$\\Delta\\psi$, IAU 2000B (″)",
+            "obliquity_arcsec": "$\\Delta\\varepsilon$ (″)",
+            "obliquity_iau2000b_arcsec": "$\\Delta\\varepsilon$, IAU 2000B (″)",
+        },
+    )
     for row in rows:
         key = NUTATION_TERMS[row["term"]]
         results.number(f"iau2000b_longitude_{key}_arcsec", row["longitude_iau2000b_arcsec"], "″")
         results.number(f"iau2000b_obliquity_{key}_arcsec", row["obliquity_iau2000b_arcsec"], "″")
-        results.number(f"longitude_{key}_over_iau_minus_one", row["longitude_arcsec"] / row["longitude_iau2000b_arcsec"]
-                       - 1.0, "1", note="full model / IAU 2000B − 1")
-        results.number(f"obliquity_{key}_over_iau_minus_one", row["obliquity_arcsec"] / row["obliquity_iau2000b_arcsec"]
-                       - 1.0, "1", note="full model / IAU 2000B − 1")
+        results.number(
+            f"longitude_{key}_over_iau_minus_one",
+            row["longitude_arcsec"] / row["longitude_iau2000b_arcsec"] - 1.0,
+            "1",
+            note="full model / IAU 2000B − 1",
+        )
+        results.number(
+            f"obliquity_{key}_over_iau_minus_one",
+            row["obliquity_arcsec"] / row["obliquity_iau2000b_arcsec"] - 1.0,
+            "1",
+            note="full model / IAU 2000B − 1",
+        )
     # the periodic parts, day by day
     ours_psi = psi - (fp.offset + fp.rate * t)
     ours_eps = eps - (fe.offset + fe.rate * t)
-    results.number("nutation_difference_rms_longitude_arcsec", float(np.sqrt(np.mean((ours_psi - d_psi) ** 2)))
-                   / earth.ARCSEC, "″", note="full model − IAU 2000B, day by day (rms)")
-    results.number("nutation_difference_rms_obliquity_arcsec", float(np.sqrt(np.mean((ours_eps - d_eps) ** 2)))
-                   / earth.ARCSEC, "″")
+    results.number(
+        "nutation_difference_rms_longitude_arcsec",
+        float(np.sqrt(np.mean((ours_psi - d_psi) ** 2))) / earth.ARCSEC,
+        "″",
+        note="full model − IAU 2000B, day by day (rms)",
+    )
+    results.number(
+        "nutation_difference_rms_obliquity_arcsec",
+        float(np.sqrt(np.mean((ours_eps - d_eps) ** 2))) / earth.ARCSEC,
+        "″",
+    )
     show = t <= 20.0 * earth.JULIAN_YEAR_DAYS
     years = 2000.0 + t[show] / earth.JULIAN_YEAR_DAYS
-    fig, axes = subplots(3, 1, figsize=(FULL_WIDTH_IN, 3.7), sharex=True, layout="constrained",
-                             gridspec_kw={"height_ratios": [1, 1, 0.8]})
-    for ax, ours, iau, name in ((axes[0], ours_psi, d_psi, r"$\Delta\psi$ (″)"),
-                                (axes[1], ours_eps, d_eps, r"$\Delta\varepsilon$ (″)")):
+    fig, axes = subplots(
+        3,
+        1,
+        figsize=(FULL_WIDTH_IN, 3.7),
+        sharex=True,
+        layout="constrained",
+        gridspec_kw={"height_ratios": [1, 1, 0.8]},
+    )
+    for ax, ours, iau, name in (
+        (axes[0], ours_psi, d_psi, r"$\Delta\psi$ (″)"),
+        (axes[1], ours_eps, d_eps, r"$\Delta\varepsilon$ (″)"),
+    ):
         ax.plot(years, iau[show] / earth.ARCSEC, color="0.65", lw=1.8, label="IAU 2000B")
         ax.plot(years, ours[show] / earth.ARCSEC, lw=0.5, color="C5", label="full model")
         ax.set_ylabel(name)
@@ -220,21 +341,27 @@ def _iau_nutation(results, model, t, psi, eps, fp, fe, args):
         ax.grid(True, alpha=0.25)
     # the two curves agree to a fraction of an arcsecond: the difference is what shows the rigid Earth
     axes[2].plot(years, (ours_psi - d_psi)[show] / earth.ARCSEC, lw=0.5, color="C4", label=r"$\Delta\psi$")
-    axes[2].plot(years, (ours_eps - d_eps)[show] / earth.ARCSEC, lw=0.5, color="C1", label=r"$\Delta\varepsilon$")
+    axes[2].plot(
+        years, (ours_eps - d_eps)[show] / earth.ARCSEC, lw=0.5, color="C1", label=r"$\Delta\varepsilon$"
+    )
     axes[2].set_ylabel("model − IAU (″)")
     axes[2].legend(loc="upper right", ncol=2)
     axes[2].grid(True, alpha=0.25)
     axes[0].legend(loc="upper center", ncol=2)
     axes[2].set_xlabel("year")
-    axes[2].xaxis.set_major_locator(MaxNLocator(integer=True, steps=[1, 2, 5, 10]))   # calendar years
+    axes[2].xaxis.set_major_locator(MaxNLocator(integer=True, steps=[1, 2, 5, 10]))  # calendar years
     axes[2].xaxis.set_major_formatter("{x:.0f}")
     shown = int(round(t[show][-1] / earth.JULIAN_YEAR_DAYS))
-    results.figure("nutation", fig, "Nutation in longitude ($\\Delta\\psi$, top) and obliquity "
-                   "($\\Delta\\varepsilon$, bottom) from J2000: the full model's $\\psi$ and $\\varepsilon$ of "
-                   "$\\mathbf{L}$ less their fitted lines (thin) over the IAU 2000B series (grey) for the first "
-                   f"{format_number(shown)} {plural(shown, 'year')}, and below, their difference. The 18.6-year term "
-                   "dominates and the two curves lie on each other; the difference is what the rigid Earth lacks, "
-                   "mostly the semi-annual and fortnightly terms that the real Earth's non-rigid response amplifies.")
+    results.figure(
+        "nutation",
+        fig,
+        "Nutation in longitude ($\\Delta\\psi$, top) and obliquity "
+        "($\\Delta\\varepsilon$, bottom) from J2000: the full model's $\\psi$ and $\\varepsilon$ of "
+        "$\\mathbf{L}$ less their fitted lines (thin) over the IAU 2000B series (grey) for the first "
+        f"{format_number(shown)} {plural(shown, 'year')}, and below, their difference. The 18.6-year term "
+        "dominates and the two curves lie on each other; the difference is what the rigid Earth lacks, "
+        "mostly the semi-annual and fortnightly terms that the real Earth's non-rigid response amplifies.",
+    )
 
 
 def _aliasing(results, model, t, psi, windows_years, span_years, args):
@@ -246,20 +373,41 @@ def _aliasing(results, model, t, psi, windows_years, span_years, args):
             continue
         bare = np.polyfit(t[inside], psi[inside], 1)[0]
         with_terms = fitting.fit(t[inside], psi[inside], args).rate
-        rows.append({"window_years": w, "line_only_arcsec_per_year": fitting.per_year_arcsec(bare),
-                     "with_periodic_terms_arcsec_per_year": fitting.per_year_arcsec(with_terms)})
+        rows.append(
+            {
+                "window_years": w,
+                "line_only_arcsec_per_year": fitting.per_year_arcsec(bare),
+                "with_periodic_terms_arcsec_per_year": fitting.per_year_arcsec(with_terms),
+            }
+        )
     frame = pd.DataFrame(rows)
-    results.table("aliasing", frame, "The secular rate fitted over windows that are not whole periods of the "
-                  "nutations: a bare straight line, and a line fitted together with the periodic terms. The bare "
-                  "line's rate depends on the window; with the periodic terms it does not.",
-                  headers={"window_years": "window (yr)", "line_only_arcsec_per_year": "rate, line only (″/yr)",
-                           "with_periodic_terms_arcsec_per_year": "rate, line and periodic terms (″/yr)"})
-    spread = lambda col: float((frame[col].max() - frame[col].min()) / frame[col].mean())     # noqa: E731
-    results.number("aliasing_spread_line_only", spread("line_only_arcsec_per_year"), "1",
-                   note="(largest − smallest)/mean of the bare line's rate over the windows")
+    results.table(
+        "aliasing",
+        frame,
+        "The secular rate fitted over windows that are not whole periods of the "
+        "nutations: a bare straight line, and a line fitted together with the periodic terms. The bare "
+        "line's rate depends on the window; with the periodic terms it does not.",
+        headers={
+            "window_years": "window (yr)",
+            "line_only_arcsec_per_year": "rate, line only (″/yr)",
+            "with_periodic_terms_arcsec_per_year": "rate, line and periodic terms (″/yr)",
+        },
+    )
+    spread = lambda col: float((frame[col].max() - frame[col].min()) / frame[col].mean())
+    results.number(
+        "aliasing_spread_line_only",
+        spread("line_only_arcsec_per_year"),
+        "1",
+        note="(largest − smallest)/mean of the bare line's rate over the windows",
+    )
     results.number("aliasing_spread_with_terms", spread("with_periodic_terms_arcsec_per_year"), "1")
-    results.hard_case("aliasing", "The rate fitted with the periodic terms does not depend on the window (relative "
-                      "spread over the windows)", spread("with_periodic_terms_arcsec_per_year"), ALIASING_BOUND)
+    results.hard_case(
+        "aliasing",
+        "The rate fitted with the periodic terms does not depend on the window (relative "
+        "spread over the windows)",
+        spread("with_periodic_terms_arcsec_per_year"),
+        ALIASING_BOUND,
+    )
 
 
 def free_wobble_amplitude(model, step, order, forced, years=FREE_NUTATION_YEARS):
@@ -270,7 +418,7 @@ def free_wobble_amplitude(model, step, order, forced, years=FREE_NUTATION_YEARS)
     span = periods * 2.0 * np.pi / sigma
     t, ms, _ = integrate(model, span, step, order, sample_days=step, forced=forced)
     w = (ms[:, 0] + 1j * ms[:, 1]) / ((1.0 - model.H) * model.n)
-    inner = w[:-1] * np.exp(-1j * sigma * t[:-1])             # the last sample repeats the first phase
+    inner = w[:-1] * np.exp(-1j * sigma * t[:-1])  # the last sample repeats the first phase
     return float(abs(np.mean(inner)))
 
 
@@ -284,16 +432,32 @@ def _free_nutation(results, model, order):
     fastest = 2.0 * (model.orbits.moon_n if model.moon else model.orbits.sun_n)
     _, q0 = prec.initial_state(model)
     expected = float(np.linalg.norm(prec.forced_offset(model, q0))) / model.n
-    results.number("free_wobble_axis_start_mas", axis / earth.MAS, "mas",
-                   note="Euler free wobble excited by starting with $\\omega$ along the figure axis")
-    results.number("free_wobble_expected_mas", expected / earth.MAS, "mas",
-                   note="$|\\mathbf{e}_3 \\times \\mathbf{N}|/(Cn^2)$ at the start: the pole's velocity "
-                        "over $n$")
-    results.number("free_wobble_forced_start_mas", forced / earth.MAS, "mas",
-                   note="starting on the steady forced precession")
-    results.hard_case("forced_start", "The free wobble left by starting on the forced state, as a fraction of the "
-                      f"one left by starting on the figure axis (bound: the fastest couple's $\\nu/n$; step "
-                      f"{shortest(FREE_NUTATION_STEP_HOURS)} h)", forced / axis, fastest / model.n)
+    results.number(
+        "free_wobble_axis_start_mas",
+        axis / earth.MAS,
+        "mas",
+        note="Euler free wobble excited by starting with $\\omega$ along the figure axis",
+    )
+    results.number(
+        "free_wobble_expected_mas",
+        expected / earth.MAS,
+        "mas",
+        note="$|\\mathbf{e}_3 \\times \\mathbf{N}|/(Cn^2)$ at the start: the pole's velocity over $n$",
+    )
+    results.number(
+        "free_wobble_forced_start_mas",
+        forced / earth.MAS,
+        "mas",
+        note="starting on the steady forced precession",
+    )
+    results.hard_case(
+        "forced_start",
+        "The free wobble left by starting on the forced state, as a fraction of the "
+        f"one left by starting on the figure axis (bound: the fastest couple's $\\nu/n$; step "
+        f"{shortest(FREE_NUTATION_STEP_HOURS)} h)",
+        forced / axis,
+        fastest / model.n,
+    )
 
 
 LADDER = ("solar_torque", "lunar_torque", "orbit_eccentricity", "lunar_inclination", "node_regression")
@@ -311,28 +475,57 @@ def _effect_ladder(results, model, scene, step, order, years):
         psi, eps = prec.precession_angles(angular_momentum_axis(ms, qs))
         fp, fe, args = fit_series(sub, t, psi, eps)
         added = ("" if k == 1 else "+ ") + listed[k - 1]
-        rows.append({"adds": added, "rate": fitting.per_year_arcsec(fp.rate),
-                     "secular_formula": fitting.per_year_arcsec(sub.secular_rate()),
-                     "dpsi_18p6yr": fitting.amplitude(fp, "18.6 yr") / earth.ARCSEC if "18.6 yr" in args else 0.0,
-                     "dpsi_semiannual": fitting.amplitude(fp, "semi-annual") / earth.ARCSEC})
+        rows.append(
+            {
+                "adds": added,
+                "rate": fitting.per_year_arcsec(fp.rate),
+                "secular_formula": fitting.per_year_arcsec(sub.secular_rate()),
+                "dpsi_18p6yr": fitting.amplitude(fp, "18.6 yr") / earth.ARCSEC if "18.6 yr" in args else 0.0,
+                "dpsi_semiannual": fitting.amplitude(fp, "semi-annual") / earth.ARCSEC,
+            }
+        )
         steps = int(round(span / step))
-        times.append({"adds": added, "span_years": years, "steps": steps, "seconds": seconds,
-                      "ns_per_step": seconds / steps * 1e9})
+        times.append(
+            {
+                "adds": added,
+                "span_years": years,
+                "steps": steps,
+                "seconds": seconds,
+                "ns_per_step": seconds / steps * 1e9,
+            }
+        )
     frame = pd.DataFrame(rows)
     frame["rate_change"] = frame.rate.diff().fillna(frame.rate)
-    results.table("effect_ladder", frame, f"The full model over {_years(years)} with the effects switched on one "
-                  "at a time (each row adds one to those above): the fitted rate beside the secular formula for the "
-                  "same effects, the 18.6-year and semi-annual nutations in longitude, and the change in the rate "
-                  "each effect brings. A tilted lunar orbit with a fixed node changes the rate by several ″/yr; "
-                  "with the node regressing the rate returns to the secular formula's.",
-                  headers={"adds": "effect added", "rate": "rate (″/yr)", "secular_formula": "secular formula (″/yr)",
-                           "dpsi_18p6yr": "$\\Delta\\psi$, 18.6 yr (″)",
-                           "dpsi_semiannual": "$\\Delta\\psi$, semi-annual (″)",
-                           "rate_change": "rate change (″/yr)"})
-    results.timing_table("effect_ladder", pd.DataFrame(times), "What each effect costs: the same runs, timed "
-                         "(minimum of repeats). An effect not listed is not evaluated.",
-                         headers={"adds": "effect added", "span_years": "span (yr)", "steps": "steps",
-                                  "seconds": "wall time (s)", "ns_per_step": "per step (ns)"})
+    results.table(
+        "effect_ladder",
+        frame,
+        f"The full model over {_years(years)} with the effects switched on one "
+        "at a time (each row adds one to those above): the fitted rate beside the secular formula for the "
+        "same effects, the 18.6-year and semi-annual nutations in longitude, and the change in the rate "
+        "each effect brings. A tilted lunar orbit with a fixed node changes the rate by several ″/yr; "
+        "with the node regressing the rate returns to the secular formula's.",
+        headers={
+            "adds": "effect added",
+            "rate": "rate (″/yr)",
+            "secular_formula": "secular formula (″/yr)",
+            "dpsi_18p6yr": "$\\Delta\\psi$, 18.6 yr (″)",
+            "dpsi_semiannual": "$\\Delta\\psi$, semi-annual (″)",
+            "rate_change": "rate change (″/yr)",
+        },
+    )
+    results.timing_table(
+        "effect_ladder",
+        pd.DataFrame(times),
+        "What each effect costs: the same runs, timed "
+        "(minimum of repeats). An effect not listed is not evaluated.",
+        headers={
+            "adds": "effect added",
+            "span_years": "span (yr)",
+            "steps": "steps",
+            "seconds": "wall time (s)",
+            "ns_per_step": "per step (ns)",
+        },
+    )
 
 
 def _years(value) -> str:

@@ -14,11 +14,20 @@ ARCSEC_PER_TURN = 1296000.0
 CONSTANTS_NAMES = {"lamb1920": "Lamb 1920", "modern": "modern values"}
 
 # The constants' sources as the model states them, with their symbols typeset ($...$, the report's syntax).
-_SYMBOLS = (("S/(E+M)", "$S/(E + M)$"), ("GM_E", "$GM_\\mathrm{E}$"), ("M/E", "$M/E$"), ("E/M", "$E/M$"),
-            ("n1/n'", "$n_1/n'$"), ("n/n'", "$n/n'$"), ("e_Moon", "$e_\\mathrm{Moon}$"),
-            ("a_Moon", "$a_\\mathrm{Moon}$"), ("e' =", "$e'$ ="), ("i =", "$i$ ="),
-            ("(read from damaged OCR)", "(as far as the damaged scan can be read)"),
-            ("328900.5596", "328\u202f900.5596"))
+_SYMBOLS = (
+    ("S/(E+M)", "$S/(E + M)$"),
+    ("GM_E", "$GM_\\mathrm{E}$"),
+    ("M/E", "$M/E$"),
+    ("E/M", "$E/M$"),
+    ("n1/n'", "$n_1/n'$"),
+    ("n/n'", "$n/n'$"),
+    ("e_Moon", "$e_\\mathrm{Moon}$"),
+    ("a_Moon", "$a_\\mathrm{Moon}$"),
+    ("e' =", "$e'$ ="),
+    ("i =", "$i$ ="),
+    ("(read from damaged OCR)", "(as far as the damaged scan can be read)"),
+    ("328900.5596", "328\u202f900.5596"),
+)
 
 
 def typeset_source(line: str) -> str:
@@ -32,7 +41,7 @@ def typeset_source(line: str) -> str:
             break
         at, old, new = min(hits, key=lambda h: (h[0], -len(h[1])))
         out.append(rest[:at] + new)
-        rest = rest[at + len(old):]
+        rest = rest[at + len(old) :]
     return "".join(out)
 
 
@@ -50,7 +59,7 @@ def iau2006_rates() -> dict:
 
     before, after = erfa.p06e(2451545.0, -365.25), erfa.p06e(2451545.0, 365.25)
     eps0 = erfa.p06e(2451545.0, 0.0)[0]
-    rate = lambda k: (after[k] - before[k]) / 2.0 / earth.ARCSEC                   # noqa: E731
+    rate = lambda k: (after[k] - before[k]) / 2.0 / earth.ARCSEC
     return {"psi_A": rate(1), "p_A": rate(12), "omega_A": rate(2), "eps0_arcsec": eps0 / earth.ARCSEC}
 
 
@@ -59,28 +68,47 @@ def run(scene, results) -> prec.PrecessionModel:
     data = scene.data
     results.number("H_over_C", model.H, "1", note=data["earth"]["H_source"])
     results.number("obliquity_deg", np.degrees(model.obliquity), "°", note=data["earth"]["obliquity_source"])
-    results.number("spin_turns_per_year", model.orbits.spin_turns_per_year, "1",
-                   note="$n/n'$: sidereal turns of the Earth in its orbital period")
+    results.number(
+        "spin_turns_per_year",
+        model.orbits.spin_turns_per_year,
+        "1",
+        note="$n/n'$: sidereal turns of the Earth in its orbital period",
+    )
     for line in model.orbits.sources:
-        results.notes.append(f"Constants ({CONSTANTS_NAMES.get(model.orbits.name, model.orbits.name)}): "
-                             f"{typeset_source(line)}.")
+        results.notes.append(
+            f"Constants ({CONSTANTS_NAMES.get(model.orbits.name, model.orbits.name)}): "
+            f"{typeset_source(line)}."
+        )
     solar, lunar = per_year_arcsec(model.solar_rate()), per_year_arcsec(model.lunar_rate())
     total = solar + lunar
-    results.number("secular_solar_rate_arcsec_per_year", solar, "″/yr", note="Lamb Art. 61 (7), per Julian year")
+    results.number(
+        "secular_solar_rate_arcsec_per_year", solar, "″/yr", note="Lamb Art. 61 (7), per Julian year"
+    )
     results.number("secular_lunar_rate_arcsec_per_year", lunar, "″/yr", note="Lamb Art. 61 (16)")
     results.number("secular_rate_arcsec_per_year", total, "″/yr", note="westward (retrograde), positive")
     if model.inclined:
-        results.number("lunar_inclination_deg", np.degrees(model.moon_i), "°",
-                       note="the lunar orbit's mean inclination to the ecliptic (an input of the constants)")
+        results.number(
+            "lunar_inclination_deg",
+            np.degrees(model.moon_i),
+            "°",
+            note="the lunar orbit's mean inclination to the ecliptic (an input of the constants)",
+        )
     if model.sun and model.moon:
-        results.number("lunar_to_solar_ratio", lunar / solar, "1", note="from the secular rates of the "
-                       "effects included")
+        results.number(
+            "lunar_to_solar_ratio", lunar / solar, "1", note="from the secular rates of the effects included"
+        )
     per_orbit = model.secular_rate() * model.orbits.year_days / earth.ARCSEC
-    results.number("secular_per_orbit_arcsec", per_orbit, "″",
-                   note="per revolution of the Earth round the Sun (Lamb's 'per annum')")
+    results.number(
+        "secular_per_orbit_arcsec",
+        per_orbit,
+        "″",
+        note="per revolution of the Earth round the Sun (Lamb's 'per annum')",
+    )
     if data["fidelity"] == "secular":
         results.number("precession_rate_arcsec_per_year", total, "″/yr", note="the secular formula")
-        results.number("precession_period_years", ARCSEC_PER_TURN / total, "yr", note="Julian years, 360°/rate")
+        results.number(
+            "precession_period_years", ARCSEC_PER_TURN / total, "yr", note="Julian years, 360°/rate"
+        )
     inverse = data.get("analysis", {}).get("inverse_problem")
     if inverse:
         _inverse(results, model, inverse)
@@ -94,24 +122,48 @@ def _inverse(results, model, spec):
     observed = spec["observed_rate_arcsec_per_year"]
     # Lamb's 'per annum' is per revolution; a modern rate is per Julian year: compare like with like
     rate = model.secular_rate()
-    computed = rate * model.orbits.year_days / earth.ARCSEC if model.orbits.name == "lamb1920" else per_year_arcsec(rate)
+    computed = (
+        rate * model.orbits.year_days / earth.ARCSEC
+        if model.orbits.name == "lamb1920"
+        else per_year_arcsec(rate)
+    )
     H = model.H * observed / computed
     results.number("inverse_observed_rate_arcsec_per_year", observed, "″/yr", note=spec["source"])
     results.number("H_from_observed_rate", H, "1", note="$(C - A)/C$ that reproduces the observed rate")
-    results.number("computed_over_observed_minus_one", computed / observed - 1.0, "1",
-                   note="the formula's rate against the observed one")
+    results.number(
+        "computed_over_observed_minus_one",
+        computed / observed - 1.0,
+        "1",
+        note="the formula's rate against the observed one",
+    )
     results.number("C_minus_A_over_A_from_observed_rate", H / (1.0 - H), "1", note="the same as $(C - A)/A$")
 
 
 def _iau(results, model, total):
     iau = iau2006_rates()
-    results.number("iau2006_psi_A_rate_arcsec_per_year", iau["psi_A"], "″/yr",
-                   note="luni-solar precession, IAU 2006 (pyerfa p06e), at J2000")
-    results.number("iau2006_p_A_rate_arcsec_per_year", iau["p_A"], "″/yr",
-                   note="general precession in longitude, IAU 2006 (pyerfa p06e)")
-    results.number("iau2006_omega_A_rate_arcsec_per_year", iau["omega_A"], "″/yr",
-                   note="obliquity against the J2000 ecliptic, IAU 2006 (pyerfa p06e)")
+    results.number(
+        "iau2006_psi_A_rate_arcsec_per_year",
+        iau["psi_A"],
+        "″/yr",
+        note="luni-solar precession, IAU 2006 (pyerfa p06e), at J2000",
+    )
+    results.number(
+        "iau2006_p_A_rate_arcsec_per_year",
+        iau["p_A"],
+        "″/yr",
+        note="general precession in longitude, IAU 2006 (pyerfa p06e)",
+    )
+    results.number(
+        "iau2006_omega_A_rate_arcsec_per_year",
+        iau["omega_A"],
+        "″/yr",
+        note="obliquity against the J2000 ecliptic, IAU 2006 (pyerfa p06e)",
+    )
     results.number("iau2006_eps0_arcsec", iau["eps0_arcsec"], "″", note="obliquity at J2000 (pyerfa p06e)")
-    results.number("secular_minus_psi_A_relative", total / iau["psi_A"] - 1.0, "1",
-                   note="the first-order formula against the IAU 2006 luni-solar precession")
+    results.number(
+        "secular_minus_psi_A_relative",
+        total / iau["psi_A"] - 1.0,
+        "1",
+        note="the first-order formula against the IAU 2006 luni-solar precession",
+    )
     results.number("iau2006_period_years", ARCSEC_PER_TURN / iau["p_A"], "yr", note="360°/$p_A$")

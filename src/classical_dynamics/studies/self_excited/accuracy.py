@@ -18,12 +18,12 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from ...formatting import format_number, power_of_ten, shortest
 from ...models import self_excited as se
 from ...solvers import symplectic
 from ...solvers import workprecision as wp
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
-from ...formatting import format_number, power_of_ten, shortest
 from ..results import new_figure
 from .bounds import EXCURSION_PERIODS
 from .portrait import param_text
@@ -39,10 +39,18 @@ def _adaptive_rows(problem, error_of, quick):
     rows = []
     for method in ADAPTIVE:
         for rtol in TOLERANCES[:3] if (quick or method.startswith("scipy")) else TOLERANCES:
-            run = lambda: solve(problem, method, rtol=rtol, atol=rtol * 1e-2)        # noqa: E731
+            run = lambda: solve(problem, method, rtol=rtol, atol=rtol * 1e-2)
             seconds, sol, _ = min_time(run, repeats=1 if method.startswith("scipy") else 5, budget_s=0.5)
-            rows.append({"method": method, "kind": "tolerance", "setting": rtol, **error_of(sol.y),
-                         "steps": sol.n_steps, "seconds": seconds})
+            rows.append(
+                {
+                    "method": method,
+                    "kind": "tolerance",
+                    "setting": rtol,
+                    **error_of(sol.y),
+                    "steps": sol.n_steps,
+                    "seconds": seconds,
+                }
+            )
     return rows
 
 
@@ -54,7 +62,7 @@ def separatrix(results, m1, quick):
     p_sep = -side * float(np.sqrt(se.separatrix_p1_squared(np.array([phi_c]), m1, 0.0, phi_s))[0])
     y0 = np.array([phi_c, p_sep * (1.0 - SEPARATRIX_OFFSET)])
     E0 = float(se.energy(y0, m1)[0])
-    gap = float(se.energy(np.array([phi_s, 0.0]), m1)[0]) - E0         # energy below the separatrix's
+    gap = float(se.energy(np.array([phi_s, 0.0]), m1)[0]) - E0  # energy below the separatrix's
     period = _period_estimate(m1, y0)
     span = PERIODS * period
 
@@ -67,22 +75,46 @@ def separatrix(results, m1, quick):
     for order in (2, 4):
         for h in STEPS[:3] if quick else STEPS:
             n = int(round(span / h))
-            run = lambda: symplectic.integrate(se.plane_largest_force, force, y0[:1], y0[1:], span / n, n, order, n)  # noqa
+            run = lambda: symplectic.integrate(
+                se.plane_largest_force, force, y0[:1], y0[1:], span / n, n, order, n
+            )
             seconds, (qs, vs), _ = min_time(run, repeats=3, budget_s=0.5)
-            rows.append({"method": f"splitting, order {order}", "kind": "step", "setting": h,
-                         **error_of([qs[-1, 0], vs[-1, 0]]), "steps": n, "seconds": seconds})
+            rows.append(
+                {
+                    "method": f"splitting, order {order}",
+                    "kind": "step",
+                    "setting": h,
+                    **error_of([qs[-1, 0], vs[-1, 0]]),
+                    "steps": n,
+                    "seconds": seconds,
+                }
+            )
     frame = pd.DataFrame(rows)
-    results.number("separatrix_energy_gap", gap, "1", note=f"the start's energy below the separatrix's "
-                   f"(offset {SEPARATRIX_OFFSET:g} in p1)")
+    results.number(
+        "separatrix_energy_gap",
+        gap,
+        "1",
+        note=f"the start's energy below the separatrix's (offset {SEPARATRIX_OFFSET:g} in p1)",
+    )
     results.number("separatrix_span_tau", span, "τ", note=f"{PERIODS} periods of the orbit")
-    results.number("separatrix_runs_on_wrong_side", int(frame.wrong_side.sum()), "1",
-                   note="settings whose energy error carried the motion across the separatrix")
-    publish(results, frame, "separatrix", "energy_error", f"{PERIODS} periods of a closed orbit of Lee (2.10) a "
-            f"relative {power_of_ten(round(np.log10(SEPARATRIX_OFFSET)))} inside the separatrix ($m_1$ = "
-            f"{shortest(m1)}, $\\nu = 0$), by method and relative tolerance or step $h$: the error of the energy "
-            "$E$ at the end, and whether it carried the motion across the separatrix, where it runs away.",
-            "error of the energy $E$ at the end",
-            {"energy_error": "energy error", "wrong_side": "crossed the separatrix"})
+    results.number(
+        "separatrix_runs_on_wrong_side",
+        int(frame.wrong_side.sum()),
+        "1",
+        note="settings whose energy error carried the motion across the separatrix",
+    )
+    publish(
+        results,
+        frame,
+        "separatrix",
+        "energy_error",
+        f"{PERIODS} periods of a closed orbit of Lee (2.10) a "
+        f"relative {power_of_ten(round(np.log10(SEPARATRIX_OFFSET)))} inside the separatrix ($m_1$ = "
+        f"{shortest(m1)}, $\\nu = 0$), by method and relative tolerance or step $h$: the error of the energy "
+        "$E$ at the end, and whether it carried the motion across the separatrix, where it runs away.",
+        "error of the energy $E$ at the end",
+        {"energy_error": "energy error", "wrong_side": "crossed the separatrix"},
+    )
 
 
 def limit_cycle(results, m1, nu, quick):
@@ -96,10 +128,19 @@ def limit_cycle(results, m1, nu, quick):
 
     rows = _adaptive_rows(Problem(se.plane_largest, y0, (0.0, span), [m1, -nu, 1.0]), error_of, quick)
     frame = pd.DataFrame(rows)
-    publish(results, frame, "limit_cycle", "error", f"{PERIODS} periods on the limit cycle $F$ of Lee (2.10) "
-            f"($m_1$ = {shortest(m1)}, $\\nu$ = {shortest(nu)}), by method and relative tolerance: the distance "
-            "in $(\\varphi_2, p_1)$ at the end from the closed form ($\\varphi_2$ advanced by $20\\pi$, $p_1$ back "
-            "at its start).", "error in $(\\varphi_2, p_1)$ at the end", {"error": "error", "setting": "rtol"})
+    publish(
+        results,
+        frame,
+        "limit_cycle",
+        "error",
+        f"{PERIODS} periods on the limit cycle $F$ of Lee (2.10) "
+        f"($m_1$ = {shortest(m1)}, $\\nu$ = {shortest(nu)}), by method and relative tolerance: the distance "
+        "in $(\\varphi_2, p_1)$ at the end from the closed form ($\\varphi_2$ advanced by $20\\pi$, $p_1$ "
+        "back "
+        "at its start).",
+        "error in $(\\varphi_2, p_1)$ at the end",
+        {"error": "error", "setting": "rtol"},
+    )
 
 
 def huge_excursion(results, M, start, quick):
@@ -112,16 +153,29 @@ def huge_excursion(results, M, start, quick):
 
     problem = Problem(se.euler_middle, w0, (0.0, EXCURSION_PERIODS * T), M.euler_parameters())
     frame = pd.DataFrame(_adaptive_rows(problem, error_of, quick))
-    publish(results, frame, "excursion", "error", f"Euler's equations over {EXCURSION_PERIODS} periods of a huge "
-            f"excursion ($q_0$ = {shortest(w0[1])}, $\\nu$ = {param_text(-M.mu1)} against $\\nu_\\mathrm{{c}}$ "
-            f"= {format_number(se.MiddleAxis.plane_nu('nu_c', M.body), 4)}), by method and relative tolerance: the "
-            "distance of $\\boldsymbol{\\omega}$ at the end from its start, relative to the largest "
-            "$|\\boldsymbol{\\omega}|$ on the orbit.", "error at the end, relative to the largest $|\\omega|$",
-            {"error": "relative error", "setting": "rtol"})
+    publish(
+        results,
+        frame,
+        "excursion",
+        "error",
+        f"Euler's equations over {EXCURSION_PERIODS} periods of a huge "
+        f"excursion ($q_0$ = {shortest(w0[1])}, $\\nu$ = {param_text(-M.mu1)} against $\\nu_\\mathrm{{c}}$ "
+        f"= {format_number(se.MiddleAxis.plane_nu('nu_c', M.body), 4)}), by method and relative tolerance: "
+        "the "
+        "distance of $\\boldsymbol{\\omega}$ at the end from its start, relative to the largest "
+        "$|\\boldsymbol{\\omega}|$ on the orbit.",
+        "error at the end, relative to the largest $|\\omega|$",
+        {"error": "relative error", "setting": "rtol"},
+    )
 
 
-HEADERS = {"method": "method", "kind": "control", "setting": "rtol or step $h$", "steps": "steps",
-           "seconds": "wall time (s)"}
+HEADERS = {
+    "method": "method",
+    "kind": "control",
+    "setting": "rtol or step $h$",
+    "steps": "steps",
+    "seconds": "wall time (s)",
+}
 
 
 def publish(results, frame, name, error, caption, xlabel, headers=None, floor=1e-16):
@@ -129,9 +183,13 @@ def publish(results, frame, name, error, caption, xlabel, headers=None, floor=1e
     columns particular to this frame (the error's); the common ones are HEADERS."""
     headers = {**HEADERS, **(headers or {})}
     results.table(f"accuracy_{name}", frame.drop(columns=["seconds"]), caption, headers=headers)
-    results.timing_table(f"accuracy_{name}", frame, caption + " With the wall time of each run, the minimum over "
-                         "repeated runs.", headers=headers)
-    fig, ax = new_figure(height=2.7)      # with its caption, at most 40 % of a page
+    results.timing_table(
+        f"accuracy_{name}",
+        frame,
+        caption + " With the wall time of each run, the minimum over repeated runs.",
+        headers=headers,
+    )
+    fig, ax = new_figure(height=2.7)  # with its caption, at most 40 % of a page
     wp.plot(frame, ax, error=error, floor=floor, xlabel=xlabel)
     fig.legend(loc="outside right upper")
     styles = ["solid: this library's methods"]
@@ -139,13 +197,18 @@ def publish(results, frame, name, error, caption, xlabel, headers=None, floor=1e
         styles.append("dashed: SciPy's integrators")
     if (frame.kind == "step").any():
         styles.append("dotted squares: fixed steps")
-    results.timing_figure(f"work_precision_{name}", fig, caption + " Wall time against the error, one line per method "
-                          f"({'; '.join(styles)}); accuracy grows to the right, and errors below "
-                          f"{power_of_ten(round(np.log10(floor)))} are drawn at that floor.")
+    results.timing_figure(
+        f"work_precision_{name}",
+        fig,
+        caption + " Wall time against the error, one line per method "
+        f"({'; '.join(styles)}); accuracy grows to the right, and errors below "
+        f"{power_of_ten(round(np.log10(floor)))} are drawn at that floor.",
+    )
     for key, (best, setting) in wp.best_by_method(frame, error).items():
         results.number(f"best_{error}_{name}_{key}", best, "1", note=f"at {setting:g}")
 
 
 def _period_estimate(m1, y0):
     from .portrait import period
+
     return period(se.plane_largest, [m1, 0.0, 1.0], y0, span=400.0)

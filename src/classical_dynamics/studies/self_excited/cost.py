@@ -1,11 +1,11 @@
 """What a self-excited-body scene costs, from its fields (scenes/cost.py).
 
 The work is a phase portrait: a grid of starts across the window phi2_range (a few per period 2 pi of phi2, a
-singular point per pi), each integrated both ways for tau_max with the compiled DOP853 at rtol 1e-12, about 1.5 us
-and 50 steps per unit of tau at unit rates (faster rates, sqrt|m1|, nu and the window's height p1_max, take more);
-or, for Lee §5, one run of Euler's equations in the viscous medium to t_max at rtol 1e-13. Each analysis adds a
-fixed piece. Measured here: every shipped scene takes 0.5 to 3.7 s; largest_perturbed_cycles with tau_max 200
-(16 times its own) took 2.0 s, estimated 6.3 s.
+singular point per pi), each integrated both ways for tau_max with the compiled DOP853 at rtol 1e-12, about
+1.5 us and 50 steps per unit of tau at unit rates (faster rates, sqrt|m1|, nu and the window's height p1_max,
+take more); or, for Lee §5, one run of Euler's equations in the viscous medium to t_max at rtol 1e-13. Each
+analysis adds a fixed piece. Measured here: every shipped scene takes 0.5 to 3.7 s; largest_perturbed_cycles
+with tau_max 200 (16 times its own) took 2.0 s, estimated 6.3 s.
 """
 
 from __future__ import annotations
@@ -27,9 +27,14 @@ def cost(data: dict) -> list[Work]:
         works.append(Work("analysis", ANALYSIS_S * len(analyses), 0.0, count(len(analyses), "analyses")))
     if "viscous" in data:
         v = data["viscous"]
-        rate = 1.0 + max(abs(x) for x in v["omega0"]) + math.sqrt(max(abs(x) for x in v["torque"])) \
-            + v.get("nu", 0.0) + v.get("mu", 0.0)
-        steps = 2 * v["t_max"] * rate * STEPS_PER_TAU * 4          # the run, and the analyses' reruns of it
+        rate = (
+            1.0
+            + max(abs(x) for x in v["omega0"])
+            + math.sqrt(max(abs(x) for x in v["torque"]))
+            + v.get("nu", 0.0)
+            + v.get("mu", 0.0)
+        )
+        steps = 2 * v["t_max"] * rate * STEPS_PER_TAU * 4  # the run, and the analyses' reruns of it
         works.append(Work("viscous.t_max", steps * S_PER_STEP, 0.0, count(steps, "integration steps")))
         return works
     plane, view = data.get("plane", {}), data.get("portrait", {})

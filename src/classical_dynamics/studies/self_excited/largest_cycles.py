@@ -1,8 +1,8 @@
 """Lee §2.5-§2.6 for the torque along the largest axis: what the limit cycles mean for the body.
 
-- Figure 2.12: the separatrices T1 (leaving the saddle S1) and T2 (entering the next saddle S2), integrated from the
-  saddles' eigenvectors, their crossings f1, f2 of the vertical through the center C and g1, g2 further on; f1 - f2
-  changes sign where nu crosses nu* (found by bisection on the integrated crossings).
+- Figure 2.12: the separatrices T1 (leaving the saddle S1) and T2 (entering the next saddle S2), integrated
+  from the saddles' eigenvectors, their crossings f1, f2 of the vertical through the center C and g1, g2
+  further on; f1 - f2 changes sign where nu crosses nu* (found by bisection on the integrated crossings).
 - On F, omega returns to its start after one turn of (q, r) (two turns of phi2), (q, r) reversed after one.
 - The permanent rotations p = +-sqrt(m/|mu|) about x: the + one stable, the - one leaving at 2 sqrt(m|mu|); F
   shrinks onto the + one as delta -> 0 (mean of p on F).
@@ -20,26 +20,28 @@ from ...solvers.ode import Events, Problem, solve
 from ...solvers.runge_kutta import rhs_function
 from . import portrait
 
-SADDLE_OFFSET = 1e-7          # the start of T1, T2 off the saddle along the eigenvector (error ~ offset^2)
-CROSSING_BOUND = 1e-8         # hard case: the integrated crossings against the closed form (2.13)
-NAMES = {1: "$f_1$", 2: "$f_2$", 3: "$g_1$", 4: "$g_2$"}     # curve numbers of the crossings in zoom.csv
+SADDLE_OFFSET = 1e-7  # the start of T1, T2 off the saddle along the eigenvector (error ~ offset^2)
+CROSSING_BOUND = 1e-8  # hard case: the integrated crossings against the closed form (2.13)
+NAMES = {1: "$f_1$", 2: "$f_2$", 3: "$g_1$", 4: "$g_2$"}  # curve numbers of the crossings in zoom.csv
 
 
 @rhs_function
 def _crossings(t, y, p, out):
-    """Events on (phi2, p1): phi2 through p[3] (the center's vertical), through p[4] (the far saddle's), p1 = 0."""
+    """Events on (phi2, p1): phi2 through p[3] (the center's vertical), through p[4] (the far saddle's), p1 =
+    0."""
     out[0] = y[0] - p[3]
     out[1] = y[0] - p[4]
     out[2] = y[1]
 
 
 def _separatrix(m1, nu, which, samples=400):
-    """T1 (which = 1: out of S1 forward in tau) or T2 (which = 2: into S2, backward in tau) of the plane (2.10),
-    S1 at asin(-m1), C at pi - asin(-m1), S2 = S1 + 2 pi. Returns (f: height at C's vertical, end: (phi2, p1) where
-    the curve stops: the far saddle's vertical or the phi2-axis, which: 'vertical' or 'axis', the curve)."""
+    """T1 (which = 1: out of S1 forward in tau) or T2 (which = 2: into S2, backward in tau) of the plane
+    (2.10), S1 at asin(-m1), C at pi - asin(-m1), S2 = S1 + 2 pi. Returns (f: height at C's vertical, end:
+    (phi2, p1) where the curve stops: the far saddle's vertical or the phi2-axis, which: 'vertical' or 'axis',
+    the curve)."""
     s1 = float(np.arcsin(-m1))
     c, s2 = np.pi - s1, s1 + 2 * np.pi
-    lam = float(np.sqrt(np.cos(s1)))             # the saddles' rate (the p1^2 term is second order)
+    lam = float(np.sqrt(np.cos(s1)))  # the saddles' rate (the p1^2 term is second order)
     eps = SADDLE_OFFSET
     if which == 1:
         start, direction, far = [s1 + eps, lam * eps], 1.0, s2
@@ -48,15 +50,26 @@ def _separatrix(m1, nu, which, samples=400):
         start, direction, far = [s2 - eps, lam * eps], -1.0, s1
         dirs = (-1, -1, -1)
     params = [m1, -nu, direction, c, far]
-    sol = solve(Problem(se.plane_largest, start, (0.0, 200.0), params), "dop853", rtol=1e-13, atol=1e-15,
-                events=Events(_crossings, 3, dirs, (False, True, True)), bound=portrait.BLOW_UP_BOUND)
+    sol = solve(
+        Problem(se.plane_largest, start, (0.0, 200.0), params),
+        "dop853",
+        rtol=1e-13,
+        atol=1e-15,
+        events=Events(_crossings, 3, dirs, (False, True, True)),
+        bound=portrait.BLOW_UP_BOUND,
+    )
     at_c = sol.event_y[sol.event_index == 0]
     f = float(at_c[0, 1]) if len(at_c) else np.nan
     ends = sol.event_index[sol.event_index > 0]
     kind = "vertical" if len(ends) and ends[-1] == 1 else ("axis" if len(ends) else "none")
     end = sol.y.copy()
-    curve = solve(Problem(se.plane_largest, start, (0.0, sol.t), params), "dop853", rtol=1e-10, atol=1e-12,
-                  t_eval=np.linspace(0.0, sol.t, samples)).y_eval
+    curve = solve(
+        Problem(se.plane_largest, start, (0.0, sol.t), params),
+        "dop853",
+        rtol=1e-10,
+        atol=1e-12,
+        t_eval=np.linspace(0.0, sol.t, samples),
+    ).y_eval
     return f, end, kind, curve
 
 
@@ -71,38 +84,66 @@ def nu_where_f1_meets_f2(m1, lo=0.02, hi=1.0):
     """nu at which f1 - f2 (integrated) changes sign, by bisection (brentq)."""
     from scipy.optimize import brentq
 
-    gap = lambda nu: (lambda x: x["f1"] - x["f2"])(crossings(m1, nu))        # noqa: E731
+    gap = lambda nu: (lambda x: x["f1"] - x["f2"])(crossings(m1, nu))
     return brentq(gap, lo, hi, xtol=1e-13, rtol=1e-14)
 
 
 def figure_2_12(results, m1, nu, zoom=False):
-    """The numbers of Lee's Figure 2.12 for this plane; with zoom, the table of the grid's panel (one period)."""
+    """The numbers of Lee's Figure 2.12 for this plane; with zoom, the table of the grid's panel (one
+    period)."""
     x = crossings(m1, nu)
     s1 = float(np.arcsin(-m1))
     c = np.pi - s1
-    closed = [float(np.sqrt(se.separatrix_p1_squared(np.array([c]), m1, -nu, s))[0]) for s in (s1, s1 + 2 * np.pi)]
-    results.number("f1_height", x["f1"], "1", note="p1 where T1 (out of S1) crosses the vertical through C, "
-                   "integrated from the saddle's eigenvector")
+    closed = [
+        float(np.sqrt(se.separatrix_p1_squared(np.array([c]), m1, -nu, s))[0]) for s in (s1, s1 + 2 * np.pi)
+    ]
+    results.number(
+        "f1_height",
+        x["f1"],
+        "1",
+        note="p1 where T1 (out of S1) crosses the vertical through C, "
+        "integrated from the saddle's eigenvector",
+    )
     results.number("f2_height", x["f2"], "1", note="p1 where T2 (into S2) crosses the vertical through C")
-    results.number("f1_minus_f2", x["f1"] - x["f2"], "1", note="positive below nu*, negative above (Lee §2.5)")
-    results.number("g1_kind_vertical", int(x["g1_kind"] == "vertical"), "1", note="1 if T1 reaches the vertical "
-                   "through S2 (at g1), 0 if it falls to the phi2-axis first")
-    results.number("g1_phi2", float(x["g1"][0]), "rad", note="where T1 ends: the vertical through S2 or the axis")
-    results.number("g1_p1", float(x["g1"][1]), "1", note="p1 at the end of T1 (its height at g1 on S2's vertical)")
-    results.number("g2_kind_axis", int(x["g2_kind"] == "axis"), "1", note="1 if T2 (backward) falls to the "
-                   "phi2-axis (at g2) before the vertical through S1")
+    results.number(
+        "f1_minus_f2", x["f1"] - x["f2"], "1", note="positive below nu*, negative above (Lee §2.5)"
+    )
+    results.number(
+        "g1_kind_vertical",
+        int(x["g1_kind"] == "vertical"),
+        "1",
+        note="1 if T1 reaches the vertical through S2 (at g1), 0 if it falls to the phi2-axis first",
+    )
+    results.number(
+        "g1_phi2", float(x["g1"][0]), "rad", note="where T1 ends: the vertical through S2 or the axis"
+    )
+    results.number(
+        "g1_p1", float(x["g1"][1]), "1", note="p1 at the end of T1 (its height at g1 on S2's vertical)"
+    )
+    results.number(
+        "g2_kind_axis",
+        int(x["g2_kind"] == "axis"),
+        "1",
+        note="1 if T2 (backward) falls to the phi2-axis (at g2) before the vertical through S1",
+    )
     results.number("g2_phi2", float(x["g2"][0]), "rad", note="where T2, traced back, ends")
     deviation = max(abs(x["f1"] - closed[0]), abs(x["f2"] - closed[1]))
     results.number("crossing_closed_deviation", deviation, "1", note="integrated f1, f2 against (2.13)")
-    results.hard_case("separatrix_crossings", "The heights $f_1$, $f_2$ of Lee's Figure 2.12, integrated from the "
-                      "saddles, against the closed form (2.13) (largest difference)", deviation, CROSSING_BOUND)
+    results.hard_case(
+        "separatrix_crossings",
+        "The heights $f_1$, $f_2$ of Lee's Figure 2.12, integrated from the "
+        "saddles, against the closed form (2.13) (largest difference)",
+        deviation,
+        CROSSING_BOUND,
+    )
     if zoom:
         _zoom_table(results, m1, nu, x)
     return x
 
 
 def _zoom_table(results, m1, nu, x):
-    """One period [S1 - 0.3, S2 + 0.3] in the portrait table's format, for the grid's panel (Lee's Figure 2.12)."""
+    """One period [S1 - 0.3, S2 + 0.3] in the portrait table's format, for the grid's panel (Lee's Figure
+    2.12)."""
     s1 = float(np.arcsin(-m1))
     lo, hi = s1 - 0.3, s1 + 2 * np.pi + 0.3
     drawing = portrait.Drawing("p1", (lo, hi, 8.0))
@@ -116,14 +157,26 @@ def _zoom_table(results, m1, nu, x):
     drawing.points(se.singular_points(m1, -nu, lo, hi))
     c = np.pi - s1
     rows = [(1, c, x["f1"]), (2, c, x["f2"]), (3, *x["g1"]), (4, *x["g2"])]
-    drawing.parts.append(pd.DataFrame({"element": "crossing", "curve": [r[0] for r in rows],
-                                       "phi2": [r[1] for r in rows], "p1": [r[2] for r in rows]}))
+    drawing.parts.append(
+        pd.DataFrame(
+            {
+                "element": "crossing",
+                "curve": [r[0] for r in rows],
+                "phi2": [r[1] for r in rows],
+                "p1": [r[2] for r in rows],
+            }
+        )
+    )
     top = 1.25 * max(x["f1"], x["f2"], float(np.max(F)) if F is not None else 0.0)
     drawing.window(lo, hi, top)
-    results.table("zoom", drawing.frame().round({"phi2": portrait.DIGITS, "p1": portrait.DIGITS}),
-                  "Lee's Figure 2.12, one period of the plane: the separatrices $T_1$ (out of $S_1$) and $T_2$ (into "
-                  "$S_2$) integrated from the saddles, $F$ and $F_1$, the singular points, and the crossings "
-                  "(curve 1 to 4: $f_1$, $f_2$, $g_1$, $g_2$).", headers=portrait.TABLE_HEADERS)
+    results.table(
+        "zoom",
+        drawing.frame().round({"phi2": portrait.DIGITS, "p1": portrait.DIGITS}),
+        "Lee's Figure 2.12, one period of the plane: the separatrices $T_1$ (out of $S_1$) and $T_2$ (into "
+        "$S_2$) integrated from the saddles, $F$ and $F_1$, the singular points, and the crossings "
+        "(curve 1 to 4: $f_1$, $f_2$, $g_1$, $g_2$).",
+        headers=portrait.TABLE_HEADERS,
+    )
 
 
 def nu_star_bisection(results, m1):
@@ -139,25 +192,49 @@ def _r_up(t, w, p, out):
 
 
 def periodic_motion(results, body, m1, nu, delta):
-    """Euler's equations started on F where r = 0, q > 0 (phi1 = 0, phi2 = sigma1): the first upward crossing of r
-    through zero is omega's period; at it omega is back, and at the period of p (half of it) (q, r) is reversed."""
+    """Euler's equations started on F where r = 0, q > 0 (phi1 = 0, phi2 = sigma1): the first upward crossing
+    of r through zero is omega's period; at it omega is back, and at the period of p (half of it) (q, r) is
+    reversed."""
     L = se.LargestAxis.with_plane_parameters(body, m1, -nu, delta)
     phi2 = L.sigma1
     w0 = L.from_plane(phi2, float(se.limit_cycle_p1(np.array([phi2]), m1, nu)[0]))
-    T = 2.0 * se.limit_cycle_period(m1, nu) / L.time_scale          # Jacobi's form, twice: omega's period
-    sol = solve(Problem(se.euler_largest, w0, (0.0, 1.5 * T), L.euler_parameters()), "dop853", rtol=1e-13,
-                atol=1e-15, t_eval=np.array([0.5 * T, T]), events=Events(_r_up, 1, (1,)))
+    T = 2.0 * se.limit_cycle_period(m1, nu) / L.time_scale  # Jacobi's form, twice: omega's period
+    sol = solve(
+        Problem(se.euler_largest, w0, (0.0, 1.5 * T), L.euler_parameters()),
+        "dop853",
+        rtol=1e-13,
+        atol=1e-15,
+        t_eval=np.array([0.5 * T, T]),
+        events=Events(_r_up, 1, (1,)),
+    )
     size = float(np.linalg.norm(w0))
     measured = float(sol.event_t[0]) * L.time_scale
-    results.number("omega_period_tau_F_measured", measured, "τ", note="the first return of r through zero upward "
-                   "(φ1 one full turn) along Euler's equations, started on F")
-    results.number("omega_return_error", float(np.linalg.norm(sol.y_eval[1] - w0)) / size, "1",
-                   note="|ω(T) − ω0|/|ω0| at T = twice Jacobi's period of p1")
+    results.number(
+        "omega_period_tau_F_measured",
+        measured,
+        "τ",
+        note="the first return of r through zero upward "
+        "(φ1 one full turn) along Euler's equations, started on F",
+    )
+    results.number(
+        "omega_return_error",
+        float(np.linalg.norm(sol.y_eval[1] - w0)) / size,
+        "1",
+        note="|ω(T) − ω0|/|ω0| at T = twice Jacobi's period of p1",
+    )
     reversed_ = w0 * np.array([1.0, -1.0, -1.0])
-    results.number("omega_half_reversed_error", float(np.linalg.norm(sol.y_eval[0] - reversed_)) / size, "1",
-                   note="|ω(T/2) − (p0, −q0, −r0)|/|ω0|: after one period of p, (q, r) is reversed")
-    results.number("omega_half_distance", float(np.linalg.norm(sol.y_eval[0] - w0)) / size, "1",
-                   note="|ω(T/2) − ω0|/|ω0|: not back after the period of p")
+    results.number(
+        "omega_half_reversed_error",
+        float(np.linalg.norm(sol.y_eval[0] - reversed_)) / size,
+        "1",
+        note="|ω(T/2) − (p0, −q0, −r0)|/|ω0|: after one period of p, (q, r) is reversed",
+    )
+    results.number(
+        "omega_half_distance",
+        float(np.linalg.norm(sol.y_eval[0] - w0)) / size,
+        "1",
+        note="|ω(T/2) − ω0|/|ω0|: not back after the period of p",
+    )
 
 
 def permanent_rotations(results, body, m1, nu, delta):
@@ -168,27 +245,50 @@ def permanent_rotations(results, body, m1, nu, delta):
     par = L.euler_parameters()
     t_end = 100.0
     drift = 0.0
-    for sign, span in ((1.0, t_end), (-1.0, 20.0)):   # the − one amplifies rounding by e^{2√(m|μ|) t}: t ≤ 20
+    for sign, span in ((1.0, t_end), (-1.0, 20.0)):  # the − one amplifies rounding by e^{2√(m|μ|) t}: t ≤ 20
         w0 = np.array([sign * P, 0.0, 0.0])
         sol = solve(Problem(se.euler_largest, w0, (0.0, span), par), "dop853", rtol=1e-13, atol=1e-15)
         drift = max(drift, float(np.max(np.abs(sol.y - w0))))
     results.number("x_rotation_p", P, "1/time", note="√(m/|μ|): the permanent rotations about x at ±this")
-    results.number("x_rotation_drift", drift, "1/time", note="largest change of ω started at (±√(m/|μ|), 0, 0): "
-                   "+ over t ≤ 100, − over t ≤ 20")
+    results.number(
+        "x_rotation_drift",
+        drift,
+        "1/time",
+        note="largest change of ω started at (±√(m/|μ|), 0, 0): + over t ≤ 100, − over t ≤ 20",
+    )
     kick = 1e-6
     t = np.linspace(0.0, t_end, 2001)
-    sol = solve(Problem(se.euler_largest, np.array([P + kick, kick, kick]), (0.0, t_end), par), "dop853",
-                rtol=1e-13, atol=1e-18, t_eval=t)
-    results.number("x_rotation_plus_kicked", float(np.max(np.linalg.norm(sol.y_eval - [P, 0, 0], axis=1))),
-                   "1/time", note="largest distance from (√(m/|μ|), 0, 0), t ≤ 100, after a kick of 10⁻⁶ in p, q, r")
-    small = 1e-9                                  # kicked in p only: p − P grows like e^{2√(m|μ|) t} while small
-    sol = solve(Problem(se.euler_largest, np.array([-P - small, 0.0, 0.0]), (0.0, t_end), par), "dop853",
-                rtol=1e-13, atol=1e-20, t_eval=t, bound=portrait.BLOW_UP_BOUND)
+    sol = solve(
+        Problem(se.euler_largest, np.array([P + kick, kick, kick]), (0.0, t_end), par),
+        "dop853",
+        rtol=1e-13,
+        atol=1e-18,
+        t_eval=t,
+    )
+    results.number(
+        "x_rotation_plus_kicked",
+        float(np.max(np.linalg.norm(sol.y_eval - [P, 0, 0], axis=1))),
+        "1/time",
+        note="largest distance from (√(m/|μ|), 0, 0), t ≤ 100, after a kick of 10⁻⁶ in p, q, r",
+    )
+    small = 1e-9  # kicked in p only: p − P grows like e^{2√(m|μ|) t} while small
+    sol = solve(
+        Problem(se.euler_largest, np.array([-P - small, 0.0, 0.0]), (0.0, t_end), par),
+        "dop853",
+        rtol=1e-13,
+        atol=1e-20,
+        t_eval=t,
+        bound=portrait.BLOW_UP_BOUND,
+    )
     gap = np.abs(sol.y_eval[:, 0] + P)
     use = np.isfinite(gap) & (gap > 2 * small) & (gap < 1e-6)
     rate = float(np.polyfit(t[use], np.log(gap[use]), 1)[0])
-    results.number("x_rotation_minus_rate", rate, "1/time", note="growth rate of |p + √(m/|μ|)| from 2·10⁻⁹ to "
-                   "10⁻⁶ (fitted), started 10⁻⁹ off the − rotation")
+    results.number(
+        "x_rotation_minus_rate",
+        rate,
+        "1/time",
+        note="growth rate of |p + √(m/|μ|)| from 2·10⁻⁹ to 10⁻⁶ (fitted), started 10⁻⁹ off the − rotation",
+    )
     results.number("x_rotation_minus_rate_expected", 2.0 * np.sqrt(m * abs(mu)), "1/time", note="2√(m|μ|)")
     rows = []
     for d in (1.0, 0.3, 0.1):
@@ -200,82 +300,151 @@ def permanent_rotations(results, body, m1, nu, delta):
         sol = solve(Problem(se.euler_largest, w0, (0.0, T), par), "dop853", rtol=1e-12, atol=1e-14, t_eval=ts)
         mean = float(np.trapezoid(sol.y_eval[:, 0], ts) / T)
         rows.append({"delta": d, "m1": m1d, "mean_p": mean, "ratio": mean / P})
-        results.number(f"mean_p_F_delta_{d:g}".replace(".", "_"), mean, "1/time", note=f"time mean of p over one "
-                       f"period of ω on F, δ = {d:g} (m, μ fixed), Euler's equations")
-    results.table("x_rotation_limit", pd.DataFrame(rows), "As $\\delta \\to 0$ (the torque fixed) $F$ shrinks onto "
-                  "the permanent rotation $p = \\sqrt{m/|\\mu|}$: the time mean of $p$ over one period of "
-                  "$\\boldsymbol{\\omega}$ on $F$, from Euler's equations.",
-                  headers={"delta": "$\\delta$", "m1": "$m_1$", "mean_p": "mean of $p$ (rad per time unit)",
-                           "ratio": "mean of $p$ / $\\sqrt{m/|\\mu|}$"})
+        results.number(
+            f"mean_p_F_delta_{d:g}".replace(".", "_"),
+            mean,
+            "1/time",
+            note=f"time mean of p over one period of ω on F, δ = {d:g} (m, μ fixed), Euler's equations",
+        )
+    results.table(
+        "x_rotation_limit",
+        pd.DataFrame(rows),
+        "As $\\delta \\to 0$ (the torque fixed) $F$ shrinks onto "
+        "the permanent rotation $p = \\sqrt{m/|\\mu|}$: the time mean of $p$ over one period of "
+        "$\\boldsymbol{\\omega}$ on $F$, from Euler's equations.",
+        headers={
+            "delta": "$\\delta$",
+            "m1": "$m_1$",
+            "mean_p": "mean of $p$ (rad per time unit)",
+            "ratio": "mean of $p$ / $\\sqrt{m/|\\mu|}$",
+        },
+    )
 
 
 def reversal(results, body, m1, nu, delta):
-    """A start 0.5 below F1 (phi2 = 0) in Euler's equations: |omega| -> infinity along the negative x-axis. A start
-    0.05 above F1 in the plane: on F at tau = 60."""
+    """A start 0.5 below F1 (phi2 = 0) in Euler's equations: |omega| -> infinity along the negative x-axis. A
+    start 0.05 above F1 in the plane: on F at tau = 60."""
     F0 = float(se.limit_cycle_p1(np.zeros(1), m1, nu)[0])
     L = se.LargestAxis.with_plane_parameters(body, m1, -nu, delta)
     w0 = L.from_plane(0.0, -F0 - 0.5)
-    sol = solve(Problem(se.euler_largest, w0, (0.0, 100.0 / L.time_scale), L.euler_parameters()), "dop853",
-                rtol=1e-12, atol=1e-14, bound=portrait.BLOW_UP_BOUND)
+    sol = solve(
+        Problem(se.euler_largest, w0, (0.0, 100.0 / L.time_scale), L.euler_parameters()),
+        "dop853",
+        rtol=1e-12,
+        atol=1e-14,
+        bound=portrait.BLOW_UP_BOUND,
+    )
     escaped = sol.status == "blow-up"
-    results.number("below_F1_escapes", int(escaped), "1", note="1 if Euler's equations from 0.5 below F1 leave "
-                   "every bound (|ω| > 10⁸) in finite time")
-    results.number("below_F1_direction", float(sol.y[0] / np.linalg.norm(sol.y)), "1", note="p/|ω| where it left "
-                   "the bound: −1 is the negative x-axis")
+    results.number(
+        "below_F1_escapes",
+        int(escaped),
+        "1",
+        note="1 if Euler's equations from 0.5 below F1 leave every bound (|ω| > 10⁸) in finite time",
+    )
+    results.number(
+        "below_F1_direction",
+        float(sol.y[0] / np.linalg.norm(sol.y)),
+        "1",
+        note="p/|ω| where it left the bound: −1 is the negative x-axis",
+    )
     results.number("below_F1_escape_tau", float(sol.t) * L.time_scale, "τ", note="when |ω| passed 10⁸ (τ)")
-    sol = solve(Problem(se.plane_largest, [0.0, -F0 + 0.05], (0.0, 60.0), [m1, -nu, 1.0]), "dop853", rtol=1e-12,
-                atol=1e-14)
+    sol = solve(
+        Problem(se.plane_largest, [0.0, -F0 + 0.05], (0.0, 60.0), [m1, -nu, 1.0]),
+        "dop853",
+        rtol=1e-12,
+        atol=1e-14,
+    )
     on_F = float(se.limit_cycle_p1(np.array([sol.y[0]]), m1, nu)[0])
-    results.number("above_F1_distance_tau60", abs(float(sol.y[1]) - on_F), "1", note="|p1 − F(φ2)| at τ = 60 "
-                   "from 0.05 above F1 at φ2 = 0")
+    results.number(
+        "above_F1_distance_tau60",
+        abs(float(sol.y[1]) - on_F),
+        "1",
+        note="|p1 − F(φ2)| at τ = 60 from 0.05 above F1 at φ2 = 0",
+    )
 
 
 def c1_zero_start(results, m1, nu):
     """Lee (2.29): from phi2 = -sigma3, p1 = sqrt(m1/nu) C1 = 0, and p1 returns after one turn of phi2."""
     sigma3 = float(np.arctan(-1.0 / (2.0 * nu)))
     start = float(np.sqrt(m1 / nu))
-    sol = solve(Problem(se.plane_by_phase, [0.0, start], (-sigma3, -sigma3 + 2 * np.pi), [m1, -nu]), "dop853",
-                rtol=1e-13, atol=1e-15)
-    results.number("c1_zero_start_closure", float(sol.y[1]) - start, "1", note="p1 after one turn of φ2 minus its "
-                   "start √(m1/ν) at φ2 = −σ3 (C1 = 0), integrated with φ2 as the clock")
+    sol = solve(
+        Problem(se.plane_by_phase, [0.0, start], (-sigma3, -sigma3 + 2 * np.pi), [m1, -nu]),
+        "dop853",
+        rtol=1e-13,
+        atol=1e-15,
+    )
+    results.number(
+        "c1_zero_start_closure",
+        float(sol.y[1]) - start,
+        "1",
+        note="p1 after one turn of φ2 minus its "
+        "start √(m1/ν) at φ2 = −σ3 (C1 = 0), integrated with φ2 as the clock",
+    )
 
 
 def axis_stable(results, body, m1, nu, delta):
-    """Lee (2.37)-(2.38): the torque fixed, m1(delta) grows without bound as delta -> 0; it passes 1 at delta_1. From
-    a start a small angle off +x (delta = 0.01), omega stays near +x."""
+    """Lee (2.37)-(2.38): the torque fixed, m1(delta) grows without bound as delta -> 0; it passes 1 at
+    delta_1. From a start a small angle off +x (delta = 0.01), omega stays near +x."""
     from scipy.optimize import brentq
 
     L = se.LargestAxis.with_plane_parameters(body, m1, -nu, delta)
     m, mu = L.m, L.mu
     d1 = brentq(lambda d: se.LargestAxis(L.body, m, mu, d).m1 - 1.0, 1e-3, 1e3, xtol=1e-15, rtol=1e-15)
-    results.number("delta_m1_one", d1, "1", note="δ where m1(δ) of (2.9) = 1 for this scene's torque (brentq); "
-                   "m1 > 1 below")
+    results.number(
+        "delta_m1_one",
+        d1,
+        "1",
+        note="δ where m1(δ) of (2.9) = 1 for this scene's torque (brentq); m1 > 1 below",
+    )
     P = np.sqrt(m / abs(mu))
     d = 0.01
     w0 = np.array([P, d * np.sqrt(body.b), 0.0])
     angle0 = float(np.arctan2(np.hypot(w0[1], w0[2]), w0[0]))
     t = np.linspace(0.0, 200.0, 20001)
-    sol = solve(Problem(se.euler_largest, w0, (0.0, 200.0), L.euler_parameters()), "dop853", rtol=1e-12,
-                atol=1e-14, t_eval=t)
+    sol = solve(
+        Problem(se.euler_largest, w0, (0.0, 200.0), L.euler_parameters()),
+        "dop853",
+        rtol=1e-12,
+        atol=1e-14,
+        t_eval=t,
+    )
     y = sol.y_eval
     angle = np.arctan2(np.hypot(y[:, 1], y[:, 2]), y[:, 0])
-    results.number("axis_start_angle", angle0, "rad", note="the start's angle from +x: p = √(m/|μ|), δ = 0.01")
-    results.number("axis_angle_ratio", float(np.max(angle)) / angle0, "1", note="largest angle from +x over "
-                   "t ≤ 200 over the start's")
+    results.number(
+        "axis_start_angle", angle0, "rad", note="the start's angle from +x: p = √(m/|μ|), δ = 0.01"
+    )
+    results.number(
+        "axis_angle_ratio",
+        float(np.max(angle)) / angle0,
+        "1",
+        note="largest angle from +x over t ≤ 200 over the start's",
+    )
 
 
-# --- Lee §2.6: other torques that reduce to the same planes ---------------------------------------------------
+# --- Lee §2.6: other torques that reduce to the same planes -------------------------------------------------
 def _overlay(rhs, physical, L, plane, starts, span=6.0):
     """Euler's equations (rhs, physical parameters) from the plane's starts mapped by L, against the plane
-    (m1, mu1); returns the largest deviation in (phi2, p1) and the largest spread of the plane's integral along
-    the mapped integrations."""
+    (m1, mu1); returns the largest deviation in (phi2, p1) and the largest spread of the plane's integral
+    along the mapped integrations."""
     worst, spread = 0.0, 0.0
     tau = np.linspace(0.0, span, 121)
     for phi, p1 in starts:
-        full = solve(Problem(rhs, L.from_plane(phi, p1), (0.0, span / L.time_scale), physical), "dop853",
-                     rtol=1e-13, atol=1e-15, t_eval=tau / L.time_scale, bound=portrait.BLOW_UP_BOUND)
-        flat = solve(Problem(se.plane_largest, [phi, p1], (0.0, span), [*plane, 1.0]), "dop853", rtol=1e-13,
-                     atol=1e-15, t_eval=tau, bound=portrait.BLOW_UP_BOUND)
+        full = solve(
+            Problem(rhs, L.from_plane(phi, p1), (0.0, span / L.time_scale), physical),
+            "dop853",
+            rtol=1e-13,
+            atol=1e-15,
+            t_eval=tau / L.time_scale,
+            bound=portrait.BLOW_UP_BOUND,
+        )
+        flat = solve(
+            Problem(se.plane_largest, [phi, p1], (0.0, span), [*plane, 1.0]),
+            "dop853",
+            rtol=1e-13,
+            atol=1e-15,
+            t_eval=tau,
+            bound=portrait.BLOW_UP_BOUND,
+        )
         mapped = L.to_plane(full.y_eval, phi2_start=phi)
         worst = max(worst, float(np.max(np.abs(mapped - flat.y_eval))))
         spread = max(spread, se.invariant_spread(mapped, *plane))
@@ -294,8 +463,13 @@ def torque_yz(results, body, m1, delta, mu_per_moment=-0.3):
     deviation, spread = _overlay(se.euler_largest_yz, L.euler_parameters(), L, (L.m1, 0.0), OTHER_STARTS)
     results.number("yz_torque_mu0", mu_per_moment, "1", note="μ0/A of the torque M + μ0(q² + r²) along x")
     results.number("yz_torque_m1", L.m1, "1", note="m1 of (2.9) for that torque: the scene's plane")
-    results.number("yz_torque_overlay", deviation, "1", note="Euler's equations with M + μ0(q² + r²), mapped, "
-                   "against (2.10) with μ1 = 0 (largest deviation in (φ2, p1))")
+    results.number(
+        "yz_torque_overlay",
+        deviation,
+        "1",
+        note="Euler's equations with M + μ0(q² + r²), mapped, "
+        "against (2.10) with μ1 = 0 (largest deviation in (φ2, p1))",
+    )
     results.number("yz_torque_energy_spread", spread, "1", note="E along them, relative spread")
 
 
@@ -304,18 +478,28 @@ def torque_grammel(results, body, m1, nu, delta):
     bc = np.sqrt(body.b * body.c)
     mu = 2.0 * bc * nu
     m = 0.5 * m1 * delta**2 * body.a * bc
-    L = se.LargestAxis(body, m, 0.0, delta)          # sigma1 = 0, R = a sqrt(bc): the map Grammel's torque needs
-    deviation, spread = _overlay(se.euler_grammel, np.array([body.a, body.b, body.c, m, mu]), L, (m1, -nu),
-                                 OTHER_STARTS)
+    L = se.LargestAxis(body, m, 0.0, delta)  # sigma1 = 0, R = a sqrt(bc): the map Grammel's torque needs
+    deviation, spread = _overlay(
+        se.euler_grammel, np.array([body.a, body.b, body.c, m, mu]), L, (m1, -nu), OTHER_STARTS
+    )
     results.number("grammel_mu0", mu, "1", note="μ0/A of Grammel's torque M − μ0p² giving this ν")
-    results.number("grammel_overlay", deviation, "1", note="Euler's equations with Grammel's torque, mapped with "
-                   "σ1 = 0, against (2.25) (largest deviation in (φ2, p1))")
+    results.number(
+        "grammel_overlay",
+        deviation,
+        "1",
+        note="Euler's equations with Grammel's torque, mapped with "
+        "σ1 = 0, against (2.25) (largest deviation in (φ2, p1))",
+    )
     results.number("grammel_c1_spread", spread, "1", note="C1 along them, relative spread")
     F0 = float(se.limit_cycle_p1(np.zeros(1), m1, nu)[0])
     w0 = L.from_plane(0.0, F0 + 1.0)
     T = 60.0 / L.time_scale
-    sol = solve(Problem(se.euler_grammel, w0, (0.0, T), np.array([body.a, body.b, body.c, m, mu])), "dop853",
-                rtol=1e-12, atol=1e-14)
+    sol = solve(
+        Problem(se.euler_grammel, w0, (0.0, T), np.array([body.a, body.b, body.c, m, mu])),
+        "dop853",
+        rtol=1e-12,
+        atol=1e-14,
+    )
     end = L.to_plane(sol.y)[0]
     gap = abs(end[1] - float(se.limit_cycle_p1(np.array([end[0]]), m1, nu)[0]))
     results.number("grammel_to_F", gap, "1", note="|p1 − F| at τ = 60 from 1 above F, Grammel's torque")

@@ -9,10 +9,9 @@ import numpy as np
 import pandas as pd
 from matplotlib.lines import Line2D
 
-from ...solvers.workprecision import legend_below
-
 from ...solvers.ode import Events, Problem, solve
 from ...solvers.runge_kutta import rhs_function
+from ...solvers.workprecision import legend_below
 
 RTOL = 1e-12
 BLOW_UP_BOUND = 1e8
@@ -26,8 +25,13 @@ def velocity_zero(t, y, p, out):
 
 def period(rhs, params, start, span=80.0):
     """tau between two downward crossings of y[1] through zero: the period of a closed orbit."""
-    sol = solve(Problem(rhs, start, (0.0, span), params), "dop853", rtol=1e-13, atol=1e-15,
-                events=Events(velocity_zero, 1, (-1,)))
+    sol = solve(
+        Problem(rhs, start, (0.0, span), params),
+        "dop853",
+        rtol=1e-13,
+        atol=1e-15,
+        events=Events(velocity_zero, 1, (-1,)),
+    )
     return float(sol.event_t[1] - sol.event_t[0])
 
 
@@ -36,33 +40,64 @@ def series_check(results, measured, series, amplitudes, caption):
     rows = []
     for eta in amplitudes:
         m, s_ = measured(eta), series(eta)
-        rows.append({"eta": eta, "period_measured": m, "period_series": s_, "relative_error": abs(s_ / m - 1.0)})
+        rows.append(
+            {"eta": eta, "period_measured": m, "period_series": s_, "relative_error": abs(s_ / m - 1.0)}
+        )
     frame = pd.DataFrame(rows)
-    results.table("series", frame, caption, headers={"eta": "amplitude $\\eta$",
-                                                     "period_measured": "period, integrated ($\\tau$)",
-                                                     "period_series": "period, series ($\\tau$)",
-                                                     "relative_error": "relative error"})
+    results.table(
+        "series",
+        frame,
+        caption,
+        headers={
+            "eta": "amplitude $\\eta$",
+            "period_measured": "period, integrated ($\\tau$)",
+            "period_series": "period, series ($\\tau$)",
+            "relative_error": "relative error",
+        },
+    )
     slope = float(np.polyfit(np.log(frame.eta), np.log(frame.relative_error), 1)[0])
-    results.number("series_error_slope", slope, "1", note="log-log slope of the series' error against η; 4 expected")
+    results.number(
+        "series_error_slope", slope, "1", note="log-log slope of the series' error against η; 4 expected"
+    )
     results.number("period_tau", measured(0.1), "τ", note="about the center, η = 0.1")
-    results.hard_case("series_order", "The period series' error falls like $\\eta^4$: $|s - 4|$ for its fitted "
-                      "log-log slope $s$ against the amplitude $\\eta$", abs(slope - 4.0), 0.5)
+    results.hard_case(
+        "series_order",
+        "The period series' error falls like $\\eta^4$: $|s - 4|$ for its fitted "
+        "log-log slope $s$ against the amplitude $\\eta$",
+        abs(slope - 4.0),
+        0.5,
+    )
     return frame
 
 
 def series_figure(ax, frame, slope, ncol=1):
-    """A period series' relative error against the amplitude (log-log), the fitted slope in the legend, and the
-    dashed reference slope eta^4 through the points' centre, moved down by a factor 3 so both stay visible."""
+    """A period series' relative error against the amplitude (log-log), the fitted slope in the legend, and
+    the dashed reference slope eta^4 through the points' centre, moved down by a factor 3 so both stay
+    visible."""
     from matplotlib.ticker import FixedLocator, NullFormatter, NullLocator
+
     from ...formatting import format_number, shortest
+
     eta, err = frame.eta.to_numpy(), frame.relative_error.to_numpy()
-    ax.loglog(eta, err, "o-", color="k", ms=3.5, label=f"series against integration (fitted slope "
-              f"{format_number(slope, 3)})")
+    ax.loglog(
+        eta,
+        err,
+        "o-",
+        color="k",
+        ms=3.5,
+        label=f"series against integration (fitted slope {format_number(slope, 3)})",
+    )
     centre_eta, centre_err = np.exp(np.mean(np.log(eta))), np.exp(np.mean(np.log(err)))
     line = np.geomspace(eta.min(), eta.max(), 20)
-    ax.loglog(line, centre_err / 3.0 * (line / centre_eta) ** 4, "--", color="#D55E00", lw=1.0,
-              label="reference slope $\\eta^4$")
-    ax.xaxis.set_major_locator(FixedLocator(sorted(eta)))        # less than a decade: the amplitudes themselves
+    ax.loglog(
+        line,
+        centre_err / 3.0 * (line / centre_eta) ** 4,
+        "--",
+        color="#D55E00",
+        lw=1.0,
+        label="reference slope $\\eta^4$",
+    )
+    ax.xaxis.set_major_locator(FixedLocator(sorted(eta)))  # less than a decade: the amplitudes themselves
     ax.xaxis.set_major_formatter(lambda x, _: shortest(float(x)))
     ax.xaxis.set_minor_locator(NullLocator())
     ax.xaxis.set_minor_formatter(NullFormatter())
@@ -77,6 +112,7 @@ COUNTS = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}
 def param_text(value) -> str:
     """A parameter as the scene gave it (0.3), or to four figures when it was computed (0.4091 for nu_c)."""
     from ...formatting import format_number, shortest
+
     text = shortest(float(value))
     return text if len(re.sub(r"\D", "", text.split(" ")[0])) <= 6 else format_number(float(value), 4)
 
@@ -87,14 +123,20 @@ def trajectories(rhs, parameters, starts, tau_max, samples=600):
     t = np.linspace(0.0, tau_max, samples)
     for start in starts:
         for direction in (1.0, -1.0):
-            sol = solve(Problem(rhs, start, (0.0, tau_max), parameters(direction)), "dop853", rtol=RTOL,
-                        atol=RTOL * 1e-2, t_eval=t, bound=BLOW_UP_BOUND)
+            sol = solve(
+                Problem(rhs, start, (0.0, tau_max), parameters(direction)),
+                "dop853",
+                rtol=RTOL,
+                atol=RTOL * 1e-2,
+                t_eval=t,
+                bound=BLOW_UP_BOUND,
+            )
             out.append(sol.y_eval[np.all(np.isfinite(sol.y_eval), axis=1)])
     return out
 
 
-LIMIT_CYCLE_COLOUR = "#D55E00"      # F and F1 (vermillion), in the portrait and on the cylinder
-EULER_COLOUR = "#0072B2"            # Euler's equations mapped into the plane (blue dots)
+LIMIT_CYCLE_COLOUR = "#D55E00"  # F and F1 (vermillion), in the portrait and on the cylinder
+EULER_COLOUR = "#0072B2"  # Euler's equations mapped into the plane (blue dots)
 
 
 POINT_STYLE = {"saddle": ("x", "saddle"), "center": ("o", "center"), "degenerate": ("^", "degenerate point")}
@@ -104,14 +146,26 @@ def mark_points(ax, points, size=6):
     seen = set()
     for pt in points:
         marker, label = POINT_STYLE[pt["type"]]
-        ax.plot(pt["phi2"], 0.0, marker, color="k", ms=size, mew=1.2 * size / 6, mfc="white" if marker == "o" else None,
-                label=None if label in seen else label, zorder=5, clip_on=False)   # whole at the window's edge
+        # whole at the window's edge
+        ax.plot(
+            pt["phi2"],
+            0.0,
+            marker,
+            color="k",
+            ms=size,
+            mew=1.2 * size / 6,
+            mfc="white" if marker == "o" else None,
+            label=None if label in seen else label,
+            zorder=5,
+            clip_on=False,
+        )
         seen.add(label)
 
 
 def pi_ticks(axis, low, high):
     """Ticks at multiples of pi (of 2 pi on a long axis), labelled -2π, −π, 0, π, 2π."""
     from matplotlib.ticker import FuncFormatter, MultipleLocator
+
     step = 1 if (high - low) / np.pi <= 8 else 2
 
     def label(x, _):
@@ -123,8 +177,9 @@ def pi_ticks(axis, low, high):
 
 
 def finish(ax, drawing, y_label, angle=False):
-    """Draw a portrait from its recorded elements, with its window, labels and legend. angle: phi2 is an angle (the
-    largest axis' plane), with ticks at multiples of pi; otherwise a logarithm (the middle axis'), no unit."""
+    """Draw a portrait from its recorded elements, with its window, labels and legend. angle: phi2 is an angle
+    (the largest axis' plane), with ticks at multiples of pi; otherwise a logarithm (the middle axis'), no
+    unit."""
     draw(ax, drawing.frame(), drawing.y_name)
     lo, hi = ax.get_xlim()
     axes_labels(ax, y_label, angle, (lo, hi))
@@ -140,10 +195,10 @@ def axes_labels(ax, y_label, angle, phi2_range, x=True, y=True):
         ax.set_ylabel(y_label)
 
 
-# --- what a portrait draws, as data ---------------------------------------------------------------------------
-# A portrait is drawn from a tidy table (one row per plotted point) so that the study's gallery can redraw it as a
-# panel of a grid: element, curve (one line per curve number), phi2 and the plane's velocity (p1 or q1).
-ELEMENTS = {      # element: (plot keywords, legend label); the singular points are drawn by mark_points
+# --- what a portrait draws, as data -------------------------------------------------------------------------
+# A portrait is drawn from a tidy table (one row per plotted point) so that the study's gallery can redraw it
+# as a panel of a grid: element, curve (one line per curve number), phi2 and the plane's velocity (p1 or q1).
+ELEMENTS = {  # element: (plot keywords, legend label); the singular points are drawn by mark_points
     "trajectory": ({"color": "0.6", "lw": 0.55}, "trajectories of the plane"),
     "separatrix": ({"color": "k", "lw": 1.1}, "separatrices (closed form)"),
     "curve_C0": ({"color": "k", "lw": 1.1}, "$C = 0$ (closed form)"),
@@ -152,16 +207,19 @@ ELEMENTS = {      # element: (plot keywords, legend label); the singular points 
     "rest_line": ({"color": LIMIT_CYCLE_COLOUR, "lw": 1.6}, "line of rest points"),
     "euler": ({"color": EULER_COLOUR, "ls": "", "marker": ".", "ms": 3}, "Euler's equations, mapped"),
     "separatrix_T": ({"color": "#009E73", "lw": 1.3}, "$T_1$, $T_2$ (integrated from the saddles)"),
-    "crossing": ({"color": "k", "ls": "", "marker": "s", "ms": 3.5, "mfc": "white"}, "$f_1$, $f_2$, $g_1$, $g_2$ "
-                 "(Lee's Figure 2.12)"),
+    "crossing": (
+        {"color": "k", "ls": "", "marker": "s", "ms": 3.5, "mfc": "white"},
+        "$f_1$, $f_2$, $g_1$, $g_2$ (Lee's Figure 2.12)",
+    ),
 }
-CROSSING_NAMES = {1: "$f_1$", 2: "$f_2$", 3: "$g_1$", 4: "$g_2$"}      # the curve numbers of the crossings
+CROSSING_NAMES = {1: "$f_1$", 2: "$f_2$", 3: "$g_1$", 4: "$g_2$"}  # the curve numbers of the crossings
 POINT_TYPES = ("saddle", "center", "degenerate")
-DIGITS = 5                    # decimals kept in the table: far below what a printed portrait resolves
+DIGITS = 5  # decimals kept in the table: far below what a printed portrait resolves
 
 
 class Drawing:
-    """The elements of one portrait, recorded as they are computed; `frame()` is the table, `draw()` the figure."""
+    """The elements of one portrait, recorded as they are computed; `frame()` is the table, `draw()` the
+    figure."""
 
     def __init__(self, y_name: str, reach: tuple):
         self.y_name, self.reach, self.parts, self.curves = y_name, reach, [], 0
@@ -179,19 +237,38 @@ class Drawing:
             if keep[run[0]] and (len(run) > 1 or element == "euler"):
                 if element != "euler":
                     run = run[_simplified(phi2[run] / (hi - lo), y[run] / (2 * y_max), SIMPLIFY)]
-                self.parts.append(pd.DataFrame({"element": element, "curve": self.curves,
-                                                "phi2": phi2[run].round(DIGITS), self.y_name: y[run].round(DIGITS)}))
+                self.parts.append(
+                    pd.DataFrame(
+                        {
+                            "element": element,
+                            "curve": self.curves,
+                            "phi2": phi2[run].round(DIGITS),
+                            self.y_name: y[run].round(DIGITS),
+                        }
+                    )
+                )
                 self.curves += 1
 
     def points(self, points):
         for pt in points:
-            self.parts.append(pd.DataFrame({"element": [pt["type"]], "curve": [self.curves],
-                                            "phi2": [round(float(pt["phi2"]), 12)], self.y_name: [0.0]}))
+            self.parts.append(
+                pd.DataFrame(
+                    {
+                        "element": [pt["type"]],
+                        "curve": [self.curves],
+                        "phi2": [round(float(pt["phi2"]), 12)],
+                        self.y_name: [0.0],
+                    }
+                )
+            )
             self.curves += 1
 
     def window(self, lo, hi, y_max):
-        self.parts.append(pd.DataFrame({"element": "window", "curve": self.curves, "phi2": [lo, hi],
-                                        self.y_name: [-y_max, y_max]}))
+        self.parts.append(
+            pd.DataFrame(
+                {"element": "window", "curve": self.curves, "phi2": [lo, hi], self.y_name: [-y_max, y_max]}
+            )
+        )
         self.curves += 1
 
     def elements(self):
@@ -206,7 +283,8 @@ class Drawing:
 
 def _simplified(x, y, tolerance):
     """Indices of the points of a polyline that keep it within `tolerance` of itself (Ramer-Douglas-Peucker):
-    a curve sampled finely enough for its sharpest bend needs far fewer points along its straight stretches."""
+    a curve sampled finely enough for its sharpest bend needs far fewer points along its straight
+    stretches."""
     keep = np.zeros(len(x), bool)
     keep[[0, -1]] = True
     stack = [(0, len(x) - 1)]
@@ -215,7 +293,7 @@ def _simplified(x, y, tolerance):
         if last - first < 2:
             continue
         dx, dy = x[last] - x[first], y[last] - y[first]
-        xs, ys = x[first + 1:last] - x[first], y[first + 1:last] - y[first]
+        xs, ys = x[first + 1 : last] - x[first], y[first + 1 : last] - y[first]
         norm = np.hypot(dx, dy)
         distance = np.abs(dx * ys - dy * xs) / norm if norm > 0 else np.hypot(xs, ys)
         worst = int(np.argmax(distance))
@@ -226,8 +304,14 @@ def _simplified(x, y, tolerance):
     return np.nonzero(keep)[0]
 
 
-SIMPLIFY = 2e-4                 # of the reach's width and height: about a hundredth of a millimetre in print
-TABLE_HEADERS = {"element": "what is drawn", "curve": "curve", "phi2": "$\\varphi_2$", "p1": "$p_1$", "q1": "$q_1$"}
+SIMPLIFY = 2e-4  # of the reach's width and height: about a hundredth of a millimetre in print
+TABLE_HEADERS = {
+    "element": "what is drawn",
+    "curve": "curve",
+    "phi2": "$\\varphi_2$",
+    "p1": "$p_1$",
+    "q1": "$q_1$",
+}
 
 
 def window_of(frame, y_name):
@@ -236,8 +320,8 @@ def window_of(frame, y_name):
 
 
 def draw(ax, frame, y_name, window=None, small=False):
-    """A portrait from its table: every element in its style, the singular points by type, the window (the table's
-    own, or the one given). small: thinner lines and smaller markers, for a panel of a grid."""
+    """A portrait from its table: every element in its style, the singular points by type, the window (the
+    table's own, or the one given). small: thinner lines and smaller markers, for a panel of a grid."""
     shrink = 0.75 if small else 1.0
     for element, (style, label) in ELEMENTS.items():
         rows = frame[frame.element == element]
@@ -247,14 +331,23 @@ def draw(ax, frame, y_name, window=None, small=False):
             kw["lw"] = kw.get("lw", 1.0) * shrink
             if "ms" in kw:
                 kw["ms"] = kw["ms"] * shrink
-                curve = curve.iloc[::2] if small else curve                  # dots: half of them suffice in a panel
-            ax.plot(curve.phi2, curve[y_name], label=label if first and element != "trajectory" else None, **kw)
+                curve = curve.iloc[::2] if small else curve  # dots: half of them suffice in a panel
+            ax.plot(
+                curve.phi2, curve[y_name], label=label if first and element != "trajectory" else None, **kw
+            )
             first = False
             if element == "crossing":
-                ax.annotate(CROSSING_NAMES[int(curve.curve.iloc[0])], (curve.phi2.iloc[0], curve[y_name].iloc[0]),
-                            xytext=(-11, 1) if curve.curve.iloc[0] <= 2 else (3, 2), textcoords="offset points",
-                            fontsize=7 if small else 8)            # f1, f2 left of C's vertical, g1, g2 right
-    points = [{"phi2": row.phi2, "type": row.element} for row in frame[frame.element.isin(POINT_TYPES)].itertuples()]
+                # f1, f2 left of C's vertical, g1, g2 right
+                ax.annotate(
+                    CROSSING_NAMES[int(curve.curve.iloc[0])],
+                    (curve.phi2.iloc[0], curve[y_name].iloc[0]),
+                    xytext=(-11, 1) if curve.curve.iloc[0] <= 2 else (3, 2),
+                    textcoords="offset points",
+                    fontsize=7 if small else 8,
+                )
+    points = [
+        {"phi2": row.phi2, "type": row.element} for row in frame[frame.element.isin(POINT_TYPES)].itertuples()
+    ]
     mark_points(ax, points, size=4.5 if small else 6)
     lo, hi, y_max = window or window_of(frame, y_name)
     ax.set_xlim(lo, hi)
@@ -273,7 +366,17 @@ def legend_entries(elements, small=False):
             labels.append(label)
     for kind, (marker, label) in POINT_STYLE.items():
         if kind in elements:
-            handles.append(Line2D([], [], ls="", marker=marker, color="k", ms=6 * shrink, mew=1.2,
-                                  mfc="white" if marker == "o" else None))
+            handles.append(
+                Line2D(
+                    [],
+                    [],
+                    ls="",
+                    marker=marker,
+                    color="k",
+                    ms=6 * shrink,
+                    mew=1.2,
+                    mfc="white" if marker == "o" else None,
+                )
+            )
             labels.append(label)
     return handles, labels

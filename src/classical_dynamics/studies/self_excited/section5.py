@@ -1,20 +1,21 @@
-"""Lee §5, checks beyond the constant-torque quadratures of viscous.py, each switched on by a scene's `analysis`:
+"""Lee §5, checks beyond the constant-torque quadratures of viscous.py, each switched on by a scene's
+`analysis`:
 
-  time_dependent_torque  (5.3)-(5.15): a torque fixed in direction whose modulus changes, F_i = m_i F(t), with
-                         F = 1 + sin(2t)/2 and F = 1 - e^{-t}; Lee's quadratures (5.5), (5.10), their fixed-direction
-                         form (5.11)-(5.12) and the frictionless (5.13)-(5.15), by scipy quadrature, against
-                         Euler's equations integrated; Theorem 1's bounds for it.
-  case_one               Case I ((5.18), Figures 5.1, 5.2): the scene's body, medium and torque with r0 = 0, with
-                         and without friction, several starts.
-  case_four              Case IV ((5.31)): the same medium and torque on a body with C = A (h = 0).
-  spiral                 (5.30), Figure 5.5: a start in the plane r = m3/mu spirals into the limit at the rates
-                         nu and g1 = h m3/mu.
-  singular_curve         (5.50)-(5.52), Figure 5.3: without friction and m3 = 0, the curve of permanent rotations
-                         q r = -m1/h, p r = m2/h, a hyperbola q'r' = k' in the plane q/p = -m1/m2.
-  reduction_formulas     (5.32)-(5.37): Lee's explicit reduction of si, ci of order w = K + w' to Si, Ci of order
-                         w' (0 < Re w' < 1), at 40 digits, against the incomplete gamma function; A, B of (5.37)
-                         against mpmath's quadrature.
-  re_w                   Re w = 1 + nu/mu = 1 + mu1 C/(mu0 A) (after (5.29)) over symmetric bodies.
+time_dependent_torque  (5.3)-(5.15): a torque fixed in direction whose modulus changes, F_i = m_i F(t), with
+                       F = 1 + sin(2t)/2 and F = 1 - e^{-t}; Lee's quadratures (5.5), (5.10), their
+                       fixed-direction form (5.11)-(5.12) and the frictionless (5.13)-(5.15), by scipy
+                       quadrature, against Euler's equations integrated; Theorem 1's bounds for it.
+case_one               Case I ((5.18), Figures 5.1, 5.2): the scene's body, medium and torque with r0 = 0,
+                       with and without friction, several starts.
+case_four              Case IV ((5.31)): the same medium and torque on a body with C = A (h = 0).
+spiral                 (5.30), Figure 5.5: a start in the plane r = m3/mu spirals into the limit at the rates
+                       nu and g1 = h m3/mu.
+singular_curve         (5.50)-(5.52), Figure 5.3: without friction and m3 = 0, the curve of permanent
+                       rotations q r = -m1/h, p r = m2/h, a hyperbola q'r' = k' in the plane q/p = -m1/m2.
+reduction_formulas     (5.32)-(5.37): Lee's explicit reduction of si, ci of order w = K + w' to Si, Ci of
+                       order w' (0 < Re w' < 1), at 40 digits, against the incomplete gamma function; A, B of
+                       (5.37) against mpmath's quadrature.
+re_w                   Re w = 1 + nu/mu = 1 + mu1 C/(mu0 A) (after (5.29)) over symmetric bodies.
 """
 
 from __future__ import annotations
@@ -32,13 +33,18 @@ from ...solvers.ode import Problem, solve
 RTOL, ATOL = 1e-13, 1e-15
 MODULATIONS = ((0, 0.5, 2.0, "$F = 1 + \\tfrac12\\sin 2t$"), (1, 1.0, 1.0, "$F = 1 - e^{-t}$"))
 TD_TIMES = np.linspace(0.0, 30.0, 7)
-CASE_T = 80.0          # Case I and IV with friction: long enough that e^{-nu t} is below 10^-10
+CASE_T = 80.0  # Case I and IV with friction: long enough that e^{-nu t} is below 10^-10
 
 
 def _euler(V: ViscousMedium, omega0, t_eval, rhs=viscous_symmetric, extra=()):
     params = np.concatenate([V.parameters(), np.asarray(extra, float)])
-    sol = solve(Problem(rhs, list(omega0), (0.0, float(t_eval[-1])), params), "dop853", rtol=RTOL, atol=ATOL,
-                t_eval=t_eval)
+    sol = solve(
+        Problem(rhs, list(omega0), (0.0, float(t_eval[-1])), params),
+        "dop853",
+        rtol=RTOL,
+        atol=ATOL,
+        t_eval=t_eval,
+    )
     return sol.y_eval
 
 
@@ -47,8 +53,9 @@ _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(20)
 
 
 def _gauss(f, s: float) -> float:
-    """int_0^s f by composite 20-point Gauss-Legendre on panels of length at most 1/2 (f smooth, vectorized; the
-    integrands of xi vary on the scale 1/2 at most, so the rule is exact to rounding: the tests compare it with quad)."""
+    """int_0^s f by composite 20-point Gauss-Legendre on panels of length at most 1/2 (f smooth, vectorized;
+    the integrands of xi vary on the scale 1/2 at most, so the rule is exact to rounding: the tests compare it
+    with quad)."""
     n = max(1, int(np.ceil(2.0 * s)))
     edges = np.linspace(0.0, s, n + 1)
     half = 0.5 * (edges[1:] - edges[:-1])
@@ -57,20 +64,22 @@ def _gauss(f, s: float) -> float:
 
 
 def _quadratures(V: ViscousMedium, F, t: float) -> dict:
-    """omega(t) by Lee's quadratures for F_i = m_i F(s): r by (5.5) (= (5.12)), xi by (5.9) (or (5.13)), p, q by
-    (5.10) (the general form, with F1 = m1 F, F2 = m2 F) and by (5.11) (the fixed-direction form, delta1 =
-    sqrt(m1^2 + m2^2), sigma1 the angle with sin sigma1 = m1/delta1, cos sigma1 = m2/delta1). scipy quad, relative
-    1e-13; the inner integrals of xi are swapped (Fubini) into one, int_0^s R = int_0^s m3 F(u)(1 - e^{-mu(s-u)})/mu du,
-    taken by composite Gauss-Legendre (_gauss), since it is evaluated at every node of the outer integral.
-    Also p, q of (5.11) with sigma1 = arctan(m1/m2), the principal value."""
+    """omega(t) by Lee's quadratures for F_i = m_i F(s): r by (5.5) (= (5.12)), xi by (5.9) (or (5.13)), p, q
+    by (5.10) (the general form, with F1 = m1 F, F2 = m2 F) and by (5.11) (the fixed-direction form, delta1 =
+    sqrt(m1^2 + m2^2), sigma1 the angle with sin sigma1 = m1/delta1, cos sigma1 = m2/delta1). scipy quad,
+    relative 1e-13; the inner integrals of xi are swapped (Fubini) into one, int_0^s R = int_0^s m3 F(u)(1 -
+    e^{-mu(s-u)})/mu du, taken by composite Gauss-Legendre (_gauss), since it is evaluated at every node of
+    the outer integral. Also p, q of (5.11) with sigma1 = arctan(m1/m2), the principal value."""
     h, nu, mu = V.h, V.nu, V.mu
     (m1, m2, m3), (p0, q0, r0) = V.m, V.omega0
     opts = dict(epsabs=1e-15, epsrel=1e-13, limit=200)
 
-    def R(s):                                         # (5.5): int_0^s e^{-mu(s-u)} F3(u) du
-        return integrate.quad(lambda u: np.exp(-mu * (s - u)) * m3 * F(u), 0.0, s, **opts)[0] if s > 0 else 0.0
+    def R(s):  # (5.5): int_0^s e^{-mu(s-u)} F3(u) du
+        return (
+            integrate.quad(lambda u: np.exp(-mu * (s - u)) * m3 * F(u), 0.0, s, **opts)[0] if s > 0 else 0.0
+        )
 
-    def xi(s):                                        # (5.9), (5.13)
+    def xi(s):  # (5.9), (5.13)
         if s <= 0.0:
             return 0.0
         if mu > 0.0:
@@ -86,16 +95,32 @@ def _quadratures(V: ViscousMedium, F, t: float) -> dict:
     def integrand(s):
         d = xi(s) - xt
         e, f = np.exp(-nu * (t - s)), F(s)
-        return np.array([e * f * (m1 * np.cos(d) - m2 * np.sin(d)), e * f * (m1 * np.sin(d) + m2 * np.cos(d)),
-                         -delta1 * e * f * np.sin(d - sigma1), delta1 * e * f * np.cos(d - sigma1),
-                         -delta1 * e * f * np.sin(d - sigma1_principal), delta1 * e * f * np.cos(d - sigma1_principal)])
+        return np.array(
+            [
+                e * f * (m1 * np.cos(d) - m2 * np.sin(d)),
+                e * f * (m1 * np.sin(d) + m2 * np.cos(d)),
+                -delta1 * e * f * np.sin(d - sigma1),
+                delta1 * e * f * np.cos(d - sigma1),
+                -delta1 * e * f * np.sin(d - sigma1_principal),
+                delta1 * e * f * np.cos(d - sigma1_principal),
+            ]
+        )
 
-    I = integrate.quad_vec(integrand, 0.0, t, epsabs=1e-14, epsrel=1e-13, limit=400)[0] if t > 0 else np.zeros(6)
+    I = (
+        integrate.quad_vec(integrand, 0.0, t, epsabs=1e-14, epsrel=1e-13, limit=400)[0]
+        if t > 0
+        else np.zeros(6)
+    )
     free = delta * np.exp(-nu * t) * np.array([np.sin(xt + sigma), np.cos(xt + sigma)])
     r_general = r0 * np.exp(-mu * t) + R(t)
-    r_fixed = r0 * np.exp(-mu * t) + m3 * integrate.quad(lambda u: np.exp(-mu * (t - u)) * F(u), 0.0, t, **opts)[0]
-    return {"general": np.array([*(free + I[0:2]), r_general]), "fixed": np.array([*(free + I[2:4]), r_fixed]),
-            "principal": np.array([*(free + I[4:6]), r_fixed])}
+    r_fixed = (
+        r0 * np.exp(-mu * t) + m3 * integrate.quad(lambda u: np.exp(-mu * (t - u)) * F(u), 0.0, t, **opts)[0]
+    )
+    return {
+        "general": np.array([*(free + I[0:2]), r_general]),
+        "fixed": np.array([*(free + I[2:4]), r_fixed]),
+        "principal": np.array([*(free + I[4:6]), r_fixed]),
+    }
 
 
 def time_dependent_torque(results, V: ViscousMedium):
@@ -110,35 +135,70 @@ def time_dependent_torque(results, V: ViscousMedium):
                 q = _quadratures(W, F, float(t))
                 for name in store:
                     store[name] = max(store[name], float(np.max(np.abs(q[name] - ode[k]))))
-            if W.friction:                              # Theorem 1 with |F_i| <= M_i' = |m_i| max F
+            if W.friction:  # Theorem 1 with |F_i| <= M_i' = |m_i| max F
                 fine = _euler(W, W.omega0, np.linspace(0.0, 30.0, 601), viscous_modulated, (kind, a, b))[1:]
                 Fmax = 1.0 + a if kind == 0 else 1.0
                 delta = np.hypot(*W.omega0[:2])
                 pq = delta + (abs(W.m[0]) + abs(W.m[1])) * Fmax / W.nu
                 rb = abs(W.omega0[2]) + abs(W.m[2]) * Fmax / W.mu
-                ratio = max(ratio, float(np.max(np.abs(fine[:, :2]))) / pq, float(np.max(np.abs(fine[:, 2]))) / rb)
-    note = ("F = 1 + sin(2t)/2 and F = 1 − e^(−t) along the scene's torque; max over p, q, r, both F and t = 0, 5, "
-            "..., 30, against Euler's equations (DOP853, rtol 1e-13)")
-    results.number("td_general_vs_ode", friction["general"], "1/time", note="Lee (5.5), (5.9), (5.10) by quadrature; " + note)
-    results.number("td_fixed_vs_ode", friction["fixed"], "1/time", note="Lee (5.11), (5.12) by quadrature; " + note)
-    results.number("td_fixed_principal_arctan_gap", friction["principal"], "1/time",
-                   note="(5.11) with σ1 = arctan(m1/m2) taken as the principal value (m2 < 0 here): off by the sign of "
-                   "the torque term; the quadrant of (m1, m2) is meant")
-    results.number("td_frictionless_general_vs_ode", frictionless["general"], "1/time",
-                   note="Lee (5.13), (5.14) by quadrature, ν = μ = 0; " + note)
-    results.number("td_frictionless_fixed_vs_ode", frictionless["fixed"], "1/time",
-                   note="Lee (5.15) by quadrature, ν = μ = 0; " + note)
-    results.number("td_theorem_1_ratio", ratio, "1", note="Theorem 1 for the time-dependent torques: the largest "
-                   "|p|, |q| over δ + (M1' + M2')/ν and |r| over |r0| + M3'/μ, M_i' = |m_i| max F, 0 < t ≤ 30")
-    results.hard_case("time_dependent_quadratures", "Time-dependent torque: Lee's quadratures (5.10)–(5.15) against "
-                      "Euler's equations (largest $|\\Delta\\boldsymbol{\\omega}|$)",
-                      max(friction["general"], friction["fixed"], *frictionless.values()), 1e-9)
+                ratio = max(
+                    ratio, float(np.max(np.abs(fine[:, :2]))) / pq, float(np.max(np.abs(fine[:, 2]))) / rb
+                )
+    note = (
+        "F = 1 + sin(2t)/2 and F = 1 − e^(−t) along the scene's torque; max over p, q, r, both F and t = 0, "
+        "5, "
+        "..., 30, against Euler's equations (DOP853, rtol 1e-13)"
+    )
+    results.number(
+        "td_general_vs_ode",
+        friction["general"],
+        "1/time",
+        note="Lee (5.5), (5.9), (5.10) by quadrature; " + note,
+    )
+    results.number(
+        "td_fixed_vs_ode", friction["fixed"], "1/time", note="Lee (5.11), (5.12) by quadrature; " + note
+    )
+    results.number(
+        "td_fixed_principal_arctan_gap",
+        friction["principal"],
+        "1/time",
+        note="(5.11) with σ1 = arctan(m1/m2) taken as the principal value (m2 < 0 here): off by the sign of "
+        "the torque term; the quadrant of (m1, m2) is meant",
+    )
+    results.number(
+        "td_frictionless_general_vs_ode",
+        frictionless["general"],
+        "1/time",
+        note="Lee (5.13), (5.14) by quadrature, ν = μ = 0; " + note,
+    )
+    results.number(
+        "td_frictionless_fixed_vs_ode",
+        frictionless["fixed"],
+        "1/time",
+        note="Lee (5.15) by quadrature, ν = μ = 0; " + note,
+    )
+    results.number(
+        "td_theorem_1_ratio",
+        ratio,
+        "1",
+        note="Theorem 1 for the time-dependent torques: the largest "
+        "|p|, |q| over δ + (M1' + M2')/ν and |r| over |r0| + M3'/μ, M_i' = |m_i| max F, 0 < t ≤ 30",
+    )
+    results.hard_case(
+        "time_dependent_quadratures",
+        "Time-dependent torque: Lee's quadratures (5.10)–(5.15) against "
+        "Euler's equations (largest $|\\Delta\\boldsymbol{\\omega}|$)",
+        max(friction["general"], friction["fixed"], *frictionless.values()),
+        1e-9,
+    )
 
 
-# --- Case I and Case IV: straight lines -----------------------------------------------------------------------
+# --- Case I and Case IV: straight lines ---------------------------------------------------------------------
 def _starts(center, start, n=6, radius=1.5):
     angles = np.linspace(0.0, 2 * np.pi, n, endpoint=False) + 0.4
-    return [tuple(start)] + [(center[0] + radius * np.cos(a), center[1] + radius * np.sin(a), start[2]) for a in angles]
+    return [tuple(start)] + [
+        (center[0] + radius * np.cos(a), center[1] + radius * np.sin(a), start[2]) for a in angles
+    ]
 
 
 def _line_distance(xy, a, b):
@@ -160,7 +220,8 @@ def _lee_linear(V: ViscousMedium, omega0, t):
 
 
 def _linear_case(results, V: ViscousMedium, prefix: str, label: str):
-    """Several starts of Case I or IV with friction (to CASE_T) and without (to 10); returns the trajectories."""
+    """Several starts of Case I or IV with friction (to CASE_T) and without (to 10); returns the
+    trajectories."""
     limit = np.array(V.m) / np.array([V.nu, V.nu, V.mu])
     t = np.linspace(0.0, CASE_T, 401)
     lee = model = line_pq = line_space = gap = 0.0
@@ -181,17 +242,41 @@ def _linear_case(results, V: ViscousMedium, prefix: str, label: str):
         y = _euler(W, w0, tf)
         free = max(free, float(np.max(np.abs(y - _lee_linear(W, w0, tf)))))
         drawn["frictionless"].append(y)
-    results.number(f"{prefix}_lee_vs_ode", lee, "1/time", note=f"{label} as printed against Euler's equations "
-                   f"(DOP853, rtol 1e-13), 7 starts, t ≤ {CASE_T:g}, max over p, q, r")
-    results.number(f"{prefix}_model_vs_ode", model, "1/time", note="the model's quadrature solution (its case "
-                   f"{V.case}) against Euler's equations, same starts")
-    results.number(f"{prefix}_line_distance", line_pq, "1/time", note="largest distance of (p, q) from the line "
-                   "through (p0, q0) and (m1/ν, m2/ν)")
-    results.number(f"{prefix}_space_line_distance", line_space, "1/time", note="largest distance of (p, q, r) from "
-                   "the line through ω0 and the limit (zero unless the axial part r − m3/μ decays with μ ≠ ν)")
-    results.number(f"{prefix}_limit_gap", gap, "1/time", note=f"largest |ω(t = {CASE_T:g}) − (m1/ν, m2/ν, m3/μ)|")
-    results.number(f"{prefix}_frictionless_gap", free, "1/time", note="without friction: largest |ω − ω0 − m t| "
-                   "(p0 + m1 t, ...), 7 starts, t ≤ 10")
+    results.number(
+        f"{prefix}_lee_vs_ode",
+        lee,
+        "1/time",
+        note=f"{label} as printed against Euler's equations "
+        f"(DOP853, rtol 1e-13), 7 starts, t ≤ {CASE_T:g}, max over p, q, r",
+    )
+    results.number(
+        f"{prefix}_model_vs_ode",
+        model,
+        "1/time",
+        note=f"the model's quadrature solution (its case {V.case}) against Euler's equations, same starts",
+    )
+    results.number(
+        f"{prefix}_line_distance",
+        line_pq,
+        "1/time",
+        note="largest distance of (p, q) from the line through (p0, q0) and (m1/ν, m2/ν)",
+    )
+    results.number(
+        f"{prefix}_space_line_distance",
+        line_space,
+        "1/time",
+        note="largest distance of (p, q, r) from "
+        "the line through ω0 and the limit (zero unless the axial part r − m3/μ decays with μ ≠ ν)",
+    )
+    results.number(
+        f"{prefix}_limit_gap", gap, "1/time", note=f"largest |ω(t = {CASE_T:g}) − (m1/ν, m2/ν, m3/μ)|"
+    )
+    results.number(
+        f"{prefix}_frictionless_gap",
+        free,
+        "1/time",
+        note="without friction: largest |ω − ω0 − m t| (p0 + m1 t, ...), 7 starts, t ≤ 10",
+    )
     return limit, drawn
 
 
@@ -218,10 +303,13 @@ def case_one(results, V: ViscousMedium):
         ax.set_xlabel("$p$")
         ax.set_aspect("equal", adjustable="datalim")
 
-    caption = ("; third and fourth panels: Lee's Case I ($r_0 = 0$, the same body, torque and starts about the point "
-               "(+)), with friction straight lines into $(m_1/\\nu, m_2/\\nu)$ for $t \\le$ "
-               f"{CASE_T:g} (Lee's Figure 5.1), without friction parallel lines to infinity for $t \\le 10$ "
-               "(Lee's Figure 5.2)")
+    caption = (
+        "; third and fourth panels: Lee's Case I ($r_0 = 0$, the same body, torque and starts about the "
+        "point "
+        "(+)), with friction straight lines into $(m_1/\\nu, m_2/\\nu)$ for $t \\le$ "
+        f"{CASE_T:g} (Lee's Figure 5.1), without friction parallel lines to infinity for $t \\le 10$ "
+        "(Lee's Figure 5.2)"
+    )
     return [with_friction, without], caption
 
 
@@ -233,57 +321,98 @@ def case_four(results, V: ViscousMedium):
     limit = np.array(same.m) / same.nu
     t = np.linspace(0.0, CASE_T, 401)
     line = max(_line_distance(_euler(same, w0, t), np.array(w0), limit) for w0 in _starts(limit, same.omega0))
-    results.number("case_four_space_line_distance_equal_drags", line, "1/time",
-                   note="the same with μ = ν: the trajectories are straight in space")
+    results.number(
+        "case_four_space_line_distance_equal_drags",
+        line,
+        "1/time",
+        note="the same with μ = ν: the trajectories are straight in space",
+    )
 
 
-# --- (5.30): the spiral in the plane r = m3/mu ----------------------------------------------------------------
+# --- (5.30): the spiral in the plane r = m3/mu --------------------------------------------------------------
 def spiral(results, V: ViscousMedium, t_fit=20.0):
     Vg = replace(V, omega0=(V.omega0[0], V.omega0[1], V.m[2] / V.mu))
     t = np.linspace(0.0, t_fit, 201)
     y = _euler(Vg, Vg.omega0, t)
-    results.number("spiral_model_vs_ode", float(np.max(np.abs(Vg.closed_form(t)[0] - y))), "1/time",
-                   note=f"the model's case {Vg.case} (elementary) against Euler's equations, t ≤ {t_fit:g}")
-    results.number("spiral_plane_gap", float(np.max(np.abs(y[:, 2] - V.m[2] / V.mu))), "1/time",
-                   note="largest |r − m3/μ|")
+    results.number(
+        "spiral_model_vs_ode",
+        float(np.max(np.abs(Vg.closed_form(t)[0] - y))),
+        "1/time",
+        note=f"the model's case {Vg.case} (elementary) against Euler's equations, t ≤ {t_fit:g}",
+    )
+    results.number(
+        "spiral_plane_gap",
+        float(np.max(np.abs(y[:, 2] - V.m[2] / V.mu))),
+        "1/time",
+        note="largest |r − m3/μ|",
+    )
     nu, g1 = Vg.nu, Vg.g1
     m1, m2 = Vg.m[:2]
     d = nu**2 + g1**2
     z = (y[:, 1] - (nu * m2 - g1 * m1) / d) + 1j * (y[:, 0] - (nu * m1 + g1 * m2) / d)
     decay = -np.polyfit(t, np.log(np.abs(z)), 1)[0]
     turn = np.polyfit(t, np.unwrap(np.angle(z)), 1)[0]
-    results.number("spiral_decay_rate", float(decay), "1/time", note="(5.30): −d ln|z|/dt fitted along Euler's "
-                   "equations, z = (q − q∞) + i(p − p∞); Lee: ν")
+    results.number(
+        "spiral_decay_rate",
+        float(decay),
+        "1/time",
+        note="(5.30): −d ln|z|/dt fitted along Euler's equations, z = (q − q∞) + i(p − p∞); Lee: ν",
+    )
     results.number("spiral_turn_rate", float(turn), "1/time", note="d arg z/dt fitted; Lee: g1 = h m3/μ")
 
 
-# --- (5.50)-(5.52): the hyperbola of permanent rotations -------------------------------------------------------
+# --- (5.50)-(5.52): the hyperbola of permanent rotations ----------------------------------------------------
 def singular_curve(results, V: ViscousMedium):
     h, (m1, m2, _) = V.h, V.m
     rs = np.concatenate([-np.linspace(4.0, 0.5, 8), np.linspace(0.5, 4.0, 8)])
     points = np.column_stack([m2 / (h * rs), -m1 / (h * rs), rs])
     t = np.linspace(0.0, 30.0, 61)
     drift = max(float(np.max(np.abs(_euler(V, pt, t) - pt))) for pt in points)
-    theta = np.arctan(-m2 / m1)                                         # Lee: the turn about r, (5.52)
+    theta = np.arctan(-m2 / m1)  # Lee: the turn about r, (5.52)
     p_rot = points[:, 0] * np.cos(theta) - points[:, 1] * np.sin(theta)
     q_rot = points[:, 0] * np.sin(theta) + points[:, 1] * np.cos(theta)
     k = q_rot * points[:, 2]
-    results.number("singular_curve_drift", drift, "1/time", note="points (m2/(hr), −m1/(hr), r), r = ±0.5 ... ±4, as "
-                   "starts of Euler's equations: largest |ω(t) − ω(0)|, t ≤ 30")
-    results.number("singular_curve_plane", float(np.max(np.abs(m1 * points[:, 0] + m2 * points[:, 1])
-                                                         / (np.abs(m1 * points[:, 0]) + np.abs(m2 * points[:, 1])))),
-                   "1", note="(5.51) q/p = −m1/m2: |m1 p + m2 q| relative to its terms, largest")
-    results.number("singular_curve_p_rot", float(np.max(np.abs(p_rot) / np.abs(q_rot))), "1",
-                   note="(5.52): |p'|/|q'| in the frame turned by θ = arctan(−m2/m1), largest")
-    results.number("singular_curve_k", float(np.mean(k)), "1/time", note="k' = q'r' (5.52), mean over the points")
-    results.number("singular_curve_k_spread", float(np.ptp(k) / abs(np.mean(k))), "1", note="relative spread of q'r'")
+    results.number(
+        "singular_curve_drift",
+        drift,
+        "1/time",
+        note="points (m2/(hr), −m1/(hr), r), r = ±0.5 ... ±4, as "
+        "starts of Euler's equations: largest |ω(t) − ω(0)|, t ≤ 30",
+    )
+    results.number(
+        "singular_curve_plane",
+        float(
+            np.max(
+                np.abs(m1 * points[:, 0] + m2 * points[:, 1])
+                / (np.abs(m1 * points[:, 0]) + np.abs(m2 * points[:, 1]))
+            )
+        ),
+        "1",
+        note="(5.51) q/p = −m1/m2: |m1 p + m2 q| relative to its terms, largest",
+    )
+    results.number(
+        "singular_curve_p_rot",
+        float(np.max(np.abs(p_rot) / np.abs(q_rot))),
+        "1",
+        note="(5.52): |p'|/|q'| in the frame turned by θ = arctan(−m2/m1), largest",
+    )
+    results.number(
+        "singular_curve_k", float(np.mean(k)), "1/time", note="k' = q'r' (5.52), mean over the points"
+    )
+    results.number(
+        "singular_curve_k_spread", float(np.ptp(k) / abs(np.mean(k))), "1", note="relative spread of q'r'"
+    )
     # the circle of the scene's start, its center fitted (Kasa) against Theorem 2's
     r0 = V.omega0[2]
     y = _euler(V, V.omega0, np.linspace(0.0, 2 * np.pi / abs(h * r0), 41))
     M = np.column_stack([2 * y[:, 0], 2 * y[:, 1], np.ones(len(y))])
     cx, cy, _ = np.linalg.lstsq(M, y[:, 0] ** 2 + y[:, 1] ** 2, rcond=None)[0]
-    results.number("circle_center_fit_gap", float(np.hypot(cx - m2 / (h * r0), cy + m1 / (h * r0))), "1/time",
-                   note="center of the circle of ω0 fitted (least squares) against (m2/(hr0), −m1/(hr0))")
+    results.number(
+        "circle_center_fit_gap",
+        float(np.hypot(cx - m2 / (h * r0), cy + m1 / (h * r0))),
+        "1/time",
+        note="center of the circle of ω0 fitted (least squares) against (m2/(hr0), −m1/(hr0))",
+    )
     center_q = (m2 / (h * r0)) * np.sin(theta) - (m1 / (h * r0)) * np.cos(theta)
 
     def panel(ax):
@@ -296,13 +425,16 @@ def singular_curve(results, V: ViscousMedium):
         ax.set_ylabel("$r'$")
         ax.set_xlim(-3.0, 3.0)
 
-    caption = ("; third panel: the permanent rotations (5.50) in the plane (5.51), coordinates turned about $r$ so that "
-               "$p' = 0$: the hyperbola $q'r' = k'$ (Lee's Figure 5.3, $p'$ normal to the page), points checked as "
-               "starts of Euler's equations (dots) and the center of the circles at $r_0$ (+)")
+    caption = (
+        "; third panel: the permanent rotations (5.50) in the plane (5.51), coordinates turned about $r$ so "
+        "that "
+        "$p' = 0$: the hyperbola $q'r' = k'$ (Lee's Figure 5.3, $p'$ normal to the page), points checked as "
+        "starts of Euler's equations (dots) and the center of the circles at $r_0$ (+)"
+    )
     return [panel], caption
 
 
-# --- (5.32)-(5.37): Lee's reduction formulas ------------------------------------------------------------------
+# --- (5.32)-(5.37): Lee's reduction formulas ----------------------------------------------------------------
 def _taylor(x, w1, sine: bool):
     """Si(x, w') (5.38) or Ci(x, w') (5.39) by the Taylor series, in mpmath at the working precision."""
     total, n = mpmath.mpf(0), 1 if sine else 0
@@ -316,13 +448,13 @@ def _taylor(x, w1, sine: bool):
 
 
 def lee_reduction(x, w, ocr_sign=False):
-    """si(x, w), ci(x, w) by Lee (5.32)-(5.37) as written (at mpmath's working precision): w = K + w', the sums P
-    (5.34) and Q (5.35), Si, Ci of order w' by (5.38), (5.39), A, B by (5.37). ocr_sign: the OCR's +P cos x in si
-    for K odd."""
+    """si(x, w), ci(x, w) by Lee (5.32)-(5.37) as written (at mpmath's working precision): w = K + w', the
+    sums P (5.34) and Q (5.35), Si, Ci of order w' by (5.38), (5.39), A, B by (5.37). ocr_sign: the OCR's +P
+    cos x in si for K odd."""
     K, w1 = sc.split(w)
     x, w, w1 = mpmath.mpf(x), mpmath.mpc(w), mpmath.mpc(w1)
 
-    def fall(n):                                       # (w - 1)(w - 2) ... (w - n)
+    def fall(n):  # (w - 1)(w - 2) ... (w - n)
         return mpmath.fprod([w - j for j in range(1, n + 1)])
 
     NP, NQ = ((K - 1) // 2, (K + 1) // 2) if K % 2 else (K // 2, K // 2)
@@ -342,21 +474,30 @@ def lee_reduction(x, w, ocr_sign=False):
 
 
 def reduction_formulas(results, V: ViscousMedium):
-    w1 = V.w - np.floor(V.w.real)                      # the scene's w' (0.6 + 0.72i here)
+    w1 = V.w - np.floor(V.w.real)  # the scene's w' (0.6 + 0.72i here)
     worst = ocr = 0.0
     for K in (1, 2, 3, 4):
         for x in (0.5, 2.0, 8.0):
             with mpmath.workdps(40):
                 si, ci = lee_reduction(x, K + w1)
                 ref_si, ref_ci = sc.reference(x, K + w1, dps=40)
-                worst = max(worst, float(abs(si - ref_si) / abs(ref_si)), float(abs(ci - ref_ci) / abs(ref_ci)))
+                worst = max(
+                    worst, float(abs(si - ref_si) / abs(ref_si)), float(abs(ci - ref_ci) / abs(ref_ci))
+                )
                 if K == 3:
                     wrong, _ = lee_reduction(x, K + w1, ocr_sign=True)
                     ocr = max(ocr, float(abs(wrong - ref_si) / abs(ref_si)))
-    results.number("reduction_relative_error", worst, "1", note=f"Lee (5.32)–(5.35) at 40 digits, w = K + w', "
-                   f"w' = {w1.real:.2g} + {w1.imag:.2g}i, K = 1 ... 4, x = 0.5, 2, 8, against the incomplete gamma "
-                   "function (mpmath): largest relative error of si, ci")
-    results.number("reduction_ocr_sign_error", ocr, "1", note="the same for si with the OCR's +P cos x (K = 3)")
+    results.number(
+        "reduction_relative_error",
+        worst,
+        "1",
+        note=f"Lee (5.32)–(5.35) at 40 digits, w = K + w', "
+        f"w' = {w1.real:.2g} + {w1.imag:.2g}i, K = 1 ... 4, x = 0.5, 2, 8, against the incomplete gamma "
+        "function (mpmath): largest relative error of si, ci",
+    )
+    results.number(
+        "reduction_ocr_sign_error", ocr, "1", note="the same for si with the OCR's +P cos x (K = 3)"
+    )
     ab = 0.0
     with mpmath.workdps(30):
         for v in (mpmath.mpc(w1), mpmath.mpf(0.6), mpmath.mpc(0.3, 0.4)):
@@ -364,31 +505,48 @@ def reduction_formulas(results, V: ViscousMedium):
             B = mpmath.pi / (2 * mpmath.gamma(v) * mpmath.cos(v * mpmath.pi / 2))
             # I+- = int_0^inf u^-w' e^{+-iu} du = B +- iA, turned onto the imaginary axis (u = +-is, Jordan's
             # lemma): e^{+-i pi (1 - w')/2} E, E = int_0^inf s^-w' e^{-s} ds by quadrature (no gamma function)
-            E = (mpmath.quad(lambda x: 10 * x ** (9 - 10 * v) * mpmath.exp(-x**10), [0, 1])   # s = x^10 near 0
-                 + mpmath.quad(lambda s_: s_ ** (-v) * mpmath.exp(-s_), [1, mpmath.inf]))
+            # s = x^10 near 0
+            E = mpmath.quad(lambda x: 10 * x ** (9 - 10 * v) * mpmath.exp(-(x**10)), [0, 1]) + mpmath.quad(
+                lambda s_: s_ ** (-v) * mpmath.exp(-s_), [1, mpmath.inf]
+            )
             plus, minus = (mpmath.exp(k * 1j * mpmath.pi * (1 - v) / 2) * E for k in (1, -1))
             qa, qb = (plus - minus) / 2j, (plus + minus) / 2
             ab = max(ab, float(abs(A - qa) / abs(qa)), float(abs(B - qb) / abs(qb)))
-    results.number("reduction_A_B_error", ab, "1", note="(5.37) A(w'), B(w') against mpmath's quadrature of "
-                   "their integrals turned onto the imaginary axis (20 digits), w' = the scene's, 0.6, 0.3 + 0.4i: largest relative")
+    results.number(
+        "reduction_A_B_error",
+        ab,
+        "1",
+        note="(5.37) A(w'), B(w') against mpmath's quadrature of "
+        "their integrals turned onto the imaginary axis (20 digits), w' = the scene's, 0.6, 0.3 + 0.4i: "
+        "largest relative",
+    )
 
 
-# --- Re w after (5.29) ----------------------------------------------------------------------------------------
+# --- Re w after (5.29) --------------------------------------------------------------------------------------
 def re_w(results, V: ViscousMedium):
     results.number("re_w_formula", 1.0 + V.nu / V.mu, "1", note="1 + ν/μ from the scene's drags")
 
-    def w_real(A, C):                                  # mu0 = mu1 = 1: nu = mu1/A, mu = mu0/C
+    def w_real(A, C):  # mu0 = mu1 = 1: nu = mu1/A, mu = mu0/C
         return ViscousMedium.from_moments(A, C, 1.0 / A, 1.0 / C, (0.4, -0.2, 0.0), (0.5, 0.8, 2.0)).w.real
 
     elongated = [w_real(1.0, c) for c in np.linspace(0.05, 0.5, 10)]
     disc = [w_real(1.0, c) for c in np.linspace(1.05, 2.0, 20)]
-    results.number("re_w_elongated_max", max(elongated), "1", note="μ0 = μ1, A = B = 1, C = 0.05 ... 0.5 "
-                   "(elongated): largest Re w")
+    results.number(
+        "re_w_elongated_max",
+        max(elongated),
+        "1",
+        note="μ0 = μ1, A = B = 1, C = 0.05 ... 0.5 (elongated): largest Re w",
+    )
     results.number("re_w_elongated_min", min(elongated), "1", note="smallest Re w, the same bodies")
     results.number("re_w_disc_min", min(disc), "1", note="μ0 = μ1, C = 1.05 ... 2 (flat): smallest Re w")
     results.number("re_w_disc_max", max(disc), "1", note="largest, at the thin disc C = A + B = 2A")
 
 
-ANALYSES = {"time_dependent_torque": time_dependent_torque, "case_four": case_four, "spiral": spiral,
-            "reduction_formulas": reduction_formulas, "re_w": re_w}
+ANALYSES = {
+    "time_dependent_torque": time_dependent_torque,
+    "case_four": case_four,
+    "spiral": spiral,
+    "reduction_formulas": reduction_formulas,
+    "re_w": re_w,
+}
 PANELS = {"case_one": case_one, "singular_curve": singular_curve}

@@ -1,12 +1,14 @@
-"""Lee §1.2: the motion of the body in space. Lee follows omega in the body only; the attitude follows from the
-kinematic equations (1.2) by quadratures, and a periodic omega in the body need not make a periodic motion in space.
+"""Lee §1.2: the motion of the body in space. Lee follows omega in the body only; the attitude follows from
+the kinematic equations (1.2) by quadratures, and a periodic omega in the body need not make a periodic motion
+in space.
 
-Here the attitude is integrated twice, independently: as a unit quaternion beside Euler's equations, and as Euler's
-angles (psi, theta, phi) from (1.2), z-x-z convention, the body-to-space matrix Rz(psi) Rx(theta) Rz(phi) and
+Here the attitude is integrated twice, independently: as a unit quaternion beside Euler's equations, and as
+Euler's angles (psi, theta, phi) from (1.2), z-x-z convention, the body-to-space matrix Rz(psi) Rx(theta)
+Rz(phi) and
     p = psi' sin(theta) sin(phi) + theta' cos(phi),  q = psi' sin(theta) cos(phi) - theta' sin(phi),
     r = psi' cos(theta) + phi'.
-The angular momentum in space must change by the integral of the torque turned into space (Gauss-Legendre on the
-quaternion's samples); after one period of omega in the body the body has not come back.
+The angular momentum in space must change by the integral of the torque turned into space (Gauss-Legendre on
+the quaternion's samples); after one period of omega in the body the body has not come back.
 """
 
 from __future__ import annotations
@@ -19,7 +21,7 @@ from ...solvers.runge_kutta import rhs_function
 from . import motions
 
 RTOL, ATOL = 1e-13, 1e-15
-PERIODS = 4                    # periods of omega drawn and checked
+PERIODS = 4  # periods of omega drawn and checked
 START_ANGLES = (0.0, 1.2, 0.0)  # Euler's angles at t = 0: body z 1.2 rad from space Z, off the poles of (1.2)
 GAUSS_NODES = 8
 
@@ -55,9 +57,13 @@ def angles_matrix(psi, theta, phi):
 def quaternion_matrix(e):
     """Body-to-space matrix of the unit quaternion e = (e0, e1, e2, e3)."""
     e0, e1, e2, e3 = e / np.linalg.norm(e)
-    return np.array([[1 - 2 * (e2**2 + e3**2), 2 * (e1 * e2 - e0 * e3), 2 * (e1 * e3 + e0 * e2)],
-                     [2 * (e1 * e2 + e0 * e3), 1 - 2 * (e1**2 + e3**2), 2 * (e2 * e3 - e0 * e1)],
-                     [2 * (e1 * e3 - e0 * e2), 2 * (e2 * e3 + e0 * e1), 1 - 2 * (e1**2 + e2**2)]])
+    return np.array(
+        [
+            [1 - 2 * (e2**2 + e3**2), 2 * (e1 * e2 - e0 * e3), 2 * (e1 * e3 + e0 * e2)],
+            [2 * (e1 * e2 + e0 * e3), 1 - 2 * (e1**2 + e3**2), 2 * (e2 * e3 - e0 * e1)],
+            [2 * (e1 * e3 - e0 * e2), 2 * (e2 * e3 + e0 * e1), 1 - 2 * (e1**2 + e2**2)],
+        ]
+    )
 
 
 def matrix_quaternion(R):
@@ -78,21 +84,32 @@ def matrix_quaternion(R):
 
 
 def rotation_angle(R):
-    """The angle of a rotation matrix, from |R - I|_F = 2 sqrt(2) sin(angle/2) (arccos of the trace would lose half
-    the digits near 0)."""
+    """The angle of a rotation matrix, from |R - I|_F = 2 sqrt(2) sin(angle/2) (arccos of the trace would lose
+    half the digits near 0)."""
     return float(2.0 * np.arcsin(min(1.0, np.linalg.norm(R - np.eye(3)) / (2.0 * np.sqrt(2.0)))))
 
 
 def run(results, L: se.LargestAxis, body: se.Body, w0: np.ndarray):
     """Attitude from w0 over PERIODS periods of omega in the body; returns the curves for the sphere panel."""
     a, b, c = L.body.a, L.body.b, L.body.c
-    params = np.array([a, b, c, L.m, L.mu, 2.0 * np.pi / np.sqrt(b * c)])     # phi1 advances 2 pi: omega returns
-    first = solve(Problem(se.euler_largest_phase, np.r_[w0, 0.0], (0.0, 1e3), params), "dop853", rtol=RTOL,
-                  atol=ATOL, events=Events(motions.phase_reaches, 1, (1,), (True,)))
+    params = np.array([a, b, c, L.m, L.mu, 2.0 * np.pi / np.sqrt(b * c)])  # phi1 advances 2 pi: omega returns
+    first = solve(
+        Problem(se.euler_largest_phase, np.r_[w0, 0.0], (0.0, 1e3), params),
+        "dop853",
+        rtol=RTOL,
+        atol=ATOL,
+        events=Events(motions.phase_reaches, 1, (1,), (True,)),
+    )
     T = float(first.t)
-    results.number("space_omega_period", T, "time units", note="ω returns in the body: φ1 = √(bc)∫p dt advances 2π")
-    results.number("space_omega_return", float(np.linalg.norm(first.y[:3] - w0) / np.linalg.norm(w0)), "1",
-                   note="|ω(T) − ω(0)|/|ω(0)|")
+    results.number(
+        "space_omega_period", T, "time units", note="ω returns in the body: φ1 = √(bc)∫p dt advances 2π"
+    )
+    results.number(
+        "space_omega_return",
+        float(np.linalg.norm(first.y[:3] - w0) / np.linalg.norm(w0)),
+        "1",
+        note="|ω(T) − ω(0)|/|ω(0)|",
+    )
     span = PERIODS * T
     x, wts = np.polynomial.legendre.leggauss(GAUSS_NODES)
     edges = np.linspace(0.0, span, 80 * PERIODS + 1)
@@ -101,16 +118,31 @@ def run(results, L: se.LargestAxis, body: se.Body, w0: np.ndarray):
     R0 = angles_matrix(*START_ANGLES)
     e0 = matrix_quaternion(R0)
     P = params[:5]
-    quat = solve(Problem(se.euler_largest_attitude, np.r_[w0, e0], (0.0, span), P), "dop853", rtol=RTOL, atol=ATOL,
-                 t_eval=t)
-    ang = solve(Problem(euler_largest_angles, np.r_[w0, START_ANGLES], (0.0, span), P), "dop853", rtol=RTOL,
-                atol=ATOL, t_eval=t)
+    quat = solve(
+        Problem(se.euler_largest_attitude, np.r_[w0, e0], (0.0, span), P),
+        "dop853",
+        rtol=RTOL,
+        atol=ATOL,
+        t_eval=t,
+    )
+    ang = solve(
+        Problem(euler_largest_angles, np.r_[w0, START_ANGLES], (0.0, span), P),
+        "dop853",
+        rtol=RTOL,
+        atol=ATOL,
+        t_eval=t,
+    )
     Rq = np.array([quaternion_matrix(e) for e in quat.y_eval[:, 3:]])
     Ra = np.array([angles_matrix(*y) for y in ang.y_eval[:, 3:]])
     angle_gap = max(rotation_angle(A.T @ B) for A, B in zip(Rq, Ra))
     theta = ang.y_eval[:, 4]
-    results.number("space_angles_vs_quaternion", angle_gap, "rad", note="largest rotation between the attitude "
-                   "from Euler's angles (1.2) and from the quaternion, over four periods of ω")
+    results.number(
+        "space_angles_vs_quaternion",
+        angle_gap,
+        "rad",
+        note="largest rotation between the attitude "
+        "from Euler's angles (1.2) and from the quaternion, over four periods of ω",
+    )
     results.number("space_theta_min", float(theta.min()), "rad", note="θ stays off the poles of (1.2)")
     results.number("space_theta_max", float(theta.max()), "rad")
 
@@ -124,21 +156,37 @@ def run(results, L: se.LargestAxis, body: se.Body, w0: np.ndarray):
     gain = np.zeros(3)
     worst = 0.0
     for k in range(len(edges) - 1):
-        chunk = nodes[k * GAUSS_NODES:(k + 1) * GAUSS_NODES]
+        chunk = nodes[k * GAUSS_NODES : (k + 1) * GAUSS_NODES]
         gain += 0.5 * (edges[k + 1] - edges[k]) * np.sum(wts[:, None] * Ms[[index[s] for s in chunk]], axis=0)
         change = Ls[index[edges[k + 1]]] - Ls[0]
         worst = max(worst, float(np.linalg.norm(change - gain) / np.linalg.norm(Ls[index[edges[k + 1]]])))
-    results.number("space_momentum_vs_torque", worst, "1", note="largest |L(t) − L(0) − ∫R M dt|/|L(t)| in space, "
-                   "the torque integrated by Gauss–Legendre on the quaternion's attitude")
+    results.number(
+        "space_momentum_vs_torque",
+        worst,
+        "1",
+        note="largest |L(t) − L(0) − ∫R M dt|/|L(t)| in space, "
+        "the torque integrated by Gauss–Legendre on the quaternion's attitude",
+    )
     after = next(i for i, s in enumerate(t) if s >= T - 1e-12)
     # one period exactly: integrate to T alone
-    one = solve(Problem(se.euler_largest_attitude, np.r_[w0, e0], (0.0, T), P), "dop853", rtol=RTOL, atol=ATOL)
+    one = solve(
+        Problem(se.euler_largest_attitude, np.r_[w0, e0], (0.0, T), P), "dop853", rtol=RTOL, atol=ATOL
+    )
     turn = rotation_angle(quaternion_matrix(one.y[3:]) @ R0.T)
-    results.number("space_turn_after_period", turn, "rad", note="rotation of the body in space after one period of "
-                   "ω in the body (0 if the motion in space were periodic)")
+    results.number(
+        "space_turn_after_period",
+        turn,
+        "rad",
+        note="rotation of the body in space after one period of "
+        "ω in the body (0 if the motion in space were periodic)",
+    )
     L0, L1 = Ls[0] / np.linalg.norm(Ls[0]), Ls[after] / np.linalg.norm(Ls[after])
-    results.number("space_momentum_direction_turn", float(np.arccos(np.clip(L0 @ L1, -1, 1))), "rad",
-                   note="angle between L/|L| at 0 and after one period of ω (sample nearest)")
+    results.number(
+        "space_momentum_direction_turn",
+        float(np.arccos(np.clip(L0 @ L1, -1, 1))),
+        "rad",
+        note="angle between L/|L| at 0 and after one period of ω (sample nearest)",
+    )
     xs = Rq[:, :, 0]
     ls = Ls / np.linalg.norm(Ls, axis=1)[:, None]
     keep = np.isin(t, np.linspace(0.0, span, 801))
@@ -149,7 +197,13 @@ def draw_sphere(ax, xs, ls):
     """The unit sphere (faint meridians), the body's x-axis and L/|L| in space, their starts marked."""
     u = np.linspace(0.0, 2 * np.pi, 73)
     for lat in np.linspace(-60, 60, 5) * np.pi / 180:
-        ax.plot(np.cos(lat) * np.cos(u), np.cos(lat) * np.sin(u), np.full_like(u, np.sin(lat)), color="0.85", lw=0.4)
+        ax.plot(
+            np.cos(lat) * np.cos(u),
+            np.cos(lat) * np.sin(u),
+            np.full_like(u, np.sin(lat)),
+            color="0.85",
+            lw=0.4,
+        )
     for lon in np.linspace(0, np.pi, 7)[:-1]:
         ax.plot(np.cos(u) * np.cos(lon), np.cos(u) * np.sin(lon), np.sin(u), color="0.85", lw=0.4)
     ax.plot(*xs.T, color="#0072B2", lw=0.9, label="body $x$-axis in space")
@@ -168,7 +222,8 @@ def draw_sphere(ax, xs, ls):
     ax.view_init(elev=20, azim=-50)
 
 
-FRAME_ANGLES = (np.radians(55.0), np.radians(40.0), np.radians(35.0))   # (psi, theta, phi), chosen to show each
+# (psi, theta, phi), chosen to show each
+FRAME_ANGLES = (np.radians(55.0), np.radians(40.0), np.radians(35.0))
 
 
 def _arc(u, v, radius, n=30):
@@ -181,12 +236,12 @@ def _arc(u, v, radius, n=30):
 
 
 def draw_frames(ax, angles=FRAME_ANGLES):
-    """Lee's Figures 1.1 and 1.2: the space frame OXYZ, the body frame Oxyz = Rz(psi) Rx(theta) Rz(phi) OXYZ, the
-    line of nodes ON (where the body's xy-plane cuts the XY-plane) and the three Euler angles of (1.2)."""
+    """Lee's Figures 1.1 and 1.2: the space frame OXYZ, the body frame Oxyz = Rz(psi) Rx(theta) Rz(phi) OXYZ,
+    the line of nodes ON (where the body's xy-plane cuts the XY-plane) and the three Euler angles of (1.2)."""
     psi, theta, phi = angles
     R = angles_matrix(psi, theta, phi)
-    node = _rz(psi)[:, 0]                                   # the line of nodes: X turned by psi about Z
-    space_axes, body_axes = np.eye(3), R.T                  # rows: X, Y, Z and x, y, z in space
+    node = _rz(psi)[:, 0]  # the line of nodes: X turned by psi about Z
+    space_axes, body_axes = np.eye(3), R.T  # rows: X, Y, Z and x, y, z in space
     for axis, name in zip(space_axes, "XYZ"):
         ax.plot(*np.c_[np.zeros(3), axis], color="0.45", lw=0.9)
         ax.text(*(1.12 * axis), f"${name}$", color="0.25", ha="center", va="center")
@@ -195,14 +250,17 @@ def draw_frames(ax, angles=FRAME_ANGLES):
         ax.text(*(1.12 * axis), f"${name}$", color="#0072B2", ha="center", va="center")
     ax.plot(*np.c_[-0.9 * node, 0.9 * node], color="#D55E00", lw=0.8, ls="--")
     ax.text(*(1.0 * node), "$N$", color="#D55E00", ha="left", va="bottom")
-    for (u, v, r, name) in ((space_axes[0], node, 0.45, "\\psi"), (space_axes[2], body_axes[2], 0.55, "\\theta"),
-                            (node, body_axes[0], 0.6, "\\varphi")):
+    for u, v, r, name in (
+        (space_axes[0], node, 0.45, "\\psi"),
+        (space_axes[2], body_axes[2], 0.55, "\\theta"),
+        (node, body_axes[0], 0.6, "\\varphi"),
+    ):
         arc = _arc(u, v, r)
         ax.plot(*arc.T, color="#D55E00", lw=0.9)
         ax.text(*(1.15 * arc[len(arc) // 2]), f"${name}$", color="#D55E00", ha="center", va="center")
     ax.set_xlim(-0.8, 0.8)
     ax.set_ylim(-0.8, 0.8)
     ax.set_zlim(-0.25, 1.1)
-    ax.set_box_aspect((1.6, 1.6, 1.35), zoom=1.25)        # equal scales on the three axes: true angles
+    ax.set_box_aspect((1.6, 1.6, 1.35), zoom=1.25)  # equal scales on the three axes: true angles
     ax.set_axis_off()
     ax.view_init(elev=18, azim=-28)

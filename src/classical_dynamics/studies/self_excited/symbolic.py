@@ -1,11 +1,11 @@
 """Lee §3 and §4.1 by computer algebra (sympy), independent of the study's numerical code:
 
-  k_constants:   Lee's general solution (3.3) put into Euler's q equation gives (3.8) with his m0, k1, k2;
-  mu_c_regimes:  k1 - k2 and k1 + k2 factor, so that below mu_c |k1| > |k2| with k1 < 0 and above it |k2| > |k1|
-                 with k2 < 0; and a sweep over random bodies, cylinders and drags counts the exceptions;
-  nu_c:          a - b + c = abc for every body, so nu_c = b/(2(a + c)) < 1/2; a sweep over bodies;
-  lindstedt:     the Lindstedt-Poincare expansion of Lee's Lyapunov system (4.1) to third order, against his printed
-                 h1, theta2 (4.6), h2, theta3 (4.7) and h3 (4.8), coefficient by coefficient.
+k_constants:   Lee's general solution (3.3) put into Euler's q equation gives (3.8) with his m0, k1, k2;
+mu_c_regimes:  k1 - k2 and k1 + k2 factor, so that below mu_c |k1| > |k2| with k1 < 0 and above it |k2| > |k1|
+               with k2 < 0; and a sweep over random bodies, cylinders and drags counts the exceptions;
+nu_c:          a - b + c = abc for every body, so nu_c = b/(2(a + c)) < 1/2; a sweep over bodies;
+lindstedt:     the Lindstedt-Poincare expansion of Lee's Lyapunov system (4.1) to third order, against his
+               printed h1, theta2 (4.6), h2, theta3 (4.7) and h3 (4.8), coefficient by coefficient.
 """
 
 from __future__ import annotations
@@ -15,8 +15,8 @@ import sympy as sp
 
 
 def k_constants():
-    """Residual of (3.8) after putting (3.3) into q' - mu q^2 = -b r p + m + mu (p^2 + r^2): 0 if Lee's m0, k1, k2
-    hold. Returns the number of terms (of e^{2X}, e^{-2X}, 1) that do not cancel."""
+    """Residual of (3.8) after putting (3.3) into q' - mu q^2 = -b r p + m + mu (p^2 + r^2): 0 if Lee's m0,
+    k1, k2 hold. Returns the number of terms (of e^{2X}, e^{-2X}, 1) that do not cancel."""
     a, b, c, m, mu, a1, a2, X = sp.symbols("a b c m mu alpha1 alpha2 X", real=True)
     p = a1 * sp.sqrt(a) * sp.cosh(X) + a2 * sp.sqrt(a) * sp.sinh(X)
     r = a1 * sp.sqrt(c) * sp.sinh(X) + a2 * sp.sqrt(c) * sp.cosh(X)
@@ -24,7 +24,8 @@ def k_constants():
     m0 = m + sp.Rational(1, 2) * mu * (a - c) * (a1**2 - a2**2)
     k1 = mu * (a + c) * a1 * a2 - sp.Rational(1, 2) * b * sp.sqrt(a * c) * (a1**2 + a2**2)
     k2 = sp.Rational(1, 2) * mu * (a + c) * (a1**2 + a2**2) - b * sp.sqrt(a * c) * a1 * a2
-    # sqrt(a) sqrt(c) = sqrt(ac) for positive a, c; the half-angle X of (3.3) against the double angle 2X of (3.8)
+    # sqrt(a) sqrt(c) = sqrt(ac) for positive a, c; the half-angle X of (3.3) against the double angle 2X of
+    # (3.8)
     diff = (lhs - m0 - k1 * sp.sinh(2 * X) - k2 * sp.cosh(2 * X)).rewrite(sp.exp)
     diff = sp.expand(diff.subs({a: sp.Symbol("a", positive=True), c: sp.Symbol("c", positive=True)}))
     E = sp.Symbol("E", positive=True)
@@ -33,18 +34,19 @@ def k_constants():
 
 
 def mu_c_regimes(rng, samples=2000):
-    """The factorisations of k1 -+ k2 for mu = -|mu| (Lee's drag) and a sweep: random bodies (A > B > C, A < B + C),
-    cylinders (alpha1, alpha2) and |mu| in (0, 2 mu_c), avoiding 1e-9 about mu_c; the exceptions to Lee's rule
-    (|mu| < mu_c: |k1| > |k2|, k1 < 0; |mu| > mu_c: |k2| > |k1|, k2 < 0) are counted. k1, k2 come from sympy's
-    expansion of (3.3) in Euler's equations (the coefficients of sinh 2X, cosh 2X), not from the study's code."""
+    """The factorisations of k1 -+ k2 for mu = -|mu| (Lee's drag) and a sweep: random bodies (A > B > C, A < B
+    + C), cylinders (alpha1, alpha2) and |mu| in (0, 2 mu_c), avoiding 1e-9 about mu_c; the exceptions to
+    Lee's rule (|mu| < mu_c: |k1| > |k2|, k1 < 0; |mu| > mu_c: |k2| > |k1|, k2 < 0) are counted. k1, k2 come
+    from sympy's expansion of (3.3) in Euler's equations (the coefficients of sinh 2X, cosh 2X), not from the
+    study's code."""
     a, b, c = sp.symbols("a b c", positive=True)
-    a1, a2, s = sp.symbols("alpha1 alpha2 s", real=True)         # s = |mu|, mu = -s
+    a1, a2, s = sp.symbols("alpha1 alpha2 s", real=True)  # s = |mu|, mu = -s
     mu = -s
     k1 = mu * (a + c) * a1 * a2 - sp.Rational(1, 2) * b * sp.sqrt(a * c) * (a1**2 + a2**2)
     k2 = sp.Rational(1, 2) * mu * (a + c) * (a1**2 + a2**2) - b * sp.sqrt(a * c) * a1 * a2
     mu_c = b * sp.sqrt(a * c) / (a + c)
-    minus = sp.simplify(k1 - k2 - sp.Rational(1, 2) * (a1 - a2)**2 * (a + c) * (s - mu_c))
-    plus = sp.simplify(k1 + k2 + sp.Rational(1, 2) * (a1 + a2)**2 * (a + c) * (s + mu_c))
+    minus = sp.simplify(k1 - k2 - sp.Rational(1, 2) * (a1 - a2) ** 2 * (a + c) * (s - mu_c))
+    plus = sp.simplify(k1 + k2 + sp.Rational(1, 2) * (a1 + a2) ** 2 * (a + c) * (s + mu_c))
     factor_mismatch = int(minus != 0) + int(plus != 0)
     f = sp.lambdify((a, b, c, a1, a2, s), (k1, k2, mu_c), "numpy")
     C = rng.uniform(0.05, 1.0, samples)
@@ -64,8 +66,8 @@ def mu_c_regimes(rng, samples=2000):
 
 
 def nu_c(rng, samples=100000):
-    """a - b + c - abc simplified (0 for every body), the exact nu_c of the study's body, and the largest nu_c over
-    random bodies A > B > C with A < B + C."""
+    """a - b + c - abc simplified (0 for every body), the exact nu_c of the study's body, and the largest nu_c
+    over random bodies A > B > C with A < B + C."""
     A, B, C = sp.symbols("A B C", positive=True)
     a, b, c = (B - C) / A, (A - C) / B, (A - B) / C
     identity = sp.simplify(a - b + c - a * b * c)
@@ -82,22 +84,23 @@ def nu_c(rng, samples=100000):
 
 
 def lindstedt():
-    """Lindstedt-Poincare for (4.4): theta = eta cos s + eta^2 theta2 + eta^3 theta3, H = h1 eta + h2 eta^2 + h3 eta^3,
-    theta_ss + theta = -((1 + H)^2 - 1) theta + (1 + H)^2/k^2 (beta2/2 theta^2 + beta3/6 theta^3 + beta4/24 theta^4)
-    + mu1 theta_s^2, each theta_i 2 pi-periodic with theta_i(0) = theta_i'(0) = 0, the cos s term removed at each
-    order. Functions of s as Laurent polynomials in z = e^{is}. Returns Lee's printed coefficients that differ
-    (out of 10: h1; the three of theta2; h2; c0..c3; h3), and the coefficients found."""
-    k2, b2, b3, b4, m1, eta = sp.symbols("k2 beta2 beta3 beta4 mu1 eta")     # k2 = k^2
+    """Lindstedt-Poincare for (4.4): theta = eta cos s + eta^2 theta2 + eta^3 theta3, H = h1 eta + h2 eta^2 +
+    h3 eta^3, theta_ss + theta = -((1 + H)^2 - 1) theta + (1 + H)^2/k^2 (beta2/2 theta^2 + beta3/6 theta^3 +
+    beta4/24 theta^4) + mu1 theta_s^2, each theta_i 2 pi-periodic with theta_i(0) = theta_i'(0) = 0, the cos s
+    term removed at each order. Functions of s as Laurent polynomials in z = e^{is}. Returns Lee's printed
+    coefficients that differ (out of 10: h1; the three of theta2; h2; c0..c3; h3), and the coefficients
+    found."""
+    k2, b2, b3, b4, m1, eta = sp.symbols("k2 beta2 beta3 beta4 mu1 eta")  # k2 = k^2
     h = sp.symbols("h1 h2 h3")
     z = sp.Symbol("z")
 
     def cos_(n):
         return (z**n + z**-n) / 2
 
-    def d_ds(expr):                      # d/ds of a Laurent polynomial in z = e^{is}: z d/dz times i
+    def d_ds(expr):  # d/ds of a Laurent polynomial in z = e^{is}: z d/dz times i
         return sp.expand(sp.I * z * sp.diff(expr, z))
 
-    def fourier(expr):                   # cosine coefficients {n: a_n} of an even Laurent polynomial
+    def fourier(expr):  # cosine coefficients {n: a_n} of an even Laurent polynomial
         c = {}
         for term in sp.Add.make_args(sp.expand(expr)):
             v, n = term.as_coeff_exponent(z)
@@ -105,11 +108,11 @@ def lindstedt():
         out = {n: sp.cancel(c.get(n, 0) + (c.get(-n, 0) if n else 0)) for n in range(max(c) + 1)}
         return {n: v for n, v in out.items() if v != 0}
 
-    def mul(x, y, top=4):                # truncated products of series in eta: lists of coefficients
+    def mul(x, y, top=4):  # truncated products of series in eta: lists of coefficients
         return [sp.expand(sum(x[i] * y[n - i] for i in range(n + 1))) for n in range(top + 1)]
 
-    theta = [0, cos_(1), 0, 0, 0]        # coefficients of eta^0 .. eta^4
-    one_h = [1, h[0], h[1], h[2], 0]     # 1 + H
+    theta = [0, cos_(1), 0, 0, 0]  # coefficients of eta^0 .. eta^4
+    one_h = [1, h[0], h[1], h[2], 0]  # 1 + H
     found = {}
     for order in (2, 3, 4):
         sq = mul(one_h, one_h)
@@ -119,8 +122,10 @@ def lindstedt():
         ths = [d_ds(t) for t in theta]
         nonlin = [b2 / 2 * th2[n] + b3 / 6 * th3[n] + b4 / 24 * th4[n] for n in range(5)]
         sq_minus = [0] + sq[1:]
-        rhs = [-a_ + b_ / k2 + c_ for a_, b_, c_ in zip(mul(sq_minus, theta), mul(sq, nonlin), mul([m1, 0, 0, 0, 0],
-                                                                                                  mul(ths, ths)))]
+        rhs = [
+            -a_ + b_ / k2 + c_
+            for a_, b_, c_ in zip(mul(sq_minus, theta), mul(sq, nonlin), mul([m1, 0, 0, 0, 0], mul(ths, ths)))
+        ]
         a = fourier(rhs[order])
         hk = h[order - 2]
         sol = sp.solve(a.get(1, 0), hk)
@@ -139,12 +144,15 @@ def lindstedt():
             found[f"theta{order}_{n}"] = sp.cancel(coeffs.get(n, 0))
     lee = {
         "h1": 0,
-        "theta2_0": b2 / (4 * k2) + m1 / 2, "theta2_1": -(b2 / (6 * k2) + 2 * m1 / 3),
+        "theta2_0": b2 / (4 * k2) + m1 / 2,
+        "theta2_1": -(b2 / (6 * k2) + 2 * m1 / 3),
         "theta2_2": -(b2 / (12 * k2) - m1 / 6),
         "h2": (5 * b2**2 + 10 * b2 * k2 * m1 + 3 * b3 * k2 + 8 * k2**2 * m1**2) / (48 * k2**2),
-        "theta3_0": -b2**2 / (12 * k2**2) - b2 * m1 / (2 * k2) - sp.Rational(2, 3) * m1**2,
-        "theta3_1": sp.Rational(29, 576) * b2**2 / k2**2 + sp.Rational(137, 288) * b2 * m1 / k2
-        + b3 / (192 * k2) + sp.Rational(61, 72) * m1**2,
+        "theta3_0": -(b2**2) / (12 * k2**2) - b2 * m1 / (2 * k2) - sp.Rational(2, 3) * m1**2,
+        "theta3_1": sp.Rational(29, 576) * b2**2 / k2**2
+        + sp.Rational(137, 288) * b2 * m1 / k2
+        + b3 / (192 * k2)
+        + sp.Rational(61, 72) * m1**2,
         "theta3_2": b2**2 / (36 * k2**2) + b2 * m1 / (18 * k2) - sp.Rational(2, 9) * m1**2,
         "theta3_3": b2**2 / (192 * k2**2) - b2 * m1 / (32 * k2) - b3 / (192 * k2) + m1**2 / 24,
     }

@@ -14,11 +14,11 @@ from pathlib import Path
 from ...scenes import EffectRegistry, Scene, SceneError
 from ...scenes.cost import check_step
 from ...solvers.references import HNW_PERIOD
-from .cost import SWEEP_SPAN, cost
 from . import top_model
+from .cost import SWEEP_SPAN, cost
 
 __all__ = ["EFFECTS", "check", "cost", "run"]
-EFFECTS = EffectRegistry("solvers")           # the test problems have none; the heavy top has gravity
+EFFECTS = EffectRegistry("solvers")  # the test problems have none; the heavy top has gravity
 top_model.register(EFFECTS)
 
 
@@ -26,6 +26,7 @@ def check(path: Path, data: dict) -> None:
     import math
 
     from .cost import DOP853_MAX_STEPS, LONG_DOP853_PER_TIME
+
     numerics = data.get("numerics", {})
     problem = data["problem"]
     effects = data.get("effects") or {}
@@ -33,8 +34,9 @@ def check(path: Path, data: dict) -> None:
         raise SceneError(path, "effects", "no effects (a test problem has none)", sorted(effects))
     if problem == "heavy_top":
         if "gravity" not in effects:
-            raise SceneError(path, "effects.gravity", "the heavy top's weight: gravity: {Mgh: ...}", None,
-                             has_got=False)
+            raise SceneError(
+                path, "effects.gravity", "the heavy top's weight: gravity: {Mgh: ...}", None, has_got=False
+            )
         if "top" not in data:
             raise SceneError(path, "top", "the top's moments A, C and its spin", None, has_got=False)
         top = data["top"]
@@ -45,20 +47,40 @@ def check(path: Path, data: dict) -> None:
         # _steady) needs (C n)^2 >= 4 A Mgh cos(alpha); the disturbed precession (_oscillation) runs at spin 6
         cos_alpha = max(math.cos(math.radians(top["inclination_deg"])), math.cos(math.radians(30.0)))
         if (C * spin) ** 2 < 4 * A * Mgh * cos_alpha:
-            raise SceneError(path, "top.spin", f"a spin of at least sqrt(4 A Mgh cos alpha)/C = "
-                             f"{math.sqrt(4 * A * Mgh * cos_alpha) / C:.4g} (no steady precession below it, at the "
-                             "top's inclination or 30 degrees)", spin)
+            raise SceneError(
+                path,
+                "top.spin",
+                f"a spin of at least sqrt(4 A Mgh cos alpha)/C = "
+                f"{math.sqrt(4 * A * Mgh * cos_alpha) / C:.4g} (no steady precession below it, at the "
+                "top's inclination or 30 degrees)",
+                spin,
+            )
         if (6.0 * C) ** 2 < 4 * A * Mgh * math.cos(math.radians(30.0)):
-            raise SceneError(path, "top.C", f"C of at least sqrt(4 A Mgh cos 30)/6 = "
-                             f"{math.sqrt(4 * A * Mgh * math.cos(math.radians(30.0))) / 6:.4g} (the disturbed "
-                             "steady precession runs at spin 6)", C)
-    if problem in ("detest_b5", "heavy_top") and any(m.startswith("splitting") for m in numerics.get("methods", [])):
-        raise SceneError(path, "numerics.methods", "methods for a general ODE (splitting needs a free rigid body)",
-                         numerics["methods"])
+            raise SceneError(
+                path,
+                "top.C",
+                f"C of at least sqrt(4 A Mgh cos 30)/6 = "
+                f"{math.sqrt(4 * A * Mgh * math.cos(math.radians(30.0))) / 6:.4g} (the disturbed "
+                "steady precession runs at spin 6)",
+                C,
+            )
+    if problem in ("detest_b5", "heavy_top") and any(
+        m.startswith("splitting") for m in numerics.get("methods", [])
+    ):
+        raise SceneError(
+            path,
+            "numerics.methods",
+            "methods for a general ODE (splitting needs a free rigid body)",
+            numerics["methods"],
+        )
     for i, h in enumerate(numerics.get("steps", [])):
         check_step(path, f"numerics.steps.{i}", h, SWEEP_SPAN)
     if problem == "long_horizon":
-        for key, what in (("max_periods", "periods"), ("step", "the splitting's step"), ("rtol", "DOP853's rtol")):
+        for key, what in (
+            ("max_periods", "periods"),
+            ("step", "the splitting's step"),
+            ("rtol", "DOP853's rtol"),
+        ):
             if key not in numerics:
                 raise SceneError(path, f"numerics.{key}", f"a number ({what})", None, has_got=False)
         check_step(path, "numerics.step", numerics["step"], numerics["max_periods"] * HNW_PERIOD)
@@ -66,15 +88,21 @@ def check(path: Path, data: dict) -> None:
         per_period = HNW_PERIOD * LONG_DOP853_PER_TIME * (1e-6 / numerics["rtol"]) ** (1 / 8)
         most = 0.9 * DOP853_MAX_STEPS / per_period
         if numerics["max_periods"] > most:
-            raise SceneError(path, "numerics.max_periods", f"at most {most:.3g} periods at rtol "
-                             f"{numerics['rtol']:g} (DOP853 would stop at its {DOP853_MAX_STEPS:.0e} steps)",
-                             numerics["max_periods"])
+            raise SceneError(
+                path,
+                "numerics.max_periods",
+                f"at most {most:.3g} periods at rtol "
+                f"{numerics['rtol']:g} (DOP853 would stop at its {DOP853_MAX_STEPS:.0e} steps)",
+                numerics["max_periods"],
+            )
     if problem in ("hnw_rigid_body", "detest_b5"):
         for key in ("methods", "tolerances"):
             if key not in numerics:
                 raise SceneError(path, f"numerics.{key}", "a list (the sweep)", None, has_got=False)
         if any(m.startswith("splitting") for m in numerics["methods"]) and "steps" not in numerics:
-            raise SceneError(path, "numerics.steps", "step sizes for the splitting methods", None, has_got=False)
+            raise SceneError(
+                path, "numerics.steps", "step sizes for the splitting methods", None, has_got=False
+            )
 
 
 def run(scene: Scene, quick: bool = False):

@@ -7,11 +7,11 @@ import numpy as np
 import pandas as pd
 from scipy import special
 
+from ...formatting import format_number, power_of_ten, shortest
 from ...models import rigid_body as rhs
 from ...solvers import references as ref
 from ...solvers import rigid_body, symplectic
 from ...solvers.ode import Problem, solve
-from ...formatting import format_number, power_of_ten, shortest
 from ..results import new_figure
 
 
@@ -41,25 +41,43 @@ def _separatrix(results, one_minus_m, quick):
     ours = np.stack(ref.ellipj(u, m)[:3], axis=1)
     raw = np.stack(special.ellipj(u, m)[:3], axis=1)
     with mpmath.workdps(30):
-        exact = np.array([[float(mpmath.ellipfun(f, mpmath.mpf(x), m=mpmath.mpf(m))) for f in ("sn", "cn", "dn")]
-                          for x in u])
+        exact = np.array(
+            [
+                [float(mpmath.ellipfun(f, mpmath.mpf(x), m=mpmath.mpf(m))) for f in ("sn", "cn", "dn")]
+                for x in u
+            ]
+        )
     err_ours, err_raw = np.max(np.abs(ours - exact)), np.max(np.abs(raw - exact))
     results.number("separatrix_one_minus_m", one_minus_m, "1")
-    results.number("separatrix_ellipj_error_ours", err_ours, "1", note="max over [0, 4K] against mpmath, 30 digits")
-    results.number("separatrix_ellipj_error_scipy", err_raw, "1", note="scipy.special.ellipj as it is (#8480)")
-    distance = shortest(one_minus_m).removeprefix("1 × ")          # 10⁻¹⁰, not 1 × 10⁻¹⁰
-    results.hard_case("separatrix_reference", f"Jacobi's elliptic functions at $m$ = 1 − {distance} "
-                      f"against mpmath at 30 digits, largest error over a period (SciPy's own ellipj is off by "
-                      f"{format_number(err_raw, 2)} there)", err_ours, 1e-13)
+    results.number(
+        "separatrix_ellipj_error_ours", err_ours, "1", note="max over [0, 4K] against mpmath, 30 digits"
+    )
+    results.number(
+        "separatrix_ellipj_error_scipy", err_raw, "1", note="scipy.special.ellipj as it is (#8480)"
+    )
+    distance = shortest(one_minus_m).removeprefix("1 × ")  # 10⁻¹⁰, not 1 × 10⁻¹⁰
+    results.hard_case(
+        "separatrix_reference",
+        f"Jacobi's elliptic functions at $m$ = 1 − {distance} "
+        f"against mpmath at 30 digits, largest error over a period (SciPy's own ellipj is off by "
+        f"{format_number(err_raw, 2)} there)",
+        err_ours,
+        1e-13,
+    )
     # the body on the separatrix side: integrators stay on the energy surface over a few periods
     rate = np.sqrt((I[2] - I[1]) * (np.sum((I * w0) ** 2) - np.sum(I * w0 * w0) * I[0]) / np.prod(I))
     period = 4 * K / rate
     T = (2 if quick else 4) * period
     H0 = 0.5 * np.sum(I * w0 * w0)
     C0 = np.sum((I * w0) ** 2)
-    sol = solve(Problem(rhs.euler_free, w0, (0.0, T), rhs.euler_coefficients(I)), "dop853", rtol=1e-12, atol=1e-15,
-                record_steps=True)
-    dH = np.max(np.abs(0.5 * np.sum(I * sol.y_steps ** 2, axis=1) - H0)) / H0
+    sol = solve(
+        Problem(rhs.euler_free, w0, (0.0, T), rhs.euler_coefficients(I)),
+        "dop853",
+        rtol=1e-12,
+        atol=1e-15,
+        record_steps=True,
+    )
+    dH = np.max(np.abs(0.5 * np.sum(I * sol.y_steps**2, axis=1) - H0)) / H0
     ms, _ = rigid_body.free_body(I, I * w0, 0.005, int(T / 0.005), 4, 10)
     dC = np.max(np.abs(np.sum(ms * ms, axis=1) - C0)) / C0
     dHs = np.max(np.abs(0.5 * np.sum(ms * ms / I, axis=1) - H0)) / H0
@@ -67,19 +85,37 @@ def _separatrix(results, one_minus_m, quick):
     results.number("separatrix_dop853_energy_error", dH, "1", note="rtol 1e-12")
     results.number("separatrix_splitting_energy_error", dHs, "1", note="order 4, h = 0.005")
     results.number("separatrix_splitting_casimir_error", dC, "1")
-    results.hard_case("separatrix_energy_surface", "Near the separatrix DOP853 (relative tolerance "
-                      f"{tenth_power(1e-12)}) stays on the energy surface (relative energy error)", dH, 1e-10)
+    results.hard_case(
+        "separatrix_energy_surface",
+        "Near the separatrix DOP853 (relative tolerance "
+        f"{tenth_power(1e-12)}) stays on the energy surface (relative energy error)",
+        dH,
+        1e-10,
+    )
     rotations = 15 * int(T / 0.005)
-    results.hard_case("separatrix_casimir", "Near the separatrix the splitting keeps the Casimir $|\\mathbf{m}|^2$ "
-                      "to round-off: its relative error over $10\\sqrt{N}\\,\\varepsilon$ ($N$ exact rotations, "
-                      "$\\varepsilon$ the machine epsilon)", dC / (10 * np.sqrt(rotations) * np.finfo(float).eps), 1.0)
+    results.hard_case(
+        "separatrix_casimir",
+        "Near the separatrix the splitting keeps the Casimir $|\\mathbf{m}|^2$ "
+        "to round-off: its relative error over $10\\sqrt{N}\\,\\varepsilon$ ($N$ exact rotations, "
+        "$\\varepsilon$ the machine epsilon)",
+        dC / (10 * np.sqrt(rotations) * np.finfo(float).eps),
+        1.0,
+    )
     # the reference itself against an independent integration, half a period (errors grow like e^{rate t})
     t = np.linspace(0, period / 2, 9)
-    check = solve(Problem(rhs.euler_free, w0, (0.0, t[-1]), rhs.euler_coefficients(I)), "dop853", rtol=1e-13,
-                  atol=1e-16, t_eval=t)
-    results.number("separatrix_reference_vs_dop853", float(np.max(np.abs(ref.free_rigid_body(I, I * w0, t)
-                                                                          - check.y_eval))), "rad/s",
-                   note="half a period; the separatrix amplifies any error like e^{rate t}")
+    check = solve(
+        Problem(rhs.euler_free, w0, (0.0, t[-1]), rhs.euler_coefficients(I)),
+        "dop853",
+        rtol=1e-13,
+        atol=1e-16,
+        t_eval=t,
+    )
+    results.number(
+        "separatrix_reference_vs_dop853",
+        float(np.max(np.abs(ref.free_rigid_body(I, I * w0, t) - check.y_eval))),
+        "rad/s",
+        note="half a period; the separatrix amplifies any error like e^{rate t}",
+    )
 
 
 def _intermediate_axis(results):
@@ -89,17 +125,27 @@ def _intermediate_axis(results):
     theory = q0 * np.sqrt((A - B) * (B - C) / (A * C))
     w0 = np.array([1e-10, q0, 1e-10])
     t = np.linspace(0, 30, 601)
-    sol = solve(Problem(rhs.euler_free, w0, (0.0, 30.0), rhs.euler_coefficients(np.array([A, B, C]))), "dop853",
-                rtol=1e-12, atol=1e-20, t_eval=t)
+    sol = solve(
+        Problem(rhs.euler_free, w0, (0.0, 30.0), rhs.euler_coefficients(np.array([A, B, C]))),
+        "dop853",
+        rtol=1e-12,
+        atol=1e-20,
+        t_eval=t,
+    )
     size = np.hypot(sol.y_eval[:, 0], sol.y_eval[:, 2])
     window = (size > 1e-8) & (size < 1e-3)
     measured = np.polyfit(t[window], np.log(size[window]), 1)[0]
-    results.number("intermediate_axis_growth_rate", measured, "1/time",
-                   note="fit of log|(w1, w3)| in the linear regime")
+    results.number(
+        "intermediate_axis_growth_rate", measured, "1/time", note="fit of log|(w1, w3)| in the linear regime"
+    )
     results.number("intermediate_axis_growth_theory", theory, "1/time", note="q0 sqrt((A-B)(B-C)/(AC))")
-    results.hard_case("intermediate_axis", "Spin about the middle axis: the measured growth rate of a "
-                      "perturbation against $q_0\\sqrt{(A - B)(B - C)/(AC)}$ (relative difference)",
-                      abs(measured / theory - 1), 1e-3)
+    results.hard_case(
+        "intermediate_axis",
+        "Spin about the middle axis: the measured growth rate of a "
+        "perturbation against $q_0\\sqrt{(A - B)(B - C)/(AC)}$ (relative difference)",
+        abs(measured / theory - 1),
+        1e-3,
+    )
 
 
 def _blow_up(results):
@@ -107,53 +153,110 @@ def _blow_up(results):
     for m, mu, p0 in ((1.0, 1.0, 0.0), (0.5, -0.2, -2.0), (-0.3, -0.5, 0.4), (0.0, 0.7, 1.5)):
         exact = ref.riccati_blow_up_time(m, mu, p0)
         sol = solve(Problem(rhs.riccati, [p0], (0.0, 2 * exact), [m, mu]), "dop853", rtol=1e-10, atol=1e-12)
-        rows.append({"m": m, "mu": mu, "p0": p0, "t_star_closed_form": exact, "t_star_measured": sol.t,
-                     "status": sol.status, "relative_difference": sol.t / exact - 1})
+        rows.append(
+            {
+                "m": m,
+                "mu": mu,
+                "p0": p0,
+                "t_star_closed_form": exact,
+                "t_star_measured": sol.t,
+                "status": sol.status,
+                "relative_difference": sol.t / exact - 1,
+            }
+        )
     frame = pd.DataFrame(rows)
-    results.table("blow_up", frame, "Finite-time blow-up of $\\dot p = m + \\mu p^2$ (Lee (2.4)): the time at "
-                  "which the run stops ($|p|$ passes 10¹²) against the closed form $t^*$, DOP853 at relative "
-                  f"tolerance {tenth_power(1e-10)}.",
-                  headers={"m": "$m$", "mu": "$\\mu$", "p0": "$p_0$", "t_star_closed_form": "$t^*$, closed form",
-                           "t_star_measured": "$t^*$, measured", "status": "status",
-                           "relative_difference": "relative difference"})
+    results.table(
+        "blow_up",
+        frame,
+        "Finite-time blow-up of $\\dot p = m + \\mu p^2$ (Lee (2.4)): the time at "
+        "which the run stops ($|p|$ passes 10¹²) against the closed form $t^*$, DOP853 at relative "
+        f"tolerance {tenth_power(1e-10)}.",
+        headers={
+            "m": "$m$",
+            "mu": "$\\mu$",
+            "p0": "$p_0$",
+            "t_star_closed_form": "$t^*$, closed form",
+            "t_star_measured": "$t^*$, measured",
+            "status": "status",
+            "relative_difference": "relative difference",
+        },
+    )
     worst = float(frame.relative_difference.abs().max())
     results.number("blow_up_worst_relative_difference", worst, "1")
-    results.number("blow_up_lee_case_t_star", float(frame.t_star_measured.iloc[1]), "time units",
-                   note="m = 0.5, mu = -0.2, p0 = -2")
-    results.hard_case("blow_up", "Blow-up reported with its time (status “blow-up”, not NaN, not a hang): "
-                      "relative difference to the closed-form blow-up time $t^*$", worst, 1e-9)
+    results.number(
+        "blow_up_lee_case_t_star",
+        float(frame.t_star_measured.iloc[1]),
+        "time units",
+        note="m = 0.5, mu = -0.2, p0 = -2",
+    )
+    results.hard_case(
+        "blow_up",
+        "Blow-up reported with its time (status “blow-up”, not NaN, not a hang): "
+        "relative difference to the closed-form blow-up time $t^*$",
+        worst,
+        1e-9,
+    )
 
 
 # Lee (2.4): the six cases of p' = m + mu p^2 (q0 = r0 = 0), each start chosen inside its case.
-LEE_CASES = (("i", 0.6, 0.3, 0.5), ("ii", 0.5, -0.2, 0.3), ("iii_tanh", -0.4, 0.3, 0.2), ("iii", -0.4, 0.3, 2.0),
-             ("iv", -0.3, -0.5, 0.4), ("v", 0.7, 0.0, -1.0), ("vi", 0.0, 0.7, 1.5))
-LEE_CASE_SPAN = 3.0                  # time units, or 0.9 t* where the case blows up sooner
+LEE_CASES = (
+    ("i", 0.6, 0.3, 0.5),
+    ("ii", 0.5, -0.2, 0.3),
+    ("iii_tanh", -0.4, 0.3, 0.2),
+    ("iii", -0.4, 0.3, 2.0),
+    ("iv", -0.3, -0.5, 0.4),
+    ("v", 0.7, 0.0, -1.0),
+    ("vi", 0.0, 0.7, 1.5),
+)
+LEE_CASE_SPAN = 3.0  # time units, or 0.9 t* where the case blows up sooner
 
 
 def _lee_cases(results):
-    """Each closed form of Lee (2.4) against DOP853 (relative tolerance 1e-12) on 31 times of [0, min(3, 0.9 t*)],
-    the difference relative to max(|p|, |p0|, k) (p may pass zero); and where p leaves every bound, the time the
-    run stops (|p| passes 1e12, within 1e-12 of the pole) as the measured blow-up time."""
+    """Each closed form of Lee (2.4) against DOP853 (relative tolerance 1e-12) on 31 times of [0, min(3, 0.9
+    t*)], the difference relative to max(|p|, |p0|, k) (p may pass zero); and where p leaves every bound, the
+    time the run stops (|p| passes 1e12, within 1e-12 of the pole) as the measured blow-up time."""
     worst = 0.0
     for name, m, mu, p0 in LEE_CASES:
         t_star = ref.riccati_blow_up_time(m, mu, p0)
         span = min(LEE_CASE_SPAN, 0.9 * t_star)
         t = np.linspace(0.0, span, 31)
-        sol = solve(Problem(rhs.riccati, [p0], (0.0, span), [m, mu]), "dop853", rtol=1e-12, atol=1e-14, t_eval=t)
+        sol = solve(
+            Problem(rhs.riccati, [p0], (0.0, span), [m, mu]), "dop853", rtol=1e-12, atol=1e-14, t_eval=t
+        )
         closed = ref.riccati(m, mu, p0, t)
         k = np.sqrt(abs(m / mu)) if m and mu else 0.0
         scale = np.maximum(np.abs(closed), max(abs(p0), k))
         difference = float(np.max(np.abs(sol.y_eval[:, 0] - closed) / scale))
         worst = max(worst, difference)
-        results.number(f"lee_case_{name}_closed_form_difference", difference, "1",
-                       note=f"m = {m}, mu = {mu}, p0 = {p0}: largest |p − closed form|/max(|p|, |p0|, k) on [0, {span:.4g}]")
+        results.number(
+            f"lee_case_{name}_closed_form_difference",
+            difference,
+            "1",
+            note=(
+                f"m = {m}, mu = {mu}, p0 = {p0}: largest |p − closed form|/max(|p|, |p0|, k) on [0, "
+                f"{span:.4g}]"
+            ),
+        )
         if np.isfinite(t_star):
-            run = solve(Problem(rhs.riccati, [p0], (0.0, 2 * t_star), [m, mu]), "dop853", rtol=1e-12, atol=1e-14)
-            results.number(f"lee_case_{name}_t_star", run.t if run.status == "blow-up" else np.inf, "time units",
-                           note=f"m = {m}, mu = {mu}, p0 = {p0}: where the run stops, |p| past 10^12")
-    results.number("lee_cases_worst_difference", worst, "1", note="the largest of the seven runs' differences")
-    results.hard_case("lee_cases", "The closed forms of Lee (2.4), cases (i)–(vi), against the integrated "
-                      "$\\dot p = m + \\mu p^2$ (largest relative difference)", worst, 1e-10)
+            run = solve(
+                Problem(rhs.riccati, [p0], (0.0, 2 * t_star), [m, mu]), "dop853", rtol=1e-12, atol=1e-14
+            )
+            results.number(
+                f"lee_case_{name}_t_star",
+                run.t if run.status == "blow-up" else np.inf,
+                "time units",
+                note=f"m = {m}, mu = {mu}, p0 = {p0}: where the run stops, |p| past 10^12",
+            )
+    results.number(
+        "lee_cases_worst_difference", worst, "1", note="the largest of the seven runs' differences"
+    )
+    results.hard_case(
+        "lee_cases",
+        "The closed forms of Lee (2.4), cases (i)–(vi), against the integrated "
+        "$\\dot p = m + \\mu p^2$ (largest relative difference)",
+        worst,
+        1e-10,
+    )
 
 
 def _numerical_damping(results):
@@ -162,111 +265,204 @@ def _numerical_damping(results):
     T = periods * 2 * np.pi
     problem = Problem(rhs.oscillator, [1.0, 0.0], (0.0, T), [1.0])
     rows = []
-    for method in ("dop853", "dopri5", "scipy:RK45", "scipy:DOP853", "scipy:Radau", "scipy:BDF", "scipy:LSODA"):
+    for method in (
+        "dop853",
+        "dopri5",
+        "scipy:RK45",
+        "scipy:DOP853",
+        "scipy:Radau",
+        "scipy:BDF",
+        "scipy:LSODA",
+    ):
         for rtol in (1e-6, 1e-9):
             sol = solve(problem, method, rtol=rtol, atol=rtol * 1e-3)
             change = 0.5 * (sol.y[0] ** 2 + sol.y[1] ** 2) / 0.5 - 1
-            rows.append({"method": method, "rtol": rtol, "energy_change": change,
-                         "spurious_Q": 2 * np.pi * periods / abs(change) if change else np.inf})
+            rows.append(
+                {
+                    "method": method,
+                    "rtol": rtol,
+                    "energy_change": change,
+                    "spurious_Q": 2 * np.pi * periods / abs(change) if change else np.inf,
+                }
+            )
     for h in (2 * np.pi / 20, 2 * np.pi / 100):
         n = int(round(T / h))
-        qs, vs = symplectic.integrate(symplectic.harmonic, np.array([1.0]), np.array([1.0]), np.array([0.0]), h, n,
-                                      2, n)
+        qs, vs = symplectic.integrate(
+            symplectic.harmonic, np.array([1.0]), np.array([1.0]), np.array([0.0]), h, n, 2, n
+        )
         change = 0.5 * (qs[-1, 0] ** 2 + vs[-1, 0] ** 2) / 0.5 - 1
-        rows.append({"method": "Störmer–Verlet", "rtol": h, "energy_change": change,
-                     "spurious_Q": 2 * np.pi * periods / abs(change) if change else np.inf})
+        rows.append(
+            {
+                "method": "Störmer–Verlet",
+                "rtol": h,
+                "energy_change": change,
+                "spurious_Q": 2 * np.pi * periods / abs(change) if change else np.inf,
+            }
+        )
     frame = pd.DataFrame(rows)
-    results.table("numerical_damping", frame, "An undamped oscillator over 100 periods: the relative change of its "
-                  "energy, and the quality factor it would be mistaken for, $Q = 2\\pi n/|\\Delta E/E|$ after $n$ "
-                  "periods (negative change: energy lost). The adaptive methods at two relative tolerances, "
-                  "Störmer–Verlet at two steps $h$.",
-                  headers={"method": "method", "rtol": "rtol or step $h$", "energy_change": "$\\Delta E/E$",
-                           "spurious_Q": "apparent $Q$"})
+    results.table(
+        "numerical_damping",
+        frame,
+        "An undamped oscillator over 100 periods: the relative change of its "
+        "energy, and the quality factor it would be mistaken for, $Q = 2\\pi n/|\\Delta E/E|$ after $n$ "
+        "periods (negative change: energy lost). The adaptive methods at two relative tolerances, "
+        "Störmer–Verlet at two steps $h$.",
+        headers={
+            "method": "method",
+            "rtol": "rtol or step $h$",
+            "energy_change": "$\\Delta E/E$",
+            "spurious_Q": "apparent $Q$",
+        },
+    )
     bdf = frame[(frame.method == "scipy:BDF") & (frame.rtol == 1e-6)].iloc[0]
     results.number("bdf_spurious_Q_rtol_1e-6", bdf.spurious_Q, "1")
     results.number("bdf_energy_change_rtol_1e-6", bdf.energy_change, "1")
     verlet = frame[frame.method == "Störmer–Verlet"]
-    results.number("verlet_worst_energy_change", float(verlet.energy_change.abs().max()), "1",
-                   note="bounded, oscillating; sampled at the end of the run")
+    results.number(
+        "verlet_worst_energy_change",
+        float(verlet.energy_change.abs().max()),
+        "1",
+        note="bounded, oscillating; sampled at the end of the run",
+    )
     fig, ax = new_figure(height=3.0)
     adaptive = frame[frame.method != "Störmer–Verlet"]
     methods = list(dict.fromkeys(adaptive.method))
     x = np.arange(len(methods))
     for (rtol, part), marker in zip(sorted(adaptive.groupby("rtol"), key=lambda g: -g[0]), ("s", "o")):
-        ax.semilogy([methods.index(m) for m in part.method], np.abs(part.energy_change), marker, ms=4,
-                    color="0.15" if marker == "s" else "#E69F00",
-                    label=f"relative tolerance {tenth_power(rtol)}")
-    ax.set_xticks(x, [m.replace("scipy:", "SciPy\n").replace("dop853", "DOP853").replace("dopri5", "DOPRI5")
-                      for m in methods])
+        ax.semilogy(
+            [methods.index(m) for m in part.method],
+            np.abs(part.energy_change),
+            marker,
+            ms=4,
+            color="0.15" if marker == "s" else "#E69F00",
+            label=f"relative tolerance {tenth_power(rtol)}",
+        )
+    ax.set_xticks(
+        x,
+        [
+            m.replace("scipy:", "SciPy\n").replace("dop853", "DOP853").replace("dopri5", "DOPRI5")
+            for m in methods
+        ],
+    )
     ax.set_xlim(-0.5, len(methods) - 0.5)
     ax.set_ylabel("$|\\Delta E/E|$ after 100 periods")
     ax.grid(False, axis="x", which="both")
     ax.legend(loc="upper left")
-    results.figure("numerical_damping", fig, "The relative energy change $|\\Delta E/E|$ of an undamped oscillator "
-                   "after 100 periods, by adaptive method, at two relative tolerances. Every method changes the "
-                   "energy, most of them by losing it; BDF loses the most. A physical quality factor $Q$ must be "
-                   "measured well above this numerical floor.")
+    results.figure(
+        "numerical_damping",
+        fig,
+        "The relative energy change $|\\Delta E/E|$ of an undamped oscillator "
+        "after 100 periods, by adaptive method, at two relative tolerances. Every method changes the "
+        "energy, most of them by losing it; BDF loses the most. A physical quality factor $Q$ must be "
+        "measured well above this numerical floor.",
+    )
 
 
 def _energy_kept(results):
     """The oscillator's energy is a first integral (notes: L has no t; handbook Ex. 2.5: H has no t). The
-    implicit midpoint rule keeps every quadratic first integral of a linear system exactly (up to rounding), so
-    E, kept by it over 100 periods, is one; sympy checks Hamilton's equations give m x'' + k x = 0, dH/dt = 0."""
+    implicit midpoint rule keeps every quadratic first integral of a linear system exactly (up to rounding),
+    so E, kept by it over 100 periods, is one; sympy checks Hamilton's equations give m x'' + k x = 0, dH/dt =
+    0."""
     import sympy as sp
+
     x, p, m, k, t = sp.symbols("x p m k t", positive=True)
     H = p**2 / (2 * m) + k * x**2 / 2
     xdot, pdot = sp.diff(H, p), -sp.diff(H, x)
-    newton = sp.simplify(m * sp.diff(xdot, p) * pdot + k * x) == 0          # m x'' = m (d/dt)(p/m) = p' = -k x
+    newton = sp.simplify(m * sp.diff(xdot, p) * pdot + k * x) == 0  # m x'' = m (d/dt)(p/m) = p' = -k x
     conserved = sp.simplify(sp.diff(H, x) * xdot + sp.diff(H, p) * pdot) == 0 and sp.diff(H, t) == 0
-    results.number("spring_hamilton_equations_exact", int(newton and conserved), "1",
-                   note="1: Hamilton's equations of $H = p^2/2m + kx^2/2$ give $m\\ddot x + kx = 0$, and "
-                        "$dH/dt = \\partial H/\\partial t = 0$ (sympy)")
+    results.number(
+        "spring_hamilton_equations_exact",
+        int(newton and conserved),
+        "1",
+        note="1: Hamilton's equations of $H = p^2/2m + kx^2/2$ give $m\\ddot x + kx = 0$, and "
+        "$dH/dt = \\partial H/\\partial t = 0$ (sympy)",
+    )
     mass, stiffness = 2.0, 3.0
     omega = np.sqrt(stiffness / mass)
     for name, A, z0, energy in (
-            ("lagrangian", np.array([[0.0, 1.0], [-stiffness / mass, 0.0]]), np.array([1.0, 0.3]),
-             lambda z: 0.5 * mass * z[1] ** 2 + 0.5 * stiffness * z[0] ** 2),
-            ("hamiltonian", np.array([[0.0, 1 / mass], [-stiffness, 0.0]]), np.array([1.0, 0.6]),
-             lambda z: z[1] ** 2 / (2 * mass) + 0.5 * stiffness * z[0] ** 2)):
+        (
+            "lagrangian",
+            np.array([[0.0, 1.0], [-stiffness / mass, 0.0]]),
+            np.array([1.0, 0.3]),
+            lambda z: 0.5 * mass * z[1] ** 2 + 0.5 * stiffness * z[0] ** 2,
+        ),
+        (
+            "hamiltonian",
+            np.array([[0.0, 1 / mass], [-stiffness, 0.0]]),
+            np.array([1.0, 0.6]),
+            lambda z: z[1] ** 2 / (2 * mass) + 0.5 * stiffness * z[0] ** 2,
+        ),
+    ):
         h = 2 * np.pi / omega / 20
-        step = np.linalg.solve(np.eye(2) - 0.5 * h * A, np.eye(2) + 0.5 * h * A)     # implicit midpoint
+        step = np.linalg.solve(np.eye(2) - 0.5 * h * A, np.eye(2) + 0.5 * h * A)  # implicit midpoint
         z, e0, worst = z0.copy(), energy(z0), 0.0
         for _ in range(100 * 20):
             z = step @ z
             worst = max(worst, abs(energy(z) / e0 - 1))
         variables = "$x$, $\\dot x$" if name == "lagrangian" else "$x$, $p$"
-        results.number(f"oscillator_{name}_midpoint_energy_change", float(worst), "1",
-                       note="largest relative change of $E$ over 100 periods, 20 implicit midpoint steps a period "
-                            f"({variables}; $m$ = 2, $k$ = 3)")
+        results.number(
+            f"oscillator_{name}_midpoint_energy_change",
+            float(worst),
+            "1",
+            note="largest relative change of $E$ over 100 periods, 20 implicit midpoint steps a period "
+            f"({variables}; $m$ = 2, $k$ = 3)",
+        )
 
 
 def _rotations(results, seed=22):
     """Handbook 2.2.1.1: Tr A = 1 + 2 cos phi in any axes; Ex. 2.2: the printed R, its axis and its angle.
     scipy's Rotation (quaternions) is the reference for the angle and the axis."""
     from scipy.spatial.transform import Rotation
+
     rotations = Rotation.random(1000, random_state=seed)
     others = Rotation.random(1000, random_state=seed + 1)
     R, B = rotations.as_matrix(), others.as_matrix()
     phi = rotations.magnitude()
     trace = np.trace(R, axis1=1, axis2=2)
     similar = np.trace(B @ R @ np.transpose(B, (0, 2, 1)), axis1=1, axis2=2)
-    worst = float(max(np.max(np.abs(trace - (1 + 2 * np.cos(phi)))), np.max(np.abs(similar - (1 + 2 * np.cos(phi))))))
-    results.number("rotation_trace_identity", worst, "1",
-                   note="largest $|\\mathrm{Tr}\\,R - (1 + 2\\cos\\varphi)|$ over 1000 random rotations, also "
-                        "after $R \\to BRB^{\\mathsf T}$ ($\\varphi$ from scipy's quaternions)")
+    worst = float(
+        max(np.max(np.abs(trace - (1 + 2 * np.cos(phi)))), np.max(np.abs(similar - (1 + 2 * np.cos(phi)))))
+    )
+    results.number(
+        "rotation_trace_identity",
+        worst,
+        "1",
+        note="largest $|\\mathrm{Tr}\\,R - (1 + 2\\cos\\varphi)|$ over 1000 random rotations, also "
+        "after $R \\to BRB^{\\mathsf T}$ ($\\varphi$ from scipy's quaternions)",
+    )
     r6 = np.sqrt(6.0)
     printed = np.array([[3, r6, 1], [-r6, 2, r6], [1, -r6, 3]]) / 4
-    results.number("ex2_2_orthogonality", float(np.max(np.abs(printed @ printed.T - np.eye(3)))), "1",
-                   note="largest entry of $RR^{\\mathsf T} - 1$, the handbook's $R$")
+    results.number(
+        "ex2_2_orthogonality",
+        float(np.max(np.abs(printed @ printed.T - np.eye(3)))),
+        "1",
+        note="largest entry of $RR^{\\mathsf T} - 1$, the handbook's $R$",
+    )
     lam, vectors = np.linalg.eig(printed)
     axis = np.real(vectors[:, np.argmin(np.abs(lam - 1))])
     expected = np.array([1.0, 0.0, 1.0]) / np.sqrt(2)
-    results.number("ex2_2_axis_misalignment", float(1 - abs(axis @ expected) / np.linalg.norm(axis)), "1",
-                   note="$1 - |\\cos|$ of the angle between the eigenvector of eigenvalue 1 and $(1, 0, 1)/\\sqrt2$")
+    results.number(
+        "ex2_2_axis_misalignment",
+        float(1 - abs(axis @ expected) / np.linalg.norm(axis)),
+        "1",
+        note="$1 - |\\cos|$ of the angle between the eigenvector of eigenvalue 1 and $(1, 0, 1)/\\sqrt2$",
+    )
     rotvec = Rotation.from_matrix(printed).as_rotvec()
-    results.number("ex2_2_rotvec_misalignment", float(1 - abs(rotvec @ expected) / np.linalg.norm(rotvec)), "1",
-                   note="the same for scipy's rotation vector")
-    results.number("ex2_2_angle_deg", float(np.degrees(Rotation.from_matrix(printed).magnitude())), "°",
-                   note="scipy's rotation angle of the handbook's $R$")
-    results.number("ex2_2_angle_from_trace_deg", float(np.degrees(np.arccos((np.trace(printed) - 1) / 2))), "°",
-                   note="$\\arccos((\\mathrm{Tr}\\,R - 1)/2)$")
+    results.number(
+        "ex2_2_rotvec_misalignment",
+        float(1 - abs(rotvec @ expected) / np.linalg.norm(rotvec)),
+        "1",
+        note="the same for scipy's rotation vector",
+    )
+    results.number(
+        "ex2_2_angle_deg",
+        float(np.degrees(Rotation.from_matrix(printed).magnitude())),
+        "°",
+        note="scipy's rotation angle of the handbook's $R$",
+    )
+    results.number(
+        "ex2_2_angle_from_trace_deg",
+        float(np.degrees(np.arccos((np.trace(printed) - 1) / 2))),
+        "°",
+        note="$\\arccos((\\mathrm{Tr}\\,R - 1)/2)$",
+    )

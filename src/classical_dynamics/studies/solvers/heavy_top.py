@@ -1,9 +1,9 @@
 """The heavy symmetric top (scene heavy_top): the body-frame integration against its closed forms.
 
-Every reference is a closed form of the integrals J3, Jz, E (top_model.Nutation: the roots of the cubic in
-cos theta, Jacobi's sn^2 for cos theta(t), the apsidal angle by quadrature), the quadratic of steady precession
-(Lamb Art. 54 (8)), Lamb's small-oscillation frequency (Art. 57 (13)) and the roots of the sleeping top (Art. 79),
-never the integrator. Runs are DOP853 at the scene's relative tolerance; apses are events theta' = 0.
+Every reference is a closed form of the integrals J3, Jz, E (top_model.Nutation: the roots of the cubic in cos
+theta, Jacobi's sn^2 for cos theta(t), the apsidal angle by quadrature), the quadratic of steady precession
+(Lamb Art. 54 (8)), Lamb's small-oscillation frequency (Art. 57 (13)) and the roots of the sleeping top (Art.
+79), never the integrator. Runs are DOP853 at the scene's relative tolerance; apses are events theta' = 0.
 """
 
 from __future__ import annotations
@@ -11,22 +11,28 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ...solvers.ode import Events, Problem, solve
-from ...solvers.timing import min_time
 from ...figure_style import PAIR_WIDTH_IN
 from ...provenance import software_stamp
+from ...solvers.ode import Events, Problem, solve
+from ...solvers.timing import min_time
 from ..results import new_figure
 from . import top_model as tm
 
 
 def _run(top, y0, T, rtol, t_eval=None, events=True, record=False, method="dop853"):
-    return solve(Problem(top.rhs, y0, (0.0, T), top.params), method, rtol=rtol, atol=rtol * 1e-3,
-                 t_eval=t_eval, events=Events(tm.apse, tm.APSE_EVENTS_N) if events else None,
-                 record_steps=record)
+    return solve(
+        Problem(top.rhs, y0, (0.0, T), top.params),
+        method,
+        rtol=rtol,
+        atol=rtol * 1e-3,
+        t_eval=t_eval,
+        events=Events(tm.apse, tm.APSE_EVENTS_N) if events else None,
+        record_steps=record,
+    )
 
 
 def _apses(sol):
-    keep = sol.event_t > 1e-9                                     # the start itself may sit at an apse
+    keep = sol.event_t > 1e-9  # the start itself may sit at an apse
     return sol.event_t[keep], sol.event_y[keep]
 
 
@@ -56,12 +62,13 @@ def run(scene, results, quick):
 
 
 def _reciprocal(results, top, n, alpha, tau=3.0, impulse=1e-6):
-    """Lamb's reciprocal theorem (Art. 107, Ex. 3): an impulsive couple about the vertical (p_phi += J) changes
-    the inclination after tau by d theta; in the reversed motion (every velocity, the spin too, reversed) an
-    equal couple in the plane of theta (p_theta += J) changes the azimuth after tau by d phi = d theta.
-    Canonical equations in Euler angles (theta, azimuth phi, spin angle psi), DOP853 (scipy), central
+    """Lamb's reciprocal theorem (Art. 107, Ex. 3): an impulsive couple about the vertical (p_phi += J)
+    changes the inclination after tau by d theta; in the reversed motion (every velocity, the spin too,
+    reversed) an equal couple in the plane of theta (p_theta += J) changes the azimuth after tau by d phi = d
+    theta. Canonical equations in Euler angles (theta, azimuth phi, spin angle psi), DOP853 (scipy), central
     differences of two runs each: independent of the body-frame model."""
     from scipy.integrate import solve_ivp
+
     A, C, Mgh = top.A, top.C, top.Mgh
 
     def rhs(_, z):
@@ -69,8 +76,16 @@ def _reciprocal(results, top, n, alpha, tau=3.0, impulse=1e-6):
         s, c = np.sin(th), np.cos(th)
         u = p_ph - p_ps * c
         dphi = u / (A * s * s)
-        return np.array([p_th / A, dphi, p_ps / C - c * dphi, -(u * p_ps / (A * s) - u * u * c / (A * s**3))
-                         + Mgh * s, 0.0, 0.0])
+        return np.array(
+            [
+                p_th / A,
+                dphi,
+                p_ps / C - c * dphi,
+                -(u * p_ps / (A * s) - u * u * c / (A * s**3)) + Mgh * s,
+                0.0,
+                0.0,
+            ]
+        )
 
     def flow(z):
         return solve_ivp(rhs, (0.0, tau), z, method="DOP853", rtol=1e-13, atol=1e-15).y[:, -1]
@@ -82,20 +97,44 @@ def _reciprocal(results, top, n, alpha, tau=3.0, impulse=1e-6):
     end = flow(z0)
     reversed_start = np.concatenate([end[:3], -end[3:]])
     d_phi = (flow(reversed_start + kick_plane)[1] - flow(reversed_start - kick_plane)[1]) / 2
-    results.number("reciprocal_d_theta", float(d_theta / impulse), "1/(A n)",
-                   note=f"$\\delta\\theta$ after $\\tau$ = {tau:g} per unit impulsive couple about the vertical")
-    results.number("reciprocal_d_psi_reversed", float(d_phi / impulse), "1/(A n)",
-                   note="$\\delta\\psi$ (azimuth) after the same time in the reversed motion per unit couple in "
-                        "the plane of $\\theta$")
-    results.number("reciprocal_relative_difference", float(abs(d_phi - d_theta) / abs(d_theta)), "1",
-                   note="central differences, impulse $10^{-6}$, DOP853 at rtol $10^{-13}$")
+    results.number(
+        "reciprocal_d_theta",
+        float(d_theta / impulse),
+        "1/(A n)",
+        note=f"$\\delta\\theta$ after $\\tau$ = {tau:g} per unit impulsive couple about the vertical",
+    )
+    results.number(
+        "reciprocal_d_psi_reversed",
+        float(d_phi / impulse),
+        "1/(A n)",
+        note="$\\delta\\psi$ (azimuth) after the same time in the reversed motion per unit couple in "
+        "the plane of $\\theta$",
+    )
+    results.number(
+        "reciprocal_relative_difference",
+        float(abs(d_phi - d_theta) / abs(d_theta)),
+        "1",
+        note="central differences, impulse $10^{-6}$, DOP853 at rtol $10^{-13}$",
+    )
     d_phi_forward = (flow(z0 + kick_plane)[1] - flow(z0 - kick_plane)[1]) / 2
-    results.number("reciprocal_unreversed_relative_difference", float(abs(d_phi_forward - d_theta) / abs(d_theta)),
-                   "1", note="the same couple in the plane of $\\theta$ on the forward motion instead: no reciprocity")
-    energy = lambda z: (z[3] ** 2 / (2 * A) + (z[4] - z[5] * np.cos(z[0])) ** 2 / (2 * A * np.sin(z[0]) ** 2)  # noqa
-                        + z[5] ** 2 / (2 * C) + Mgh * np.cos(z[0]))
-    results.number("reciprocal_energy_check", float(abs(energy(end) / energy(z0) - 1)), "1",
-                   note="the Euler-angle run's energy change (relative)")
+    results.number(
+        "reciprocal_unreversed_relative_difference",
+        float(abs(d_phi_forward - d_theta) / abs(d_theta)),
+        "1",
+        note="the same couple in the plane of $\\theta$ on the forward motion instead: no reciprocity",
+    )
+    energy = lambda z: (
+        z[3] ** 2 / (2 * A)
+        + (z[4] - z[5] * np.cos(z[0])) ** 2 / (2 * A * np.sin(z[0]) ** 2)
+        + z[5] ** 2 / (2 * C)
+        + Mgh * np.cos(z[0])
+    )
+    results.number(
+        "reciprocal_energy_check",
+        float(abs(energy(end) / energy(z0) - 1)),
+        "1",
+        note="the Euler-angle run's energy change (relative)",
+    )
 
 
 def _general_start(top, n, alpha):
@@ -117,24 +156,37 @@ def _general(results, top, n, alpha, nutations, rtol):
     results.number("integrals_Jz_drift", drift[1], "1")
     results.number("integrals_E_drift", drift[2], "1")
     results.number("integrals_max_drift", max(drift), "1", note=f"{nutations} nutations, rtol {rtol:g}")
-    results.hard_case("top_integrals", f"The heavy top over {nutations} nutations (DOP853, relative tolerance "
-                      "$10^{-12}$): the largest relative drift of $J_3$, $J_z$ and $E$", max(drift), 1e-10)
+    results.hard_case(
+        "top_integrals",
+        f"The heavy top over {nutations} nutations (DOP853, relative tolerance "
+        "$10^{-12}$): the largest relative drift of $J_3$, $J_z$ and $E$",
+        max(drift),
+        1e-10,
+    )
     # the rates read from the body rates and the vertical, against the closed forms at theta(t)
     phi_dot, psi_dot = tm.rates(top, sol.y_steps)
     u = sol.y_steps[:, 5]
     phi_closed = (Jz - J3 * u) / (top.A * (1 - u * u))
     psi_closed = J3 / top.C - phi_closed * u
-    rate_error = max(np.max(np.abs(phi_dot - phi_closed)) / np.max(np.abs(phi_closed)),
-                     np.max(np.abs(psi_dot - psi_closed)) / np.max(np.abs(psi_closed)))
-    results.number("rates_max_relative_difference", float(rate_error), "1",
-                   note="phi' and psi' from (omega, gamma) against (Jz - J3 cos)/(A sin^2), J3/C - phi' cos")
+    rate_error = max(
+        np.max(np.abs(phi_dot - phi_closed)) / np.max(np.abs(phi_closed)),
+        np.max(np.abs(psi_dot - psi_closed)) / np.max(np.abs(psi_closed)),
+    )
+    results.number(
+        "rates_max_relative_difference",
+        float(rate_error),
+        "1",
+        note="phi' and psi' from (omega, gamma) against (Jz - J3 cos)/(A sin^2), J3/C - phi' cos",
+    )
     # the apses: inclinations, times and azimuth advance, against the roots, K(m) and the quadrature
     t_apse, y_apse = _apses(sol)
     theta, phi, _ = tm.angles(np.vstack([y0, y_apse]))
     theta, phi = theta[1:], phi[1:] - phi[0]
-    roots = np.arccos([nut.u2, nut.u1])                            # smallest and largest inclination
+    roots = np.arccos([nut.u2, nut.u1])  # smallest and largest inclination
     lower = theta > 0.5 * (roots[0] + roots[1])
-    theta_error = max(np.max(np.abs(theta[~lower] / roots[0] - 1)), np.max(np.abs(theta[lower] / roots[1] - 1)))
+    theta_error = max(
+        np.max(np.abs(theta[~lower] / roots[0] - 1)), np.max(np.abs(theta[lower] / roots[1] - 1))
+    )
     period_error = abs(2 * _half_period(t_apse) / nut.period - 1)
     advance = np.diff(np.concatenate([[0.0], phi]))
     apsidal = nut.apsidal_angle()
@@ -144,14 +196,18 @@ def _general(results, top, n, alpha, nutations, rtol):
     results.number("turning_points_max_relative_difference", float(theta_error), "1")
     results.number("nutation_period", float(nut.period), "time units", note="2K(m)/lambda")
     results.number("nutation_period_relative_difference", float(period_error), "1")
-    results.number("turning_points_and_period_max_relative_difference", float(max(theta_error, period_error)), "1")
+    results.number(
+        "turning_points_and_period_max_relative_difference", float(max(theta_error, period_error)), "1"
+    )
     results.number("apsidal_angle", float(apsidal), "rad", note="quadrature between the roots")
-    results.number("apsidal_angle_max_difference", apsidal_error, "rad", note=f"{advance.size} half nutations")
+    results.number(
+        "apsidal_angle_max_difference", apsidal_error, "rad", note=f"{advance.size} half nutations"
+    )
     results.number("apses", int(t_apse.size), "1")
     # the figure: the path of the apex over a first few nutations, between the circles of the two roots
-    t_fig = np.linspace(0.0, min(T, np.pi / apsidal * nut.period), 1601)       # one turn in azimuth
+    t_fig = np.linspace(0.0, min(T, np.pi / apsidal * nut.period), 1601)  # one turn in azimuth
     k = tm.axis_in_space(_run(top, y0, t_fig[-1], rtol, t_eval=t_fig, events=False).y_eval)
-    fig, ax = new_figure(width=PAIR_WIDTH_IN, height=2.7)     # printed beside its table
+    fig, ax = new_figure(width=PAIR_WIDTH_IN, height=2.7)  # printed beside its table
     ring = np.linspace(0, 2 * np.pi, 361)
     for u, style, label in ((nut.u2, "--", "$\\theta_1$"), (nut.u1, ":", "$\\theta_2$")):
         r = np.sqrt(1 - u * u)
@@ -161,22 +217,37 @@ def _general(results, top, n, alpha, nutations, rtol):
     ax.set_xlabel("$k_x$")
     ax.set_ylabel("$k_y$")
     ax.legend(loc="center", fontsize=7, frameon=False)
-    results.figure("apex_path", fig, "The apex of the heavy top seen from above: the horizontal components "
-                   "$(k_x, k_y)$ of the unit figure axis over one turn in azimuth, integrated in the body "
-                   "frame, between the circles at the inclinations $\\theta_1$, $\\theta_2$ where "
-                   "$E = U_\\mathrm{eff}(\\theta)$ (roots of the cubic in $\\cos\\theta$). The path touches the two "
-                   "circles alternately, advancing by the same azimuth from apse to apse (Lamb 1920, Art. 57).")
+    results.figure(
+        "apex_path",
+        fig,
+        "The apex of the heavy top seen from above: the horizontal components "
+        "$(k_x, k_y)$ of the unit figure axis over one turn in azimuth, integrated in the body "
+        "frame, between the circles at the inclinations $\\theta_1$, $\\theta_2$ where "
+        "$E = U_\\mathrm{eff}(\\theta)$ (roots of the cubic in $\\cos\\theta$). The path touches the two "
+        "circles alternately, advancing by the same azimuth from apse to apse (Lamb 1920, Art. 57).",
+    )
     # Lamb Art. 55: the pole as a particle of mass A with the deviating force Cn v, against the full top
     t_cmp = np.linspace(0.0, min(T, 50 * nut.period), 2001)
     full = tm.axis_in_space(_run(top, y0, t_cmp[-1], rtol, t_eval=t_cmp, events=False).y_eval)
     w_space = tm.rotation(0.0, alpha, 0.0) @ y0[:3]
     k0 = full[0]
-    particle = solve(Problem(tm.pole_particle, np.concatenate([k0, np.cross(w_space, k0)]), (0.0, t_cmp[-1]),
-                             np.array([top.A, J3, top.Mgh])), "dop853", rtol=rtol, atol=rtol * 1e-3, t_eval=t_cmp)
+    particle = solve(
+        Problem(
+            tm.pole_particle,
+            np.concatenate([k0, np.cross(w_space, k0)]),
+            (0.0, t_cmp[-1]),
+            np.array([top.A, J3, top.Mgh]),
+        ),
+        "dop853",
+        rtol=rtol,
+        atol=rtol * 1e-3,
+        t_eval=t_cmp,
+    )
     kp = particle.y_eval[:, :3]
     angle = np.arctan2(np.linalg.norm(np.cross(full, kp), axis=1), np.sum(full * kp, axis=1))
-    results.number("pole_particle_max_angle", float(np.max(angle)), "rad",
-                   note=f"{t_cmp[-1] / nut.period:.0f} nutations")
+    results.number(
+        "pole_particle_max_angle", float(np.max(angle)), "rad", note=f"{t_cmp[-1] / nut.period:.0f} nutations"
+    )
     # Darboux (Lamb Ex. XI.9): (A, A, C, n) and (A, A, A, Cn/A) keep step; spin angles differ by (C - A) n t/A
     sphere = tm.Top(top.A, top.A, top.Mgh)
     y0s = y0.copy()
@@ -193,17 +264,25 @@ def _general(results, top, n, alpha, nutations, rtol):
 
 
 def _steady(results, top, n, rtol):
-    """Steady precession at either root (Lamb Art. 54 (8)), the horizontal gyroscope and the conical pendulum."""
+    """Steady precession at either root (Lamb Art. 54 (8)), the horizontal gyroscope and the conical
+    pendulum."""
     J3 = top.C * n
     rows = []
     for alpha_deg in (30.0, 60.0, 120.0):
         alpha = np.radians(alpha_deg)
         for which, rate in zip(("slow", "fast"), tm.steady_roots(top.A, J3, top.Mgh, alpha)):
-            T = 10 * 2 * np.pi / abs(rate)                          # ten turns of the precession
+            T = 10 * 2 * np.pi / abs(rate)  # ten turns of the precession
             sol = _run(top, top.state(alpha, 0.0, rate, n), T, rtol, record=True, events=False)
             theta, phi, _ = tm.angles(sol.y_steps)
-            rows.append({"alpha_deg": alpha_deg, "root": which, "rate": rate, "theta_deviation": float(
-                np.max(np.abs(theta - alpha))), "rate_relative_difference": float(abs(phi[-1] / T / rate - 1))})
+            rows.append(
+                {
+                    "alpha_deg": alpha_deg,
+                    "root": which,
+                    "rate": rate,
+                    "theta_deviation": float(np.max(np.abs(theta - alpha))),
+                    "rate_relative_difference": float(abs(phi[-1] / T / rate - 1)),
+                }
+            )
     # the conical pendulum: no spin, hanging below the support at 120 degrees
     alpha = np.radians(120.0)
     rate = np.sqrt(-top.Mgh / (top.A * np.cos(alpha)))
@@ -212,14 +291,26 @@ def _steady(results, top, n, rtol):
     theta, phi, _ = tm.angles(sol.y_steps)
     conical = float(np.max(np.abs(theta - alpha)))
     frame = pd.DataFrame(rows)
-    results.table("steady_precession", frame, "Steady precession of the heavy top started at either root of "
-                  "$A\\omega^2\\cos\\alpha - Cn\\omega + Mgh = 0$, ten turns: the largest departure of $\\theta$ from "
-                  "$\\alpha$ and the relative difference of the measured mean rate from the root.",
-                  headers={"alpha_deg": "$\\alpha$ (°)", "root": "root", "rate": "$\\dot\\varphi$ (per time unit)",
-                           "theta_deviation": "largest $|\\theta - \\alpha|$ (rad)",
-                           "rate_relative_difference": "rate, relative difference"})
-    results.number("steady_theta_max_deviation", float(frame.theta_deviation.max()), "rad",
-                   note="both roots at 30, 60, 120 degrees")
+    results.table(
+        "steady_precession",
+        frame,
+        "Steady precession of the heavy top started at either root of "
+        "$A\\omega^2\\cos\\alpha - Cn\\omega + Mgh = 0$, ten turns: the largest departure of $\\theta$ from "
+        "$\\alpha$ and the relative difference of the measured mean rate from the root.",
+        headers={
+            "alpha_deg": "$\\alpha$ (°)",
+            "root": "root",
+            "rate": "$\\dot\\varphi$ (per time unit)",
+            "theta_deviation": "largest $|\\theta - \\alpha|$ (rad)",
+            "rate_relative_difference": "rate, relative difference",
+        },
+    )
+    results.number(
+        "steady_theta_max_deviation",
+        float(frame.theta_deviation.max()),
+        "rad",
+        note="both roots at 30, 60, 120 degrees",
+    )
     results.number("steady_rate_max_relative_difference", float(frame.rate_relative_difference.max()), "1")
     results.number("conical_pendulum_rate", float(rate), "1/time", note="sqrt(-Mgh/(A cos 120 deg))")
     results.number("conical_pendulum_theta_deviation", conical, "rad")
@@ -227,29 +318,44 @@ def _steady(results, top, n, rtol):
     alpha = np.radians(60.0)
     spin_threshold = np.sqrt(4 * top.A * top.Mgh * np.cos(alpha)) / top.C
     results.number("steady_threshold_spin_60deg", float(spin_threshold), "1/time")
-    results.number("steady_roots_exist_just_below", tm.steady_roots(top.A, 0.999 * top.C * spin_threshold,
-                                                                    top.Mgh, alpha) is not None, "bool")
-    results.number("conical_roots_exist_above_support", tm.steady_roots(top.A, 0.0, top.Mgh, np.radians(60.0))
-                   is not None, "bool", note="J3 = 0, cos theta > 0: no real root")
+    results.number(
+        "steady_roots_exist_just_below",
+        tm.steady_roots(top.A, 0.999 * top.C * spin_threshold, top.Mgh, alpha) is not None,
+        "bool",
+    )
+    results.number(
+        "conical_roots_exist_above_support",
+        tm.steady_roots(top.A, 0.0, top.Mgh, np.radians(60.0)) is not None,
+        "bool",
+        note="J3 = 0, cos theta > 0: no real root",
+    )
 
 
 def _roots_limits(results, top):
     """The slow and fast roots against Mgh/J3 and J3/(A cos alpha) as the spin grows (Lamb Art. 55)."""
     alpha = np.radians(60.0)
-    ratio = np.geomspace(10.0, 1e4, 7)                               # J3^2 / (4 A Mgh cos alpha)
+    ratio = np.geomspace(10.0, 1e4, 7)  # J3^2 / (4 A Mgh cos alpha)
     J3 = np.sqrt(4 * top.A * top.Mgh * np.cos(alpha) * ratio)
     slow = np.array([tm.steady_roots(top.A, j, top.Mgh, alpha)[0] for j in J3])
     fast = np.array([tm.steady_roots(top.A, j, top.Mgh, alpha)[1] for j in J3])
     d_slow = np.abs(slow / (top.Mgh / J3) - 1)
     d_fast = np.abs(fast / (J3 / (top.A * np.cos(alpha))) - 1)
-    results.number("slow_root_slope", float(np.polyfit(np.log(J3), np.log(d_slow), 1)[0]), "1",
-                   note="log |slow/(Mgh/J3) - 1| against log J3, J3^2/(4 A Mgh cos a) from 10 to 10^4")
+    results.number(
+        "slow_root_slope",
+        float(np.polyfit(np.log(J3), np.log(d_slow), 1)[0]),
+        "1",
+        note="log |slow/(Mgh/J3) - 1| against log J3, J3^2/(4 A Mgh cos a) from 10 to 10^4",
+    )
     results.number("fast_root_slope", float(np.polyfit(np.log(J3), np.log(d_fast), 1)[0]), "1")
     results.number("slow_root_difference_at_10", float(d_slow[0]), "1")
     results.number("fast_root_difference_at_10", float(d_fast[0]), "1")
     free = tm.steady_roots(top.A, 1.0, 0.0, alpha)[1]
-    results.number("fast_root_free_difference", float(abs(free / (1.0 / (top.A * np.cos(alpha))) - 1)), "1",
-                   note="Mgh = 0")
+    results.number(
+        "fast_root_free_difference",
+        float(abs(free / (1.0 / (top.A * np.cos(alpha))) - 1)),
+        "1",
+        note="Mgh = 0",
+    )
 
 
 def _gyroscope(results, top, rtol):
@@ -262,16 +368,21 @@ def _gyroscope(results, top, rtol):
     theta, phi, _ = tm.angles(sol.y_steps)
     results.number("gyroscope_J3", float(J3), "1")
     results.number("gyroscope_rate_measured", float(phi[-1] / T), "1/time", note="mean over five turns")
-    results.number("gyroscope_rate_relative_difference", float(abs(phi[-1] / T / rate - 1)), "1",
-                   note="measured mean rate over five turns against Mgh/J3")
+    results.number(
+        "gyroscope_rate_relative_difference",
+        float(abs(phi[-1] / T / rate - 1)),
+        "1",
+        note="measured mean rate over five turns against Mgh/J3",
+    )
     results.number("gyroscope_theta_deviation", float(np.max(np.abs(theta - np.pi / 2))), "rad")
     sigma = tm.nutation_frequency(top.A, J3, np.pi / 2, rate)
     eps = 1e-4
     sol = _run(top, top.state(np.pi / 2, eps * sigma, rate, n), 40 * 2 * np.pi / sigma, rtol)
     measured = np.pi / _half_period(_apses(sol)[0])
     results.number("gyroscope_nutation_frequency", float(measured), "1/time")
-    results.number("gyroscope_nutation_vs_J3_over_A", float(measured / (J3 / top.A) - 1), "1",
-                   note="J3^2/(A Mgh) = 100")
+    results.number(
+        "gyroscope_nutation_vs_J3_over_A", float(measured / (J3 / top.A) - 1), "1", note="J3^2/(A Mgh) = 100"
+    )
     results.number("gyroscope_nutation_vs_sigma", float(measured / sigma - 1), "1")
 
 
@@ -286,18 +397,37 @@ def _oscillation(results, top, rtol):
             sigma = tm.nutation_frequency(top.A, J3, alpha, rate)
             sol = _run(top, top.state(alpha, 1e-4 * sigma, rate, n), 40 * 2 * np.pi / sigma, rtol)
             measured = np.pi / _half_period(_apses(sol)[0])
-            rows.append({"alpha_deg": alpha_deg, "root": which, "sigma": sigma, "measured": measured,
-                         "relative_difference": measured / sigma - 1})
+            rows.append(
+                {
+                    "alpha_deg": alpha_deg,
+                    "root": which,
+                    "sigma": sigma,
+                    "measured": measured,
+                    "relative_difference": measured / sigma - 1,
+                }
+            )
     frame = pd.DataFrame(rows)
-    results.table("nutation_frequency", frame, "Nutation of a disturbed steady precession ($\\dot\\theta_0 = "
-                  "10^{-4}\\sigma$): the frequency measured from 80 apses against Lamb's $\\sigma$, Art. 57 (13).",
-                  headers={"alpha_deg": "$\\alpha$ (°)", "root": "root", "sigma": "$\\sigma$ (per time unit)",
-                           "measured": "measured (per time unit)", "relative_difference": "relative difference"})
-    results.number("nutation_sigma_max_relative_difference", float(frame.relative_difference.abs().max()), "1")
+    results.table(
+        "nutation_frequency",
+        frame,
+        "Nutation of a disturbed steady precession ($\\dot\\theta_0 = "
+        "10^{-4}\\sigma$): the frequency measured from 80 apses against Lamb's $\\sigma$, Art. 57 (13).",
+        headers={
+            "alpha_deg": "$\\alpha$ (°)",
+            "root": "root",
+            "sigma": "$\\sigma$ (per time unit)",
+            "measured": "measured (per time unit)",
+            "relative_difference": "relative difference",
+        },
+    )
+    results.number(
+        "nutation_sigma_max_relative_difference", float(frame.relative_difference.abs().max()), "1"
+    )
 
 
 def _sleeping(results, top, rtol, quick):
-    """The sleeping top (Lamb Art. 79): nu = Cn against 4 A Mgh, started 1e-4 rad from the vertical at rest."""
+    """The sleeping top (Lamb Art. 79): nu = Cn against 4 A Mgh, started 1e-4 rad from the vertical at
+    rest."""
     theta0 = 1e-4
     spin_periods = 100 if quick else 1000
     out = {}
@@ -320,19 +450,33 @@ def _sleeping(results, top, rtol, quick):
     results.number("sleeping_above_linear_bound", float(bound), "rad", note="theta0 nu / sqrt(nu^2 - 4AMgh)")
     results.number("sleeping_above_ratio_to_bound", float(largest / bound), "1")
     results.number("sleeping_above_ratio_to_start", float(largest / theta0), "1")
-    results.number("sleeping_below_largest_tilt_deg", float(np.degrees(out[0.99][1])), "°",
-                   note="nu^2/4AMgh = 0.99")
-    results.number("sleeping_below_root_deg", float(np.degrees(below_root)), "°",
-                   note="the outer root of the cubic in cos theta")
+    results.number(
+        "sleeping_below_largest_tilt_deg", float(np.degrees(out[0.99][1])), "°", note="nu^2/4AMgh = 0.99"
+    )
+    results.number(
+        "sleeping_below_root_deg",
+        float(np.degrees(below_root)),
+        "°",
+        note="the outer root of the cubic in cos theta",
+    )
     results.number("sleeping_spin_periods", spin_periods, "1")
     results.number("sleeping_start_tilt", theta0, "rad")
     results.number("sleeping_ratio_above", 1.01, "1", note="nu^2/4AMgh")
     results.number("sleeping_ratio_below", 0.99, "1", note="nu^2/4AMgh")
-    results.hard_case("sleeping_top_above", "The sleeping top at $\\nu^2/4AMgh = 1.01$, started $10^{-4}$ rad "
-                      f"from the vertical, over {spin_periods} spin periods: largest tilt against the linear bound "
-                      "$\\theta_0\\nu/\\sqrt{\\nu^2 - 4AMgh}$ (relative difference)", largest / bound - 1, 1e-3)
-    results.hard_case("sleeping_top_below", "The same at $\\nu^2/4AMgh = 0.99$: 10° over the largest tilt "
-                      "(the top falls away from the vertical)", np.radians(10.0) / out[0.99][1], 1.0)
+    results.hard_case(
+        "sleeping_top_above",
+        "The sleeping top at $\\nu^2/4AMgh = 1.01$, started $10^{-4}$ rad "
+        f"from the vertical, over {spin_periods} spin periods: largest tilt against the linear bound "
+        "$\\theta_0\\nu/\\sqrt{\\nu^2 - 4AMgh}$ (relative difference)",
+        largest / bound - 1,
+        1e-3,
+    )
+    results.hard_case(
+        "sleeping_top_below",
+        "The same at $\\nu^2/4AMgh = 0.99$: 10° over the largest tilt (the top falls away from the vertical)",
+        np.radians(10.0) / out[0.99][1],
+        1.0,
+    )
     # Art. 58 / 79: the two circular frequencies of a small-tilt run, nu^2/4AMgh = 4
     nu = np.sqrt(16 * top.A * top.Mgh)
     n = nu / top.C
@@ -340,7 +484,9 @@ def _sleeping(results, top, rtol, quick):
     exact = np.array([(nu - root) / (2 * top.A), (nu + root) / (2 * top.A)])
     dt = 0.05
     t = np.arange(0, 4000) * dt
-    y = _run(top, top.state(theta0, 0.3 * theta0 * exact[0], 0.0, n), t[-1], rtol, t_eval=t, events=False).y_eval
+    y = _run(
+        top, top.state(theta0, 0.3 * theta0 * exact[0], 0.0, n), t[-1], rtol, t_eval=t, events=False
+    ).y_eval
     k = tm.axis_in_space(y)
     z = k[:, 0] + 1j * k[:, 1]
     # two exponentials: z[j + 2] = c1 z[j + 1] + c0 z[j] by least squares, roots exp(i sigma dt)
@@ -350,16 +496,23 @@ def _sleeping(results, top, rtol, quick):
     results.number("upright_sigma_exact", exact.tolist(), "1/time", note="[nu -+ sqrt(nu^2 - 4AMgh)]/2A")
     results.number("upright_sigma_fitted", fitted.tolist(), "1/time")
     results.number("upright_sigma_max_relative_difference", float(np.max(np.abs(fitted / exact - 1))), "1")
-    results.number("upright_revolving_rate", float(fitted.mean()), "1/time", note="(sigma1 + sigma2)/2 = nu/2A")
-    results.number("upright_ellipse_period", float(4 * np.pi / (fitted[1] - fitted[0])), "time units",
-                   note="4 pi/(sigma2 - sigma1) = 4 pi A/sqrt(nu^2 - 4AMgh)")
+    results.number(
+        "upright_revolving_rate", float(fitted.mean()), "1/time", note="(sigma1 + sigma2)/2 = nu/2A"
+    )
+    results.number(
+        "upright_ellipse_period",
+        float(4 * np.pi / (fitted[1] - fitted[0])),
+        "time units",
+        note="4 pi/(sigma2 - sigma1) = 4 pi A/sqrt(nu^2 - 4AMgh)",
+    )
     results.number("upright_ellipse_period_closed_form", float(4 * np.pi * top.A / root), "time units")
 
 
 def _descent(results, top, rtol):
-    """Lamb Ex. XI.8: released at rest at alpha, the axis descends through about 2 A Mgh sin alpha / C^2 n^2."""
+    """Lamb Ex. XI.8: released at rest at alpha, the axis descends through about 2 A Mgh sin alpha / C^2
+    n^2."""
     alpha = np.radians(60.0)
-    small = np.geomspace(1e-2, 1e-4, 5)                               # A Mgh / C^2 n^2
+    small = np.geomspace(1e-2, 1e-4, 5)  # A Mgh / C^2 n^2
     rows = []
     for s in small:
         n = np.sqrt(top.A * top.Mgh / s) / top.C
@@ -370,13 +523,24 @@ def _descent(results, top, rtol):
         theta = tm.angles(_apses(sol)[1])[0]
         descent = float(np.max(theta) - alpha)
         lamb = 2 * s * np.sin(alpha)
-        rows.append({"AMgh_over_C2n2": s, "descent": descent, "lamb": lamb,
-                     "exact": float(np.arccos(nut.u1) - alpha), "relative_difference": descent / lamb - 1})
+        rows.append(
+            {
+                "AMgh_over_C2n2": s,
+                "descent": descent,
+                "lamb": lamb,
+                "exact": float(np.arccos(nut.u1) - alpha),
+                "relative_difference": descent / lamb - 1,
+            }
+        )
     frame = pd.DataFrame(rows)
-    slope = np.polyfit(np.log(np.sqrt(1 / frame.AMgh_over_C2n2)), np.log(np.abs(frame.relative_difference)), 1)[0]
+    slope = np.polyfit(
+        np.log(np.sqrt(1 / frame.AMgh_over_C2n2)), np.log(np.abs(frame.relative_difference)), 1
+    )[0]
     results.number("descent_slope", float(slope), "1", note="log |descent/Lamb - 1| against log n")
     results.number("descent_relative_difference_fastest", float(frame.relative_difference.iloc[-1]), "1")
-    results.number("descent_vs_root_max_relative", float(np.max(np.abs(frame.descent / frame.exact - 1))), "1")
+    results.number(
+        "descent_vs_root_max_relative", float(np.max(np.abs(frame.descent / frame.exact - 1))), "1"
+    )
 
 
 def _work_precision(results, top, n, alpha, numerics, quick):
@@ -393,29 +557,60 @@ def _work_precision(results, top, n, alpha, numerics, quick):
         for rtol in numerics.get("tolerances", [1e-6, 1e-9, 1e-12]):
             if quick and rtol < 1e-9:
                 continue
-            seconds, _, runs = min_time(lambda: solve(problem, method, rtol=rtol, atol=rtol * 1e-3),
-                                        repeats=2 if quick else int(numerics.get("repeats", 5)), budget_s=1.0)
+            seconds, _, runs = min_time(
+                lambda: solve(problem, method, rtol=rtol, atol=rtol * 1e-3),
+                repeats=2 if quick else int(numerics.get("repeats", 5)),
+                budget_s=1.0,
+            )
             sol = solve(problem, method, rtol=rtol, atol=rtol * 1e-3, t_eval=t)
             steps = solve(problem, method, rtol=rtol, atol=rtol * 1e-3, record_steps=True)
             drift = max(float(np.max(np.abs(v - v[0])) / abs(v[0])) for v in top.integrals(steps.y_steps)[1:])
-            rows.append({"method": method, "rtol": rtol, "error": float(np.max(np.abs(sol.y_eval[:, 5] - exact))),
-                         "steps": int(steps.n_steps), "evaluations": int(steps.nfev), "drift": drift,
-                         "seconds": seconds, "runs": runs})
+            rows.append(
+                {
+                    "method": method,
+                    "rtol": rtol,
+                    "error": float(np.max(np.abs(sol.y_eval[:, 5] - exact))),
+                    "steps": int(steps.n_steps),
+                    "evaluations": int(steps.nfev),
+                    "drift": drift,
+                    "seconds": seconds,
+                    "runs": runs,
+                }
+            )
     frame = pd.DataFrame(rows)
-    headers = {"method": "method", "rtol": "rtol", "error": "error in $\\cos\\theta$", "steps": "steps",
-               "evaluations": "evaluations", "drift": "drift of $J_z$, $E$", "seconds": "wall time (s)",
-               "runs": "runs timed"}
-    results.timing_table("top_work_precision", frame, "The heavy top over 20 nutations: the largest error of "
-                         "$\\cos\\theta$ on 100 points against Jacobi's $\\mathrm{sn}^2$, steps, evaluations, the "
-                         "largest relative drift of $J_z$ and $E$, and the wall time (minimum over repeated runs). "
-                         f"{software_stamp()}.", headers=headers)
+    headers = {
+        "method": "method",
+        "rtol": "rtol",
+        "error": "error in $\\cos\\theta$",
+        "steps": "steps",
+        "evaluations": "evaluations",
+        "drift": "drift of $J_z$, $E$",
+        "seconds": "wall time (s)",
+        "runs": "runs timed",
+    }
+    results.timing_table(
+        "top_work_precision",
+        frame,
+        "The heavy top over 20 nutations: the largest error of "
+        "$\\cos\\theta$ on 100 points against Jacobi's $\\mathrm{sn}^2$, steps, evaluations, the "
+        "largest relative drift of $J_z$ and $E$, and the wall time (minimum over repeated runs). "
+        f"{software_stamp()}.",
+        headers=headers,
+    )
     accuracy = frame.drop(columns=["seconds", "runs"])
-    results.table("top_accuracy", accuracy, "The heavy top over 20 nutations: the largest error of $\\cos\\theta$ "
-                  "on 100 points against Jacobi's $\\mathrm{sn}^2$, by method and relative tolerance.", headers=headers)
+    results.table(
+        "top_accuracy",
+        accuracy,
+        "The heavy top over 20 nutations: the largest error of $\\cos\\theta$ "
+        "on 100 points against Jacobi's $\\mathrm{sn}^2$, by method and relative tolerance.",
+        headers=headers,
+    )
     for method in ("dop853", "scipy:DOP853", "scipy:RK45"):
         part = frame[frame.method == method]
         if len(part):
             tight = part[part.rtol == part.rtol.min()].iloc[0]
             key = method.replace(":", "_").lower()
-            results.number(f"top_{key}_error_at_tightest", float(tight.error), "1", note=f"rtol {tight.rtol:g}")
+            results.number(
+                f"top_{key}_error_at_tightest", float(tight.error), "1", note=f"rtol {tight.rtol:g}"
+            )
             results.number(f"top_{key}_steps_at_tightest", int(tight.steps), "steps")

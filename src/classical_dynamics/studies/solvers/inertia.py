@@ -1,9 +1,9 @@
 """Moments of inertia by quadrature (scene inertia): the textbook bodies against their closed forms.
 
-I_ij = integral of rho (r^2 delta_ij - x_i x_j) dV over the body, by product rules: Gauss-Legendre in radii and
-lengths, the trapezoidal rule in angles (exact for the trigonometric polynomials that appear). The mass comes from
-the same rule, so every moment is in units of M (length)^2. The references are the closed forms the sources
-print (rod, disc, rectangle, sphere, cylinder, torus) and the two theorems, never a second quadrature.
+I_ij = integral of rho (r^2 delta_ij - x_i x_j) dV over the body, by product rules: Gauss-Legendre in radii
+and lengths, the trapezoidal rule in angles (exact for the trigonometric polynomials that appear). The mass
+comes from the same rule, so every moment is in units of M (length)^2. The references are the closed forms the
+sources print (rod, disc, rectangle, sphere, cylinder, torus) and the two theorems, never a second quadrature.
 """
 
 from __future__ import annotations
@@ -88,8 +88,15 @@ def run(scene, results, quick):
         M, I = tensor(*body)
         axis = np.asarray(axis, float) / np.linalg.norm(axis)
         computed = float(axis @ I @ axis) / M
-        rows.append({"body": name, "moment": text, "quadrature": computed, "closed_form": closed,
-                     "relative_difference": computed / closed - 1})
+        rows.append(
+            {
+                "body": name,
+                "moment": text,
+                "quadrature": computed,
+                "closed_form": closed,
+                "relative_difference": computed / closed - 1,
+            }
+        )
         results.number(value, computed, "1", note=f"in units of M (length)^2; closed form {closed:.15g}")
         return M, I
 
@@ -98,26 +105,60 @@ def run(scene, results, quick):
     moment(rod(L, n, shift=L / 2), "rod, about its end", (0, 1, 0), "rod_end", 1 / 3, "$Ml^2/3$")
     Md, Id = moment(disc(a, n), "disc, radius $a$", (0, 0, 1), "disc_axial", 0.5, "$Ma^2/2$")
     moment(disc(a, n), "disc, about a diameter", (1, 0, 0), "disc_diameter", 0.25, "$Ma^2/4$")
-    moment(disc(a, n, centre=(a, 0.0)), "disc, about a point of its rim", (0, 0, 1), "disc_rim", 1.5,
-           "$3Ma^2/2$")
-    Mr, Ir = moment(rectangle(2.0, 1.0, n), "rectangle $2 \\times 1$", (0, 0, 1), "rectangle_axial", 5 / 12,
-                    "$M(4 + 1)/12$")
+    moment(
+        disc(a, n, centre=(a, 0.0)), "disc, about a point of its rim", (0, 0, 1), "disc_rim", 1.5, "$3Ma^2/2$"
+    )
+    Mr, Ir = moment(
+        rectangle(2.0, 1.0, n),
+        "rectangle $2 \\times 1$",
+        (0, 0, 1),
+        "rectangle_axial",
+        5 / 12,
+        "$M(4 + 1)/12$",
+    )
     moment(sphere(a, n), "solid sphere, radius $a$", (0, 0, 1), "sphere", 0.4, "$2Ma^2/5$")
     moment(sphere(a, n), "solid sphere, about $x$", (1, 0, 0), "sphere_x", 0.4, "$2Ma^2/5$")
-    Mc, Ic = moment(cylinder(a, length, n), "cylinder, $l = 2a$", (1, 0, 0), "cylinder_transverse", 7 / 12,
-                    "$M(a^2/4 + l^2/12)$")
+    Mc, Ic = moment(
+        cylinder(a, length, n),
+        "cylinder, $l = 2a$",
+        (1, 0, 0),
+        "cylinder_transverse",
+        7 / 12,
+        "$M(a^2/4 + l^2/12)$",
+    )
     moment(cylinder(a, length, n), "cylinder, its axis", (0, 0, 1), "cylinder_axial", 0.5, "$Ma^2/2$")
-    moment(torus_circular(3.0, 1.0, n), "torus, circular section", (0, 0, 1), "torus_circular",
-           9 + 0.75, "$M(d^2 + 3b^2/4)$")
-    moment(torus_square(3.0, 1.0, n), "torus, square section", (0, 0, 1), "torus_square", 9 + 1.0,
-           "$M(d^2 + c^2)$")
+    moment(
+        torus_circular(3.0, 1.0, n),
+        "torus, circular section",
+        (0, 0, 1),
+        "torus_circular",
+        9 + 0.75,
+        "$M(d^2 + 3b^2/4)$",
+    )
+    moment(
+        torus_square(3.0, 1.0, n),
+        "torus, square section",
+        (0, 0, 1),
+        "torus_square",
+        9 + 1.0,
+        "$M(d^2 + c^2)$",
+    )
     frame = pd.DataFrame(rows)
-    results.table("moments", frame, f"Moments of inertia by quadrature ({n} Gauss–Legendre nodes a radius or "
-                  f"length, {2 * n} trapezoidal nodes an angle) against the closed forms, in units of $M$ times "
-                  "the length squared ($l = 1$, $a = 1$; the tori: section radius $b = 1$ or half-side $c = 1$, its "
-                  "centre $d = 3$ from the axis).",
-                  headers={"body": "body", "moment": "closed form", "quadrature": "quadrature",
-                           "closed_form": "closed form, value", "relative_difference": "relative difference"})
+    results.table(
+        "moments",
+        frame,
+        f"Moments of inertia by quadrature ({n} Gauss–Legendre nodes a radius or "
+        f"length, {2 * n} trapezoidal nodes an angle) against the closed forms, in units of $M$ times "
+        "the length squared ($l = 1$, $a = 1$; the tori: section radius $b = 1$ or half-side $c = 1$, its "
+        "centre $d = 3$ from the axis).",
+        headers={
+            "body": "body",
+            "moment": "closed form",
+            "quadrature": "quadrature",
+            "closed_form": "closed form, value",
+            "relative_difference": "relative difference",
+        },
+    )
     worst = float(frame.relative_difference.abs().max())
     results.number("moments_max_relative_difference", worst, "1")
 
@@ -125,22 +166,35 @@ def run(scene, results, quick):
         part = frame[frame.moment.isin(names) | frame.body.isin(names)]
         return float(part.relative_difference.abs().max())
 
-    results.number("cylinder_max_relative_difference", worst_of("cylinder, $l = 2a$", "cylinder, its axis"), "1")
-    results.number("torus_max_relative_difference", worst_of("torus, circular section", "torus, square section"), "1")
+    results.number(
+        "cylinder_max_relative_difference", worst_of("cylinder, $l = 2a$", "cylinder, its axis"), "1"
+    )
+    results.number(
+        "torus_max_relative_difference", worst_of("torus, circular section", "torus, square section"), "1"
+    )
     # perpendicular axes: a lamina has I1 + I2 = I3 (disc and rectangle)
-    perpendicular = max(abs(Id[0, 0] + Id[1, 1] - Id[2, 2]) / Id[2, 2], abs(Ir[0, 0] + Ir[1, 1] - Ir[2, 2]) / Ir[2, 2])
+    perpendicular = max(
+        abs(Id[0, 0] + Id[1, 1] - Id[2, 2]) / Id[2, 2], abs(Ir[0, 0] + Ir[1, 1] - Ir[2, 2]) / Ir[2, 2]
+    )
     results.number("perpendicular_axes_residual", float(perpendicular), "1", note="disc and rectangle")
-    # parallel axes: the rod about its end and the disc about its rim, and a tilted, shifted axis of the cylinder
+    # parallel axes: the rod about its end and the disc about its rim, and a tilted, shifted axis of the
+    # cylinder
     end = abs(frame.quadrature[1] / (frame.quadrature[0] + 0.25) - 1)
     rim = abs(frame.quadrature[4] / (frame.quadrature[2] + 1.0) - 1)
-    results.number("parallel_axes_residual", float(max(end, rim)), "1", note="rod about its end, disc about its rim")
+    results.number(
+        "parallel_axes_residual", float(max(end, rim)), "1", note="rod about its end, disc about its rim"
+    )
     points, weights = cylinder(a, length, n)
     nhat = np.array([np.sin(0.5), 0.0, np.cos(0.5)])
     R = np.array([0.3, -0.7, 0.5])
     direct = float(np.sum(weights * np.sum(np.cross(points - R, nhat) ** 2, axis=1)))
     theorem = float(nhat @ Ic @ nhat + Mc * np.sum(np.cross(R, nhat) ** 2))
-    results.number("parallel_axis_general_residual", abs(direct / theorem - 1), "1",
-                   note="cylinder about a tilted axis through (0.3, -0.7, 0.5)")
+    results.number(
+        "parallel_axis_general_residual",
+        abs(direct / theorem - 1),
+        "1",
+        note="cylinder about a tilted axis through (0.3, -0.7, 0.5)",
+    )
     # the dumbbell of the lecture notes: masses m at +-(a/sqrt2, -a/sqrt2, 0), omega along e_y
     s = 1 / np.sqrt(2)
     _, Ib = tensor(np.array([[s, -s, 0.0], [-s, s, 0.0]]), np.array([1.0, 1.0]))
@@ -148,6 +202,9 @@ def run(scene, results, quick):
     omega = np.array([0.0, 1.0, 0.0])
     J = Ib @ omega
     results.number("dumbbell_tensor_residual", float(np.max(np.abs(Ib - printed))), "1", note="in m a^2")
-    results.number("dumbbell_J_angle_deg", float(np.degrees(np.arctan2(np.linalg.norm(np.cross(J, omega)),
-                                                                        J @ omega))), "°")
+    results.number(
+        "dumbbell_J_angle_deg",
+        float(np.degrees(np.arctan2(np.linalg.norm(np.cross(J, omega)), J @ omega))),
+        "°",
+    )
     results.number("dumbbell_couple_z", float(np.cross(omega, J)[2]), "1", note="in m a^2 omega^2")

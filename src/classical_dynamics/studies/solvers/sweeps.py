@@ -12,31 +12,54 @@ from ...solvers import workprecision as wp
 from ...solvers.ode import Problem, compile_time
 from ..results import new_figure, new_figures
 
-INVARIANTS = {"hnw_rigid_body": ("energy", "Casimir $|\\mathbf{m}|^2$"),
-              "detest_b5": ("$y_1^2 + y_2^2$", "$0.51y_1^2 + y_3^2$")}
+INVARIANTS = {
+    "hnw_rigid_body": ("energy", "Casimir $|\\mathbf{m}|^2$"),
+    "detest_b5": ("$y_1^2 + y_2^2$", "$0.51y_1^2 + y_3^2$"),
+}
 NAMES = {"HNW rigid body": "rigid body of Hairer, Nørsett and Wanner", "DETEST B5": "DETEST problem B5"}
 
 
 def accuracy_headers(problem: str) -> dict:
     """What the reader sees above each column of the accuracy tables."""
     first, second = INVARIANTS[problem]
-    return {"problem": "problem", "method": "method", "kind": "control", "setting": "rtol or step $h$",
-            "error_final": "error at $t = 20$", "error_max_steps": "largest error at the steps",
-            "error_dense": "largest error, dense output", "digits": "correct digits", "steps": "steps",
-            "evaluations": "evaluations", "energy_drift": f"drift of {first}", "casimir_drift": f"drift of {second}"}
+    return {
+        "problem": "problem",
+        "method": "method",
+        "kind": "control",
+        "setting": "rtol or step $h$",
+        "error_final": "error at $t = 20$",
+        "error_max_steps": "largest error at the steps",
+        "error_dense": "largest error, dense output",
+        "digits": "correct digits",
+        "steps": "steps",
+        "evaluations": "evaluations",
+        "energy_drift": f"drift of {first}",
+        "casimir_drift": f"drift of {second}",
+    }
 
 
 def case_for(problem: str) -> tuple[wp.Case, np.ndarray | None]:
     if problem == "hnw_rigid_body":
         I = ref.HNW_I
-        case = wp.Case("HNW rigid body", Problem(rhs.euler_free, ref.HNW_Y0, (0.0, 20.0), rhs.euler_coefficients(I)),
-                       ref.hnw_rigid_body,
-                       {"energy": lambda y: 0.5 * np.sum(I * y * y, axis=-1),
-                        "casimir": lambda y: np.sum((I * y) ** 2, axis=-1)})
+        case = wp.Case(
+            "HNW rigid body",
+            Problem(rhs.euler_free, ref.HNW_Y0, (0.0, 20.0), rhs.euler_coefficients(I)),
+            ref.hnw_rigid_body,
+            {
+                "energy": lambda y: 0.5 * np.sum(I * y * y, axis=-1),
+                "casimir": lambda y: np.sum((I * y) ** 2, axis=-1),
+            },
+        )
         return case, I
-    case = wp.Case("DETEST B5", Problem(rhs.detest_b5, [0.0, 1.0, 1.0], (0.0, 20.0)), ref.detest_b5,
-                   {"energy": lambda y: y[..., 0] ** 2 + y[..., 1] ** 2,
-                    "casimir": lambda y: 0.51 * y[..., 0] ** 2 + y[..., 2] ** 2})
+    case = wp.Case(
+        "DETEST B5",
+        Problem(rhs.detest_b5, [0.0, 1.0, 1.0], (0.0, 20.0)),
+        ref.detest_b5,
+        {
+            "energy": lambda y: y[..., 0] ** 2 + y[..., 1] ** 2,
+            "casimir": lambda y: 0.51 * y[..., 0] ** 2 + y[..., 2] ** 2,
+        },
+    )
     return case, None
 
 
@@ -54,82 +77,114 @@ def run(scene, results, quick):
         else:
             entry = wp.adaptive(case, method)
             slow = method in ("scipy:Radau", "scipy:BDF")
-            entry.settings = [t for t in tolerances if not (slow and t < 1e-10)]   # minutes otherwise
+            entry.settings = [t for t in tolerances if not (slow and t < 1e-10)]  # minutes otherwise
         entries.append(entry)
-    first_call_s = compile_time(case.problem, "dop853")       # one compiled loop serves both pairs
+    first_call_s = compile_time(case.problem, "dop853")  # one compiled loop serves both pairs
     frame = wp.sweep(case, entries, repeats=repeats, budget_s=0.5 if quick else 2.0)
     orders = wp.fitted_orders(frame)
     accuracy = frame.drop(columns=["seconds", "runs"])
-    if scene.data["problem"] == "hnw_rigid_body":     # handbook (2.154)-(2.155): T and L^2 kept, to DOP853's accuracy
-        run = wp.adaptive(case, "dop853").run(1e-12, True)     # its own run: a quick build's sweep stops at 1e-9
+    # handbook (2.154)-(2.155): T and L^2 kept, to DOP853's accuracy
+    if scene.data["problem"] == "hnw_rigid_body":
+        run = wp.adaptive(case, "dop853").run(1e-12, True)  # its own run: a quick build's sweep stops at 1e-9
         for invariant, label in (("energy", "$T$"), ("casimir", "$L^2$")):
             values = case.invariants[invariant](run.y_steps)
-            results.number(f"dop853_rtol_1e-12_{invariant}_drift",
-                           float(np.max(np.abs(values - values[0])) / abs(values[0])), "1",
-                           note=f"largest relative drift of {label} at the steps of DOP853, rtol $10^{{-12}}$")
+            results.number(
+                f"dop853_rtol_1e-12_{invariant}_drift",
+                float(np.max(np.abs(values - values[0])) / abs(values[0])),
+                "1",
+                note=f"largest relative drift of {label} at the steps of DOP853, rtol $10^{{-12}}$",
+            )
     headers = accuracy_headers(scene.data["problem"])
     name = NAMES[case.name]
-    results.table("accuracy", accuracy, f"The {name}: the error against the exact elliptic-function solution, by "
-                  "method and relative tolerance (absolute tolerance 1000 times smaller) or step $h$: at the final "
-                  "time $t = 20$, the largest over the method's own steps, and the largest on 100 points of its "
-                  "dense output; the correct digits at $t = 20$; steps; right-hand-side evaluations (for the "
-                  "splittings, exact rotations); and the largest relative drift of the two quadratic invariants.",
-                  headers=headers)
-    results.timing_table("work_precision", frame[["method", "setting", "error_final", "steps", "evaluations",
-                                                  "seconds", "runs"]],
-                         f"The {name}: wall time of each run, the minimum over repeated runs after a warm-up. "
-                         f"{software_stamp()}.",
-                         headers={**headers, "seconds": "wall time (s)", "runs": "runs timed"})
+    results.table(
+        "accuracy",
+        accuracy,
+        f"The {name}: the error against the exact elliptic-function solution, by "
+        "method and relative tolerance (absolute tolerance 1000 times smaller) or step $h$: at the final "
+        "time $t = 20$, the largest over the method's own steps, and the largest on 100 points of its "
+        "dense output; the correct digits at $t = 20$; steps; right-hand-side evaluations (for the "
+        "splittings, exact rotations); and the largest relative drift of the two quadratic invariants.",
+        headers=headers,
+    )
+    results.timing_table(
+        "work_precision",
+        frame[["method", "setting", "error_final", "steps", "evaluations", "seconds", "runs"]],
+        f"The {name}: wall time of each run, the minimum over repeated runs after a warm-up. "
+        f"{software_stamp()}.",
+        headers={**headers, "seconds": "wall time (s)", "runs": "runs timed"},
+    )
     has_steps = bool((frame.kind == "step").any())
     if has_steps:
         fig, (ax, bx) = new_figures(2, height=3.3)
     else:
         fig, ax = new_figure()
     wp.plot(frame, ax, xlabel="error at $t = 20$")
-    what = (f"What accuracy costs on the {name}: wall time against the error at $t = 20$, one line per method "
-            "(solid: this library's compiled pairs; dashed: SciPy's integrators")
+    what = (
+        f"What accuracy costs on the {name}: wall time against the error at $t = 20$, one line per method "
+        "(solid: this library's compiled pairs; dashed: SciPy's integrators"
+    )
     if has_steps:
         wp.plot_convergence(frame, bx, orders, xlabel="step $h$", ylabel="error at $t = 20$")
-        # below the left panel the adaptive methods, below the right the splittings with their fitted orders and
-        # the reference slopes (the splittings' lines keep their style in both panels)
+        # below the left panel the adaptive methods, below the right the splittings with their fitted orders
+        # and the reference slopes (the splittings' lines keep their style in both panels)
         handles, labels = ax.get_legend_handles_labels()
         adaptive = [(h, lab) for h, lab in zip(handles, labels) if not lab.startswith("splitting")]
         fig.legend(*zip(*adaptive), loc="outside lower left", ncol=2)
         fig.legend(*bx.get_legend_handles_labels(), loc="outside lower right", ncol=1)
         ax.set_title("work and precision")
         bx.set_title("convergence of the splittings")
-        caption = (what + "; dotted squares: the Lie–Poisson splittings at fixed steps); accuracy grows to the "
-                   "right. Right: the splittings' error at $t = 20$ against the step $h$, with dashed reference "
-                   "slopes $h^2$ and $h^4$; the legend gives the fitted orders. The compiled DOP853 and SciPy's take "
-                   "the same steps, so the distance between their lines is interpreter overhead.")
+        caption = (
+            what + "; dotted squares: the Lie–Poisson splittings at fixed steps); accuracy grows to the "
+            "right. Right: the splittings' error at $t = 20$ against the step $h$, with dashed reference "
+            "slopes $h^2$ and $h^4$; the legend gives the fitted orders. The compiled DOP853 and SciPy's "
+            "take "
+            "the same steps, so the distance between their lines is interpreter overhead."
+        )
     else:
         wp.legend_below(fig, *ax.get_legend_handles_labels(), ncol=4)
-        caption = (what + "). Accuracy grows to the right; the compiled DOP853 and SciPy's take the same steps, so "
-                   "the distance between their lines is interpreter overhead.")
+        caption = (
+            what + "). Accuracy grows to the right; the compiled DOP853 and SciPy's take the same steps, so "
+            "the distance between their lines is interpreter overhead."
+        )
     results.timing_figure("work_precision", fig, caption)
     for method, order in orders.items():
         key = method.replace(", ", "_").replace(" ", "_")
         results.number(f"fitted_order_{key}", order, "1", note="slope of log error against log h")
     # A measured time belongs with the timings, not in summary.json (which two builds must write identically).
-    results.timing_table("first_call", pd.DataFrame([{"first_call_extra_s": first_call_s}]),
-                         f"The {name}: how much longer the first call of the compiled integrator for this right-hand "
-                         "side took than a warm call (compilation, or loading the cached machine code); it is kept "
-                         "out of the run times.", headers={"first_call_extra_s": "extra time of the first call (s)"})
+    results.timing_table(
+        "first_call",
+        pd.DataFrame([{"first_call_extra_s": first_call_s}]),
+        f"The {name}: how much longer the first call of the compiled integrator for this right-hand "
+        "side took than a warm call (compilation, or loading the cached machine code); it is kept "
+        "out of the run times.",
+        headers={"first_call_extra_s": "extra time of the first call (s)"},
+    )
     # the error reached at each tolerance by the compiled pair and scipy's: the same step sequence
     for method in ("dop853", "scipy:DOP853"):
         part = frame[(frame.method == method)]
         if len(part):
             tight = part[part.setting == part.setting.min()].iloc[0]
-            results.number(f"{method.replace(':', '_').lower()}_error_at_tightest", tight.error_final, "1",
-                           note=f"rtol = {tight.setting:g}")
+            results.number(
+                f"{method.replace(':', '_').lower()}_error_at_tightest",
+                tight.error_final,
+                "1",
+                note=f"rtol = {tight.setting:g}",
+            )
             results.number(f"{method.replace(':', '_').lower()}_steps_at_tightest", int(tight.steps), "steps")
     pair = frame[frame.method.isin(["dop853", "scipy:DOP853"]) & (frame.setting >= 1e-10)]
     both = pair.pivot_table(index="setting", columns="method", values="error_final")
     steps = pair.pivot_table(index="setting", columns="method", values="steps")
     if both.shape[1] == 2:
         # above round-off only: at rtol 1e-12 both errors are ~1e-13 and differ by round-off
-        results.number("dop853_vs_scipy_max_relative_difference",
-                       float(np.max(np.abs(both["dop853"] / both["scipy:DOP853"] - 1))), "1",
-                       note="rtol >= 1e-10: the compiled DOP853 reproduces scipy's errors (same tableau and control)")
-        results.number("dop853_same_steps_as_scipy", bool((steps["dop853"] == steps["scipy:DOP853"]).all()), "bool",
-                       note="rtol >= 1e-10")
+        results.number(
+            "dop853_vs_scipy_max_relative_difference",
+            float(np.max(np.abs(both["dop853"] / both["scipy:DOP853"] - 1))),
+            "1",
+            note="rtol >= 1e-10: the compiled DOP853 reproduces scipy's errors (same tableau and control)",
+        )
+        results.number(
+            "dop853_same_steps_as_scipy",
+            bool((steps["dop853"] == steps["scipy:DOP853"]).all()),
+            "bool",
+            note="rtol >= 1e-10",
+        )
