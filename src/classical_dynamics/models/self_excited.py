@@ -369,12 +369,14 @@ class MiddleAxis:
     """The §3 reduction for one hyperbolic cylinder p^2/a - r^2/c = alpha1^2 - alpha2^2 of one body under
     m + mu |omega|^2 along y:
 
-        phi = int q dt, X = sqrt(ac) phi: p/sqrt(a) = alpha1 cosh X + alpha2 sinh X, r/sqrt(c) = alpha1 sinh X
-        + alpha2 cosh X phi'' - mu phi'^2 = m0 + k1 sinh 2X + k2 cosh 2X,
+        phi = int q dt, X = sqrt(ac) phi:
+            p/sqrt(a) = alpha1 cosh X + alpha2 sinh X,  r/sqrt(c) = alpha1 sinh X + alpha2 cosh X,
+        phi'' - mu phi'^2 = m0 + k1 sinh 2X + k2 cosh 2X,
     and, with phi2 = 2X + sigma, tau = sqrt(2 sqrt(ac) d) t, q1 = dphi2/dtau, mu1 = mu/(2 sqrt(ac)):
-        |k1| > |k2| (|mu| below mu_c): k1 sinh + k2 cosh = eps d sinh(. + sigma), dq1/dtau = m1 + eps sinh
-        phi2 + mu1 q1^2 |k2| > |k1| (|mu| above mu_c): k1 sinh + k2 cosh = eps d cosh(. + sigma), dq1/dtau =
-        m2 + eps cosh phi2 + mu1 q1^2
+        |k1| > |k2| (|mu| below mu_c): k1 sinh + k2 cosh = eps d sinh(. + sigma),
+            dq1/dtau = m1 + eps sinh phi2 + mu1 q1^2
+        |k2| > |k1| (|mu| above mu_c): k1 sinh + k2 cosh = eps d cosh(. + sigma),
+            dq1/dtau = m2 + eps cosh phi2 + mu1 q1^2
     with d = sqrt(|k1^2 - k2^2|), m1 (or m2) = m0/d.
     """
 

@@ -6,7 +6,7 @@ agree, each panel titled by its letter and its parameters, one legend per grid. 
 scene whose results are missing is left out, and the panels that remain are lettered in order.
 
   python -m classical_dynamics.studies.self_excited.gallery STUDY_RESULTS OUT_DIR TIMINGS_DIR SCENE...
-  [--quick]
+      [--quick]
 """
 
 from __future__ import annotations

@@ -3,9 +3,9 @@ const, and the motion reduces to one of four plane systems, by the signs of k1 -
   sinh (|k1| > |k2|, |mu| below mu_c): one center, every motion periodic (3.12), series (4.13);
   cosh (|k2| > |k1|, above mu_c): a saddle and a center for m2 > 1, motions of the third kind (3.56), (4.14);
   exp  (k1 = k2: plane I, alpha1 = alpha2, or |mu| = mu_c): dq1/dtau = m3 - e^phi2 - nu q1^2 (3.58), (4.15);
-  exp- (k1 = -k2: plane II, alpha1 = -alpha2): dq1/dtau = m3 - sgn(k1) e^-phi2 - nu q1^2 (3.59), (4.16); rare
-  (k1 = k2 = 0: plane II at nu = nu_c): dq1/dtau = m - nu q1^2 (3.65), with tau = t; with m = 0 a line of rest
-    points.
+  exp- (k1 = -k2: plane II, alpha1 = -alpha2): dq1/dtau = m3 - sgn(k1) e^-phi2 - nu q1^2 (3.59), (4.16);
+  rare (k1 = k2 = 0: plane II at nu = nu_c): dq1/dtau = m - nu q1^2 (3.65), with tau = t; with m = 0 a line
+    of rest points.
 At nu = 1/2 (cosh form and plane II) the closed forms take their resonant terms phi2 e^{-phi2}
 (se.middle_g_terms). Each portrait is checked against Euler's equations mapped into the plane, with its period
 series; each fate Lee names (closed orbits, blow-up, escape at a linear rate, a finite limit) is checked where

@@ -6,8 +6,8 @@
   plane_departure: in plane I or II, omega stays in its plane (|r/sqrt c -+ p/sqrt a| against |omega|);
   center_at_rest, middle_axis_unstable: the center is a permanent rotation; the rotation about y is unstable;
   large_q0: in plane I with drag, a start at the center above F escapes however large m3 is, one below
-  returns; theta_series: Lee's theta2 (4.6) and theta3 (4.7)-(4.8) against the integrated orbit about the
-  center: the
+    returns;
+  theta_series: Lee's theta2 (4.6) and theta3 (4.7)-(4.8) against the integrated orbit about the center: the
     residual falls like eta^2, eta^3, eta^4 as the terms are added.
 The references are closed forms (Lee's, evaluated here from his printed formulas) and the full equations; the
 coefficients themselves are checked against a sympy Lindstedt-Poincare expansion in symbolic.py.
