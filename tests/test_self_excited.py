@@ -480,15 +480,15 @@ def test_rare_case_without_torque_line_of_rest_points():
     q10 tau) and omega -> 0 along +y (slope of ln|q| against ln|(p, r)| exactly b/(a + c) < 1), below it the
     blow-up time is 1/(nu |q10|) up to the bound. The scene's check no longer refuses it."""
     from classical_dynamics.studies.results import Results
-    from classical_dynamics.studies.self_excited import middle_axis
+    from classical_dynamics.studies.self_excited import middle_axis, rare_case
 
     body = se.Body.from_moments([3.0, 2.2, 1.2])
     M = se.MiddleAxis.with_plane_parameters(body, 0.0, -se.MiddleAxis.plane_nu("nu_c", body), 0.6, -0.6)
     assert M.form == "rare" and M.m == 0.0 and not middle_axis._turns_nowhere(M)
     results = Results("self_excited", "t", "t")
     drawing = portrait.Drawing("q1", (-4.5, 4.5, 6.0))
-    middle_axis._rare_rest(drawing, results, M)
-    middle_axis._rare_escape(results, M)
+    rare_case.rest_line(drawing, results, M)
+    rare_case.escape(results, M)
     assert drawing.elements() == {"rest_line"}  # the line of rest points is drawn, across the plane
     cases = {h["name"]: h for h in results.stability}
     assert {
@@ -585,11 +585,11 @@ def test_huge_excursion_below_the_critical_drag_closes():
     """Digest §7.5: below mu_c a fast spin about the torque axis swings |omega| out by hundreds and back; the
     orbit closes on the closed form's period, turns where the closed form says, and stays on its cylinder."""
     from classical_dynamics.studies.results import Results
-    from classical_dynamics.studies.self_excited import middle_axis
+    from classical_dynamics.studies.self_excited import excursions
 
     M = se.MiddleAxis.with_plane_parameters(se.Body.from_moments([3.0, 2.2, 1.2]), 0.5, -0.3, 0.8, 0.3)
     results = Results("self_excited", "t", "t")
-    middle_axis._excursion(results, M, middle_axis.excursion_start(M, 10.0))
+    excursions.excursion(results, M, excursions.excursion_start(M, 10.0))
     assert results.numbers["excursion_growth"]["value"] > 100
     assert all(h["holds"] for h in results.stability)
     assert {h["name"] for h in results.stability} == {

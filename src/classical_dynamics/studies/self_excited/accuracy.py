@@ -144,7 +144,7 @@ def limit_cycle(results, m1, nu, quick):
 
 
 def huge_excursion(results, M, start, quick):
-    """start: middle_axis.excursion_start."""
+    """start: excursions.excursion_start."""
     w0, T, _, sizes = start
     scale = float(sizes.max())
 

@@ -39,36 +39,7 @@ def run(scene, results, quick):
     p1_max = view.get("p1_max", 3.0)
     tau_max = view.get("tau_max", 12.0)
 
-    for name, value in (
-        ("A", body.A),
-        ("B", body.B),
-        ("C", body.C),
-        ("a", body.a),
-        ("b", body.b),
-        ("c", body.c),
-    ):
-        results.number(
-            f"body_{name}", value, "1", note="moments sorted A > B > C; a, b, c Lee's inertia numbers"
-        )
-    results.number("m1", m1, "1", note=plane.get("source", "chosen to show the regime"))
-    results.number("nu", nu, "1", note="mu1 = −nu")
-    results.number("delta", delta, "1", note="the elliptic cylinder q²/b + r²/c = δ²")
-    moment = "C" if smallest else "A"
-    results.number(
-        "M_over_moment",
-        L.m,
-        "1/time²",
-        note=f"the constant torque per unit {moment} (the torque axis' "
-        "moment) that gives m1 on this cylinder",
-    )
-    results.number("mu0_over_moment", L.mu, "1", note=f"the coefficient of |ω|² per unit {moment}")
-    results.number("tau_per_t", L.time_scale, "1/time", note="τ = √(2d) t")
-    if 0.0 < m1 < 1.0:
-        results.number(
-            "nu_star", se.nu_star(m1), "1", note="limit cycles F, F1 exist for nu below this (Lee §2.5)"
-        )
-    cycles = se.limit_cycle_p1(np.array([0.0]), m1, nu) is not None
-    results.number("limit_cycles", int(cycles), "1", note="1 if F and F1 exist (m1/ν > 2/√(1 + 4ν²))")
+    cycles = _record_reduction(results, body, L, plane, smallest)
 
     points = se.singular_points(m1, -nu, lo, hi)
     results.number("singular_points", points, "1", note="p1 = 0, sin φ2 = −m1, typed by the linearization")
@@ -76,14 +47,7 @@ def run(scene, results, quick):
         results.number(f"n_{kind}s", sum(pt["type"] == kind for pt in points), "1")
     _eigenvalue_check(results, m1, nu, points)
 
-    if smallest:  # the plane, and beside it the motion in the body, seen along the torque axis z
-        fig, (ax, cx) = subplots(
-            1, 2, figsize=(TEXT_WIDTH_IN, 3.9), layout="constrained", width_ratios=[2.6, 1.0]
-        )
-        for a in (ax, cx):
-            a.grid(True, which="both", alpha=0.25, linewidth=0.6)
-    else:
-        fig, ax = new_figure(TEXT_WIDTH_IN, 3.9)
+    fig, ax, cx = _portrait_axes(smallest)
     F = se.limit_cycle_p1(np.linspace(lo, hi, 801), m1, nu)
     view = p1_max if F is None else max(p1_max, 1.1 * float(np.max(np.abs(F))))  # F and F1 in the window
     drawing = portrait.Drawing("p1", (lo - 0.5, hi + 0.5, 2.0 * view))
@@ -119,41 +83,80 @@ def run(scene, results, quick):
             "$p^2/a + q^2/b = \\delta^2$ and the integrations of Euler's equations on it.",
             headers=BODY_VIEW_HEADERS,
         )
-    results.number(
-        "overlay_deviation", deviation, "1", note="Euler's equations in the plane against (2.10), max"
-    )
-    results.number("cylinder_spread", cyl, "1", note="relative spread of q²/b + r²/c along Euler's equations")
-    results.hard_case(
-        "overlay",
-        "Full integrations of Euler's equations, mapped into the plane, on the plane's "
-        "trajectories (largest deviation in $(\\varphi_2, p_1)$)",
-        deviation,
-        OVERLAY_BOUND,
-    )
-    results.number(
-        "invariant_spread_euler",
-        along_euler,
-        "1",
-        note=("E" if nu == 0 else "C1") + ": largest "
-        "spread along one of Euler's integrations mapped into the plane, relative to the size of its terms",
-    )
-    results.hard_case(
-        "plane_invariant_euler",
-        f"The plane's first integral {integral} along Euler's equations "
-        "mapped into the plane (largest relative spread)",
-        along_euler,
-        INVARIANT_BOUND,
-    )
-    results.hard_case(
-        "elliptic_cylinder",
-        "The end of $\\boldsymbol{\\omega}$ stays on its elliptic cylinder "
-        "(relative spread of $q^2/b + r^2/c$)",
-        cyl,
-        CYLINDER_BOUND,
-    )
+    _overlay_checks(results, deviation, cyl, along_euler, integral)
     drawing.points(points)
     drawing.window(lo, hi, view)
     portrait.finish(ax, drawing, "$p_1$", angle=True)
+    caption = _caption(m1, nu, points, cycles, len(paths), smallest)
+    results.figure("portrait", fig, caption)
+    drawing.save(
+        results,
+        "What the portrait draws, point by point: each element (trajectory, separatrix, limit "
+        "cycle, Euler's equations mapped into the plane, singular point by type, the window's corners) and "
+        "its curve number, in $(\\varphi_2, p_1)$.",
+    )
+    results.timing_table(
+        "cost",
+        pd.DataFrame([{"what": "plane trajectories of the portrait", "seconds": seconds}]),
+        "What the portrait's plane trajectories cost to integrate.",
+        headers={"what": "computation", "seconds": "wall time (s)"},
+    )
+
+    _analyses(results, data, L, body, points, cycles, quick)
+
+
+def _record_reduction(results, body, L, plane, smallest):
+    """The body, the plane's parameters and the physical torque that gives them; whether F and F1 exist."""
+    m1, nu, delta = float(plane["m1"]), float(plane["nu"]), float(plane["delta"])
+    for name, value in (
+        ("A", body.A),
+        ("B", body.B),
+        ("C", body.C),
+        ("a", body.a),
+        ("b", body.b),
+        ("c", body.c),
+    ):
+        results.number(
+            f"body_{name}", value, "1", note="moments sorted A > B > C; a, b, c Lee's inertia numbers"
+        )
+    results.number("m1", m1, "1", note=plane.get("source", "chosen to show the regime"))
+    results.number("nu", nu, "1", note="mu1 = −nu")
+    results.number("delta", delta, "1", note="the elliptic cylinder q²/b + r²/c = δ²")
+    moment = "C" if smallest else "A"
+    results.number(
+        "M_over_moment",
+        L.m,
+        "1/time²",
+        note=f"the constant torque per unit {moment} (the torque axis' "
+        "moment) that gives m1 on this cylinder",
+    )
+    results.number("mu0_over_moment", L.mu, "1", note=f"the coefficient of |ω|² per unit {moment}")
+    results.number("tau_per_t", L.time_scale, "1/time", note="τ = √(2d) t")
+    if 0.0 < m1 < 1.0:
+        results.number(
+            "nu_star", se.nu_star(m1), "1", note="limit cycles F, F1 exist for nu below this (Lee §2.5)"
+        )
+    cycles = se.limit_cycle_p1(np.array([0.0]), m1, nu) is not None
+    results.number("limit_cycles", int(cycles), "1", note="1 if F and F1 exist (m1/ν > 2/√(1 + 4ν²))")
+    return cycles
+
+
+def _portrait_axes(smallest):
+    """(figure, plane axes, body-view axes or None): for the smallest axis the plane, and beside it the motion
+    in the body seen along the torque axis z."""
+    if not smallest:
+        fig, ax = new_figure(TEXT_WIDTH_IN, 3.9)
+        return fig, ax, None
+    fig, (ax, cx) = subplots(
+        1, 2, figsize=(TEXT_WIDTH_IN, 3.9), layout="constrained", width_ratios=[2.6, 1.0]
+    )
+    for a in (ax, cx):
+        a.grid(True, which="both", alpha=0.25, linewidth=0.6)
+    return fig, ax, cx
+
+
+def _caption(m1, nu, points, cycles, n_paths, smallest):
+    """The portrait's caption: the plane, the regime, and what each ink draws."""
     regime = f"$m_1$ = {portrait.param_text(m1)}" + (
         f", $\\nu$ = {portrait.param_text(nu)}" if nu else ", unperturbed ($\\nu = 0$)"
     )
@@ -165,7 +168,7 @@ def run(scene, results, quick):
     if points:
         shown.append("the singular points by type")
     shown.append(
-        f"{portrait.COUNTS[len(paths)]} integrations of Euler's equations in three dimensions, mapped "
+        f"{portrait.COUNTS[n_paths]} integrations of Euler's equations in three dimensions, mapped "
         "into the plane (dots)"
     )
     axis_text = "smallest axis $z$ ($p$ and $r$, $a$ and $c$ exchanged)" if smallest else "largest axis $x$"
@@ -182,20 +185,15 @@ def run(scene, results, quick):
             "$\\boldsymbol{\\omega}$ runs on the ellipse $p^2/a + q^2/b = \\delta^2$ about $z$ (black), "
             "where for the torque along the largest axis it runs about $x$; the plane is the same."
         )
-    results.figure("portrait", fig, caption)
-    drawing.save(
-        results,
-        "What the portrait draws, point by point: each element (trajectory, separatrix, limit "
-        "cycle, Euler's equations mapped into the plane, singular point by type, the window's corners) and "
-        "its curve number, in $(\\varphi_2, p_1)$.",
-    )
-    results.timing_table(
-        "cost",
-        pd.DataFrame([{"what": "plane trajectories of the portrait", "seconds": seconds}]),
-        "What the portrait's plane trajectories cost to integrate.",
-        headers={"what": "computation", "seconds": "wall time (s)"},
-    )
+    return caption
 
+
+def _analyses(results, data, L, body, points, cycles, quick):
+    """What a scene asks beyond the portrait (its `analysis`), and what the plane's regime calls for: the
+    motion in space, the period series about the center, the separatrix's sides, the degenerate approach,
+    blow-up and the limit cycle's period, the motions of §2.5, accuracy and cost, the bifurcations."""
+    plane, smallest = data["plane"], data["torque_axis"] == "smallest"
+    m1, nu, delta = float(plane["m1"]), float(plane["nu"]), float(plane["delta"])
     centers = [pt for pt in points if pt["type"] == "center"]
     sphere = None
     if data.get("analysis", {}).get("motion_in_space"):  # Lee §1.2, started on F
@@ -232,6 +230,44 @@ def run(scene, results, quick):
         from . import largest_cycles  # Lee §2.5 (Figure 2.12, the motions on and off F) and §2.6
 
         largest_cycles.run(results, data, body, m1, nu, delta)
+
+
+def _overlay_checks(results, deviation, cyl, along_euler, integral):
+    """Euler's equations mapped into the plane: on the plane's trajectories, keeping its first integral
+    (`integral`, E or C1 as the caption writes it), and on their elliptic cylinder."""
+    nu_zero = integral == "$E$"
+    results.number(
+        "overlay_deviation", deviation, "1", note="Euler's equations in the plane against (2.10), max"
+    )
+    results.number("cylinder_spread", cyl, "1", note="relative spread of q²/b + r²/c along Euler's equations")
+    results.hard_case(
+        "overlay",
+        "Full integrations of Euler's equations, mapped into the plane, on the plane's "
+        "trajectories (largest deviation in $(\\varphi_2, p_1)$)",
+        deviation,
+        OVERLAY_BOUND,
+    )
+    results.number(
+        "invariant_spread_euler",
+        along_euler,
+        "1",
+        note=("E" if nu_zero else "C1") + ": largest "
+        "spread along one of Euler's integrations mapped into the plane, relative to the size of its terms",
+    )
+    results.hard_case(
+        "plane_invariant_euler",
+        f"The plane's first integral {integral} along Euler's equations "
+        "mapped into the plane (largest relative spread)",
+        along_euler,
+        INVARIANT_BOUND,
+    )
+    results.hard_case(
+        "elliptic_cylinder",
+        "The end of $\\boldsymbol{\\omega}$ stays on its elliptic cylinder "
+        "(relative spread of $q^2/b + r^2/c$)",
+        cyl,
+        CYLINDER_BOUND,
+    )
 
 
 def _eigenvalue_check(results, m1, nu, points):

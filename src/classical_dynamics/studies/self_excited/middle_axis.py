@@ -17,13 +17,11 @@ from __future__ import annotations
 import numpy as np
 
 from ...figure_style import TEXT_WIDTH_IN
-from ...formatting import format_number, shortest
 from ...models import self_excited as se
 from ...solvers.ode import Events, Problem, solve
-from ...solvers.workprecision import legend_below
 from ..results import new_figure
-from . import accuracy, portrait
-from .bounds import EXCURSION_PERIODS, INVARIANT_BOUND, OVERLAY_BOUND
+from . import accuracy, excursions, portrait, rare_case
+from .bounds import INVARIANT_BOUND, OVERLAY_BOUND, PLANE_DEPARTURE
 
 AMPLITUDES = (0.4, 0.2, 0.1, 0.05)
 # the cosh form's saddle loop is near: smaller amplitudes reach the η⁴ law
@@ -56,14 +54,7 @@ SHAPES = {
     "$q_1 = \\sqrt{m/\\nu}$, the permanent rotation about $+y$, and below it $\\boldsymbol{\\omega}$ "
     "leaves every bound in finite time",
 }
-RARE_REST = (
-    "a line of rest points $q_1 = 0$ (permanent rotations about axes of plane II); above it $q_1$ falls "
-    "like $1/(\\nu\\tau)$ and $\\boldsymbol{\\omega} \\to 0$ along $+y$, below it $\\boldsymbol{\\omega}$ "
-    "leaves every bound in finite time"
-)
-ESCAPE_EXPONENT_BOUND = 1e-3  # hard case: the rare case's escape, ln|q| against ln|(p, r)|, slope b/(a + c)
 RUNAWAY_BOUND = 1e-8  # hard case: the unperturbed escape, dq1/dtau -> m3
-PLANE_DEPARTURE = 1e-10  # the overlay in plane I or II stops where Euler's state has left the plane by this
 
 
 def run(scene, results, quick):
@@ -75,15 +66,53 @@ def run(scene, results, quick):
     M = se.MiddleAxis.with_plane_parameters(body, m1, -nu, alpha1, alpha2)
     lo, hi = data.get("portrait", {}).get("phi2_range", [-4.0, 4.0])
     q1_max = data.get("portrait", {}).get("p1_max", 3.0)
-    form = M.form
-    name = LABELS[form]
+    points = _record_reduction(results, M, plane, m1, nu)
+
+    fig, ax = new_figure(TEXT_WIDTH_IN, 3.6)
+    drawing = portrait.Drawing("q1", (lo - 0.5, hi + 0.5, 2.0 * q1_max))
+    centers = [pt["phi2"] for pt in points if pt["type"] == "center"]
+    # a degenerate point has a separatrix too
+    saddles = [pt["phi2"] for pt in points if pt["type"] != "center"]
+    starts, others = _starts(M.form, centers, saddles, lo, hi)
+    for y in portrait.trajectories(se.plane_middle, M.plane_parameters, starts + others, 30.0):
+        drawing.curve("trajectory", y[:, 0], y[:, 1])
+    _orbits_close(results, M, starts)
+    _separatrix(drawing, M, saddles, centers, lo, hi)
+    _fates(results, drawing, M, points, centers, saddles, others)
+    overlay_starts = starts[:3] + others[:1] if starts else others[2:6]
+    _overlay_checks(results, drawing, M, overlay_starts)
+    drawing.points(points)
+    drawing.window(lo, hi, q1_max)
+    portrait.finish(ax, drawing, "$q_1$")
+    results.figure(
+        "portrait", fig, _caption(M, drawing, points, m1, nu, alpha1 == alpha2, len(overlay_starts))
+    )
+    drawing.save(
+        results,
+        "What the portrait draws, point by point: each element (trajectory, separatrix or the "
+        "curve $C = 0$, line of rest points, Euler's equations mapped into the plane, singular point by "
+        "type, "
+        "the window's corners) and its curve number, in $(\\varphi_2, q_1)$.",
+    )
+    if centers:
+        _series(results, M, centers[0], nu)
+    _middle_checks(results, M, overlay_starts, centers)
+    if "excursion" in data:
+        start = excursions.excursion_start(M, float(data["excursion"]["q0"]))
+        excursions.excursion(results, M, start)
+        accuracy.huge_excursion(results, M, start, quick)
+
+
+def _record_reduction(results, M, plane, m1, nu):
+    """The plane's parameters, the physical torque that gives them, and its singular points (returned)."""
+    form, name = M.form, LABELS[M.form]
     results.number(
         "m1", m1, "1", note=f"{name} of the plane: " + plane.get("source", "chosen to show the regime")
     )
     results.number("nu", nu, "1", note="mu1 = −nu")
     results.number(
         "nu_c",
-        se.MiddleAxis.plane_nu("nu_c", body),
+        se.MiddleAxis.plane_nu("nu_c", M.body),
         "1",
         note="b/(2(a + c)): above it the cosh form (3.56) takes over",
     )
@@ -97,19 +126,18 @@ def run(scene, results, quick):
     )
     results.number("M_over_B", M.m, "1/time²", note=f"the constant torque per unit B that gives {name} here")
     results.number("mu0_over_B", M.mu, "1")
-    results.number("hyperbola", alpha1**2 - alpha2**2, "1", note="p²/a − r²/c = α1² − α2²")
+    results.number("hyperbola", M.alpha1**2 - M.alpha2**2, "1", note="p²/a − r²/c = α1² − α2²")
     points = _singular_points(m1, form, M.eps1)
     results.number(
         "singular_points", points, "1", note=f"q1 = 0 where {name} + ε f(φ2) = 0, typed by the linearization"
     )
     for kind in ("saddle", "center", "degenerate"):
         results.number(f"n_{kind}s", sum(pt["type"] == kind for pt in points), "1")
+    return points
 
-    fig, ax = new_figure(TEXT_WIDTH_IN, 3.6)
-    drawing = portrait.Drawing("q1", (lo - 0.5, hi + 0.5, 2.0 * q1_max))
-    centers = [pt["phi2"] for pt in points if pt["type"] == "center"]
-    # a degenerate point has a separatrix too
-    saddles = [pt["phi2"] for pt in points if pt["type"] != "center"]
+
+def _starts(form, centers, saddles, lo, hi):
+    """The portrait's starts: (about the center, elsewhere in the window)."""
     if centers and saddles:  # inside the saddle's loop: between the saddle and the center
         span = centers[0] - saddles[0]
         starts = [(centers[0] - f * span, 0.0) for f in (0.2, 0.5, 0.8)]
@@ -126,10 +154,13 @@ def run(scene, results, quick):
     )
     if saddles and not centers:
         others += [(saddles[0] + 0.5, 0.0), (saddles[0] + 1.0, 1.0), (saddles[0] - 0.2, 0.0)]
-    for y in portrait.trajectories(se.plane_middle, M.plane_parameters, starts + others, 30.0):
-        drawing.curve("trajectory", y[:, 0], y[:, 1])
+    return starts, others
+
+
+def _orbits_close(results, M, starts):
+    """Orbits about the center close: each turns back twice."""
     closed = 0
-    for phi, q1 in starts:  # orbits about the center close; each turns back twice
+    for phi, q1 in starts:
         sol = solve(
             Problem(se.plane_middle, [phi, q1], (0.0, 200.0), M.plane_parameters()),
             "dop853",
@@ -148,13 +179,17 @@ def run(scene, results, quick):
             len(starts) - closed,
             0,
         )
-    _separatrix(drawing, M, saddles, centers, lo, hi)
+
+
+def _fates(results, drawing, M, points, centers, saddles, others):
+    """Each fate Lee names where this plane has it: every start escapes, the rare case's blow-up and rest
+    line, motions of the third kind, the unperturbed runaway, settling to a finite limit."""
     if M.mu1 < 0 and _turns_nowhere(M):
         _every_start_escapes(results, M, others)
-    if form == "rare":
-        _rare_escape(results, M)
+    if M.form == "rare":
+        rare_case.escape(results, M)
         if M.m1 == 0.0:
-            _rare_rest(drawing, results, M)
+            rare_case.rest_line(drawing, results, M)
     else:
         escape = _escaping_start(M, centers, saddles)
         if escape is not None:
@@ -163,8 +198,11 @@ def run(scene, results, quick):
         _runaway(results, M)
     if M.mu1 < 0 and not points and M.m1 > 0 and not _turns_nowhere(M):
         _settles(results, M)
-    overlay_starts = starts[:3] + others[:1] if starts else others[2:6]
-    n_overlay = len(overlay_starts)
+
+
+def _overlay_checks(results, drawing, M, overlay_starts):
+    """Euler's equations mapped into the plane: on the plane's trajectories, keeping its first integral, and
+    on their hyperbolic cylinder."""
     deviation, hyp, invariant, share = _overlay(drawing, M, overlay_starts)
     results.number(
         "overlay_deviation", deviation, "1", note="Euler's equations in the plane against the plane, max"
@@ -216,9 +254,11 @@ def run(scene, results, quick):
         hyp,
         1e-10,
     )
-    drawing.points(points)
-    drawing.window(lo, hi, q1_max)
-    portrait.finish(ax, drawing, "$q_1$")
+
+
+def _caption(M, drawing, points, m1, nu, plane_one, n_overlay):
+    """The portrait's caption: the equation and plane, the regime, what its shape is, what each ink draws."""
+    form = M.form
     regime = f"{SYMBOLS[form] if form != 'rare' else '$m$'} = {portrait.param_text(m1)}"
     regime += f", $\\nu$ = {portrait.param_text(nu)}" if nu else ", unperturbed ($\\nu = 0$)"
     drawn = drawing.elements()
@@ -233,33 +273,17 @@ def run(scene, results, quick):
         black += "; the line of rest points in colour"
     marked = "; markers: the singular points, by type" if points else ""
     where = {
-        "exp": "plane I ($\\alpha_1 = \\alpha_2$)" if alpha1 == alpha2 else "$|\\mu| = \\mu_\\mathrm{c}$",
+        "exp": "plane I ($\\alpha_1 = \\alpha_2$)" if plane_one else "$|\\mu| = \\mu_\\mathrm{c}$",
         "exp-": "plane II ($\\alpha_1 = -\\alpha_2$)",
         "rare": "plane II at $\\nu = \\nu_\\mathrm{c}$, Lee's rare case ($k_1 = k_2 = 0$; "
         "here $\\tau = t$ and $\\varphi_2 = 2\\sqrt{ac}\\,\\varphi$)",
     }
-    results.figure(
-        "portrait",
-        fig,
+    return (
         f"Phase plane of {EQUATIONS[form]} for the torque along the middle axis $y$"
         f"{', ' + where[form] if form in where else ''}; {regime}: {_shape(M, points)}. Grey: trajectories "
         f"of the plane{black}{marked}; dots: {portrait.COUNTS[n_overlay]} integrations of Euler's "
-        "equations in three dimensions, mapped into the plane, which lie on the plane's trajectories.",
+        "equations in three dimensions, mapped into the plane, which lie on the plane's trajectories."
     )
-    drawing.save(
-        results,
-        "What the portrait draws, point by point: each element (trajectory, separatrix or the "
-        "curve $C = 0$, line of rest points, Euler's equations mapped into the plane, singular point by "
-        "type, "
-        "the window's corners) and its curve number, in $(\\varphi_2, q_1)$.",
-    )
-    if centers:
-        _series(results, M, centers[0], nu)
-    _middle_checks(results, M, overlay_starts, centers)
-    if "excursion" in data:
-        start = excursion_start(M, float(data["excursion"]["q0"]))
-        _excursion(results, M, start)
-        accuracy.huge_excursion(results, M, start, quick)
 
 
 def _shape(M, points):
@@ -288,7 +312,7 @@ def _shape(M, points):
         )
     if M.form == "rare" and M.m1 <= 0:
         return (
-            RARE_REST
+            rare_case.RARE_REST
             if M.m1 == 0
             else f"no singular point: from every start {w} leaves every bound in finite "
             "time, towards an axis of plane II perpendicular to $y$"
@@ -532,165 +556,6 @@ def _middle_checks(results, M, starts, centers):
         middle_checks.large_q0(results, M)
 
 
-def _rare_escape(results, M):
-    """Lee (3.65)-(3.66): below the line q1 = -sqrt(m/nu) (m > 0), below q1 = 0 (m = 0) or from anywhere (m <
-    0) the Riccati equation dq1/dtau = m - nu q1^2 blows up at a time known in closed form; Euler's equations
-    then run to an axis of plane II perpendicular to y, because p and r grow like e^{sqrt(ac)|phi|}, faster
-    than q: ln|q| against ln|(p, r)| has slope |mu|/sqrt(ac) = b/(a + c)."""
-    m, nu, bound = M.m1, -M.mu1, portrait.BLOW_UP_BOUND
-    q0 = -1.5 * np.sqrt(m / nu) if m > 0 else -1.0
-    flat = solve(
-        Problem(se.plane_middle, [0.0, q0], (0.0, 100.0), M.plane_parameters()),
-        "dop853",
-        rtol=1e-12,
-        atol=1e-14,
-        bound=bound,
-    )
-    closed = _riccati_time(m, nu, q0, -bound)
-    results.number("blow_up_time", flat.t, "τ", note=f"from φ2 = 0, q1 = {q0:.4g}: q1 passes −{bound:g}")
-    results.number(
-        "blow_up_time_closed_form",
-        closed,
-        "τ",
-        note="dq1/dτ = m − νq1² integrated in closed form between the start and the bound",
-    )
-    results.hard_case(
-        "rare_blow_up_time",
-        "The blow-up time of the rare case against its closed form (relative)",
-        abs(flat.t / closed - 1.0) if flat.status == "blow-up" else np.inf,
-        1e-9,
-    )
-    full = solve(
-        Problem(se.euler_middle, M.from_plane(0.0, q0), (0.0, 100.0), M.euler_parameters()),
-        "dop853",
-        rtol=1e-13,
-        atol=1e-15,
-        bound=1e12,
-        record_steps=True,
-    )
-    w = full.y_steps
-    pr, q = np.hypot(w[:, 0], w[:, 2]), np.abs(w[:, 1])
-    late = (pr > 1e4) & (pr < 1e11)
-    slope = float(np.polyfit(np.log(pr[late]), np.log(q[late]), 1)[0])
-    expected = M.body.b / (M.body.a + M.body.c)
-    results.number(
-        "escape_exponent",
-        slope,
-        "1",
-        note="slope of ln|q| against ln|(p, r)| as ω leaves every bound "
-        "(Euler's equations, |(p, r)| from 1e4 to 1e11)",
-    )
-    results.number(
-        "escape_exponent_expected",
-        expected,
-        "1",
-        note="b/(a + c) = |μ|/√(ac) at |μ| = μ_c: below 1, so "
-        "ω turns towards plane II's axis perpendicular to y",
-    )
-    results.number(
-        "escape_q_share", float(q[-1] / np.linalg.norm(w[-1])), "1", note="|q|/|ω| when |ω| passes 1e12"
-    )
-    results.hard_case(
-        "rare_escape_direction",
-        "Lee: below the line $\\boldsymbol{\\omega}$ runs to an axis of plane "
-        "II perpendicular to $y$: $|s - b/(a + c)|$ for the slope $s$ of $\\ln|q|$ against "
-        "$\\ln|(p, r)|$",
-        abs(slope - expected),
-        ESCAPE_EXPONENT_BOUND,
-    )
-
-
-def _riccati_time(m, nu, q_from, q_to):
-    """The time dq/dtau = m - nu q^2 takes from q_from to q_to, both below every rest point: with s^2 = |m|/nu
-    the difference between the ends of -ln((q - s)/(q + s))/(2 s nu) (m > 0), 1/(nu q) (m = 0) or
-    -arctan(q/s)/(s nu) (m < 0)."""
-    s = np.sqrt(abs(m) / nu)
-    if m > 0:
-        F = lambda q: -np.log((q - s) / (q + s)) / (2 * s * nu)
-    elif m == 0:
-        F = lambda q: 1.0 / (nu * q)
-    else:
-        F = lambda q: -np.arctan(q / s) / (s * nu)
-    return float(F(q_to) - F(q_from))
-
-
-def _rare_rest(drawing, results, M):
-    """Lee's Figure 3.18(b), the rare case without torque (m0 = 0): dq1/dtau = -nu q1^2, so every point of q1
-    = 0 is at rest (a permanent rotation about an axis of plane II: -b r p + mu |omega|^2 = 0 there at |mu| =
-    mu_c). Above the line q1 = q10/(1 + nu q10 tau) falls to 0 while phi2 runs to +infinity, so p and r decay
-    like e^{-phi2/2} = (1 + nu q10 tau)^{-1/(2 nu)}, faster than q: omega -> 0 along +y. Along Euler's
-    equations ln|q| against ln|(p, r)| has slope 2 nu_c = b/(a + c) exactly."""
-    drawing.curve("rest_line", drawing.reach[:2], [0.0, 0.0])
-    drift = 0.0
-    for phi in (-2.0, 0.0, 2.0):
-        w0 = M.from_plane(phi, 0.0)
-        rest = solve(
-            Problem(se.euler_middle, w0, (0.0, 100.0), M.euler_parameters()),
-            "dop853",
-            rtol=1e-13,
-            atol=1e-15,
-            record_steps=True,
-        )
-        drift = max(drift, float(np.max(np.linalg.norm(rest.y_steps - w0, axis=1)) / np.linalg.norm(w0)))
-    results.number(
-        "rest_line_drift",
-        drift,
-        "1",
-        note="largest |ω(t) − ω0|/|ω0| over t ≤ 100 from three points of "
-        "q1 = 0 (φ2 = −2, 0, 2), Euler's equations",
-    )
-    results.hard_case(
-        "rest_line_at_rest",
-        "Every point of $q_1 = 0$ is a permanent rotation (Euler's equations "
-        "from three of them: largest relative drift over $t \\le 100$)",
-        drift,
-        1e-12,
-    )
-    q10, nu = 1.0, -M.mu1
-    tau = np.linspace(0.0, 200.0, 401)
-    # tau = t in the rare case
-    full = solve(
-        Problem(se.euler_middle, M.from_plane(0.0, q10), (0.0, tau[-1]), M.euler_parameters()),
-        "dop853",
-        rtol=1e-13,
-        atol=1e-15,
-        t_eval=tau,
-    )
-    inside = np.cumprod(M.plane_departure(full.y_eval) < PLANE_DEPARTURE).astype(bool)
-    w, t = full.y_eval[inside], tau[inside]
-    decay = float(np.max(np.abs(M.to_plane(w)[:, 1] / (q10 / (1.0 + nu * q10 * t)) - 1.0)))
-    slope = float(np.polyfit(np.log(np.hypot(w[:, 0], w[:, 2])), np.log(np.abs(w[:, 1])), 1)[0])
-    results.number(
-        "rest_decay_error",
-        decay,
-        "1",
-        note=f"Euler's q1 against q10/(1 + νq10τ) from φ2 = 0, q10 = "
-        f"{q10:g}, while the state is in plane II (to τ = {t[-1]:g}; largest relative error)",
-    )
-    results.number(
-        "rest_decay_exponent",
-        slope,
-        "1",
-        note="slope of ln|q| against ln|(p, r)| along that motion: "
-        "below 1, so q outlasts p and r and ω → 0 along +y",
-    )
-    results.hard_case(
-        "rare_rest_decay",
-        "Without torque, above the line of rest points $q_1$ falls like "
-        "$q_{10}/(1 + \\nu q_{10}\\tau)$ (Euler's equations against the closed form, largest relative "
-        "error)",
-        decay,
-        1e-9,
-    )
-    results.hard_case(
-        "rare_rest_direction",
-        "Lee: $\\boldsymbol{\\omega} \\to 0$ along $+y$: $|s - b/(a + c)|$ for "
-        "the slope $s$ of $\\ln|q|$ against $\\ln|(p, r)|$",
-        abs(slope - M.body.b / (M.body.a + M.body.c)),
-        ESCAPE_EXPONENT_BOUND,
-    )
-
-
 def _runaway(results, M):
     """Unperturbed, no singular point (Lee's Figures 3.4 (d), (e), 3.5 (e)): the exponential term dies away
     and q1 changes at the constant rate m3; with m3 = 0 (no torque: the force-free separatrix motion) it tends
@@ -734,172 +599,6 @@ def _runaway(results, M):
             abs(float(sol.y_eval[-1, 1]) - limit),
             RUNAWAY_BOUND,
         )
-
-
-def turning_points(M, y0):
-    """The orbit's turning points (q1 = 0) from the closed form: the roots of C e^{2 mu1 phi2} + g(phi2) on
-    either side of the start, which lies inside the orbit's range of phi2."""
-    from scipy.optimize import brentq
-
-    C = float(se.middle_invariant(y0, M.m1, M.mu1, M.eps1, M.form)[0])
-
-    def h(phi):
-        if M.mu1 == 0.0:
-            return 2.0 * (C - se.middle_potential(phi, M.m1, M.eps1, M.form))
-        return C * np.exp(2 * M.mu1 * phi) + se.middle_g(phi, M.m1, M.mu1, M.eps1, M.form)
-
-    roots = []
-    for side in (-1.0, 1.0):
-        step = 0.25
-        while h(y0[0] + side * step) > 0:
-            step *= 2.0
-        roots.append(brentq(h, y0[0] + side * step / 2, y0[0] + side * step, xtol=1e-15, rtol=1e-15))
-    return roots, h
-
-
-def closed_form_period(M, y0):
-    """The tau-period 2 int dphi2/|q1| between the turning points, q1^2 from the closed form, by quadrature
-    with phi2 = mid + half sin(theta), which removes the inverse square roots at the ends."""
-    from scipy.integrate import quad
-
-    (left, right), h = turning_points(M, y0)
-    mid, half = 0.5 * (left + right), 0.5 * (right - left)
-    value, _ = quad(
-        lambda th: half * np.cos(th) / np.sqrt(max(h(mid + half * np.sin(th)), 1e-300)),
-        -np.pi / 2,
-        np.pi / 2,
-        epsabs=0.0,
-        epsrel=1e-13,
-        limit=200,
-    )
-    return 2.0 * value, (left, right)
-
-
-def excursion_start(M, q0):
-    """phi = 0 on the cylinder (p, r) = (alpha1 sqrt a, alpha2 sqrt c), spin q0 about the torque axis: the
-    start w0, the period T in t, the turning points (phi2) of the closed form and |omega| at each of them."""
-    w0 = np.array([M.alpha1 * np.sqrt(M.body.a), q0, M.alpha2 * np.sqrt(M.body.c)])
-    T_tau, turns = closed_form_period(M, M.to_plane(w0)[0])
-    sizes = np.array([np.linalg.norm(M.from_plane(phi, 0.0)) for phi in turns])
-    return w0, T_tau / M.time_scale, turns, sizes
-
-
-def _excursion(results, M, start):
-    """The huge excursions just below mu_c (digest §7.5): from phi = 0 on the cylinder with a large spin q0
-    about the torque axis, the orbit closes, but p and r swing out like cosh(sqrt(ac) phi) on the way. The
-    turning points and the period come from the closed form; Euler's equations must reach the same points,
-    close after every period and stay on their cylinder. Rounding errors in omega are relative to the largest
-    |omega| the orbit reaches, so the errors are measured against it."""
-    w0, T, (left, right), predicted = start
-    q0, scale = w0[1], float(predicted.max())  # the largest |omega|, at the far turning point
-    full = solve(
-        Problem(se.euler_middle, w0, (0.0, EXCURSION_PERIODS * T), M.euler_parameters()),
-        "dop853",
-        rtol=1e-13,
-        atol=1e-15,
-        events=Events(portrait.velocity_zero, 1),
-        record_steps=True,
-    )
-    w = full.y_steps
-    sizes = np.linalg.norm(w, axis=1)
-    reached = np.linalg.norm(full.event_y, axis=1)
-    turning = float(np.max(np.min(np.abs(reached[:, None] - predicted[None, :]), axis=1)) / scale)
-    closure = float(np.linalg.norm(full.y - w0) / scale)
-    hyp = se.hyperbola(M.body, w)
-    hyp_spread = float(np.ptp(hyp) / np.max(w[:, 0] ** 2 / M.body.a + w[:, 2] ** 2 / M.body.c))
-    c1 = se.middle_invariant(M.to_plane(w), M.m1, M.mu1, M.eps1, M.form)
-    fig, ax = new_figure(height=2.6)
-    first = full.t_steps <= 2 * T
-    ax.semilogy(
-        full.t_steps[first],
-        sizes[first],
-        ".-",
-        color=portrait.EULER_COLOUR,
-        ms=2,
-        lw=0.6,
-        label="$|\\omega|$ along Euler's equations (at the steps)",
-    )
-    for k, value in enumerate(predicted):
-        ax.axhline(
-            value,
-            color="k",
-            ls="--",
-            lw=0.8,
-            label="$|\\omega|$ at the turning points, closed form" if k == 0 else None,
-        )
-    ax.set_xlabel("$t$ (time units)")
-    ax.set_ylabel("$|\\omega|$ (rad per time unit)")
-    legend_below(fig, *ax.get_legend_handles_labels(), ncol=2)
-    nu_c = se.MiddleAxis.plane_nu("nu_c", M.body)
-    results.figure(
-        "excursion",
-        fig,
-        "A huge excursion below the critical drag "
-        f"($\\nu$ = {portrait.param_text(-M.mu1)}, "
-        f"$\\nu_\\mathrm{{c}}$ = {format_number(nu_c, 3)}): $|\\boldsymbol{{\\omega}}|$ against $t$ "
-        f"(log scale) from a spin $q_0$ = {shortest(q0)} about the torque axis, over the first two of the "
-        f"{EXCURSION_PERIODS} periods integrated. $|\\boldsymbol{{\\omega}}|$ swings out by a factor "
-        f"{format_number(float(sizes.max() / sizes[0]), 3)} and back, and turns where the closed form "
-        "says (dashed).",
-    )
-    results.number("excursion_q0", q0, "1/time", note="the start: φ = 0 on the cylinder, q = q0")
-    results.number("excursion_max_omega", float(sizes.max()), "1/time", note="max |ω| over the orbit (Euler)")
-    results.number(
-        "excursion_max_omega_closed_form",
-        scale,
-        "1/time",
-        note="|ω| at the far turning point of the closed form",
-    )
-    results.number("excursion_growth", float(sizes.max() / sizes[0]), "1", note="max |ω| against |ω0|")
-    results.number(
-        "excursion_period",
-        T,
-        "time",
-        note="2∫dφ2/|q1| between the turning points of the closed form, by quadrature, in t",
-    )
-    results.number(
-        "excursion_phi2_left", float(left), "1", note="the left turning point of the closed form (q1 = 0)"
-    )
-    results.number(
-        "excursion_phi2_right", float(right), "1", note="the right turning point of the closed form"
-    )
-    results.number(
-        "excursion_closure",
-        closure,
-        "1",
-        note=f"|ω − ω0| after {EXCURSION_PERIODS} periods, relative to the largest |ω|",
-    )
-    results.number(
-        "excursion_c1_spread",
-        float(np.ptp(c1) / np.max(np.abs(c1))),
-        "1",
-        note="relative spread of C1 "
-        "from Euler's state: q is known to rounding relative to the largest |ω|, and near its turning "
-        "points q1 is small",
-    )
-    results.hard_case(
-        "excursion_turning_points",
-        "Huge excursions below $\\mu_\\mathrm{c}$: "
-        "$|\\boldsymbol{\\omega}|$ where Euler's equations turn ($q = 0$) against the closed "
-        "form's turning points (worst, relative to the largest $|\\boldsymbol{\\omega}|$)",
-        turning,
-        1e-10,
-    )
-    results.hard_case(
-        "excursion_closes",
-        f"Huge excursions below $\\mu_\\mathrm{{c}}$: $\\boldsymbol{{\\omega}}$ "
-        f"back at its start after {EXCURSION_PERIODS} periods of the closed form (relative to the "
-        "largest $|\\boldsymbol{\\omega}|$)",
-        closure,
-        1e-8,
-    )
-    results.hard_case(
-        "excursion_cylinder",
-        "Huge excursions below $\\mu_\\mathrm{c}$: spread of $p^2/a - r^2/c$ "
-        "along Euler's equations, relative to the largest $p^2/a + r^2/c$",
-        hyp_spread,
-        1e-12,
-    )
 
 
 def _settles(results, M):
