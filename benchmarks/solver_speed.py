@@ -13,11 +13,22 @@ specialize=True compiles that loop for the one right-hand side (a second or so, 
 Times are minima over repeated runs after a warm-up.
 
     python benchmarks/solver_speed.py
+    python benchmarks/solver_speed.py --against REV    # the compiled paths here and at commit REV
+
+With --against, the same calls through the public interface (solve, solve_batch) are timed in this tree and in
+a git worktree of REV, each in processes of its own, alternating three times (the minimum of each is kept, so
+that a change in the machine's load falls on both): the final-state loop (plain and specialized), the full
+loop (dense output, events), and the batches.
 """
 
 from __future__ import annotations
 
+import argparse
+import json
+import os
+import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -261,5 +272,82 @@ def main():
     )
 
 
+# The compiled paths, through the public interface only (the same in every commit since it was written).
+PATHS = """
+import json, sys
+import numpy as np
+from classical_dynamics.models import rigid_body as rhs
+from classical_dynamics.solvers import references as ref
+from classical_dynamics.solvers.ode import Events, Problem, solve, solve_batch
+from classical_dynamics.solvers.timing import min_time
+from classical_dynamics.solvers.runge_kutta import rhs_function
+
+@rhs_function
+def q_zero(t, y, p, out):
+    out[0] = y[1]
+
+a = rhs.euler_coefficients(ref.HNW_I)
+hnw = Problem(rhs.euler_free, ref.HNW_Y0, (0.0, 20.0), a)
+Y0 = ref.HNW_Y0 + 0.05 * np.random.default_rng(1).standard_normal((200, 3))
+tol = dict(rtol=1e-10, atol=1e-13)
+calls = {
+    "final state, dop853": lambda: solve(hnw, "dop853", **tol),
+    "final state, dop853 specialized": lambda: solve(hnw, "dop853", specialize=True, **tol),
+    "final state, dopri5": lambda: solve(hnw, "dopri5", **tol),
+    "full loop, dense output at 200 times": lambda: solve(
+        hnw, "dop853", t_eval=np.linspace(0, 20, 200), **tol),
+    "full loop, events (q = 0)": lambda: solve(hnw, "dop853", events=Events(q_zero, 1), **tol),
+    "batch of 200, final states": lambda: solve_batch(rhs.euler_free, Y0, (0.0, 20.0), a, **tol),
+    "batch of 200, dense output": lambda: solve_batch(
+        rhs.euler_free, Y0, (0.0, 20.0), a, t_eval=np.linspace(0, 20, 50), **tol),
+}
+out = {}
+for name, call in calls.items():
+    call()
+    out[name] = min_time(call, repeats=200 if "batch" not in name else 10, budget_s=1.0)[0]
+print(json.dumps(out))
+"""
+
+
+def paths_in(tree: Path) -> dict:
+    env = dict(os.environ, PYTHONPATH=str(tree / "src"))
+    with tempfile.TemporaryDirectory() as tmp:  # a file: numba caches the event function beside it
+        script = Path(tmp) / "solver_paths.py"
+        script.write_text(PATHS)
+        done = subprocess.run(
+            [sys.executable, str(script)], cwd=tree, env=env, capture_output=True, text=True
+        )
+    if done.returncode != 0:
+        raise SystemExit(done.stderr)
+    return json.loads(done.stdout.splitlines()[-1])
+
+
+def against(rev: str) -> None:
+    root = Path(__file__).resolve().parents[1]
+    with tempfile.TemporaryDirectory() as tmp:
+        base = Path(tmp) / "base"
+        subprocess.run(
+            ["git", "worktree", "add", "--detach", str(base), rev], cwd=root, check=True, capture_output=True
+        )
+        try:
+            paths_in(base), paths_in(root)  # compile (or load) both trees' loops first
+            runs = {"base": [], "here": []}
+            for _ in range(3):
+                runs["base"].append(paths_in(base))
+                runs["here"].append(paths_in(root))
+        finally:
+            subprocess.run(["git", "worktree", "remove", "--force", str(base)], cwd=root, capture_output=True)
+    best = {k: {name: min(r[name] for r in v) for name in v[0]} for k, v in runs.items()}
+    print(f"machine: {software_stamp()}")
+    print("HNW rigid body to t = 20, rtol 1e-10: minimum of three alternating runs, each its own process\n")
+    print(f"{'compiled path':40s} {rev[:10]:>12s} {'this tree':>12s} {'ratio':>7s}")
+    for name in best["base"]:
+        b, h = best["base"][name], best["here"][name]
+        print(f"{name:40s} {b * 1e6:9.1f} us {h * 1e6:9.1f} us {h / b:7.3f}")
+
+
 if __name__ == "__main__":
-    main()
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--against", metavar="REV", help="time the compiled paths here and at this commit")
+    args = parser.parse_args()
+    against(args.against) if args.against else main()

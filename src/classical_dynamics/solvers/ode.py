@@ -130,21 +130,13 @@ def solve(
         raise ValueError(f"unknown method {method!r}; known: {', '.join(COMPILED + PEERS)}")
     if t_eval is None and events is None and not record_steps and method in rk.TABLEAUS:
         # the final state only: the lean loop, and as little Python around it as possible
-        args = (
-            problem.params,
-            t0,
-            t1,
-            problem.y0,
-            float(rtol),
-            float(atol),
-            *rk.TABLEAUS[method].stepping_arrays(),
-            int(max_steps),
-            float(bound),
-        )
+        start = (problem.params, t0, t1, problem.y0)
+        control = (float(rtol), float(atol), int(max_steps), float(bound))
+        steps = rk.TABLEAUS[method].steps
         if specialize:
-            status, t, y, nfev, nacc, nrej = rk.specialized_final_state(problem.rhs)(*args)
+            status, t, y, nfev, nacc, nrej = rk.specialized_final_state(problem.rhs)(start, steps, control)
         else:
-            status, t, y, nfev, nacc, nrej = rk.final_state(problem.rhs, *args)
+            status, t, y, nfev, nacc, nrej = rk.final_state(problem.rhs, start, steps, control)
         if status != rk.BLOW_UP:  # a blow-up is located on the dense output by the full loop below
             rows = np.zeros((0, y.size))
             return Solution(
@@ -177,22 +169,12 @@ def solve(
     # the event function by address (usually the no-op: converting it at every call would cost ~20 us)
     out = rk.integrate(
         problem.rhs,
-        problem.params,
-        t0,
-        t1,
-        problem.y0,
-        float(rtol),
-        float(atol),
-        *tableau.arrays(),
-        t_eval,
-        int(max_steps),
-        float(bound),
         rk.by_address(g),
-        n_events,
-        directions,
-        terminal,
-        int(subdivisions),
-        bool(record_steps),
+        (problem.params, t0, t1, problem.y0),
+        tableau.pair,
+        (float(rtol), float(atol), int(max_steps), float(bound)),
+        (n_events, directions, terminal, int(subdivisions)),
+        (t_eval, bool(record_steps)),
     )
     status, t, y, y_eval, nfev, nacc, nrej, ts, ys, et, ey, ei = out
     return Solution(rk.STATUS[status], t, y, t_eval, y_eval, nfev, nacc, nrej, ts, ys, et, ey, ei, method)
@@ -276,65 +258,18 @@ def compile_time(problem: Problem, method: str = "dop853") -> float:
     return first - (time.perf_counter() - start)
 
 
-@njit(
-    (
-        rk.FUNC,
-        rk.MAT,
-        rk.F64,
-        rk.F64,
-        rk.MAT,
-        rk.F64,
-        rk.F64,
-        rk.I64,
-        rk.MAT,
-        rk.VEC,
-        rk.VEC,
-        rk.VEC,
-        rk.VEC,
-        rk.MAT,
-        rk.MAT,
-        rk.VEC,
-        rk.VEC,
-        rk.F64,
-    ),
-    cache=True,
-)
-def _batch(f, P, t0, t1, Y0, rtol, atol, kind, A, B, C, E5, E3, dense, A_extra, C_extra, t_eval, bound):
+@njit((rk.FUNC, rk.ROWS, rk.PAIR, rk.CONTROL, rk.VEC), cache=True)
+def _batch(f, rows, pair, control, t_eval):
+    """The full loop over the rows of Y0 (and of P), rows = (P, t0, t1, Y0), saving the states at t_eval."""
+    P, t0, t1, Y0 = rows
     m, n = Y0.shape
     out = np.full((m, t_eval.size, n), np.nan)
     final = np.empty((m, n))
     status = np.empty(m, dtype=np.int64)
     t_end = np.empty(m)
-    directions = np.zeros(1, dtype=np.int64)
-    terminal = np.zeros(1, dtype=np.bool_)
+    no_events = (0, np.zeros(1, dtype=np.int64), np.zeros(1, dtype=np.bool_), 1)
     for i in range(m):
-        r = rk.integrate(
-            f,
-            P[i],
-            t0,
-            t1,
-            Y0[i],
-            rtol,
-            atol,
-            kind,
-            A,
-            B,
-            C,
-            E5,
-            E3,
-            dense,
-            A_extra,
-            C_extra,
-            t_eval,
-            10**8,
-            bound,
-            rk._no_events,
-            0,
-            directions,
-            terminal,
-            1,
-            False,
-        )
+        r = rk.integrate(f, rk._no_events, (P[i], t0, t1, Y0[i]), pair, control, no_events, (t_eval, False))
         status[i], t_end[i], final[i], out[i] = r[0], r[1], r[2], r[3]
     return status, t_end, final, out
 
@@ -368,16 +303,15 @@ def solve_batch(
     check_inputs(rtol, atol)
     t_eval = np.zeros(0) if t_eval is None else np.ascontiguousarray(t_eval, dtype=float)
     t0, t1 = float(t_span[0]), float(t_span[1])
+    rows, tableau = (P, t0, t1, Y0), rk.TABLEAUS[method]
+    control = (float(rtol), float(atol), 10**8, float(bound))
     if t_eval.size:
-        status, t_end, final, out = _batch(
-            rhs, P, t0, t1, Y0, float(rtol), float(atol), *rk.TABLEAUS[method].arrays(), t_eval, float(bound)
-        )
+        status, t_end, final, out = _batch(rhs, rows, tableau.pair, control, t_eval)
         return [rk.STATUS[s] for s in status], t_end, final, out
-    args = (P, t0, t1, Y0, float(rtol), float(atol), *rk.TABLEAUS[method].arrays()[:6], float(bound))
     if specialize:
-        status, t_end, final = rk.specialized_final_state_rows(rhs)(*args)
+        status, t_end, final = rk.specialized_final_state_rows(rhs)(rows, tableau.steps, control)
     else:
-        status, t_end, final = rk.final_state_rows(rhs, *args)
+        status, t_end, final = rk.final_state_rows(rhs, rows, tableau.steps, control)
     for i in np.nonzero(status == rk.BLOW_UP)[0]:
         # the full loop, which locates the blow-up
         sol = solve(

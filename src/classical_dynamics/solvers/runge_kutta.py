@@ -12,6 +12,18 @@ the `rhs_function` decorator); events are g(t, y, p, out) with n_events values, 
 They reach the loop as first-class functions typed by that signature, so the loop is compiled once,
 cached on disk, and shared by every right-hand side (a dispatcher argument would be typed by its
 identity and recompiled in every process).
+
+What a loop is given comes in small groups, each a plain tuple (numba types a plain tuple at a call from
+Python in a fraction of a microsecond, a named tuple in about one; the loops unpack them on entry):
+
+    problem   (p, t0, t1, y0)                                   the parameters, the span, the start
+    steps     (kind, A, B, C, E5, E3)                           the pair's stages and error estimators
+    pair      steps + (dense, A_extra, C_extra)                 ... and its dense output
+    control   (rtol, atol, max_steps, bound)                    the step-size controller and its limits
+    events    (n_events, directions, terminal, subdivisions)    which sign changes of g(t, y, p) to find
+    output    (t_eval, record)                                  what to save besides the final state
+
+(the solver, its controller and what to save as separate values, as diffrax has them).
 """
 
 from __future__ import annotations
@@ -26,6 +38,13 @@ SAFETY, MIN_FACTOR, MAX_FACTOR = 0.9, 0.2, 10.0
 F64, I64, VEC, MAT = types.float64, types.int64, types.float64[::1], types.float64[:, ::1]
 RHS_SIG = types.void(F64, VEC, VEC, VEC)  # f(t, y, p, out)
 FUNC = types.FunctionType(RHS_SIG)
+PROBLEM = types.Tuple((VEC, F64, F64, VEC))
+ROWS = types.Tuple((MAT, F64, F64, MAT))  # a batch's problem: one row of P and Y0 per start
+STEPS = types.Tuple((I64, MAT, VEC, VEC, VEC, VEC))
+PAIR = types.Tuple((I64, MAT, VEC, VEC, VEC, VEC, MAT, MAT, VEC))
+CONTROL = types.Tuple((F64, F64, I64, F64))
+EVENTS = types.Tuple((I64, types.int64[::1], types.boolean[::1], I64))
+OUTPUT = types.Tuple((VEC, types.boolean))
 
 
 def rhs_function(func):
@@ -87,12 +106,8 @@ class Tableau:
             np.ascontiguousarray(C_extra, float),
         )
 
-    def arrays(self):
-        return (self.kind, self.A, self.B, self.C, self.E5, self.E3, self.dense, self.A_extra, self.C_extra)
-
-    def stepping_arrays(self):
-        """What the final-state loop needs (no dense output)."""
-        return (self.kind, self.A, self.B, self.C, self.E5, self.E3)
+        self.steps = (self.kind, self.A, self.B, self.C, self.E5, self.E3)  # what the final-state loop needs
+        self.pair = self.steps + (self.dense, self.A_extra, self.C_extra)  # ... and the dense output
 
 
 DOPRI5 = Tableau(
@@ -115,8 +130,10 @@ TABLEAUS = {"dopri5": DOPRI5, "dop853": DOP853}
 
 
 @njit(cache=True, inline="always")
-def _stages(f, p, t, y, h, A, B, C, K, f_old, tmp, y_new):
-    """Fill K[0..s] (K[s] = f(t + h, y_new)) and y_new, with no allocation."""
+def _stages(f, p, t, h, y, y_new, steps, work):
+    """Fill K[0..s] (K[s] = f(t + h, y_new)) and y_new, with no allocation; work = (K, f_old, tmp)."""
+    _, A, B, C, _, _ = steps
+    K, f_old, tmp = work
     s = B.size
     n = y.size
     for j in range(n):
@@ -137,8 +154,10 @@ def _stages(f, p, t, y, h, A, B, C, K, f_old, tmp, y_new):
 
 
 @njit(cache=True, inline="always")
-def _error_norm(kind, K, h, E5, E3, y, y_new, rtol, atol):
+def _error_norm(steps, control, K, h, y, y_new):
     """RMS error norm, scale atol + rtol max(|y|, |y_new|); inf if y_new is not finite."""
+    kind, _, _, _, E5, E3 = steps
+    rtol, atol, _, _ = control
     n = y.size
     rows = E5.size
     if kind == 0:
@@ -187,8 +206,9 @@ def _max_abs(y):
 
 
 @njit(cache=True)
-def _dense_coefficients(f, p, kind, t, h, y_old, y_new, K, dense, A_extra, C_extra):
+def _dense_coefficients(f, p, pair, t, h, y_old, y_new, K):
     """Per-step interpolation data: Q (dopri5) or F (dop853), as rows."""
+    kind, _, _, _, _, _, dense, A_extra, C_extra = pair
     n = y_old.size
     if kind == 0:
         order = dense.shape[1]
@@ -253,8 +273,9 @@ def _dense_eval(kind, coeffs, h, y_old, x):
 
 
 @njit(cache=True)
-def _initial_step(f, p, t0, y0, f0, order, rtol, atol):
+def _initial_step(f, p, t0, y0, f0, order, control):
     """Hairer's starting step (scipy's select_initial_step), without temporaries."""
+    rtol, atol, _, _ = control
     n = y0.size
     s0 = 0.0
     s1 = 0.0
@@ -297,64 +318,15 @@ def _no_events(t, y, p, out):
     pass
 
 
-@njit(
-    (
-        FUNC,
-        VEC,
-        F64,
-        F64,
-        VEC,
-        F64,
-        F64,
-        I64,
-        MAT,
-        VEC,
-        VEC,
-        VEC,
-        VEC,
-        MAT,
-        MAT,
-        VEC,
-        VEC,
-        I64,
-        F64,
-        FUNC,
-        I64,
-        types.int64[::1],
-        types.boolean[::1],
-        I64,
-        types.boolean,
-    ),
-    cache=True,
-)
-def integrate(
-    f,
-    p,
-    t0,
-    t1,
-    y0,
-    rtol,
-    atol,
-    kind,
-    A,
-    B,
-    C,
-    E5,
-    E3,
-    dense,
-    A_extra,
-    C_extra,
-    t_eval,
-    max_steps,
-    bound,
-    g,
-    n_events,
-    directions,
-    terminal,
-    subdivisions,
-    record,
-):
+@njit((FUNC, FUNC, PROBLEM, PAIR, CONTROL, EVENTS, OUTPUT), cache=True)
+def integrate(f, g, problem, pair, control, events, output):
     """The compiled loop. Returns a tuple; see ode.solve for its meaning."""
+    p, t0, t1, y0 = problem
+    kind, A, B, C, E5, E3, _, _, _ = pair
+    steps = (kind, A, B, C, E5, E3)
+    rtol, atol, max_steps, bound = control
+    n_events, directions, terminal, subdivisions = events
+    t_eval, record = output
     n = y0.size
     s = B.size
     order = 5 if kind == 0 else 8
@@ -362,10 +334,11 @@ def integrate(
     K = np.zeros((s + 1, n))
     f_old = np.empty(n)
     tmp = np.empty(n)
+    work = (K, f_old, tmp)
     y_new = np.empty(n)
     f(t0, y0, p, f_old)
     nfev = 1
-    h = _initial_step(f, p, t0, y0, f_old, order, rtol, atol)
+    h = _initial_step(f, p, t0, y0, f_old, order, control)
     nfev += 1
     t = t0
     y = y0.copy()
@@ -409,9 +382,9 @@ def integrate(
                 break
             t_new = min(t + h, t1)
             h = t_new - t
-            _stages(f, p, t, y, h, A, B, C, K, f_old, tmp, y_new)
+            _stages(f, p, t, h, y, y_new, steps, work)
             nfev += s
-            err = _error_norm(kind, K, h, E5, E3, y, y_new, rtol, atol)
+            err = _error_norm(steps, control, K, h, y, y_new)
             if err < 1.0:
                 factor = MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * _step_factor(err, exponent))
                 if rejected:
@@ -433,7 +406,7 @@ def integrate(
         need_dense = (k_eval < n_eval and t_eval[k_eval] <= t_new) or n_events > 0 or blown
         coeffs = np.zeros((1, 1))
         if need_dense:
-            coeffs = _dense_coefficients(f, p, kind, t, h, y, y_new, K, dense, A_extra, C_extra)
+            coeffs = _dense_coefficients(f, p, pair, t, h, y, y_new, K)
             if kind == 1:
                 nfev += 3
         # events: sign changes at sub-points of the step, each refined by bisection on the dense output
@@ -520,7 +493,7 @@ def integrate(
     )
 
 
-def _final_state_loop(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, max_steps, bound):
+def _final_state_loop(f, problem, steps, control):
     """The loop of `integrate` without dense output, events or records: the final state only.
 
     It takes exactly the steps `integrate` takes (the same stages, error norm and controller), so the two
@@ -530,6 +503,9 @@ def _final_state_loop(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, max_s
     is written out in both loops on purpose: as a shared compiled helper it made the loop 50 % slower
     (27 -> 40 us on the HNW body), the price of passing a dozen arrays per step.
     """
+    p, t0, t1, y0 = problem
+    kind, _, B, _, _, _ = steps
+    _, _, max_steps, bound = control
     n = y0.size
     s = B.size
     order = 5 if kind == 0 else 8
@@ -537,10 +513,11 @@ def _final_state_loop(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, max_s
     K = np.zeros((s + 1, n))
     f_old = np.empty(n)
     tmp = np.empty(n)
+    work = (K, f_old, tmp)
     y_new = np.empty(n)
     f(t0, y0, p, f_old)
     nfev = 1
-    h = _initial_step(f, p, t0, y0, f_old, order, rtol, atol)
+    h = _initial_step(f, p, t0, y0, f_old, order, control)
     nfev += 1
     t = t0
     y = y0.copy()
@@ -561,9 +538,9 @@ def _final_state_loop(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, max_s
                 break
             t_new = min(t + h, t1)
             h = t_new - t
-            _stages(f, p, t, y, h, A, B, C, K, f_old, tmp, y_new)
+            _stages(f, p, t, h, y, y_new, steps, work)
             nfev += s
-            err = _error_norm(kind, K, h, E5, E3, y, y_new, rtol, atol)
+            err = _error_norm(steps, control, K, h, y, y_new)
             if err < 1.0:
                 factor = MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * _step_factor(err, exponent))
                 if rejected:
@@ -592,22 +569,22 @@ def _final_state_loop(f, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, max_s
     return status, t, y, nfev, naccept, nreject
 
 
-FINAL_SIG = (FUNC, VEC, F64, F64, VEC, F64, F64, I64, MAT, VEC, VEC, VEC, VEC, I64, F64)
-final_state = njit(FINAL_SIG, cache=True)(_final_state_loop)
+final_state = njit((FUNC, PROBLEM, STEPS, CONTROL), cache=True)(_final_state_loop)
 _SPECIALIZED: dict = {}
 _SPECIALIZED_ROWS: dict = {}
 _final_state_any = njit(_final_state_loop)
 
 
-@njit((FUNC, MAT, F64, F64, MAT, F64, F64, I64, MAT, VEC, VEC, VEC, VEC, F64), cache=True)
-def final_state_rows(f, P, t0, t1, Y0, rtol, atol, kind, A, B, C, E5, E3, bound):
-    """The final-state loop over the rows of Y0 (and of P) in one compiled call."""
+@njit((FUNC, ROWS, STEPS, CONTROL), cache=True)
+def final_state_rows(f, rows, steps, control):
+    """The final-state loop over the rows of Y0 (and of P) in one compiled call; rows = (P, t0, t1, Y0)."""
+    P, t0, t1, Y0 = rows
     m, n = Y0.shape
     final = np.empty((m, n))
     status = np.empty(m, dtype=np.int64)
     t_end = np.empty(m)
     for i in range(m):
-        r = final_state(f, P[i], t0, t1, Y0[i], rtol, atol, kind, A, B, C, E5, E3, 10**8, bound)
+        r = final_state(f, (P[i], t0, t1, Y0[i]), steps, control)
         status[i], t_end[i], final[i] = r[0], r[1], r[2]
     return status, t_end, final
 
@@ -616,24 +593,23 @@ def specialized_final_state_rows(rhs):
     """final_state_rows compiled for this right-hand side, the rows shared out over the cores."""
     if rhs not in _SPECIALIZED_ROWS:
 
-        def rows(P, t0, t1, Y0, rtol, atol, kind, A, B, C, E5, E3, bound):
+        def rows_of(rows, steps, control):
+            P, t0, t1, Y0 = rows
             m, n = Y0.shape
             final = np.empty((m, n))
             status = np.empty(m, dtype=np.int64)
             t_end = np.empty(m)
             for i in prange(m):
-                r = _final_state_any(
-                    rhs, P[i], t0, t1, Y0[i], rtol, atol, kind, A, B, C, E5, E3, 10**8, bound
-                )
+                r = _final_state_any(rhs, (P[i], t0, t1, Y0[i]), steps, control)
                 status[i], t_end[i], final[i] = r[0], r[1], r[2]
             return status, t_end, final
 
-        _SPECIALIZED_ROWS[rhs] = njit(parallel=True)(rows)
+        _SPECIALIZED_ROWS[rhs] = njit(parallel=True)(rows_of)
     return _SPECIALIZED_ROWS[rhs]
 
 
 def specialized_final_state(rhs):
-    """The final-state loop compiled for this right-hand side alone, rhs(p, t0, t1, y0, ...) without f.
+    """The final-state loop compiled for this right-hand side alone, run(problem, steps, control) without f.
 
     The right-hand side is a constant of the compiled code, so its calls are direct (not through a function
     pointer) and the call from Python carries no function argument to type: about twice as fast again, for
@@ -642,8 +618,8 @@ def specialized_final_state(rhs):
     """
     if rhs not in _SPECIALIZED:
 
-        def run(p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, max_steps, bound):
-            return _final_state_any(rhs, p, t0, t1, y0, rtol, atol, kind, A, B, C, E5, E3, max_steps, bound)
+        def run(problem, steps, control):
+            return _final_state_any(rhs, problem, steps, control)
 
         _SPECIALIZED[rhs] = njit(run)
     return _SPECIALIZED[rhs]
