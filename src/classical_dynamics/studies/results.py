@@ -19,8 +19,9 @@ from .. import io
 from ..figure_style import STYLE, TEXT_WIDTH_IN
 from .figure_data import figure_data
 
-# One style for every figure of the report: applied once, when a study first imports this module. Figures are
-# made without pyplot (figure and subplots below): no backend is chosen for the importer, no window can open.
+# One style for every figure of the report: applied once, when a study first imports this module. Figures
+# are made without pyplot (bare_figure and subplots below): no backend is chosen for the importer, no window
+# can open.
 matplotlib.rcParams.update(STYLE)
 
 
@@ -170,7 +171,7 @@ class Results:
         return files
 
 
-def figure(*, figsize, layout="constrained") -> Figure:
+def bare_figure(*, figsize, layout="constrained") -> Figure:
     """pyplot.figure without pyplot: a Figure on an Agg canvas of its own (which measures text, as layouts
     need), in no list of open figures; savefig still writes SVG."""
     fig = Figure(figsize=figsize, layout=layout)
@@ -179,8 +180,8 @@ def figure(*, figsize, layout="constrained") -> Figure:
 
 
 def subplots(nrows=1, ncols=1, *, figsize, layout="constrained", **kwargs):
-    """pyplot.subplots without pyplot (see figure); kwargs go to Figure.subplots (sharex, squeeze, ...)."""
-    fig = figure(figsize=figsize, layout=layout)
+    """pyplot.subplots without pyplot (see bare_figure); kwargs go to Figure.subplots (sharex, ...)."""
+    fig = bare_figure(figsize=figsize, layout=layout)
     return fig, fig.subplots(nrows, ncols, **kwargs)
 
 

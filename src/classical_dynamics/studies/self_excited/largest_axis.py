@@ -17,7 +17,7 @@ from ...formatting import format_number, shortest
 from ...models import self_excited as se
 from ...solvers.ode import Events, Problem, solve, solve_batch
 from ...solvers.timing import min_time
-from ..results import figure, new_figure, subplots
+from ..results import bare_figure, new_figure, subplots
 from . import accuracy, portrait
 from .bounds import INVARIANT_BOUND, OVERLAY_BOUND
 
@@ -27,11 +27,16 @@ BLOW_UP_BOUND = portrait.BLOW_UP_BOUND
 DEFAULT_AMPLITUDES = (0.4, 0.2, 0.1, 0.05)
 
 
+def _plane(plane):
+    """(m1, nu, delta): the point of the reduced plane and the cylinder a scene draws."""
+    return float(plane["m1"]), float(plane["nu"]), float(plane["delta"])
+
+
 def run(scene, results, quick):
     data = scene.data
     body = se.Body.from_moments(data["body"]["moments"])
     plane = data["plane"]
-    m1, nu, delta = float(plane["m1"]), float(plane["nu"]), float(plane["delta"])
+    m1, nu, delta = _plane(plane)
     smallest = data["torque_axis"] == "smallest"
     L = se.LargestAxis.with_plane_parameters(body.swapped() if smallest else body, m1, -nu, delta)
     view = data.get("portrait", {})
@@ -107,7 +112,7 @@ def run(scene, results, quick):
 
 def _record_reduction(results, body, L, plane, smallest):
     """The body, the plane's parameters and the physical torque that gives them; whether F and F1 exist."""
-    m1, nu, delta = float(plane["m1"]), float(plane["nu"]), float(plane["delta"])
+    m1, nu, delta = _plane(plane)
     for name, value in (
         ("A", body.A),
         ("B", body.B),
@@ -193,7 +198,7 @@ def _analyses(results, data, L, body, points, cycles, quick):
     motion in space, the period series about the center, the separatrix's sides, the degenerate approach,
     blow-up and the limit cycle's period, the motions of §2.5, accuracy and cost, the bifurcations."""
     plane, smallest = data["plane"], data["torque_axis"] == "smallest"
-    m1, nu, delta = float(plane["m1"]), float(plane["nu"]), float(plane["delta"])
+    m1, nu, delta = _plane(plane)
     centers = [pt for pt in points if pt["type"] == "center"]
     sphere = None
     if data.get("analysis", {}).get("motion_in_space"):  # Lee §1.2, started on F
@@ -466,7 +471,7 @@ def _series(results, m1, nu, phi_c, amplitudes, sphere=None):
     if sphere is not None:  # Lee §1.2: the frames and angles of (1.2), and this body's motion in space
         from . import space
 
-        fig = figure(figsize=(TEXT_WIDTH_IN, 2.6), layout="constrained")
+        fig = bare_figure(figsize=(TEXT_WIDTH_IN, 2.6), layout="constrained")
         space.draw_frames(fig.add_subplot(1, 2, 1, projection="3d"))
         space.draw_sphere(fig.add_subplot(1, 2, 2, projection="3d"), *sphere)
         results.figure(
@@ -788,7 +793,7 @@ def _cylinder(results, m1, nu, points):
     """Lee's Figure 2.13: phi2 taken mod 2 pi, the plane rolled onto a cylinder (cos phi2, sin phi2, p1). The
     saddles merge into one S and the centers into one C; F and F1 close on themselves; a closed orbit about C,
     a start above F1 winding onto F, and one below F1 running away to p1 -> -infinity."""
-    fig = figure(figsize=(5.8, 3.2), layout="constrained")  # at most 40 % of a page
+    fig = bare_figure(figsize=(5.8, 3.2), layout="constrained")  # at most 40 % of a page
     ax = fig.add_subplot(projection="3d")
     theta = np.linspace(0.0, 2 * np.pi, 721)
     F = se.limit_cycle_p1(theta, m1, nu)
