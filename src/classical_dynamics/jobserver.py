@@ -110,6 +110,13 @@ WARM = (
     "jsonschema",
     "yaml",
     "sympy",
+    # imported by some jobs on first use: sympy's simplify and integrate (0.3 s), IAU models, IERS data, CSV
+    "sympy.physics.units",
+    "sympy.integrals.risch",
+    "sympy.integrals.manualintegrate",
+    "erfa",
+    "astropy_iers_data",
+    "pandas.io.formats.csvs",
     "classical_dynamics.report.build",
 )
 WARM_PACKAGES = (
@@ -130,6 +137,22 @@ def _warm_up() -> None:
         package = importlib.import_module(name)
         for module in pkgutil.walk_packages(package.__path__, f"{name}."):
             importlib.import_module(module.name)
+    _draw_a_figure()
+
+
+def _draw_a_figure() -> None:
+    """What matplotlib does once per process on its first figure (builds its mathtext parser, loads the fonts,
+    fills its text caches: 0.3 s, more than a light scene's own work), done here rather than in every job.
+    Its caches are keyed by what they hold, so a job draws the same bytes as in a process of its own."""
+    from classical_dynamics import io
+    from classical_dynamics.solvers.workprecision import legend_below
+    from classical_dynamics.studies.results import new_figure
+
+    fig, axes = new_figure()
+    axes.loglog([1.0, 10.0], [1e-16, 1e-12], label="$\\sqrt{N}\\,\\varepsilon$, $m_1$")
+    axes.set_xlabel("time $t$ (s)")
+    legend_below(fig, *axes.get_legend_handles_labels(), ncol=1)
+    io.svg_bytes(fig)
 
 
 def _child(request: dict, fds: list[int]) -> None:
