@@ -25,6 +25,35 @@ from .figure_data import figure_data
 matplotlib.rcParams.update(STYLE)
 
 
+def _share_math_parses() -> None:
+    """One cache of parsed $math$ labels for the whole process, not one per renderer.
+
+    Matplotlib caches a parsed math string per parser object, and makes a parser for every renderer: a figure
+    saved with a tight bounding box meets three (its layout, its bounding box, the SVG), so each log-axis tick
+    label ($10^{-5}$) was parsed three times per figure, again in the next figure: half of the time spent
+    saving figures (matplotlib#20821). A parse depends on the parser only through its output type, which this
+    cache keys on with everything else matplotlib's own cache keys on; the figures are byte-identical.
+    """
+    from matplotlib import mathtext
+
+    parse = getattr(mathtext.MathTextParser._parse_cached, "__wrapped__", None)
+    if parse is None or getattr(mathtext.MathTextParser._parse_cached, "shared", False):
+        return  # another matplotlib than the one pinned, or done already
+    parsed = {}
+
+    def parse_cached(self, s, dpi, prop, antialiased, load_glyph_flags):
+        key = (self._output_type, s, dpi, prop, antialiased, load_glyph_flags)
+        if key not in parsed:
+            parsed[key] = parse(self, s, dpi, prop, antialiased, load_glyph_flags)
+        return parsed[key]
+
+    parse_cached.shared = True
+    mathtext.MathTextParser._parse_cached = parse_cached
+
+
+_share_math_parses()
+
+
 @dataclass
 class Results:
     study: str
