@@ -12,12 +12,14 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+# Every array a step needs is allocated once per run (`_workspace`) and reused: allocating them in each step
+# (a dozen arrays, more per Newton iteration) took more time than the arithmetic. The arithmetic is the same.
+
 
 @njit(cache=True)
-def _solve_tridiagonal(lower, diag, upper, rhs):
+def _solve_tridiagonal(lower, diag, upper, rhs, c, x):
+    """x <- the solution of the tridiagonal system (c: scratch)."""
     n = diag.size
-    c = np.empty(n)
-    x = np.empty(n)
     c[0] = upper[0] / diag[0] if n > 1 else 0.0
     x[0] = rhs[0] / diag[0]
     for i in range(1, n):
@@ -27,24 +29,23 @@ def _solve_tridiagonal(lower, diag, upper, rhs):
         x[i] = (rhs[i] - lower[i] * x[i - 1]) / denom
     for i in range(n - 2, -1, -1):
         x[i] -= c[i] * x[i + 1]
-    return x
 
 
 @njit(cache=True)
-def _links(q):
+def _links(q, d):
+    """d <- the link vectors of configuration q."""
     n = q.shape[0]
-    d = np.empty((n, 2))
     d[0] = q[0]
     for j in range(1, n):
         d[j] = q[j] - q[j - 1]
-    return d
 
 
 @njit(cache=True)
-def _coupling(dl, dr, inv_m):
-    """Tridiagonal of G(q_l) M^-1 G(q_r)^T, given the link vectors of both configurations."""
+def _coupling(dl, dr, inv_m, lower, diag, upper):
+    """(lower, diag, upper) <- the tridiagonal of G(q_l) M^-1 G(q_r)^T, given the link vectors of both."""
     n = dl.shape[0]
-    lower, diag, upper = np.zeros(n), np.zeros(n), np.zeros(n)
+    lower[0] = 0.0
+    upper[n - 1] = 0.0
     for j in range(n):
         w = inv_m[j] + (inv_m[j - 1] if j > 0 else 0.0)
         diag[j] = 4.0 * w * (dl[j, 0] * dr[j, 0] + dl[j, 1] * dr[j, 1])
@@ -52,7 +53,6 @@ def _coupling(dl, dr, inv_m):
             upper[j] = -4.0 * inv_m[j] * (dl[j, 0] * dr[j + 1, 0] + dl[j, 1] * dr[j + 1, 1])
         if j > 0:
             lower[j] = -4.0 * inv_m[j - 1] * (dl[j, 0] * dr[j - 1, 0] + dl[j, 1] * dr[j - 1, 1])
-    return lower, diag, upper
 
 
 @njit(cache=True)
@@ -68,50 +68,56 @@ def _add_constraint_force(p, d, lam, scale):
 
 
 @njit(cache=True)
-def rattle_step(q, p, m, a, g, h, tol=1e-14, max_newton=50):
+def _workspace(n):
+    """(p_free, d0, d1, vectors): arrays of n x 2 (momenta, link vectors), and 9 rows of n for the rest."""
+    return np.empty((n, 2)), np.empty((n, 2)), np.empty((n, 2)), np.empty((9, n))
+
+
+@njit(cache=True)
+def rattle_step(q, p, m, a, g, h, q_new, p_new, work, tol=1e-14, max_newton=50):
+    """One step from (q, p) into (q_new, p_new); False if Newton's iteration for the positions failed."""
     n = q.shape[0]
-    inv_m = 1.0 / m
-    d0 = _links(q)
+    p_free, d0, d1, vectors = work
+    inv_m, lam, residual, lower, diag, upper, delta, scratch, rhs = vectors
+    for i in range(n):
+        inv_m[i] = 1.0 / m[i]
+    _links(q, d0)
     # Unconstrained half kick and drift, then Newton for the position multipliers.
-    p_free = p.copy()
+    p_free[:] = p
     for i in range(n):
         p_free[i, 1] -= 0.5 * h * m[i] * g
-    lam = np.zeros(n)
-    q_new = np.empty_like(q)
+    lam[:] = 0.0
     for _ in range(max_newton):
-        p_half = p_free.copy()
-        _add_constraint_force(p_half, d0, lam, 0.5 * h)
+        p_new[:] = p_free  # the half-step momenta p_half, until the second half kick below
+        _add_constraint_force(p_new, d0, lam, 0.5 * h)
         for i in range(n):
-            q_new[i, 0] = q[i, 0] + h * inv_m[i] * p_half[i, 0]
-            q_new[i, 1] = q[i, 1] + h * inv_m[i] * p_half[i, 1]
-        d1 = _links(q_new)
-        residual = np.empty(n)
+            q_new[i, 0] = q[i, 0] + h * inv_m[i] * p_new[i, 0]
+            q_new[i, 1] = q[i, 1] + h * inv_m[i] * p_new[i, 1]
+        _links(q_new, d1)
         worst = 0.0
         for j in range(n):
             residual[j] = d1[j, 0] ** 2 + d1[j, 1] ** 2 - a * a
             worst = max(worst, abs(residual[j]))
         if worst <= tol * a * a:
             break
-        lower, diag, upper = _coupling(d1, d0, inv_m)
+        _coupling(d1, d0, inv_m, lower, diag, upper)
         # d c(q_new)/d lam = -(h^2/2) G(q_new) M^-1 G(q)^T
-        delta = _solve_tridiagonal(lower, diag, upper, residual)
+        _solve_tridiagonal(lower, diag, upper, residual, scratch, delta)
         for j in range(n):
             lam[j] += delta[j] / (0.5 * h * h)
     else:
-        return q_new, p_half, False
+        return False
     # Second half kick, with velocity multipliers making the velocities tangent to the constraints.
-    p_new = p_half.copy()
     for i in range(n):
         p_new[i, 1] -= 0.5 * h * m[i] * g
-    lower, diag, upper = _coupling(d1, d1, inv_m)
-    rhs = np.empty(n)
+    _coupling(d1, d1, inv_m, lower, diag, upper)
     for j in range(n):
         vj0 = inv_m[j] * p_new[j, 0] - (inv_m[j - 1] * p_new[j - 1, 0] if j > 0 else 0.0)
         vj1 = inv_m[j] * p_new[j, 1] - (inv_m[j - 1] * p_new[j - 1, 1] if j > 0 else 0.0)
         rhs[j] = 2.0 * (d1[j, 0] * vj0 + d1[j, 1] * vj1)
-    mu = _solve_tridiagonal(lower, diag, upper, rhs)
-    _add_constraint_force(p_new, d1, mu, 1.0)
-    return q_new, p_new, True
+    _solve_tridiagonal(lower, diag, upper, rhs, scratch, delta)  # the velocity multipliers mu
+    _add_constraint_force(p_new, d1, delta, 1.0)
+    return True
 
 
 @njit(cache=True)
@@ -126,7 +132,10 @@ def energy(q, p, m, g):
 def integrate(q0, p0, m, a, g, h, n_steps, sample_every):
     """Integrate n_steps; return the bottom particle's x at every step, and energy samples."""
     q, p = q0.copy(), p0.copy()
+    q_new, p_new = np.empty_like(q), np.empty_like(p)
     n = q.shape[0]
+    work = _workspace(n)
+    d = np.empty((n, 2))
     tip_x = np.empty(n_steps + 1)
     tip_x[0] = q[n - 1, 0]
     n_samples = n_steps // sample_every + 1
@@ -135,13 +144,14 @@ def integrate(q0, p0, m, a, g, h, n_steps, sample_every):
     constraint = 0.0
     k = 1
     for step in range(1, n_steps + 1):
-        q, p, ok = rattle_step(q, p, m, a, g, h)
-        if not ok:
+        if not rattle_step(q, p, m, a, g, h, q_new, p_new, work):
             raise RuntimeError("RATTLE: Newton iteration for the link constraints did not converge")
+        q, q_new = q_new, q
+        p, p_new = p_new, p
         tip_x[step] = q[n - 1, 0]
         if step % sample_every == 0:
             energies[k] = energy(q, p, m, g)
-            d = _links(q)
+            _links(q, d)
             for j in range(n):
                 constraint = max(constraint, abs(np.sqrt(d[j, 0] ** 2 + d[j, 1] ** 2) - a))
             k += 1
