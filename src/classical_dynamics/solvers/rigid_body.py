@@ -11,9 +11,9 @@ so |q| - 1 stays at round-off. A torque enters as a kick: Strang-split around th
 from __future__ import annotations
 
 import numpy as np
-from numba import njit, types
+from numba import njit
 
-from .runge_kutta import FUNC
+from .runge_kutta import F64, FUNC, I64, VEC
 
 YOSHIDA = (1.0 / (2.0 - 2.0 ** (1.0 / 3.0)), -(2.0 ** (1.0 / 3.0)) / (2.0 - 2.0 ** (1.0 / 3.0)))
 
@@ -201,9 +201,6 @@ def symmetric_free_flow(m, q, A, C, h):
     _turn_attitude(q, 0.0, 0.0, 1.0, theta)
     norm = np.sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2])
     _turn_attitude(q, m[0] / norm, m[1] / norm, m[2] / norm, norm * h / A)
-
-
-F64, I64, VEC = types.float64, types.int64, types.float64[::1]
 
 
 # The torque comes as a first-class function with a right-hand side's signature (runge_kutta.rhs_function), so

@@ -37,8 +37,8 @@ def _share_math_parses() -> None:
     from matplotlib import mathtext
 
     parse = getattr(mathtext.MathTextParser._parse_cached, "__wrapped__", None)
-    if parse is None or getattr(mathtext.MathTextParser._parse_cached, "shared", False):
-        return  # another matplotlib than the one pinned, or done already
+    if parse is None:
+        return  # not matplotlib's lru_cache (another matplotlib than the one pinned, or replaced already)
     parsed = {}
 
     def parse_cached(self, s, dpi, prop, antialiased, load_glyph_flags):
@@ -47,7 +47,6 @@ def _share_math_parses() -> None:
             parsed[key] = parse(self, s, dpi, prop, antialiased, load_glyph_flags)
         return parsed[key]
 
-    parse_cached.shared = True
     mathtext.MathTextParser._parse_cached = parse_cached
 
 
