@@ -75,6 +75,14 @@ def built_repo(tmp_path_factory, worker_id):
     return repo
 
 
+@pytest.fixture()
+def scratch(built_repo, tmp_path):
+    """A private copy of the built repository (results and Snakemake's records included)."""
+    target = tmp_path / "repo"
+    shutil.copytree(built_repo, target, symlinks=True)
+    return target
+
+
 def pytest_collection_modifyitems(items):
     """Tests that need the shared build run last: while one worker builds it, the others run everything
     else."""

@@ -1,37 +1,8 @@
 """The package's layout: no module imports itself back through others (imports inside functions included,
-since a circle that only closes at run time is still one the reader has to untangle)."""
+since a circle that only closes at run time is still one the reader has to untangle). The import graph is the
+package's own (code_graph.py), the one a job's code digest is derived from."""
 
-import ast
-
-from .conftest import ROOT
-
-PACKAGE = ROOT / "src" / "classical_dynamics"
-
-
-def module_name(path):
-    parts = list(path.relative_to(PACKAGE.parent).with_suffix("").parts)
-    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
-
-
-MODULES = {module_name(path): path for path in PACKAGE.rglob("*.py")}
-
-
-def imported(name, path):
-    """The package's modules that a module imports, anywhere in it."""
-    found = set()
-    for node in ast.walk(ast.parse(path.read_text())):
-        if isinstance(node, ast.Import):
-            found.update(alias.name for alias in node.names)
-        elif isinstance(node, ast.ImportFrom):
-            base = node.module or ""
-            if node.level:
-                here = name.split(".") if path.name == "__init__.py" else name.split(".")[:-1]
-                base = ".".join(here[: len(here) - node.level + 1] + ([node.module] if node.module else []))
-            # `from pkg import name`: the module pkg.name if there is one, else pkg itself
-            found.update(
-                f"{base}.{alias.name}" if f"{base}.{alias.name}" in MODULES else base for alias in node.names
-            )
-    return {module for module in found if module in MODULES and module != name}
+from classical_dynamics.code_graph import import_graph
 
 
 def circles(graph):
@@ -68,7 +39,7 @@ def test_the_circle_finder_finds_one():
 
 
 def test_no_module_imports_itself_back():
-    graph = {name: imported(name, path) for name, path in MODULES.items()}
+    graph = import_graph()
     assert (
         "classical_dynamics.studies.self_excited.bounds"
         in graph["classical_dynamics.studies.self_excited.accuracy"]

@@ -116,13 +116,32 @@ def test_plural_and_units():
 def test_failing_must_hold_claim_names_itself(tmp_path):
     spec = tmp_path / "c.yaml"
     spec.write_text(
-        "- id: gravest\n  statement: s\n  source: {value: 5.225}\n"
+        "- id: gravest\n  statement: s\n  kind: statement\n  source: {value: 5.225}\n"
         "  computed: {scene: a, number: p}\n  check: {absolute: 1.0e-6}\n  must_hold: true\n"
     )
     results = claims.evaluate("chains", spec, lambda study, scene, number: {"value": 5.2255, "unit": ""})
     assert not results[0].passed
     with pytest.raises(claims.ClaimFailure, match="claim 'gravest'"):
         claims.require(results)
+
+
+@pytest.mark.parametrize(
+    "fields,refusal",
+    [
+        ("", "kind None is not one of"),
+        ("  kind: anecdote\n", "kind 'anecdote'"),
+        ("  kind: limit\n", "omits"),
+    ],
+)
+def test_a_claim_says_what_it_is(tmp_path, fields, refusal):
+    """Every claim has one kind (a source's statement, an erratum, a limit of the model saying what it leaves
+    out, an external reference, a regression), or the report refuses it."""
+    spec = tmp_path / "c.yaml"
+    spec.write_text(
+        f"- id: x\n  statement: s\n{fields}  computed: {{scene: a, number: p}}\n  check: {{at_most: 1}}\n"
+    )
+    with pytest.raises(claims.ClaimFailure, match=refusal):
+        claims.evaluate("chains", spec, lambda *_: {"value": 0.5, "unit": ""})
 
 
 def test_claim_on_missing_number_fails():
@@ -132,8 +151,8 @@ def test_claim_on_missing_number_fails():
     with tempfile.TemporaryDirectory() as tmp:
         spec = Path(tmp) / "c.yaml"
         spec.write_text(
-            "- id: x\n  statement: s\n  computed: {scene: a, number: p}\n  check: {at_most: 1}\n"
-            "  must_hold: true\n"
+            "- id: x\n  statement: s\n  kind: statement\n  computed: {scene: a, number: p}\n"
+            "  check: {at_most: 1}\n  must_hold: true\n"
         )
 
         def lookup(*_):

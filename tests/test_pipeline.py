@@ -59,14 +59,6 @@ def job_counts(dry_run_output):
 ONE_SCENE_AND_THE_REPORT = {"scene": 1, "results_archive": 1, "report_html": 1, "report_pdf": 1, "all": 1}
 
 
-@pytest.fixture()
-def scratch(built_repo, tmp_path):
-    """A private copy of the built repository (results and Snakemake's records included)."""
-    target = tmp_path / "repo"
-    shutil.copytree(built_repo, target, symlinks=True)
-    return target
-
-
 def test_build_writes_the_results_contract(built_repo):
     results = built_repo / "results"
     assert (results / "report.html").stat().st_size > 10_000

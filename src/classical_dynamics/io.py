@@ -168,3 +168,24 @@ def check_result_folder(folder: Path | str, deep: bool = True) -> dict:
                 "edited); rebuild the scene"
             )
     return provenance
+
+
+def stale_reason(folder: Path | str, scene_file: Path | str, quick: bool) -> str | None:
+    """Why a scene's results folder no longer belongs to its scene, or None: a file missing or not matching
+    the checksum its provenance records, a scene file whose bytes differ from those the results were built
+    from (whatever the file times say: a scene restored with `cp -p` keeps its old time), or a quick build
+    where a full one is asked for (or the reverse). Read by the workflow when it decides what to rerun."""
+    try:
+        provenance = check_result_folder(folder)
+    except ResultError as error:
+        return str(error)
+    try:
+        scene_sha256 = hashlib.sha256(Path(scene_file).read_bytes()).hexdigest()
+    except OSError:
+        return None  # no scene: the workflow says so itself
+    if provenance.get("scene_sha256") != scene_sha256:
+        return f"{folder}: built from other bytes of {scene_file} than it has now (provenance's scene_sha256)"
+    if bool(provenance.get("quick")) != bool(quick):
+        built, asked = ("quick", "full") if provenance.get("quick") else ("full", "quick")
+        return f"{folder}: built as a {built} build; a {asked} build is asked for"
+    return None

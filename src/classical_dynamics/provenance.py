@@ -37,19 +37,6 @@ def sha256_file(path: Path | str) -> str:
     return hashlib.sha256(Path(path).read_bytes()).hexdigest()
 
 
-@lru_cache(maxsize=None)  # a process reads its sources once (a parse asks for each study's digest per job)
-def code_digest(*parts: str) -> str:
-    """SHA-256 of the package's modules under `parts` (folders or files relative to the package; all of them
-    if none): what a result or a scene's validation depends on besides its own inputs."""
-    package = Path(__file__).resolve().parent
-    digest = hashlib.sha256()
-    for part in parts or ("",):
-        path = package / part
-        for module in sorted(path.rglob("*.py")) if path.is_dir() else [path]:
-            digest.update(module.relative_to(package).as_posix().encode() + b"\0" + module.read_bytes())
-    return digest.hexdigest()
-
-
 @lru_cache(maxsize=1)
 def package_versions() -> dict[str, str]:
     versions = {}

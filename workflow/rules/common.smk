@@ -5,13 +5,14 @@
 
 import os
 import sys
+import time
 from pathlib import Path
 
 import yaml
 from snakemake_interface_executor_plugins.settings import ExecMode
 
-from classical_dynamics import jobserver, provenance
-from classical_dynamics.io import ResultError, check_result_folder
+from classical_dynamics import code_graph, jobserver
+from classical_dynamics.io import stale_reason
 from classical_dynamics.limits import rule_resources
 from classical_dynamics.scenes import SceneError
 from classical_dynamics.scenes.loader import is_leftover
@@ -56,27 +57,43 @@ def every_result():
     return [out for study in STUDIES for out in scene_outputs(study) + STUDY_STEPS.get(study, [])]
 
 
-def result_state(wc):
-    """'whole' for a scene folder that is absent or matches the checksums its provenance records, else why not:
-    a params value, so that Snakemake reruns a scene whose result was truncated or edited since it ran."""
+# A scene's results are checked against what they claim before Snakemake compares file times (io.stale_reason):
+# every file against the checksums in its provenance, the scene file's SHA-256 against the one it was built
+# from, quick against full. Snakemake alone would miss a figure deleted or a number edited when .snakemake/ is
+# absent (results copied or restored) and a scene restored with its old time (cp -p, rsync -a, tar x). A stale
+# scene's marker in .snakemake/ (an input of its job, dated 1970 otherwise) is rewritten now with the reason and
+# the time, so that every Snakemake command, dry run included, sees an input newer than the results and unlike
+# the one it recorded (Snakemake ignores a newer input whose checksum it has seen), with or without its records.
+RESULT_CHECKS = Path(".snakemake/result-checks")
+
+
+def result_check(wc):
+    marker = RESULT_CHECKS / wc.study / wc.scene
     folder = Path("results", wc.study, wc.scene)
-    if not folder.exists():
-        return "whole"
-    try:
-        check_result_folder(folder, deep=False)
-    except ResultError as error:
-        return f"corrupted: {error}"
-    return "whole"
+    reason = stale_reason(folder, SCENES / wc.study / f"{wc.scene}.yaml", bool(QUICK)) if folder.exists() else None
+    if reason:
+        sys.stderr.write(f"note: {reason}: rerunning it\n")
+        marker.parent.mkdir(parents=True, exist_ok=True)
+        marker.write_text(f"{reason}\n{time.time_ns()}\n")
+    elif not marker.exists() or marker.stat().st_mtime_ns:
+        marker.parent.mkdir(parents=True, exist_ok=True)
+        marker.touch()
+        os.utime(marker, ns=(0, 0))  # 1970: older than any result (and whole again if put right by hand)
+    return marker.as_posix()
 
 
-# A result's code as a params value (provenance.code_digest): Snakemake's params trigger reruns it when that code
-# changes. (As inputs, the ~50 source files of every scene job cost the DAG 53,000 file checks for a sweep of
-# 1,000 scenes.)
-code_digest = provenance.code_digest
+# What a job's result depends on besides its inputs: the package's modules its command runs (the job server, then
+# the entry modules named), found from the package's import graph (classical_dynamics/code_graph.py), never
+# listed by hand. A params value: Snakemake's params trigger reruns the job when that code changes. (As inputs,
+# the ~50 source files of every scene job cost the DAG 53,000 file checks for a sweep of 1,000 scenes.)
+code_graph.cache_parses_in(".snakemake/code-graph.json")
 
 
-SHARED_CODE = ("solvers", "models", "scenes", "io.py", "provenance.py", "cli.py", "formatting.py", "units.py",
-               "studies/__init__.py", "studies/results.py", "figure_style.py")
+def job_code(*entries):
+    """The digest of the modules that `python3 -m classical_dynamics.jobserver <entries[0]> ...` runs."""
+    return code_graph.code_digest(
+        "classical_dynamics.jobserver", *(f"classical_dynamics.{entry}" for entry in entries)
+    )
 
 
 def _command_line():

@@ -15,6 +15,8 @@ rule dist:
     threads: 1
     resources:
         **measured_resources("dist"),
+    params:
+        code=job_code("cli"),
     log:
         "results/logs/dist.log",
     conda:

@@ -19,6 +19,8 @@ rule results_archive:
     threads: 1
     resources:
         **measured_resources("results_archive"),
+    params:
+        code=job_code("report.dist"),
     log:
         "results/logs/results_archive.log",
     conda:
@@ -41,7 +43,7 @@ rule report_html:
     params:
         quick=QUICK,
         root=ROOT,
-        code=code_digest("report", "formatting.py", "units.py", "studies/registry.py"),
+        code=job_code("report.build"),
     threads: 1
     resources:
         **measured_resources("report_html"),
@@ -53,7 +55,7 @@ rule report_html:
         "results/benchmarks/report_html.tsv"
     shell:
         "python3 -m classical_dynamics.jobserver"
-        " classical_dynamics report results {output:q} --root {params.root:q} {params.quick} 2>&1 | tee {log:q}"
+        " classical_dynamics.report.build results {output:q} --root {params.root:q} {params.quick} 2>&1 | tee {log:q}"
 
 
 rule report_pdf:
@@ -61,6 +63,8 @@ rule report_pdf:
         "results/report.html",
     output:
         "results/report.pdf",
+    params:
+        code=job_code("report.pdf"),
     threads: 1
     resources:
         **measured_resources("report_pdf"),

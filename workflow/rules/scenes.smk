@@ -11,14 +11,14 @@ rule scene:
     input:
         scene=f"{SCENES}/{{study}}/{{scene}}.yaml",
         schema=lambda wc: here(STUDIES[wc.study].schema),
+        checked=result_check,
     output:
         results=directory("results/{study}/{scene}"),
         timings=directory("results/{study}/timings/{scene}"),
     params:
         quick=QUICK,
         budget=BUDGET_ARGS,
-        result=result_state,
-        code=lambda wc: code_digest(*SHARED_CODE, f"studies/{wc.study}"),
+        code=lambda wc: job_code("scene_job", f"studies.{wc.study}"),
     # Longest first (by the scene's cost estimate), so the heaviest scene does not start last and run alone.
     priority: lambda wc: round(limits(wc).seconds, 1)
     threads: 1
@@ -36,6 +36,6 @@ rule scene:
         "results/benchmarks/{study}/{scene}.tsv"
     shell:
         "python3 -m classical_dynamics.jobserver"
-        " classical_dynamics run {wildcards.study:q} {input.scene:q}"
+        " classical_dynamics.scene_job {wildcards.study:q} {input.scene:q}"
         " {output.results:q} {output.timings:q} {params.quick} {params.budget}"
         " --time-limit-min {resources.runtime} --memory-limit-mb {resources.mem_mb} > {log:q} 2>&1"

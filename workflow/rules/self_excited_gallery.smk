@@ -15,7 +15,7 @@ rule self_excited_gallery:
         timings=directory("results/self_excited/timings/gallery"),
     params:
         quick=QUICK,
-        code=code_digest(*SHARED_CODE, "studies/self_excited"),
+        code=job_code("studies.self_excited.gallery"),
     threads: 1
     resources:
         **measured_resources("self_excited_gallery"),

@@ -146,6 +146,7 @@ class Report:
         self.claim_results = {}
         self.ledger = read_ledger(assets.LEDGER, {study: assets.claims_file(study) for study in STUDIES})
         self._count, self.cited = 0, {}  # numbers shown so far; per scene, where each is first cited
+        self.long_tables = {}  # {study: [table markup]}: shown in the appendix of long tables
         self.env = jinja2.Environment(
             loader=jinja2.FileSystemLoader(assets.template_folders()),
             autoescape=jinja2.select_autoescape(["html", "j2"]),
@@ -170,6 +171,8 @@ class Report:
             cite=self.cite,
             benchmark_fig=self.benchmark_fig,
             claims=self.claims,
+            claim_kinds=claims_mod.KINDS,
+            long_tables=lambda study: Markup("".join(self.long_tables.get(study, []))),
             stability=self.stability,
             scenes=self.scenes_table,
             summary=self.index.summary,
@@ -377,7 +380,7 @@ class Report:
             body.append("<tr>" + "".join(cells) + "</tr>")
         note = " Measured times: they vary from run to run." if timing else ""
         csv = f"results/{study}/{'timings/' if timing else ''}{scene}/{name}.csv"
-        return Markup(
+        markup = Markup(
             f'<figure id="{label}" class="table{" long" if long else ""}"><figcaption><span '
             f'class="label">Table {number}.</span> '
             f'{render_text(meta["caption"])}{note} <span class="source">Scene <code>{study}/{scene}</code>, '
@@ -385,6 +388,15 @@ class Report:
             f'<div class="scroll"><table><thead><tr>{"".join(head)}</tr></thead>'
             f"<tbody>{''.join(body)}</tbody>"
             f"</table></div></figure>"
+        )
+        if not long:
+            return markup
+        # A long table stands in the appendix of long tables, in both editions, so that a chapter reads on;
+        # where it was called, one line says what it holds and links to it.
+        self.long_tables.setdefault(study, []).append(markup)
+        return Markup(
+            f'<p class="long-table">{self.ref(label)}, in the appendix (Long tables in full): '
+            f"{render_text(meta['caption'])}</p>"
         )
 
     def eq(self, label: str | None = None, caller=None):
@@ -511,7 +523,7 @@ class Report:
         for _ in range(2):
             self.numbering.start_pass()
             self.citations.order = []
-            self._count, self.cited = 0, {}
+            self._count, self.cited, self.long_tables = 0, {}, {}
             text = template.render(**context)
         if self.numbering.missing:
             raise ValueError("unresolved cross-references: " + ", ".join(sorted(self.numbering.missing)))
@@ -521,13 +533,35 @@ class Report:
         return break_points(add_navigation(text))
 
 
-def build_report(
-    results_dir: Path, html_path: Path, pdf_path: Path | None = None, *, quick=False, root: Path = Path(".")
-) -> None:
+def build_report(results_dir: Path, html_path: Path, *, quick=False, root: Path = Path(".")) -> None:
     report = Report(ResultsIndex(results_dir), root, quick)
-    text = report.render()
-    io.atomic_write_text(html_path, text)
-    if pdf_path is not None:
-        from .pdf import html_to_pdf
+    io.atomic_write_text(html_path, report.render())
 
-        html_to_pdf(html_path, pdf_path)
+
+def main(argv=None) -> int:
+    """Render the HTML report; what the report's data say is wrong (a failed claim, a bad ledger) is one line.
+    The report job's command (`python -m classical_dynamics.report.build`), apart from cli.py, whose other
+    commands it does not run; `python -m classical_dynamics report` comes here too. The PDF is a job of its
+    own (report/pdf.py)."""
+    import argparse
+    import sys
+
+    from .claims import ClaimFailure
+    from .ledger import LedgerError
+
+    parser = argparse.ArgumentParser(prog="python -m classical_dynamics.report.build")
+    parser.add_argument("results")
+    parser.add_argument("html")
+    parser.add_argument("--root", default=".")
+    parser.add_argument("--quick", action="store_true")
+    args = parser.parse_args(argv)
+    try:
+        build_report(Path(args.results), Path(args.html), quick=args.quick, root=Path(args.root))
+    except (ClaimFailure, LedgerError) as error:
+        print(f"report: {error}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

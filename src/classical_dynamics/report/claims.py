@@ -20,6 +20,16 @@ class ClaimFailure(RuntimeError):
     pass
 
 
+# What a claim is, in the words the report counts them by (one kind per claim, claims.yaml's `kind:`)
+KINDS = {
+    "statement": "statements of the sources confirmed",
+    "erratum": "errata in the sources shown",
+    "limit": "limits of the model, each with what it leaves out",
+    "reference": "comparisons with external references (IAU, IERS, published computations)",
+    "regression": "checks against the project's own earlier figures (no source)",
+}
+
+
 @dataclass
 class ClaimResult:
     id: str
@@ -39,6 +49,9 @@ class ClaimResult:
     problem: str = ""
     headline: bool = False
     explanation: str = ""
+    kind: str = "statement"
+    omits: str = ""  # a limit: what the model leaves out, and its expected size
+    consistency: str = ""  # an input fitted to the observable it is compared with: what the match tests
 
     @property
     def anchor(self) -> str:
@@ -118,9 +131,21 @@ def evaluate(study: str, claims_file: Path, lookup) -> list[ClaimResult]:
                 problem=problem,
                 headline=bool(claim.get("headline", False)),
                 explanation=claim.get("explanation", ""),
+                kind=_kind(claim),
+                omits=claim.get("omits", ""),
+                consistency=claim.get("consistency", ""),
             )
         )
     return results
+
+
+def _kind(claim: dict) -> str:
+    kind = claim.get("kind")
+    if kind not in KINDS:
+        raise ClaimFailure(f"claim {claim.get('id')}: kind {kind!r} is not one of {', '.join(KINDS)}")
+    if kind == "limit" and not claim.get("omits"):
+        raise ClaimFailure(f"claim {claim.get('id')}: a limit of the model says what it omits (omits:)")
+    return kind
 
 
 def require(results: list[ClaimResult]) -> None:

@@ -1,6 +1,6 @@
 """Scene validation remembered between parses of the Snakefile.
 
-A scene is validated again only when its bytes, its schema, the package's code or the budget change: Snakemake
+A scene is validated again only when its bytes, its schema, its study's code or the budget change: Snakemake
 parses the Snakefile for every command (a dry run, --unlock, each job on a cluster), and validating every
 scene each time cost seconds. The record, {scene file: {digest, estimated seconds and MB}}, lives in
 .snakemake/; a scene that fails is never recorded, so it fails again on the next parse.
@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import Callable, Iterable
 
 from .. import io
-from ..provenance import code_digest
+from ..code_graph import NAME, code_digest
 from .cost import Budget, Estimate
 from .loader import SceneError, read_bytes
 
@@ -34,14 +34,15 @@ def validate_all(
         known = json.loads(Path(record).read_text(encoding="utf-8"))
     except (OSError, ValueError):
         known = {}
-    # the whole package: the physical checks and cost estimates live in the studies' code
-    code, schemas, valid, errors = code_digest() + repr(budget), {}, {}, []
+    # a study's code: the physical checks and cost estimates live in what its package imports
+    schemas, valid, errors = {}, {}, []
     try:
         for study, scene, schema in scenes:
             if schema not in schemas:
-                schemas[schema] = hashlib.sha256(Path(schema).read_bytes()).hexdigest()
+                code = code_digest(f"{NAME}.studies.{study}")
+                schemas[schema] = hashlib.sha256(Path(schema).read_bytes()).hexdigest() + code + repr(budget)
             key = Path(scene).as_posix()
-            digest = hashlib.sha256(read_bytes(scene) + (schemas[schema] + code).encode()).hexdigest()
+            digest = hashlib.sha256(read_bytes(scene) + schemas[schema].encode()).hexdigest()
             entry = known.get(key)
             if not (isinstance(entry, dict) and entry.get("digest") == digest):
                 try:

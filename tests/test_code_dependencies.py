@@ -1,0 +1,180 @@
+"""A job's code is derived from the package's import graph (code_graph.py), never listed by hand: a code
+edit reruns exactly the jobs whose code it changes. Checked three ways: facts of the graph that a reader can
+verify in the sources; the modules a real scene job imports at run time all lie inside its digest (so no edit
+to code a result ran goes unnoticed); and real dry runs in a copy of the built repository after one edit."""
+
+import json
+import re
+import subprocess
+import sys
+
+import pytest
+
+from classical_dynamics import code_graph
+from classical_dynamics.studies import STUDIES
+
+from .conftest import ROOT, copy_repository, snakemake
+
+PACKAGE = "classical_dynamics"
+GRAPH = code_graph.import_graph()
+
+
+def scene_job(study):
+    """What a scene job of `study` runs (workflow/rules/common.smk's job_code)."""
+    return code_graph.reached(
+        GRAPH, [f"{PACKAGE}.jobserver", f"{PACKAGE}.scene_job", f"{PACKAGE}.studies.{study}"]
+    )
+
+
+def job(entry):
+    """What `python3 -m classical_dynamics.jobserver classical_dynamics.<entry>` runs."""
+    return code_graph.reached(GRAPH, [f"{PACKAGE}.jobserver", f"{PACKAGE}.{entry}"])
+
+
+REPORT = job("report.build")
+
+
+def test_the_graph_follows_imports_in_functions_lazy_modules_and_parent_packages():
+    chains = scene_job("chains")
+    # figure_data and lazy: the two modules the hand-written list of shared code had left out
+    assert all(f"{PACKAGE}.studies.figure_data" in scene_job(study) for study in STUDIES)
+    assert f"{PACKAGE}.lazy" in chains
+    # loaded only through lazy_module(f"{__package__}.symbolic") in chains/discrete.py
+    assert f"{PACKAGE}.studies.chains.symbolic" in chains
+    assert f"{PACKAGE}.studies.chains.symbolic" not in GRAPH[f"{PACKAGE}.studies.chains"]
+    # a submodule brings its packages: importing models.wobble runs models/__init__.py
+    assert f"{PACKAGE}.models" in code_graph.reached(GRAPH, [f"{PACKAGE}.models.wobble"])
+
+
+def test_a_scene_job_reaches_no_report_verify_or_other_study_code():
+    for study in STUDIES:
+        reached = scene_job(study)
+        assert not {m for m in reached if m.startswith(f"{PACKAGE}.report")}, study
+        assert f"{PACKAGE}.verify" not in reached and f"{PACKAGE}.cli" not in reached
+        others = {f"{PACKAGE}.studies.{other}" for other in STUDIES if other != study}
+        assert not others & reached, (study, others & reached)
+    assert f"{PACKAGE}.report.pdf" not in REPORT  # the PDF is its own job
+
+
+def test_the_digest_changes_with_exactly_the_modules_reached(tmp_path):
+    """The digest of a copy of the package changes when a module it reaches changes, and only then."""
+    copy = copy_repository(tmp_path / "repo") / "src" / PACKAGE
+    modules = code_graph.modules(copy)
+    entries = (f"{PACKAGE}.jobserver", f"{PACKAGE}.scene_job", f"{PACKAGE}.studies.chandler")
+
+    def digest():
+        return code_graph.digest_of(code_graph.import_graph(copy), modules, entries, copy)
+
+    reached = code_graph.reached(code_graph.import_graph(copy), entries)
+    before = digest()
+    for name in (
+        f"{PACKAGE}.lazy",
+        f"{PACKAGE}.studies.figure_data",
+        f"{PACKAGE}.report.pdf",
+        f"{PACKAGE}.studies.chandler.model",
+        f"{PACKAGE}.studies.chains.symbolic",
+    ):
+        path = modules[name]
+        source = path.read_bytes()
+        path.write_bytes(source + b"\n# edited\n")
+        assert (digest() != before) == (name in reached), name
+        path.write_bytes(source)
+    assert digest() == before
+
+
+LIGHT_SCENE = {  # one light scene per study
+    "precession": "lamb_1920",
+    "chandler": "rigid_lamb",
+    "chains": "loaded_string",
+    "self_excited": "force_free",
+    "solvers": "hnw_rigid_body",
+}
+RUN_AND_LIST_MODULES = """
+import json, sys
+from classical_dynamics import scene_job
+status = scene_job.main(sys.argv[1:])
+mine = (m for m in sys.modules if m == "classical_dynamics" or m.startswith("classical_dynamics."))
+print(json.dumps(sorted(mine)))
+sys.exit(status)
+"""
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("study", sorted(STUDIES))
+def test_every_module_a_real_scene_job_imports_is_in_its_digest(study, tmp_path):
+    """Run one scene as its job does and list the package's modules it imported: each must be in what its
+    digest covers, or an edit to it would leave the result standing."""
+    scene = ROOT / "workflow/scenes" / study / f"{LIGHT_SCENE[study]}.yaml"
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-c",
+            RUN_AND_LIST_MODULES,
+            study,
+            str(scene),
+            str(tmp_path / "out"),
+            str(tmp_path / "timings"),
+            "--quick",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=600,
+        cwd=ROOT,
+    )
+    assert done.returncode == 0, done.stderr[-3000:]
+    imported = set(json.loads(done.stdout.strip().splitlines()[-1]))
+    assert f"{PACKAGE}.studies.{study}" in imported
+    assert imported <= scene_job(study), imported - scene_job(study)
+
+
+def stale_scenes(dry_run_output):
+    """{(study, scene)} of the scene jobs a dry run would run, and the other rules it would run."""
+    scenes = set(re.findall(r"wildcards: study=(\w+), scene=(\w+)", dry_run_output))
+    rules = set(re.findall(r"^rule (\w+):", dry_run_output, re.MULTILINE)) - {"scene"}
+    return scenes, rules
+
+
+def every_scene(repo, studies):
+    return {(s, p.stem) for s in studies for p in (repo / "workflow/scenes" / s).glob("*.yaml")}
+
+
+def expected_after_editing(name, repo):
+    """What a dry run should list after `name` is edited, from the graph: the scenes of the studies whose
+    scene job reaches it, the gallery if its job does, and the report chain from whatever reruns."""
+    studies = {study for study in STUDIES if name in scene_job(study)}
+    gallery = name in code_graph.reached(
+        GRAPH, [f"{PACKAGE}.jobserver", f"{PACKAGE}.studies.self_excited.gallery"]
+    )
+    archive = name in code_graph.reached(GRAPH, [f"{PACKAGE}.jobserver", f"{PACKAGE}.report.dist"])
+    html = name in REPORT
+    pdf = name in code_graph.reached(GRAPH, [f"{PACKAGE}.jobserver", f"{PACKAGE}.report.pdf"])
+    rules = set()
+    if studies or gallery or archive:
+        rules |= {"results_archive", "report_html", "report_pdf"}
+    if html:
+        rules |= {"report_html", "report_pdf"}
+    if pdf:
+        rules |= {"report_pdf"}
+    if studies & {"self_excited"} or gallery:
+        rules.add("self_excited_gallery")
+    return every_scene(repo, studies), rules | ({"all"} if rules else set())
+
+
+# One module of each kind: shared by every study, one study's only, loaded lazily, the report's, the PDF's
+EDITED = [
+    f"{PACKAGE}.studies.figure_data",
+    f"{PACKAGE}.lazy",
+    f"{PACKAGE}.studies.chains.symbolic",
+    f"{PACKAGE}.studies.chandler.observed",
+    f"{PACKAGE}.report.claims",
+    f"{PACKAGE}.report.pdf",
+]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", EDITED)
+def test_editing_a_module_reruns_exactly_the_jobs_that_run_it(scratch, name):
+    path = scratch / "src" / (name.replace(".", "/") + ".py")
+    path.write_text(path.read_text() + "\n# edited\n")
+    out = snakemake(scratch, "-n", "--config", "quick=1")
+    assert stale_scenes(out.stdout) == expected_after_editing(name, scratch), out.stdout[-3000:]
