@@ -102,6 +102,22 @@ def test_claim_digits_follow_the_check(check, value, figures):
     assert sig_for_tolerance(value, **check) == figures
 
 
+@pytest.mark.parametrize(
+    "check,value,figures",
+    [
+        ({"relative": 1e-8}, -1.0, 1),  # a sign: −1, not −1.0000000
+        ({"absolute": 1e-6}, 60.0, 1),  # an angle met to round-off: 60 (one figure), not 60.000000
+        ({"relative": 1e-8}, 1.2345678901, 8),  # digits that mean something stay
+        ({"relative": 0.01}, 306.04, 3),
+    ],
+)
+def test_a_claims_value_shows_no_string_of_zeros(check, value, figures):
+    claim = claims.ClaimResult(
+        "x", "s", "chains", "a", "p", value, "", {"value": value}, None, check, 0.0, 0.0, True, True
+    )
+    assert claims.shown_digits(claim) == figures
+
+
 def test_plural_and_units():
     from classical_dynamics.units import UnknownUnit, unit_text
 

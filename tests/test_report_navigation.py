@@ -330,3 +330,26 @@ def test_the_ledgers_map_every_statement(tmp_path):
     for source in sources:
         assert source.statements, source.key
         assert all(s.kind != "out_of_scope" or len(s.target) > 20 for s in source.statements)  # a real reason
+
+
+@pytest.mark.slow
+def test_every_link_of_the_report_resolves_inside_the_results_folder(built_repo):
+    """The shipped folder is self-contained: every link of results/report.html that is not an anchor in the
+    page leads to a file inside results/ (scene files and measured data are copied in beside the results)."""
+    import html as html_lib
+    import re
+    from urllib.parse import unquote, urlsplit
+
+    results = (built_repo / "results").resolve()
+    page = (results / "report.html").read_text(encoding="utf-8")
+    outside, missing = [], []
+    for href in sorted(set(re.findall(r'href="([^"#][^"]*)"', page))):
+        parts = urlsplit(html_lib.unescape(href))
+        if parts.scheme in ("http", "https", "mailto"):
+            continue
+        target = (results / unquote(parts.path)).resolve()
+        if not target.is_relative_to(results):
+            outside.append(href)
+        elif not target.exists():
+            missing.append(href)
+    assert outside == [] and missing == []

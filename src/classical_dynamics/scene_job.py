@@ -90,12 +90,16 @@ def guarded(func, args) -> int:
 
 
 def _run(args) -> int:
+    import hashlib
     import resource
 
     from . import provenance
     from .studies import study_module, validate
 
+    scene_bytes = Path(args.scene).read_bytes()
     scene = validate(args.study, args.scene, budget(args))  # nothing is computed before this passes
+    if hashlib.sha256(scene_bytes).hexdigest() != scene.sha256:
+        raise SceneError(args.scene, "(file)", "a file that stays the same while it is read", "it changed")
     module = study_module(args.study)
     started, wall0, cpu0 = _now(), time.perf_counter(), time.process_time()
     results = module.run(scene, quick=args.quick)
@@ -127,7 +131,7 @@ def _run(args) -> int:
         "cpu_model": record["machine"]["cpu_model"],
         "cores": record["machine"]["cores"],
     }
-    results.write(Path(args.out_dir), Path(args.timings_dir), record, timing)
+    results.write(Path(args.out_dir), Path(args.timings_dir), record, timing, {"scene.yaml": scene_bytes})
     return 0
 
 

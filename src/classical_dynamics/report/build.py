@@ -20,7 +20,7 @@ from jinja2.ext import Extension
 from markupsafe import Markup
 
 from .. import io
-from ..formatting import format_column, format_number, shortest, sig_for_tolerance
+from ..formatting import format_column, format_number, shortest
 from ..provenance import git_state, machine, package_versions, sha256_file
 from ..studies import STUDIES
 from ..units import UnknownUnit, unit_text
@@ -161,7 +161,7 @@ class Report:
             num=self.num,
             value=self.value,
             shortest=shortest,
-            claim_digits=self.claim_digits,
+            claim_digits=claims_mod.shown_digits,
             unit=unit_html,
             label_number=self.numbering.label,
             fig=self.fig,
@@ -245,6 +245,7 @@ class Report:
                 "input": prov.get("scene_sha256", ""),
                 "file": f"results/{study}/{scene}/summary.json",
                 "scene": self._scene_file(study, scene),
+                "link": self._scene_link(study, scene),
                 "command": self.rebuild(study, scene),
                 "finished": prov.get("finished", ""),
             }
@@ -278,7 +279,7 @@ class Report:
         links = (
             f'<a href="{folder}/{meta["file"]}">SVG</a>'
             + (f' · <a href="{folder}/{data}">data (CSV)</a>' if data else "")
-            + f' · scene <a href="../{self._scene_file(study, scene)}"><code>{study}/{scene}</code></a>'
+            + f' · scene <a href="{self._scene_link(study, scene)}"><code>{study}/{scene}</code></a>'
         )
         return figure_html(
             label,
@@ -293,11 +294,11 @@ class Report:
     def benchmark_fig(self, name: str, label: str, caption: str):
         """A figure a benchmark measured and saved beside its data in benchmarks/results/ (not a build result:
         its caption says where and when it was measured)."""
-        folder = "../benchmarks/results"  # relative to report.html in results/, as scene files are
+        folder = "measured"  # results/measured/: the workflow copies data and script beside the results
         uri = svg_data_uri((self.root / "benchmarks" / "results" / f"{name}.svg").read_bytes())
         links = (
             f'<a href="{folder}/{name}.svg">SVG</a> · <a href="{folder}/{name}.json">data (JSON)</a>'
-            f' · measured by <a href="../benchmarks/{name}.py"><code>benchmarks/{name}.py</code></a>'
+            f' · measured by <a href="{folder}/{name}.py"><code>benchmarks/{name}.py</code></a>'
         )
         return figure_html(
             label,
@@ -309,6 +310,12 @@ class Report:
             f"remeasure: <code>python benchmarks/{name}.py</code>",
             kind="figure benchmark",
         )
+
+    def _scene_link(self, study, scene) -> str:
+        """Where the report links a results folder's input, inside results/: the copy of its scene file that
+        travels with it, or for a step drawn from other scenes (the gallery) its provenance."""
+        listed = self.index.provenance[(study, scene)].get("files", {})
+        return f"{study}/{scene}/{'scene.yaml' if 'scene.yaml' in listed else 'provenance.json'}"
 
     def _scene_file(self, study, scene) -> str:
         """The input a results folder was computed from, relative to the checkout: its scene file, or for a
@@ -413,21 +420,6 @@ class Report:
         return Markup("[" + ", ".join(links) + "]")
 
     # --- per-study blocks ------------------------------------------------------------------
-    def claim_digits(self, claim) -> int:
-        """The figures a claim's computed value is shown to: what its check supports."""
-        check = claim.check
-        reference = claim.source.get("value")
-        # At most 8: a tighter agreement than that is read from the deviation column, not from digits.
-        if "relative" in check:
-            return sig_for_tolerance(claim.computed, relative=check["relative"], cap=8)
-        if "absolute" in check:
-            return sig_for_tolerance(
-                reference if reference else claim.computed, absolute=check["absolute"], cap=8
-            )
-        if "factor" in check:
-            return 2
-        return 3
-
     def claims(self, study):
         if study not in self.claim_results:
             path = assets.claims_file(study)

@@ -10,10 +10,13 @@ that may fail does (a failing claim without one fails the build: the report expl
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from pathlib import Path
 
 import yaml
+
+from ..formatting import sig_for_tolerance
 
 
 class ClaimFailure(RuntimeError):
@@ -68,6 +71,31 @@ class ClaimResult:
         """Counted, not listed, in the PDF: it holds, must hold, is no key result, and checks a formula or
         statement of the source (source value 0 or text) rather than a value the source prints."""
         return self.passed and self.must_hold and not self.headline and not self.compares_a_printed_value
+
+
+def shown_digits(claim: ClaimResult) -> int:
+    """The figures a claim's computed value is shown to: what its check supports, less trailing zeros
+    (−1.0000000 for a sign, 60.000000 for an angle met to round-off say nothing that the deviation column
+    does not say better)."""
+    check = claim.check
+    reference = claim.source.get("value")
+    # At most 8: a tighter agreement than that is read from the deviation column, not from digits.
+    if "relative" in check:
+        digits = sig_for_tolerance(claim.computed, relative=check["relative"], cap=8)
+    elif "absolute" in check:
+        digits = sig_for_tolerance(
+            reference if reference else claim.computed, absolute=check["absolute"], cap=8
+        )
+    elif "factor" in check:
+        digits = 2
+    else:
+        digits = 3
+    value = claim.computed
+    if isinstance(value, float) and math.isfinite(value) and value != 0:
+        shown = float(f"{value:.{digits - 1}e}")
+        while digits > 1 and float(f"{value:.{digits - 2}e}") == shown:
+            digits -= 1
+    return digits
 
 
 def _pick(value, spec):

@@ -17,7 +17,7 @@ from pathlib import Path
 from .. import io
 
 INCLUDE = ("report.html", "report.pdf")
-SUFFIXES = {".json", ".csv", ".svg"}
+SUFFIXES = {".json", ".csv", ".svg", ".yaml", ".py"}  # .yaml: each scene's file; .py: measured/'s scripts
 
 
 def results_archive_name(results_dir: Path, root: Path = Path(".")) -> Path:

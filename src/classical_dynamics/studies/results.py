@@ -144,12 +144,21 @@ class Results:
                 entries[name]["axes"] = extracted[name][1]
         return entries
 
-    def write(self, out_dir: Path, timings_dir: Path, provenance: dict, timing_rows: dict) -> None:
-        """Write everything into staging folders, then move both into place."""
+    def write(
+        self,
+        out_dir: Path,
+        timings_dir: Path,
+        provenance: dict,
+        timing_rows: dict,
+        inputs: dict | None = None,
+    ) -> None:
+        """Write everything into staging folders, then move both into place. `inputs` ({name: bytes}: the
+        scene file as it was read) travel with the results, so that a copied or unpacked folder links its
+        scene."""
         out_dir, timings_dir = Path(out_dir), Path(timings_dir)
         staged = []
         for target, files in (
-            (out_dir, self._result_files(provenance)),
+            (out_dir, self._result_files(provenance, inputs or {})),
             (timings_dir, self._timing_files(timing_rows)),
         ):
             target.parent.mkdir(parents=True, exist_ok=True)
@@ -166,8 +175,8 @@ class Results:
             for staging, _ in staged:
                 shutil.rmtree(staging, ignore_errors=True)
 
-    def _result_files(self, provenance):
-        files = {"summary.json": io.dumps_json(self.summary()).encode()}
+    def _result_files(self, provenance, inputs):
+        files = {"summary.json": io.dumps_json(self.summary()).encode(), **inputs}
         files.update({f"{k}.csv": io.csv_text(f).encode() for k, (f, _, _) in self.tables.items()})
         files.update({f"{k}.svg": io.svg_bytes(f) for k, (f, _) in self.figures.items()})
         if self.stability:  # the hard cases as a table too: the report links it

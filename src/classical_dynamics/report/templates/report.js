@@ -34,7 +34,7 @@
     var rows = [].concat(
       item("value", el("code", {}, [link.getAttribute("data-value") + (unit ? " " + unit : "")])),
       item("results file", el("code", {}, [p.file + " → numbers." + link.getAttribute("data-key")])),
-      item("scene", el("a", {href: "../" + p.scene}, [el("code", {}, [p.scene])])),
+      item("scene", el("a", {href: p.link}, [el("code", {}, [p.scene])])),
       item("commit", el("code", {}, [p.commit + (p.dirty ? " (uncommitted changes)" : "")])),
       item("scene SHA-256", el("code", {class: "hash"}, [p.input])),
       item("computed", p.finished.replace("T", " ")),
