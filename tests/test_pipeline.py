@@ -249,6 +249,7 @@ properties:
     "claims.yaml": """\
 - id: seconds_pendulum
   statement: 'Period of a pendulum one metre long'
+  kind: statement
   source: {value: 2.006, text: "2.006", cite: lamb1920, where: "a test"}
   computed: {scene: one_metre, number: period_s}
   unit: s
@@ -267,12 +268,12 @@ def test_a_new_study_is_one_package_one_scenes_folder_and_one_registry_line(scra
     (scratch / "workflow/scenes/pendulum/one_metre.yaml").write_text(
         "title: One metre\npendulum: {length_m: 1.0}\neffects: {gravity: {g_m_per_s2: 9.81}}\n"
     )
-    registry = scratch / "src/classical_dynamics/studies/registry.py"
+    registry = scratch / "src/classical_dynamics/studies/registry.yaml"
     text = registry.read_text()
-    line = '    Study("precession", "Precession of the equinoxes"),\n'
+    line = "precession: Precession of the equinoxes\n"
     assert line in text
     # chapter 1
-    registry.write_text(text.replace(line, '    Study("pendulum", "The simple pendulum"),\n' + line))
+    registry.write_text(text.replace(line, "pendulum: The simple pendulum\n" + line))
 
     out = snakemake(scratch, "-n", "--config", "quick=1")
     assert job_counts(out.stdout) == ONE_SCENE_AND_THE_REPORT

@@ -227,7 +227,8 @@ def test_identifiers_and_commands_break_only_at_separators(built_repo, pdf_text)
 
 def _figures(page_html):
     for uri in re.findall(
-        r'<figure id="[^"]+" class="figure"><img src="data:image/svg\+xml;base64,([^"]+)"', page_html
+        r'<figure id="[^"]+" class="figure">(?:<a [^>]*>)?<img src="data:image/svg\+xml;base64,([^"]+)"',
+        page_html,
     ):
         yield base64.b64decode(uri).decode("utf-8")
 

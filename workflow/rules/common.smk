@@ -60,26 +60,31 @@ def every_result():
 # A scene's results are checked against what they claim before Snakemake compares file times (io.stale_reason):
 # every file against the checksums in its provenance, the scene file's SHA-256 against the one it was built
 # from, quick against full. Snakemake alone would miss a figure deleted or a number edited when .snakemake/ is
-# absent (results copied or restored) and a scene restored with its old time (cp -p, rsync -a, tar x). A stale
-# scene's marker in .snakemake/ (an input of its job, dated 1970 otherwise) is rewritten now with the reason and
-# the time, so that every Snakemake command, dry run included, sees an input newer than the results and unlike
-# the one it recorded (Snakemake ignores a newer input whose checksum it has seen), with or without its records.
+# absent (results copied or restored) and a scene restored with its old time (cp -p, rsync -a, tar x). Each
+# scene has a marker in .snakemake/result-checks/, an input of its job: dated 1970 while its results are whole,
+# rewritten now with the reason when they are not, so that every Snakemake command, dry run included, sees an
+# input newer than the results and unlike the one it recorded (Snakemake ignores a newer input whose checksum it
+# has seen), with or without its records. All are written while the Snakefile is read, before Snakemake lists
+# the folder (it caches what a folder holds and each file's time).
 RESULT_CHECKS = Path(".snakemake/result-checks")
 
 
+def check_results():
+    for study in STUDIES:
+        for scene in scenes(study):
+            marker, folder = RESULT_CHECKS / study / scene, Path("results", study, scene)
+            reason = stale_reason(folder, SCENES / study / f"{scene}.yaml", bool(QUICK)) if folder.exists() else None
+            marker.parent.mkdir(parents=True, exist_ok=True)
+            if reason:
+                sys.stderr.write(f"note: {reason}: rerunning it\n")
+                marker.write_text(f"{reason}\n{time.time_ns()}\n")
+            elif not marker.exists() or marker.stat().st_mtime_ns:
+                marker.touch()
+                os.utime(marker, ns=(0, 0))  # 1970: older than any result (and whole again if put right by hand)
+
+
 def result_check(wc):
-    marker = RESULT_CHECKS / wc.study / wc.scene
-    folder = Path("results", wc.study, wc.scene)
-    reason = stale_reason(folder, SCENES / wc.study / f"{wc.scene}.yaml", bool(QUICK)) if folder.exists() else None
-    if reason:
-        sys.stderr.write(f"note: {reason}: rerunning it\n")
-        marker.parent.mkdir(parents=True, exist_ok=True)
-        marker.write_text(f"{reason}\n{time.time_ns()}\n")
-    elif not marker.exists() or marker.stat().st_mtime_ns:
-        marker.parent.mkdir(parents=True, exist_ok=True)
-        marker.touch()
-        os.utime(marker, ns=(0, 0))  # 1970: older than any result (and whole again if put right by hand)
-    return marker.as_posix()
+    return (RESULT_CHECKS / wc.study / wc.scene).as_posix()
 
 
 # What a job's result depends on besides its inputs: the package's modules its command runs (the job server, then
@@ -124,6 +129,7 @@ try:
             validate, VALIDATED, BUDGET, optional=lambda study, scene: not _needed(study, scene.stem))
         for _error in _unneeded:
             sys.stderr.write(f"note: not needed by this command, and not valid either: {_error}\n")
+        check_results()
 except SceneError as _error:
     sys.stderr.write(f"{_error}\n")
     sys.exit(1)

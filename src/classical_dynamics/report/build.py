@@ -88,11 +88,22 @@ def svg_data_uri(svg: bytes) -> str:
 
 
 def figure_html(
-    label: str, number, uri: str, alt: str, caption: str, source: str, rebuild: str, kind: str = "figure"
+    label: str,
+    number,
+    uri: str,
+    alt: str,
+    caption: str,
+    source: str,
+    rebuild: str,
+    full: str,
+    kind: str = "figure",
 ) -> Markup:
-    """A numbered figure: the image, its caption, then where it comes from and how to make it again."""
+    """A numbered figure: the image (a tap or click opens its SVG at full size, where a phone shrinks it), its
+    caption, then where it comes from and how to make it again."""
     return Markup(
-        f'<figure id="{label}" class="{kind}"><img src="{uri}" alt="{alt}">'
+        f'<figure id="{label}" class="{kind}">'
+        f'<a class="full-size" href="{full}" title="the figure at full size">'
+        f'<img src="{uri}" alt="{alt}"></a>'
         f'<figcaption><span class="label">Figure {number}.</span> {caption} '
         f'<span class="source">{source}<span class="rebuild">; {rebuild}</span>.'
         f"</span>"
@@ -138,6 +149,10 @@ def break_points(page: str) -> str:
     )
 
 
+# A table the chapter marks long stands in the appendix of long tables only past this many rows
+LONG_TABLE_ROWS = 12
+
+
 class Report:
     def __init__(self, index: ResultsIndex, root: Path, quick: bool):
         self.index, self.root, self.quick = index, Path(root), quick
@@ -171,7 +186,7 @@ class Report:
             cite=self.cite,
             benchmark_fig=self.benchmark_fig,
             claims=self.claims,
-            claim_kinds=claims_mod.KINDS,
+            count_by_kind=claims_mod.count_by_kind,
             long_tables=lambda study: Markup("".join(self.long_tables.get(study, []))),
             stability=self.stability,
             scenes=self.scenes_table,
@@ -289,6 +304,7 @@ class Report:
             caption + note,
             links,
             f"rebuild: <code>{self.rebuild(study, scene)}</code>",
+            f"{folder}/{meta['file']}",
         )
 
     def benchmark_fig(self, name: str, label: str, caption: str):
@@ -308,6 +324,7 @@ class Report:
             render_text(caption) + " Measured times.",
             links,
             f"remeasure: <code>python benchmarks/{name}.py</code>",
+            f"{folder}/{name}.svg",
             kind="figure benchmark",
         )
 
@@ -387,6 +404,7 @@ class Report:
             body.append("<tr>" + "".join(cells) + "</tr>")
         note = " Measured times: they vary from run to run." if timing else ""
         csv = f"results/{study}/{'timings/' if timing else ''}{scene}/{name}.csv"
+        long = long and len(frame) > LONG_TABLE_ROWS  # a short one stays where it is read
         markup = Markup(
             f'<figure id="{label}" class="table{" long" if long else ""}"><figcaption><span '
             f'class="label">Table {number}.</span> '

@@ -23,14 +23,28 @@ class ClaimFailure(RuntimeError):
     pass
 
 
-# What a claim is, in the words the report counts them by (one kind per claim, claims.yaml's `kind:`)
+# What a claim is (one kind per claim, claims.yaml's `kind:`), as the report counts them: one, many. A check
+# against the project's own earlier figures is no claim but a test (tests/), whatever its kind would be.
 KINDS = {
-    "statement": "statements of the sources confirmed",
-    "erratum": "errata in the sources shown",
-    "limit": "limits of the model, each with what it leaves out",
-    "reference": "comparisons with external references (IAU, IERS, published computations)",
-    "regression": "checks against the project's own earlier figures (no source)",
+    "statement": (
+        "check of a source's statement or formula",
+        "checks of the sources' statements and formulas",
+    ),
+    "erratum": ("erratum of a source", "errata of the sources"),
+    "limit": ("limit of the model", "limits of the model"),
+    "reference": ("comparison with an external reference", "comparisons with external references"),
 }
+
+
+def count_by_kind(claims) -> str:
+    """ "330 checks of the sources' statements and formulas, 5 errata of the sources, ...": the kinds
+    present."""
+    parts = []
+    for kind, (one, many) in KINDS.items():
+        n = sum(1 for claim in claims if claim.kind == kind)
+        if n:
+            parts.append(f"{n} {one if n == 1 else many}")
+    return ", ".join(parts)
 
 
 @dataclass

@@ -1,10 +1,11 @@
-"""The studies of the report, in the order of its chapters: the one place a study is registered.
+"""The studies of the report, in the order of its chapters, as registry.yaml beside this file lists them: one
+line a study.
 
 A study is its package, classical_dynamics/studies/<name>/, which holds its code (EFFECTS, check, cost, run),
 schema.yaml (what its scenes may say), chapter.html.j2 (its chapter) and claims.yaml (the numbers its chapter
 checks against the sources), and its scenes, workflow/scenes/<name>/. The pipeline's rules and targets, the
-report's chapters and their titles all follow from STUDIES. (Apart from the study modules, so that retitling a
-chapter reruns no scene: the scenes' code digest covers studies/__init__.py, not this file.)
+report's chapters and their titles all follow from STUDIES. (The list is data, so that adding a study or
+retitling a chapter reruns no scene: a scene's code digest covers the modules its job imports.)
 """
 
 from __future__ import annotations
@@ -12,6 +13,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from importlib.resources import files
 from pathlib import Path
+
+import yaml
 
 # The studies' folder (found without importing a study's code, which takes up to a second; the package is
 # installed as files, so this is a real path)
@@ -36,21 +39,17 @@ class Study:
         return self.file("schema.yaml")
 
 
+LIST = HERE / "registry.yaml"
 STUDIES = {
-    study.name: study
-    for study in (
-        Study("precession", "Precession of the equinoxes"),
-        Study("chandler", "The Chandler wobble"),
-        Study("chains", "Vibrations of chains"),
-        Study("self_excited", "The self-excited rigid body"),
-        Study("solvers", "The solver layer: what accuracy costs"),
-    )
+    name: Study(name, title)
+    for name, title in yaml.load(LIST.read_text(encoding="utf-8"), Loader=yaml.SafeLoader).items()
 }
 
 
 def resource_files() -> list[Path]:
-    """Every file the studies ship beside their code (schemas, chapters, claims): what the report reads."""
-    return sorted(
+    """Every file the studies ship beside their code (the list, schemas, chapters, claims): what the report
+    reads."""
+    return [LIST] + sorted(
         path
         for study in STUDIES
         for path in (HERE / study).iterdir()
