@@ -131,3 +131,40 @@ def test_shipped_scenes_fit_the_default_budget():
             scene = validate(study, path, BUDGET)
             assert 0 < scene.estimate.seconds <= BUDGET.seconds, path
             assert scene.estimate.memory_limit_mb <= BUDGET.memory_mb + 1000, path
+
+
+BAD_CONFIG = [
+    ("quick=banana", "the command line (--config): config 'quick': expected 0 or 1, got 'banana'"),
+    ("quick=1.5", "the command line (--config): config 'quick': expected 0 or 1, got 1.5"),
+    ("jobserver=2", "the command line (--config): config 'jobserver': expected 0 or 1, got 2"),
+    ("budget=5", "the command line (--config): config 'budget': expected a mapping such as"),
+    ("budget={hours: 2}", "the command line (--config): config 'budget.hours': expected one of seconds"),
+    ("speed=11", "the command line (--config): config 'speed': expected one of the keys quick"),
+]
+
+
+@pytest.mark.slow
+def test_a_bad_configuration_is_refused_in_one_line_naming_key_value_and_origin(built_repo, tmp_path):
+    """Every --config key and every key of workflow/config.yaml is checked before anything runs: one line with
+    the key, the value and where it came from; exit 1; results/ untouched."""
+    repo = tmp_path / "repo"
+    shutil.copytree(built_repo, repo, symlinks=True)
+    before = _digest(repo / "results")
+    refusals = [
+        (setting, snakemake(repo, "-n", "--config", setting, check=False)) for setting, _ in BAD_CONFIG
+    ]
+    config = repo / "workflow/config.yaml"
+    config.write_text(config.read_text().replace("quick: 0", "quick: maybe"))
+    refusals.append(("quick: maybe", snakemake(repo, "-n", check=False)))
+    expected = [line for _, line in BAD_CONFIG] + ["workflow/config.yaml: config 'quick': expected 0 or 1"]
+    for (setting, result), line in zip(refusals, expected):
+        lines = [
+            text
+            for text in result.stderr.splitlines()
+            if text.strip() and not text.startswith(("Using workflow specific profile", "Config file"))
+        ]
+        assert result.returncode == 1 and len(lines) == 1 and lines[0].startswith(line), (
+            setting,
+            result.stderr,
+        )
+    assert _digest(repo / "results") == before

@@ -15,7 +15,7 @@ import pytest
 from PIL import Image
 
 from classical_dynamics.figure_style import MAX_HEIGHT_IN, MIN_FONT_PT, TEXT_WIDTH_IN
-from classical_dynamics.report.inline_math import MathError, render_text
+from classical_dynamics.inline_math import MathError, render_text
 
 CHROMIUM = "/usr/bin/chromium"
 FLAGS = [

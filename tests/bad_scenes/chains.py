@@ -20,6 +20,8 @@ STR3, FORCED, FRICTION = (
 _case = partial(case, "chains")
 
 CASES = [
+    # a count written as a float validated, then stopped the run inside numpy
+    _case("n-as-float", "schema", "chain.n", "loaded_string.yaml", chain__n=10.0),
     # the cases: ten million particles or links, ~10^10 RATTLE steps
     _case("n-1e7-particles-50-modes", "cost", "chain.n", HP, chain__n=10_000_000, analysis__modes=50),
     _case("n-1e8", "range", "chain.n", "loaded_string.yaml", chain__n=100_000_000),

@@ -52,7 +52,11 @@ def _cases(study: str) -> list[BadScene]:
         BadScene(f"{study}-latin-1", study, "file", "(file)", text=good + "# Poincaré\n".encode("latin-1")),
         BadScene(f"{study}-bad-name", study, "file", "(file name)", text=good, name="Bad-Name.yaml"),
         BadScene(f"{study}-reserved-name", study, "file", "(file name)", text=good, name="timings.yaml"),
+        BadScene(f"{study}-step-name", study, "file", "(file name)", text=good, name="gallery.yaml"),
+        BadScene(f"{study}-long-name", study, "file", "(file name)", text=good, name="a" * 240 + ".yaml"),
         BadScene(f"{study}-empty", study, "schema", "(top level)", text=b""),
+        # what validates must build: a title the report's typesetter cannot set (it failed the render)
+        BadScene(f"{study}-title-math", study, "schema", "title", base=base, set={"title": r"A $\nosuch x$"}),
         BadScene(f"{study}-list", study, "schema", "(top level)", text=b"- title: a list\n"),
         BadScene(f"{study}-alias-bomb", study, "yaml", "(YAML at line 2", text=BOMB),
         BadScene(

@@ -20,12 +20,20 @@ from classical_dynamics.scenes.cost import Budget
 from classical_dynamics.scenes.targets import needed_scenes
 from classical_dynamics.scenes.validated import validate_all
 from classical_dynamics.studies import STUDIES, validate
+from classical_dynamics.workflow_config import ConfigError, check_config
 
 # Jobs call `python3` by name, never a path fixed when this file was read (which would fail on a node where the
 # path differs, and mark every result stale under another interpreter): the environment Snakemake runs in comes
 # first on their PATH, as activating it would. Each job's provenance records the versions it ran with.
 jobserver.put_interpreter_first_on_path()
-QUICK = "--quick" if int(config.get("quick", 0)) else ""
+# --config and workflow/config.yaml, checked before anything else: a bad key or value is one line (the key, the
+# value, where it came from), never a Python error from inside the workflow.
+try:
+    FLAGS = check_config(config, WORKFLOW / "config.yaml")
+except ConfigError as _error:
+    sys.stderr.write(f"{_error}\n")
+    sys.exit(1)
+QUICK = "--quick" if FLAGS["quick"] else ""
 VALIDATED = Path(".snakemake/validated-scenes.json")
 
 
@@ -168,7 +176,7 @@ def measured_resources(rule):
 # measure each job's own memory).
 onstart:
     served = sum("classical_dynamics.jobserver" in (job.rule.shellcmd or "") for job in workflow.dag.needrun_jobs())
-    wanted = int(config.get("jobserver", 1)) and not workflow.deployment_settings.deployment_method
+    wanted = FLAGS["jobserver"] and not workflow.deployment_settings.deployment_method
     if wanted and workflow.local_exec and workflow.exec_mode == ExecMode.DEFAULT and served >= 4:
         jobserver.start()
 

@@ -66,8 +66,10 @@ rule report_html:
         archive=RESULTS_ARCHIVE,
         templates=[here(path) for path in report_assets.asset_files()],
         measured=rules.measured.output,     # its appendix's measured figure, and what it links
+    # update(): Snakemake keeps the last good report while this one renders and restores it if the render fails
+    # (it would otherwise delete it when the job starts); the job writes the new one atomically.
     output:
-        "results/report.html",
+        update("results/report.html"),
     params:
         quick=QUICK,
         root=ROOT,
@@ -90,7 +92,7 @@ rule report_pdf:
     input:
         "results/report.html",
     output:
-        "results/report.pdf",
+        update("results/report.pdf"),
     params:
         code=job_code("report.pdf"),
     threads: 1

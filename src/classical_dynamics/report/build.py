@@ -21,6 +21,7 @@ from markupsafe import Markup
 
 from .. import io
 from ..formatting import format_column, format_number, shortest
+from ..inline_math import plain_text, render_markup, render_text
 from ..provenance import git_state, machine, package_versions, sha256_file
 from ..studies import STUDIES
 from ..units import UnknownUnit, unit_text
@@ -29,7 +30,6 @@ from . import claims as claims_mod
 from .bib import Citations, format_entry, read_bib
 from .citation import citation, commit_date
 from .dist import results_archive_name
-from .inline_math import plain_text, render_markup, render_text
 from .ledger import read_ledger, require_figures
 from .math import latex_data_uri
 from .navigation import add_navigation

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import os
 import sys
-import tempfile
 import urllib.parse
 from pathlib import Path
 
@@ -65,10 +64,9 @@ def html_to_pdf(html_path: Path, pdf_path: Path) -> None:
             (kind, _relative(target, folder) if kind == "external" else target, rectangle, box)
             for kind, target, rectangle, box in page.links
         ]
-    with tempfile.TemporaryDirectory() as tmp:
-        target = Path(tmp) / "report.pdf"
-        document.write_pdf(str(target), pdf_variant=None)
-        io.atomic_write_bytes(pdf_path, target.read_bytes())
+    io.atomic_write_bytes(
+        pdf_path, document.write_pdf(pdf_variant=None)
+    )  # no temporary folder to leave behind
 
 
 if __name__ == "__main__":

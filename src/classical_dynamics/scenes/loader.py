@@ -19,8 +19,14 @@ from typing import Callable, Iterable
 import jsonschema
 import yaml
 
-SCENE_NAME = re.compile(r"^[a-z0-9_]+$")
-RESERVED_NAMES = {"timings", "logs", "dist"}
+from ..inline_math import MathError, render_text
+
+# A name every file and folder made from it can take: results/<study>/<name>/ is staged as .<name>.XXXXXXXX
+# and its log is <name>.log, all within the 255 bytes a file name may have.
+SCENE_NAME = re.compile(r"^[a-z0-9_]{1,200}$")
+# Names a folder of results/ or results/<study>/ already has: timings, logs, dist, measured (the benchmarks'
+# data), gallery (a step of the self-excited study drawn from its scenes).
+RESERVED_NAMES = {"timings", "logs", "dist", "measured", "gallery"}
 MAX_BYTES = 1_000_000  # a scene is a page of YAML; a megabyte is already a mistake
 MAX_DEPTH = 12  # the deepest scene nests 4 levels
 # Files an editor or a merge leaves beside the scenes: never scenes, never an error.
@@ -217,7 +223,7 @@ def load_scene(
         raise SceneError(
             path,
             "(file name)",
-            "a name of lower-case letters, digits and _ ending in .yaml, not "
+            "a name of at most 200 lower-case letters, digits and _ ending in .yaml, not "
             + ", ".join(sorted(RESERVED_NAMES)),
             path.name,
         )
@@ -238,11 +244,12 @@ def load_scene(
                 raise SceneError(
                     path, f"effects.{effect}", "a known effect: " + ", ".join(known), effect, has_got=False
                 )
-    validator = jsonschema.Draft202012Validator(schema)
+    validator = _Validator(schema)
     error = jsonschema.exceptions.best_match(validator.iter_errors(data), key=_depth_first)
     if error is not None:
         field_name, expected, got, has_got = _expected_from(error)
         raise SceneError(path, field_name, expected, got, has_got=has_got)
+    _check_math(path, data)
     if check is not None:
         try:
             check(path, data)
@@ -256,6 +263,33 @@ def load_scene(
     return Scene(
         name=name, study=study, path=path, data=data, sha256=digest, effects=dict(data.get("effects") or {})
     )
+
+
+# An integer is an int, as the code that counts with it uses it: JSON Schema's "integer" also takes 10.0,
+# which validated and then stopped the run inside numpy.
+_Validator = jsonschema.validators.extend(
+    jsonschema.Draft202012Validator,
+    type_checker=jsonschema.Draft202012Validator.TYPE_CHECKER.redefine(
+        "integer", lambda checker, value: isinstance(value, int) and not isinstance(value, bool)
+    ),
+)
+
+
+def _check_math(path: Path, data, where: str = "") -> None:
+    """Every text of a scene that may reach a reader (a title, a description, a source) typesets: its
+    $...$ math uses only what the report's typesetter knows, checked by that typesetter (render_text)."""
+    if isinstance(data, dict):
+        for key, value in data.items():
+            _check_math(path, value, f"{where}.{key}" if where else str(key))
+    elif isinstance(data, list):
+        for index, value in enumerate(data):
+            _check_math(path, value, f"{where}.{index}")
+    elif isinstance(data, str) and "$" in data:
+        try:
+            render_text(data)
+        except MathError as error:
+            expected = "text whose $...$ math the report can typeset"
+            raise SceneError(path, where, expected, str(error)) from None
 
 
 def _depth_first(error):
