@@ -45,3 +45,25 @@ def test_scipy_bdf_damps_an_undamped_oscillator(built_repo):
     periods, measured apart with scipy): a figure of the hard-cases table, within a factor 3."""
     q = number(built_repo, "solvers", "hard_cases", "bdf_spurious_Q_rtol_1e-6")
     assert 1e5 / 3 <= q <= 3e5
+
+
+def test_the_chain_mode_figure_draws_what_its_caption_states(built_repo):
+    """The caption's gaps between particles and continuum are those of the points the figure draws (its CSV,
+    read back from the figure), against J0(j_0k sqrt(x/l)) from scipy."""
+    import re
+
+    import pandas as pd
+    from scipy import special
+
+    folder = built_repo / "results/chains/hanging_particles"
+    caption = json.loads((folder / "summary.json").read_text())["figures"]["mode_shapes"]["caption"]
+    drawn = pd.read_csv(folder / "mode_shapes.csv")
+    zeros = special.jn_zeros(0, 3)
+    gaps = []
+    for k in range(3):
+        points = drawn[drawn.series == f"mode {k + 1}"]
+        gaps.append(float(abs(points.x - special.j0(zeros[k] * points.y.clip(lower=0) ** 0.5)).max()))
+    stated = number(built_repo, "chains", "hanging_particles", "mode_shape_misfit")
+    assert stated == pytest.approx(gaps, rel=1e-9, abs=1e-12)
+    assert gaps[0] < 1e-3 and gaps[2] < 0.2  # the end-corrected chain lies close to the continuum
+    assert re.search(r"gap between particle and curve is [^.]*for modes 1 to 3", caption)

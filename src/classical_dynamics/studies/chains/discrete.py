@@ -21,6 +21,7 @@ from ...provenance import software_stamp
 from ...solvers import chain_eigen
 from ...solvers.special import bessel_j0_zeros, laguerre_lowest_zero_asymptotic, laguerre_zero_mp
 from ...solvers.timing import min_time
+from ...solvers.workprecision import legend_below
 from ..results import new_figure, subplots
 from . import small_oscillations
 
@@ -348,11 +349,20 @@ def _mode_shapes(results, shapes, n, k):
     from scipy import special
 
     j = bessel_j0_zeros(3)
-    height = 1 - np.arange(1, n + 1) / n  # particle heights above the free end, x/l
+    # Drawn as the chain the text compares with the continuum: counted (n + 1/2)a long, the end correction
+    # that makes its frequencies converge at second order, so particle j (from the top) is (n + 1/2 - j)/(n +
+    # 1/2) of the length above the free end. (At l = na the lowest particle would sit on the free end and
+    # modes 2 and 3 would look several times further from the continuum than they are.)
+    height = (n + 0.5 - np.arange(1, n + 1)) / (n + 0.5)
     fig, ax = new_figure(4.4, 3.65)
     x = np.linspace(0, 1, 400)
-    for idx in range(min(3, k, n)):
-        y = shapes[:, idx] / shapes[-1, idx]
+    misfits = []
+    shown = min(3, k, n)
+    for idx in range(shown):
+        # each mode scaled to the continuum's displacement at the lowest particle (no fit)
+        at_particles = special.j0(j[idx] * np.sqrt(height))
+        y = shapes[:, idx] / shapes[-1, idx] * at_particles[-1]
+        misfits.append(float(np.max(np.abs(y - at_particles))))
         cont = special.j0(j[idx] * np.sqrt(x))
         line = ax.plot(cont, x, lw=1, alpha=0.7)[0]
         ax.plot(y, height, "o", ms=3.5, color=line.get_color(), label=f"mode {idx + 1}")
@@ -360,20 +370,29 @@ def _mode_shapes(results, shapes, n, k):
     ax.set_xlabel("displacement (free end = 1)")
     ax.set_ylabel("height above the free end, $x/l$")
     ax.legend(loc="upper right")
+    results.number(
+        "mode_shape_misfit",
+        misfits,
+        "1",
+        note="largest |particle - continuum| of modes 1 to 3 as drawn (free end = 1)",
+    )
+    misfit_text = ", ".join(format_number(m, 2) for m in misfits)
     results.figure(
         "mode_shapes",
         fig,
-        f"The first three mode shapes of the {n}-particle chain (points) over the "
-        "continuum's modes $J_0(j_{0k}\\sqrt{x/l})$ (lines in the same colours), both scaled so that the "
-        "free end, at height 0, moves 1. Mode 1 lies on the continuum's curve; modes 2 and 3 have the "
-        f"continuum's nodes, one and two, but with {n} particles follow its shape only roughly.",
+        f"The first {shown} mode shapes of the {n}-particle chain (points) over the continuum's modes "
+        "$J_0(j_{0k}\\sqrt{x/l})$ (lines in the same colours, the free end moving 1). The particles stand at "
+        "the heights of a chain counted $(n + \\tfrac12)a$ long, the end correction under which the "
+        "frequencies converge at second order, each mode scaled to the continuum at the lowest particle. "
+        f"The largest gap between particle and curve is {misfit_text} for modes 1 to {shown}.",
     )
     if n >= 3 and k >= 2:
         y2 = shapes[:, 1]
         sign = np.nonzero(np.sign(y2[:-1]) != np.sign(y2[1:]))[0]
         if sign.size:
             i = sign[-1]
-            h0, h1 = height[i], height[i + 1]
+            lumped = 1 - np.arange(1, n + 1) / n  # heights with l = na, as this number has always been read
+            h0, h1 = lumped[i], lumped[i + 1]
             node = h0 + (h1 - h0) * y2[i] / (y2[i] - y2[i + 1])
             results.number(
                 "second_mode_node_x_over_l",
@@ -510,10 +529,9 @@ def _convergence_figure(results, model, frame, exact, fitted):
             color=colour,
             label=f"{label}: fitted order {format_number(order, 3)}",
         )
-    ax.axhline(exact, color="0.3", ls="--", lw=0.8, label=r"continuum, $j_{01}/2$")
+    continuum = ax.axhline(exact, color="0.3", ls="--", lw=0.8, label=r"continuum, $j_{01}/2$ (left)")
     ax.set_xlabel("$n$")
     ax.set_ylabel(r"$\omega_1$ ($\sqrt{g/l}$)")
-    ax.legend(loc="best")
     # reference slopes over each scheme's fitted range, through its error at the range's middle, a third below
     for key, (order, n_lo, n_hi) in fitted.items():
         _, _, slope = SCHEMES[key]
@@ -536,9 +554,9 @@ def _convergence_figure(results, model, frame, exact, fitted):
         )
     bx.set_xlabel("$n$")
     bx.set_ylabel(r"|relative error| of $\omega_1$")
-    low, high = bx.get_ylim()
-    bx.set_ylim(low / 10 ** (0.3 * np.log10(high / low)), high)  # room below the data for the legend
-    bx.legend(loc="lower left")
+    # one legend for both panels (the colours are the schemes in each), below them: off the data
+    handles, labels = bx.get_legend_handles_labels()
+    legend_below(fig, handles + [continuum], labels + [continuum.get_label()], ncol=2)
     for axis in (ax, bx):
         axis.grid(True, which="both", alpha=0.25, linewidth=0.6)
     if model == "links":
