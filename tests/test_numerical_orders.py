@@ -50,10 +50,10 @@ def test_scipy_bdf_damps_an_undamped_oscillator(built_repo):
 def test_the_chain_mode_figure_draws_what_its_caption_states(built_repo):
     """The caption's gaps between particles and continuum are those of the points the figure draws (its CSV,
     read back from the figure), against J0(j_0k sqrt(x/l)) from scipy."""
-    import re
-
     import pandas as pd
     from scipy import special
+
+    from classical_dynamics.formatting import format_number
 
     folder = built_repo / "results/chains/hanging_particles"
     caption = json.loads((folder / "summary.json").read_text())["figures"]["mode_shapes"]["caption"]
@@ -66,4 +66,5 @@ def test_the_chain_mode_figure_draws_what_its_caption_states(built_repo):
     stated = number(built_repo, "chains", "hanging_particles", "mode_shape_misfit")
     assert stated == pytest.approx(gaps, rel=1e-9, abs=1e-12)
     assert gaps[0] < 1e-3 and gaps[2] < 0.2  # the end-corrected chain lies close to the continuum
-    assert re.search(r"gap between particle and curve is [^.]*for modes 1 to 3", caption)
+    stated_text = ", ".join(format_number(gap, 2) for gap in gaps)
+    assert f"gap between particle and curve is {stated_text} for modes 1 to 3" in caption
