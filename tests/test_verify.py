@@ -165,6 +165,23 @@ def test_a_bad_archive_is_refused_in_one_line(built, sandbox, kind, message):
     assert listing(sandbox / "bad") == [ARCHIVE]
 
 
+@pytest.mark.parametrize(
+    "given, message",
+    [
+        ("missing.tar.gz", "no such file"),
+        ("a-folder", "a folder, not a dist archive"),
+        ("/dev/null", "not a regular file"),
+    ],
+)
+def test_what_is_not_an_archive_gets_its_own_line(built, sandbox, given, message):
+    """A typo, a folder given for an archive, a device: each one accurate line, exit 2, nothing written."""
+    (sandbox / "a-folder").mkdir()
+    given = given if given.startswith("/") else sandbox / given
+    done = cli("verify", given, "--root", built["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
+    assert done.returncode == 2 and done.stdout == ""
+    assert message in done.stderr and done.stderr.count("\n") == 1 and "Traceback" not in done.stderr
+
+
 def test_diff_of_a_build_against_itself_is_empty(built, sandbox):
     done = cli("diff", built["results"], built["results"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
     assert (

@@ -245,8 +245,12 @@ def unpack_archive(archive: Path, into: Path) -> Path:
     matching the SHA256SUMS inside, an archive not matching a SHA256SUMS beside it, no summaries.
     """
     archive = Path(archive)
-    if not archive.is_file():
-        raise VerifyError(f"{archive}: no such file")
+    if not archive.is_file():  # each its own line: a typo, a folder given for an archive, a device
+        if not archive.exists():
+            raise VerifyError(f"{archive}: no such file")
+        if archive.is_dir():
+            raise VerifyError(f"{archive}: a folder, not a dist archive (.tar.gz made by snakemake -c1 dist)")
+        raise VerifyError(f"{archive}: not a regular file (a device, pipe or socket), not a dist archive")
     digests, prefix = {}, None
     try:
         with tarfile.open(archive, "r:gz") as tar:
