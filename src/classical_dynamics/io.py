@@ -141,9 +141,9 @@ def result_folders(study_dir: Path | str) -> list[Path]:
     )
 
 
-def check_result_folder(folder: Path | str, deep: bool = True) -> dict:
-    """The folder's provenance, once every file it lists is there with its recorded SHA-256 (deep) or at least
-    summary.json is (not deep: what a dry run can afford); ResultError names the first file that is not."""
+def check_result_folder(folder: Path | str) -> dict:
+    """The folder's provenance, once every file it lists is there with its recorded SHA-256; ResultError names
+    the first file that is not."""
     folder = Path(folder)
     try:
         provenance = json.loads((folder / "provenance.json").read_bytes())
@@ -157,7 +157,7 @@ def check_result_folder(folder: Path | str, deep: bool = True) -> dict:
             f"{folder}/provenance.json: lists no file checksums (written by an older version or cut "
             "short); rebuild the scene"
         )
-    for name in sorted(digests) if deep else ["summary.json"]:
+    for name in sorted(digests):
         try:
             data = (folder / name).read_bytes()
         except OSError:
