@@ -200,3 +200,56 @@ def test_bibliography_has_the_required_sources():
         "rayleigh1877",
     ):
         assert key in entries and entries[key].get("year")
+
+
+@pytest.mark.parametrize(
+    "text,value,check,means",
+    [
+        ("$\\sqrt{7}$", 7**0.5, {"relative": 1e-12}, "2.6457513"),  # a symbol gets the number it means
+        ("9/11", 9 / 11, {"relative": 1e-9}, "0.81818182"),  # a fraction stays a fraction, with its value
+        ("50.385″/yr", 50.38481507, {"absolute": 0.05}, ""),  # a printed number is not repeated
+        ("$360°/\\psi_\\mathrm{A}$ = 25 722 yr", 25722.0, {"relative": 0.01}, ""),
+        ("stable", True, {"equals": True}, ""),  # a verdict means no number
+    ],
+)
+def test_a_symbolic_source_value_shows_the_number_it_means(text, value, check, means):
+    claim = claims.ClaimResult(
+        "x",
+        "s",
+        "chains",
+        "a",
+        "p",
+        value,
+        "",
+        {"text": text, "value": value},
+        None,
+        check,
+        0.0,
+        0.0,
+        True,
+        True,
+    )
+    assert claims.source_means(claim) == means
+
+
+def test_a_value_no_source_prints_is_marked_evaluated():
+    """A source value without printed text and with more figures than a 1920s or 1960s text prints, or whose
+    row says it was evaluated (mpmath, sympy, a quadrature), is ours from the source's formula: marked so."""
+    import re
+    from pathlib import Path
+
+    import yaml
+
+    from classical_dynamics.studies.registry import STUDIES
+
+    root = Path(claims.__file__).parents[1] / "studies"
+    unmarked = []
+    for study in STUDIES:
+        for claim in yaml.safe_load((root / study / "claims.yaml").read_text(encoding="utf-8")):
+            source, value = claim.get("source", {}), claim.get("source", {}).get("value")
+            if "text" in source or not isinstance(value, float) or value == 0 or source.get("evaluated"):
+                continue
+            figures = len(f"{abs(value):.15g}".replace(".", "").lstrip("0").rstrip("0"))
+            if figures > 8 or re.search(r"evaluat|mpmath|sympy|quadrature|derived", source.get("where", "")):
+                unmarked.append(f"{study}/{claim['id']}")
+    assert not unmarked, unmarked

@@ -102,6 +102,10 @@ def browser_texts(built_repo):
                       'figure.claims td')).filter(td => { const r = td.getBoundingClientRect();
                       return r.width > 0 && (r.left < -1 || r.right > window.innerWidth + 1); }).length"""),
                 "width": width,
+                # equation numbers outside the screen (at the end of an equation that scrolls)
+                "eqno_off_screen": page.evaluate("""() => Array.from(document.querySelectorAll(
+                      '.equation .eqno')).filter(e => { const r = e.getBoundingClientRect();
+                      return r.left < -1 || r.right > window.innerWidth + 1; }).map(e => e.textContent)"""),
                 # boxes wider than the page that are not inside a box that scrolls on its own
                 "loose": page.evaluate("""() => Array.from(document.querySelectorAll(
                       'table, figure, img, .equation, pre, p')).filter(e => {
@@ -180,10 +184,15 @@ def test_pdf_shows_no_raw_markup(pdf_text):
 
 
 @pytest.mark.slow
-@pytest.mark.slow
 def test_a_claim_reads_on_a_phone_without_scrolling_sideways(browser_texts):
     assert browser_texts["phone"]["claims_off_screen"] == 0
     assert browser_texts["laptop"]["claims_off_screen"] == 0
+
+
+@pytest.mark.slow
+def test_an_equation_number_is_in_view_however_wide_its_equation(browser_texts):
+    assert browser_texts["phone"]["eqno_off_screen"] == []
+    assert browser_texts["laptop"]["eqno_off_screen"] == []
 
 
 def test_nothing_wider_than_a_phone_without_its_own_scroll_box(browser_texts):

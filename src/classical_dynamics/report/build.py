@@ -177,6 +177,7 @@ class Report:
             value=self.value,
             shortest=shortest,
             claim_digits=claims_mod.shown_digits,
+            source_means=claims_mod.source_means,
             unit=unit_html,
             label_number=self.numbering.label,
             fig=self.fig,
@@ -434,6 +435,8 @@ class Report:
         return Markup(f'<div class="equation"{anchor}>{img}{tag}</div>')
 
     def cite(self, *keys):
+        # a claim's source may cite several: cite: [a, b]
+        keys = [k for key in keys for k in ([key] if isinstance(key, str) else key)]
         links = [f'<a class="cite" href="#bib-{k}">{self.citations.cite(k)}</a>' for k in keys]
         return Markup("[" + ", ".join(links) + "]")
 

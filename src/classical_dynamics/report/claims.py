@@ -11,12 +11,13 @@ that may fail does (a failing claim without one fails the build: the report expl
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
 import yaml
 
-from ..formatting import sig_for_tolerance
+from ..formatting import format_number, sig_for_tolerance
 
 
 class ClaimFailure(RuntimeError):
@@ -81,6 +82,12 @@ class ClaimResult:
         return isinstance(value, (int, float)) and not isinstance(value, bool) and value != 0
 
     @property
+    def evaluated(self) -> bool:
+        """The source value is the source's formula or construction evaluated by us (mpmath, sympy, a closed
+        form, with the inputs the row names), not a number the source prints (source: evaluated: true)."""
+        return bool(self.source.get("evaluated"))
+
+    @property
     def brief_in_print(self) -> bool:
         """Counted, not listed, in the PDF: it holds, must hold, is no key result, and checks a formula or
         statement of the source (source value 0 or text) rather than a value the source prints."""
@@ -110,6 +117,23 @@ def shown_digits(claim: ClaimResult) -> int:
         while digits > 1 and float(f"{value:.{digits - 2}e}") == shown:
             digits -= 1
     return digits
+
+
+_NUMBER = re.compile(r"\d+(?:[ \u2009\u202f]\d{3})*(?:\.\d+)?")
+
+
+def source_means(claim: ClaimResult) -> str:
+    """The number a symbolic or verbal source value means ("√7" means 2.6457513), to the figures "ours" is
+    shown to; "" when the source prints no value, or its text already prints that number (50.385″/yr)."""
+    text, value = claim.source.get("text"), claim.source.get("value")
+    if not text or not isinstance(value, (int, float)) or isinstance(value, bool):
+        return ""
+    for match in _NUMBER.findall(text):
+        printed = match.replace(" ", "").replace("\u2009", "").replace("\u202f", "")
+        decimals = len(printed.partition(".")[2])
+        if abs(abs(value) - float(printed)) <= 0.5 * 10.0**-decimals:
+            return ""
+    return format_number(value, shown_digits(claim))
 
 
 def _pick(value, spec):

@@ -489,10 +489,10 @@ def _series(results, m1, nu, phi_c, amplitudes, sphere=None):
                 "space (Lee §1.2) over four periods of $\\boldsymbol{\\omega}$ on the limit cycle $F$, the "
                 "attitude "
                 "integrated as a quaternion: the body's $x$-axis (blue) and $\\mathbf{L}/|\\mathbf{L}|$ "
-                "(green, starts "
-                "marked) on the unit sphere. $\\boldsymbol{\\omega}$ is periodic in the body, the motion in "
-                "space is "
-                "not."
+                "(green; starts marked) on the unit sphere; $\\mathbf{L}/|\\mathbf{L}|$ stays within "
+                f"{format_number(space.wander(sphere[1])[1], 2)}° of its mean direction, drawn magnified in "
+                "the inset (degrees in the plane tangent there). $\\boldsymbol{\\omega}$ is periodic in the "
+                "body, the motion in space is not."
             ),
         )
 

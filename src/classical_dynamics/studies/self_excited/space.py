@@ -193,6 +193,18 @@ def run(results, L: se.LargestAxis, body: se.Body, w0: np.ndarray):
     return xs[keep], ls[keep]
 
 
+def wander(ls):
+    """L/|L| about its mean direction: the path in the tangent plane there (degrees, two columns) and its
+    largest angle from that direction (degrees)."""
+    centre = ls.mean(axis=0)
+    centre /= np.linalg.norm(centre)
+    e1 = np.cross(centre, [0.0, 0.0, 1.0] if abs(centre[2]) < 0.9 else [1.0, 0.0, 0.0])
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(centre, e1)
+    plane = np.degrees(np.c_[ls @ e1, ls @ e2])
+    return plane, float(np.degrees(np.arccos(np.clip(ls @ centre, -1.0, 1.0))).max())
+
+
 def draw_sphere(ax, xs, ls):
     """The unit sphere (faint meridians), the body's x-axis and L/|L| in space, their starts marked."""
     u = np.linspace(0.0, 2 * np.pi, 73)
@@ -210,6 +222,14 @@ def draw_sphere(ax, xs, ls):
     ax.plot(*ls.T, color="#009E73", lw=2.0, label="$\\mathbf{L}/|\\mathbf{L}|$ in space")
     ax.scatter(*xs[0], color="#0072B2", s=12, marker="o")
     ax.scatter(*ls[0], color="#009E73", s=12, marker="s")
+    # L/|L| wanders less than a marker's width on the sphere: an inset draws it magnified, in degrees
+    plane, _ = wander(ls)
+    inset = ax.inset_axes([-0.12, 0.0, 0.36, 0.36])
+    inset.plot(*plane.T, color="#009E73", lw=0.9)
+    inset.plot(*plane[0], color="#009E73", marker="s", ms=3, ls="none")
+    inset.set_aspect("equal", adjustable="datalim")
+    inset.tick_params(labelsize=7, length=2, pad=1)
+    inset.set_title("$\\mathbf{L}/|\\mathbf{L}|$ (°)", fontsize=7, pad=2)
     for k, name in enumerate("XYZ"):
         tip = np.zeros(3)
         tip[k] = 1.15
