@@ -263,3 +263,54 @@ def digest(folder: Path) -> str:
     for path in sorted(p for p in folder.rglob("*") if p.is_file() and not p.is_symlink()):
         h.update(str(path.relative_to(folder)).encode() + b"\0" + path.read_bytes())
     return h.hexdigest()
+
+
+# --- a full disk (issue 35, item 6) -------------------------------------------------------------------------
+
+
+def can_mount() -> bool:
+    """Whether this process may mount a small tmpfs (as root, where the namespace allows it)."""
+    import subprocess
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as folder:
+        done = subprocess.run(
+            ["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", folder], capture_output=True
+        )
+        if done.returncode != 0:
+            return False
+        subprocess.run(["umount", folder], check=True)
+        return True
+
+
+class small_disk:
+    """A tmpfs of `size` mounted at `path` for the block (can_mount() first); fill() leaves it full."""
+
+    def __init__(self, path: Path, size: str = "4m"):
+        self.path, self.size = Path(path), size
+
+    def __enter__(self):
+        import subprocess
+
+        self.path.mkdir(parents=True, exist_ok=True)
+        subprocess.run(
+            ["mount", "-t", "tmpfs", "-o", f"size={self.size}", "tmpfs", str(self.path)], check=True
+        )
+        return self
+
+    def __exit__(self, *exc):
+        import subprocess
+
+        subprocess.run(["umount", "-l", str(self.path)], check=True)
+
+    def fill(self, leave: int = 0) -> Path:
+        """A file that takes all the room but `leave` pages of 4 KiB."""
+        filler = self.path / "filler"
+        with open(filler, "wb", buffering=0) as out:
+            try:
+                while True:
+                    out.write(bytes(4096))
+            except OSError as error:
+                assert error.errno == 28
+            out.truncate(max(0, out.tell() // 4096 - leave) * 4096)
+        return filler
