@@ -64,7 +64,7 @@ def test_dist_onto_a_full_disk_keeps_the_last_archive(tmp_path):
 def test_verify_unpacking_onto_a_full_disk_says_so(tmp_path):
     archive = hf.archive(tmp_path)
     with hf.small_disk(tmp_path / "disk", "1m") as disk:
-        disk.fill(leave=1)  # room for Python's probe of TMPDIR (none: it takes another folder), not for more
+        disk.fill(leave=1)  # room for Python's probe of TMPDIR (full, it quietly takes /tmp), not the archive
         done = hf.run(["verify", str(archive), "--root", str(hf.checkout(tmp_path))], disk.path)
         one_line_no_space(done, disk.path)
         assert sorted(p.name for p in disk.path.iterdir()) == ["filler"]
