@@ -236,24 +236,23 @@ def run(args: list[str], tmpdir: Path, env: dict | None = None) -> Outcome:
     import os
     import subprocess
     import sys
+    import tempfile
     import time
 
     root = Path(__file__).resolve().parents[1]
     env = {**os.environ, **(env or {}), "TMPDIR": str(tmpdir)}
     env["PYTHONPATH"] = str(root / "src") + os.pathsep + env.get("PYTHONPATH", "")
     start = time.perf_counter()
-    with open(tmpdir.parent / "out.txt", "w+") as out, open(tmpdir.parent / "err.txt", "w+") as err:
+    with tempfile.TemporaryFile("w+") as out, tempfile.TemporaryFile("w+") as err:
         child = subprocess.Popen(
             [sys.executable, "-m", "classical_dynamics", *args], stdout=out, stderr=err, env=env
         )
-        _, status, usage = os.wait4(child.pid, 0)
+        _, status, usage = os.wait4(child.pid, 0)  # the child's own rusage: its peak memory
         child.returncode = os.waitstatus_to_exitcode(status)
         seconds = time.perf_counter() - start
         out.seek(0)
         err.seek(0)
         stdout, stderr = out.read(), err.read()
-    (tmpdir.parent / "out.txt").unlink()
-    (tmpdir.parent / "err.txt").unlink()
     return Outcome(child.returncode, stdout, stderr, seconds, usage.ru_maxrss / 1024)
 
 
