@@ -169,17 +169,43 @@ def test_a_bad_archive_is_refused_in_one_line(built, sandbox, kind, message):
     "given, message",
     [
         ("missing.tar.gz", "no such file"),
-        ("a-folder", "a folder, not a dist archive"),
+        ("a-folder", "a folder, but not a results folder"),
         ("/dev/null", "not a regular file"),
     ],
 )
 def test_what_is_not_an_archive_gets_its_own_line(built, sandbox, given, message):
-    """A typo, a folder given for an archive, a device: each one accurate line, exit 2, nothing written."""
+    """A typo, a folder that holds no results, a device: each one accurate line, exit 2, nothing written."""
     (sandbox / "a-folder").mkdir()
     given = given if given.startswith("/") else sandbox / given
     done = cli("verify", given, "--root", built["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
     assert done.returncode == 2 and done.stdout == ""
     assert message in done.stderr and done.stderr.count("\n") == 1 and "Traceback" not in done.stderr
+
+
+def test_verify_takes_a_results_folder_checked_as_an_archive_is(built, sandbox):
+    """The folder itself, and an unpacked archive (its SHA256SUMS checked too); an edited file is refused by
+    name, as in an archive, before anything is rebuilt."""
+    done = cli(
+        "verify", built["results"], "--root", built["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp"
+    )
+    assert done.returncode == 0 and "OK: all" in done.stdout, done.stdout + done.stderr
+    unpacked = sandbox / "unpacked"
+    with tarfile.open(built["archive"]) as tar:
+        tar.extractall(unpacked, filter="data")
+    folder = unpacked / ARCHIVE.removesuffix(".tar.gz")
+    (folder / "report.html").write_text("<html>edited</html>")  # listed in SHA256SUMS only
+    done = cli("verify", folder, "--root", built["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
+    assert done.returncode == 2 and "checksum mismatch for" in done.stderr and "report.html" in done.stderr
+    edited = sandbox / "edited"
+    shutil.copytree(built["results"], edited)
+    (edited / CHANGED).write_text(
+        (edited / CHANGED).read_text().replace("2.64575131106459", "2.6457513110646")
+    )
+    done = cli("verify", edited, "--root", built["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
+    assert done.returncode == 2 and done.stdout == "" and done.stderr.count("\n") == 1
+    assert f"{edited / CHANGED}: does not match its checksum" in done.stderr
+    shutil.rmtree(unpacked)
+    shutil.rmtree(edited)
 
 
 def test_diff_of_a_build_against_itself_is_empty(built, sandbox):

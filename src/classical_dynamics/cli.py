@@ -4,7 +4,7 @@
   python -m classical_dynamics run STUDY SCENE OUT_DIR TIMINGS_DIR [--quick]     (the scene job: scene_job.py)
   python -m classical_dynamics report RESULTS_DIR HTML PDF [--quick]
   python -m classical_dynamics dist RESULTS_DIR ARCHIVE
-  python -m classical_dynamics verify ARCHIVE [--scenes STUDY/SCENE,...] [--root .] [--cores N]
+  python -m classical_dynamics verify ARCHIVE|RESULTS [--scenes STUDY/SCENE,...] [--root .] [--cores N]
   python -m classical_dynamics diff RESULTS_A RESULTS_B      (results folders or dist archives)
 
 Installed, the same commands are `classical-dynamics verify ...`, `classical-dynamics diff ...`.
@@ -83,10 +83,10 @@ def main(argv=None) -> int:
     p.set_defaults(func=cmd_dist)
     p = sub.add_parser(
         "verify",
-        help="rebuild a dist archive's scenes and compare every number with it; "
-        "exit 1 if one moved beyond its tolerance, 2 for a bad archive",
+        help="rebuild the scenes of a dist archive (or a results folder) and compare every number with it; "
+        "exit 1 if one moved beyond its tolerance, 2 for a bad archive or folder",
     )
-    p.add_argument("archive")
+    p.add_argument("archive", metavar="ARCHIVE", help="a dist archive or a results folder")
     p.add_argument("--scenes", help="only these: study/scene or study, comma-separated")
     p.add_argument("--root", default=".", help="the checkout whose code and scene files rebuild it")
     p.add_argument("--cores", type=int, default=1, help="scenes rebuilt side by side")
@@ -109,14 +109,20 @@ def main(argv=None) -> int:
 
 
 def _guarded(func, args) -> int:
-    """func(args), with a user's mistake (a bad scene, archive or result) and exhausted memory as one line."""
-    from .io import ResultError
+    """func(args), with a user's mistake (a bad scene, archive or result), a full disk and exhausted memory as
+    one line."""
+    from .io import ResultError, no_space_line
     from .verify import VerifyError
 
     try:
         return func(args)
     except (SceneError, VerifyError, ResultError) as error:
         print(error, file=sys.stderr)
+        return 2
+    except OSError as error:
+        if (line := no_space_line(error)) is None:
+            raise
+        print(line, file=sys.stderr)
         return 2
     except MemoryError:
         print(

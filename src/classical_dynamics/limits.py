@@ -4,6 +4,8 @@ The work runs in a forked child; the parent only watches the wall clock and the 
 0.1 s, and stops it with one line when it passes either. A watcher outside the work is the only kind that can
 stop a numba loop holding the interpreter, and resident memory (not address space, which numba and BLAS
 reserve by the gigabyte) is what exhausts a machine.
+
+Also the limits on what a reader (verify, diff, dist) takes from a user's file, each with why that size.
 """
 
 from __future__ import annotations
@@ -18,6 +20,20 @@ import traceback
 from typing import Callable
 
 POLL_S = 0.1
+
+# --- what a reader (verify, diff, dist) takes from a user's file -------------------------------------------
+# Sized from a full build (about 650 archived files, 60 MB in all; the largest file the 12 MB report.html, the
+# largest summary.json 42 kB), with room for a much larger one; a hostile file is refused before it is read.
+READ_CHUNK_BYTES = 1 << 20  # files are read and hashed in pieces of this size, never held whole
+MAX_MEMBER_BYTES = 256 << 20  # one file of an archive or results folder: 20 times the largest of a full build
+MAX_MEMBERS = 20_000  # files in an archive: 30 times a full build's
+MAX_ARCHIVE_BYTES = 1 << 30  # an archive's files unpacked, all told: 15 times a full build's; seconds to read
+# A tar header's own data (a long name, PAX records) is read whole by tarfile: a few hundred bytes in ours.
+MAX_TAR_HEADER_BYTES = READ_CHUNK_BYTES
+MAX_MANIFEST_BYTES = 16 << 20  # a SHA256SUMS: MAX_MEMBERS lines of 800 characters
+MAX_JSON_BYTES = 16 << 20  # a summary.json or provenance.json: 400 times the largest of a full build
+MAX_JSON_DEPTH = 64  # a JSON file's nesting: ours nest 6 deep; far deeper would recurse past Python's stack
+MAX_INT_DIGITS = 300  # an integer in a results file (a count, a seed): 300 digits still convert to a float
 
 
 def resident_mb(pid: int) -> float:

@@ -76,13 +76,19 @@ def run(args) -> int:
 
 
 def guarded(func, args) -> int:
-    """func(args), with a user's mistake (a bad scene or result) and exhausted memory as one line."""
-    from .io import ResultError
+    """func(args), with a user's mistake (a bad scene or result), a full disk and exhausted memory as one
+    line."""
+    from .io import ResultError, no_space_line
 
     try:
         return func(args)
     except (SceneError, ResultError) as error:
         print(error, file=sys.stderr)
+        return 2
+    except OSError as error:
+        if (line := no_space_line(error)) is None:
+            raise
+        print(line, file=sys.stderr)
         return 2
     except MemoryError:
         print(f"{args.scene}: stopped: out of memory (see budget: in workflow/config.yaml)", file=sys.stderr)

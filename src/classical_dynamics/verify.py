@@ -14,6 +14,8 @@ Lists are compared element by element, each element named name[i].
 
 from __future__ import annotations
 
+import contextlib
+import gzip
 import hashlib
 import json
 import math
@@ -28,7 +30,7 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 
-from . import io
+from . import io, limits
 from .provenance import git, sha256_file
 
 DEFAULT_RELATIVE = 1e-9
@@ -60,10 +62,11 @@ def scenes_of(folder: Path) -> list[tuple[str, str]]:
 
 
 def _read_json(path: Path):
+    """Bounded whatever the file (io.read_json_checked): a hostile one is one line, never a traceback."""
     try:
-        return io.read_json(path)
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as error:
-        raise VerifyError(f"{path}: unreadable or not JSON ({error})") from None
+        return io.read_json_checked(path)
+    except (OSError, ValueError) as error:
+        raise VerifyError(f"{path}: unreadable or not JSON: {error}") from None
 
 
 def read_numbers(folder: Path, scenes=None) -> dict[tuple[str, str, str], dict]:
@@ -79,7 +82,10 @@ def read_numbers(folder: Path, scenes=None) -> dict[tuple[str, str, str], dict]:
                 raise VerifyError(f"{path}: number {name!r} has no value")
             numbers[study, scene, name] = entry
         # a hard case's measured value is printed in the report too
-        for case in summary.get("stability") or []:
+        cases = summary.get("stability") or []
+        if not isinstance(cases, list) or not all(isinstance(c, dict) and "name" in c for c in cases):
+            raise VerifyError(f"{path}: 'stability' is not a list of hard cases with names")
+        for case in cases:
             numbers[study, scene, f"hard_case:{case['name']}"] = {
                 "value": case.get("measured"),
                 "unit": case.get("unit", ""),
@@ -91,7 +97,10 @@ def read_provenance(folder: Path, study: str, scene: str) -> dict:
     path = Path(folder) / study / scene / "provenance.json"
     if not path.is_file():
         raise VerifyError(f"{path}: missing (every scene carries its provenance)")
-    return _read_json(path)
+    record = _read_json(path)
+    if not isinstance(record, dict):
+        raise VerifyError(f"{path}: not a provenance record (a JSON object)")
+    return record
 
 
 # --- comparing -----------------------------------------------------------------------------------
@@ -237,84 +246,225 @@ def _count(changes) -> str:
 # --- the dist archive ----------------------------------------------------------------------------
 
 
-def unpack_archive(archive: Path, into: Path) -> Path:
-    """Check a dist archive whole and unpack it into `into`; return its results folder.
+class _CappedReads:
+    """The unpacked gzip stream as tarfile reads it, refusing any one read over limits.MAX_TAR_HEADER_BYTES:
+    tarfile reads a header's own data (a long name, PAX records) whole, whatever size the header declares."""
 
-    Refused with one line: unreadable or truncated gzip/tar, a member that is not a plain file or
-    leaves the archive's one classical-dynamics-<version>/ folder, a member missing from or not
-    matching the SHA256SUMS inside, an archive not matching a SHA256SUMS beside it, no summaries.
-    """
-    archive = Path(archive)
-    if not archive.is_file():  # each its own line: a typo, a folder given for an archive, a device
-        if not archive.exists():
-            raise VerifyError(f"{archive}: no such file")
-        if archive.is_dir():
-            raise VerifyError(f"{archive}: a folder, not a dist archive (.tar.gz made by snakemake -c1 dist)")
-        raise VerifyError(f"{archive}: not a regular file (a device, pipe or socket), not a dist archive")
-    digests, prefix = {}, None
-    try:
-        with tarfile.open(archive, "r:gz") as tar:
-            for member in tar:
-                path = PurePosixPath(member.name)
-                top = path.parts[0] if path.parts else ""
-                if prefix is None:
-                    prefix = top
-                    if not PREFIX.match(prefix):
-                        raise VerifyError(f"{archive}: not a classical-dynamics archive (top folder {top!r})")
-                if path.is_absolute() or ".." in path.parts or top != prefix or len(path.parts) < 2:
-                    raise VerifyError(f"{archive}: member {member.name!r} is outside {prefix}/")
-                if not member.isfile():
-                    raise VerifyError(f"{archive}: member {member.name!r} is not a plain file")
-                if member.name in digests:
-                    raise VerifyError(f"{archive}: member {member.name!r} appears twice")
-                data = tar.extractfile(member).read()
-                digests[member.name] = hashlib.sha256(data).hexdigest()
-                target = Path(into, *path.parts)
-                target.parent.mkdir(parents=True, exist_ok=True)
-                target.write_bytes(data)
-    except (tarfile.TarError, EOFError, zlib.error, OSError) as error:
-        what = "truncated" if isinstance(error, EOFError) else "not a readable tar.gz"
-        raise VerifyError(f"{archive}: {what} ({error})") from None
+    def __init__(self, raw, archive: Path):
+        self.raw, self.archive = raw, archive
+
+    def read(self, size=-1):
+        if size is None or size < 0 or size > limits.MAX_TAR_HEADER_BYTES:
+            raise VerifyError(
+                f"{self.archive}: a tar header of {size} bytes, over the limit of "
+                f"{limits.MAX_TAR_HEADER_BYTES} (limits.MAX_TAR_HEADER_BYTES); not unpacked"
+            )
+        return self.raw.read(size)
+
+    def seek(self, *args):
+        return self.raw.seek(*args)
+
+    def tell(self):
+        return self.raw.tell()
+
+
+def _not_an_archive(given: Path) -> str | None:
+    """Why what is given is no archive file, in its own words: a typo, a folder, a device; None for a file."""
+    if given.is_file():
+        return None
+    if not given.exists():
+        return f"{given}: no such file"
+    if given.is_dir():
+        return f"{given}: a folder, not a dist archive (.tar.gz made by snakemake -c1 dist)"
+    return f"{given}: not a regular file (a device, pipe or socket), not a dist archive"
+
+
+def _unpack_members(archive: Path, into: Path) -> tuple[str, dict[str, str]]:
+    """Stream the archive's members into `into`, each hashed as it is written, none held whole in memory:
+    (its one top folder, {member name: sha256}). Refused with one line: a member count, a member's size or
+    the total over limits.py's, a member that is not a plain file or leaves the one top folder."""
+    digests, prefix, total = {}, None, 0
+    with gzip.open(archive, "rb") as raw, tarfile.open(fileobj=_CappedReads(raw, archive), mode="r:") as tar:
+        while (member := tar.next()) is not None:
+            tar.members.clear()  # one header held at a time, not every one read
+            if len(digests) >= limits.MAX_MEMBERS:
+                raise VerifyError(
+                    f"{archive}: more than {limits.MAX_MEMBERS} members (limits.MAX_MEMBERS); not unpacked"
+                )
+            path = PurePosixPath(member.name)
+            top = path.parts[0] if path.parts else ""
+            if prefix is None:
+                prefix = top
+                if not PREFIX.match(prefix):
+                    raise VerifyError(
+                        f"{archive}: not a classical-dynamics archive (top folder {top[:60]!r})"
+                    )
+            if path.is_absolute() or ".." in path.parts or top != prefix or len(path.parts) < 2:
+                raise VerifyError(f"{archive}: member {member.name[:80]!r} is outside {prefix}/")
+            if not member.isfile():
+                raise VerifyError(f"{archive}: member {member.name!r} is not a plain file")
+            if member.name in digests:
+                raise VerifyError(f"{archive}: member {member.name!r} appears twice")
+            if member.size > limits.MAX_MEMBER_BYTES:  # refused from its header, before a byte is unpacked
+                raise VerifyError(
+                    f"{archive}: member {member.name!r} is {io._size(member.size)}, over the limit of "
+                    f"{io._size(limits.MAX_MEMBER_BYTES)} (limits.MAX_MEMBER_BYTES); not unpacked"
+                )
+            total += member.size
+            if total > limits.MAX_ARCHIVE_BYTES:
+                raise VerifyError(
+                    f"{archive}: members of more than {io._size(limits.MAX_ARCHIVE_BYTES)} in all, over the "
+                    "limit (limits.MAX_ARCHIVE_BYTES); not unpacked"
+                )
+            target = Path(into, *path.parts)
+            target.parent.mkdir(parents=True, exist_ok=True)
+            digest, source = hashlib.sha256(), tar.extractfile(member)
+            with open(target, "wb") as out:
+                while chunk := source.read(limits.READ_CHUNK_BYTES):
+                    digest.update(chunk)
+                    out.write(chunk)
+            digests[member.name] = digest.hexdigest()
     if prefix is None:
         raise VerifyError(f"{archive}: empty archive")
-    listed = _read_sums(Path(into, prefix, "SHA256SUMS"), archive, prefix)
-    for name, digest in digests.items():
-        if name == f"{prefix}/SHA256SUMS":
-            continue
-        if name not in listed:
-            raise VerifyError(f"{archive}: member {name} is not listed in its SHA256SUMS")
-        if listed[name] != digest:
-            raise VerifyError(f"{archive}: checksum mismatch for {name} (tampered or corrupted)")
-    missing = sorted(listed.keys() - digests.keys())
-    if missing:
-        raise VerifyError(f"{archive}: {missing[0]} is listed in SHA256SUMS but missing (truncated?)")
+    return prefix, digests
+
+
+def unpack_archive(archive: Path, into: Path) -> Path:
+    """Check a dist archive whole and unpack it into `into`; return its results folder, checked as any results
+    folder is (check_results).
+
+    Refused with one line: what is not an archive file (each its own line), unreadable or truncated
+    gzip/tar, a member over limits.py's bounds (count, size, total), not a plain file or leaving the archive's
+    one classical-dynamics-<version>/ folder, a member missing from or not matching the SHA256SUMS inside,
+    an archive not matching a SHA256SUMS beside it, no summaries.
+    """
+    archive = Path(archive)
+    if why := _not_an_archive(archive):
+        raise VerifyError(why)
+    if archive.stat().st_size > limits.MAX_ARCHIVE_BYTES:
+        raise VerifyError(
+            f"{archive}: {io._size(archive.stat().st_size)}, over the limit of "
+            f"{io._size(limits.MAX_ARCHIVE_BYTES)} for an archive (limits.MAX_ARCHIVE_BYTES)"
+        )
+    try:
+        prefix, digests = _unpack_members(archive, into)
+    except OSError as error:
+        if error.errno in io.NO_SPACE:  # unpacking, not the archive: the temporary folder's disk is full
+            raise OSError(error.errno, error.strerror, str(into)) from None
+        raise VerifyError(f"{archive}: not a readable tar.gz ({error})") from None
+    except (tarfile.TarError, zlib.error) as error:
+        raise VerifyError(f"{archive}: not a readable tar.gz ({error})") from None
+    except EOFError as error:
+        raise VerifyError(f"{archive}: truncated ({error})") from None
+    except RecursionError:  # a chain of extended headers, each read by tarfile through the next
+        raise VerifyError(f"{archive}: not a readable tar.gz (headers chained too deep)") from None
+    results = Path(into, prefix)
+    if f"{prefix}/SHA256SUMS" not in digests:
+        raise VerifyError(f"{archive}: not a classical-dynamics archive (no {prefix}/SHA256SUMS inside)")
+    digests = {name.removeprefix(prefix + "/"): digest for name, digest in digests.items()}
+    _check_sums(archive, results, digests, complete=True)
     beside = archive.parent / "SHA256SUMS"  # the one dist writes next to the archive
     if beside.is_file():
-        for line in beside.read_text(errors="replace").splitlines():
+        for line in _read_lines(beside, archive):
             digest, _, name = line.partition("  ")
-            if name == archive.name and digest != sha256_file(archive):
+            if name == archive.name and digest != io.sha256_bounded(archive, limits.MAX_ARCHIVE_BYTES):
                 raise VerifyError(f"{archive}: checksum mismatch with {beside}")
-    results = Path(into, prefix)
     try:
         scenes_of(results)
     except VerifyError:
         raise VerifyError(
             f"{archive}: not a classical-dynamics archive (no <study>/<scene>/summary.json)"
         ) from None
+    check_results(results, archive)
     return results
 
 
-def _read_sums(path: Path, archive: Path, prefix: str) -> dict[str, str]:
-    if not path.is_file():
-        raise VerifyError(f"{archive}: not a classical-dynamics archive (no {prefix}/SHA256SUMS inside)")
+def _read_lines(path: Path, label: Path) -> list[str]:
+    try:
+        data = b"".join(io.read_chunks(path, limits.MAX_MANIFEST_BYTES))
+    except (OSError, ValueError) as error:
+        raise VerifyError(f"{label}: {path.name} unreadable ({error})") from None
+    return data.decode("utf-8", errors="replace").splitlines()
+
+
+def _check_sums(label: Path, folder: Path, digests: dict[str, str], complete: bool) -> None:
+    """The files of a results folder against the SHA256SUMS inside it, for an archive (digests: each member's,
+    taken as it was unpacked; complete: every member must be listed) and for a folder (each listed file's,
+    read now). Names are relative to the folder (earlier archives named them with the prefix)."""
     listed = {}
-    for line in path.read_text(errors="replace").splitlines():
+    for line in _read_lines(folder / "SHA256SUMS", label):
         digest, sep, name = line.partition("  ")
         if not sep or not re.fullmatch(r"[0-9a-f]{64}", digest):
-            raise VerifyError(f"{archive}: malformed line in {prefix}/SHA256SUMS: {line[:60]!r}")
-        # Members are named relative to <prefix>/ (earlier archives named them with the prefix).
-        listed[name if name.startswith(prefix + "/") else f"{prefix}/{name}"] = digest
-    return listed
+            raise VerifyError(f"{label}: malformed line in SHA256SUMS: {line[:60]!r}")
+        listed[name.removeprefix(folder.name + "/")] = digest
+    if complete:
+        for name in digests:
+            if name != "SHA256SUMS" and name not in listed:
+                raise VerifyError(f"{label}: member {folder.name}/{name} is not listed in its SHA256SUMS")
+    for name in sorted(listed):
+        digest = digests.get(name)
+        if digest is None and not complete:
+            parts = PurePosixPath(name).parts
+            if PurePosixPath(name).is_absolute() or ".." in parts or not parts:
+                raise VerifyError(f"{label}: SHA256SUMS lists {name[:60]!r}, outside the folder")
+            try:
+                digest = io.sha256_bounded(folder / name)
+            except FileNotFoundError:
+                digest = None
+            except (OSError, ValueError) as error:
+                raise VerifyError(f"{label}: {name} unreadable ({error})") from None
+        if digest is None:
+            raise VerifyError(
+                f"{label}: {folder.name}/{name} is listed in SHA256SUMS but missing (truncated?)"
+            )
+        if digest != listed[name]:
+            raise VerifyError(f"{label}: checksum mismatch for {folder.name}/{name} (tampered or corrupted)")
+
+
+def check_results(folder: Path, archive: Path | None = None) -> list[tuple[str, str]]:
+    """A results folder's scenes, once each is whole: every scene folder's files match the checksums its
+    provenance records (as dist requires to pack it). The one check of archives (after their SHA256SUMS) and
+    folders alike; an unpacked archive's files are named as members of `archive`."""
+    scenes = scenes_of(folder)
+    for study, scene in scenes:
+        try:
+            io.check_result_folder(Path(folder, study, scene))
+        except io.ResultError as error:
+            line = str(error).removesuffix("; rebuild the scene")
+            if archive is not None:
+                line = f"{archive}: member {line.removeprefix(str(folder.parent) + '/')}"
+            raise VerifyError(line) from None
+    return scenes
+
+
+@contextlib.contextmanager
+def _members_named(*unpacked: tuple[Path, Path]):
+    """A refusal that names a file unpacked from an archive (given, into) names it as the archive's member,
+    not by the temporary path that is gone when the command ends."""
+    try:
+        yield
+    except VerifyError as error:
+        line = str(error)
+        for given, into in unpacked:
+            line = line.replace(f"{into}/", f"{given}: member ")
+        raise VerifyError(line) from None
+
+
+def open_results(given: Path, into: Path, check: bool = True) -> Path:
+    """The results folder a user names: a dist archive, checked and unpacked into `into`, or a results folder
+    (or an unpacked archive), checked in place unless check=False (diff compares a folder edited by hand)."""
+    given = Path(given)
+    if not given.is_dir():
+        return unpack_archive(given, into)
+    if not any(given.glob("*/*/summary.json")):
+        raise VerifyError(
+            f"{given}: a folder, but not a results folder (no <study>/<scene>/summary.json) nor an archive"
+        )
+    if check:
+        if (given / "SHA256SUMS").exists():  # an unpacked archive
+            _check_sums(given, given, {}, complete=False)
+        check_results(given)
+    return given
 
 
 # --- rebuilding ----------------------------------------------------------------------------------
@@ -370,8 +520,11 @@ def verify(
     """Rebuild the archive's scenes with the checkout at root and compare: 0 all held, 1 something moved."""
     out = out or sys.stdout
     root = Path(root).resolve()
-    with tempfile.TemporaryDirectory(prefix="classical-dynamics-verify-") as tmp:
-        archived = unpack_archive(archive, Path(tmp, "archive"))  # the archive is checked first
+    with (
+        tempfile.TemporaryDirectory(prefix="classical-dynamics-verify-") as tmp,
+        _members_named((archive, Path(tmp, "archive"))),
+    ):
+        archived = open_results(archive, Path(tmp, "archive"))  # the archive (or folder) is checked first
         if not (root / "workflow" / "scenes").is_dir():
             raise VerifyError(f"{root}: not a checkout of this project (no workflow/scenes)")
         chosen = select(scenes_of(archived), scenes, archive)
@@ -390,12 +543,15 @@ def verify(
                     "quick build; pass --quick or --full"
                 )
         notes = _input_notes(root, provenance)
+        archived_numbers = read_numbers(archived, chosen)  # a bad summary is refused before any rebuild
         rebuilt = Path(tmp, "rebuilt")
         with ThreadPoolExecutor(max(1, cores)) as pool:
             errors = dict(zip(chosen, pool.map(lambda s: run_scene(root, *s, modes[s], rebuilt), chosen)))
         failed = [s for s in chosen if errors[s]]
         ok = [s for s in chosen if not errors[s]]
-        changes = compare(read_numbers(archived, ok), read_numbers(rebuilt, ok))
+        changes = compare(
+            {k: v for k, v in archived_numbers.items() if k[:2] in ok}, read_numbers(rebuilt, ok)
+        )
         kinds = sorted({"quick" if q else "full" for q in modes.values()})
         print(
             f"verify {Path(archive).name}: {len(chosen)} scene{'s' if len(chosen) != 1 else ''} "
@@ -418,7 +574,7 @@ def verify(
         if failed:
             print(f"FAILED: {len(failed)} scene{'s' if len(failed) != 1 else ''} not rebuilt", file=out)
         if not changes and not failed:
-            total = len(read_numbers(archived, ok))
+            total = sum(k[:2] in ok for k in archived_numbers)
             print(
                 f"OK: all {total} numbers of {len(ok)} scene{'s' if len(ok) != 1 else ''} reproduced "
                 "within tolerance",
@@ -459,9 +615,11 @@ def diff(a: Path, b: Path, out=None) -> int:
     with (
         tempfile.TemporaryDirectory(prefix="classical-dynamics-diff-") as tmp_a,
         tempfile.TemporaryDirectory(prefix="classical-dynamics-diff-") as tmp_b,
+        _members_named((a, Path(tmp_a)), (b, Path(tmp_b))),
     ):
-        folder_a = unpack_archive(a, Path(tmp_a)) if Path(a).is_file() else Path(a)
-        folder_b = unpack_archive(b, Path(tmp_b)) if Path(b).is_file() else Path(b)
+        # folders as they are (diff shows what an edit changed); archives checked whole
+        folder_a = open_results(a, Path(tmp_a), check=False)
+        folder_b = open_results(b, Path(tmp_b), check=False)
         scenes_a, scenes_b = set(scenes_of(folder_a)), set(scenes_of(folder_b))
         both = sorted(scenes_a & scenes_b)
         changes = [

@@ -573,6 +573,11 @@ def main(argv=None) -> int:
     except (ClaimFailure, LedgerError) as error:
         print(f"report: {error}", file=sys.stderr)
         return 1
+    except OSError as error:  # a full disk: the last good report stays (written atomically)
+        if (line := io.no_space_line(error)) is None:
+            raise
+        print(f"report: {line}", file=sys.stderr)
+        return 2
     return 0
 
 

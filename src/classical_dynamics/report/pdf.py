@@ -69,5 +69,18 @@ def html_to_pdf(html_path: Path, pdf_path: Path) -> None:
     )  # no temporary folder to leave behind
 
 
+def main(argv=None) -> int:
+    """The PDF job: a full disk is one line, and the last good PDF stays (written atomically)."""
+    html, pdf = argv or sys.argv[1:]
+    try:
+        html_to_pdf(Path(html), Path(pdf))
+    except OSError as error:
+        if (line := io.no_space_line(error)) is None:
+            raise
+        print(f"report: {line}", file=sys.stderr)
+        return 2
+    return 0
+
+
 if __name__ == "__main__":
-    html_to_pdf(Path(sys.argv[1]), Path(sys.argv[2]))
+    sys.exit(main())

@@ -156,21 +156,27 @@ class Results:
         scene file as it was read) travel with the results, so that a copied or unpacked folder links its
         scene."""
         out_dir, timings_dir = Path(out_dir), Path(timings_dir)
-        staged = []
-        for target, files in (
-            (out_dir, self._result_files(provenance, inputs or {})),
-            (timings_dir, self._timing_files(timing_rows)),
-        ):
-            target.parent.mkdir(parents=True, exist_ok=True)
-            for leftover in target.parent.glob(f".{target.name}.*"):  # staged by a run that was killed
-                shutil.rmtree(leftover, ignore_errors=True)
-            staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.", dir=target.parent))
-            for name, data in files.items():
-                (staging / name).write_bytes(data)  # ordinary permissions: the folder is new
-            staged.append((staging, target))
-        try:
+        staged, writing = [], out_dir
+        try:  # a failed write (a full disk) removes what it staged: the folders in place stay as they were
+            for target, files in (
+                (out_dir, self._result_files(provenance, inputs or {})),
+                (timings_dir, self._timing_files(timing_rows)),
+            ):
+                writing = target
+                target.parent.mkdir(parents=True, exist_ok=True)
+                for leftover in target.parent.glob(f".{target.name}.*"):  # staged by a run that was killed
+                    shutil.rmtree(leftover, ignore_errors=True)
+                staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.", dir=target.parent))
+                staged.append((staging, target))
+                for name, data in files.items():
+                    writing = target / name
+                    io.write_new_file(staging / name, data)  # ordinary permissions: the folder is new
             for staging, target in staged:
                 io.replace_directory(staging, target)
+        except OSError as error:
+            if io.no_space_line(error):  # named for the file it was to become, not the staged one removed
+                raise OSError(error.errno, error.strerror, str(writing)) from None
+            raise
         finally:
             for staging, _ in staged:
                 shutil.rmtree(staging, ignore_errors=True)
