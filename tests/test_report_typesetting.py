@@ -287,3 +287,36 @@ def test_a_paragraph_does_not_open_with_one_word_alone(tmp_path):
         ["pdftotext", str(tmp_path / "p.pdf"), "-"], capture_output=True, text=True, check=True
     ).stdout.splitlines()
     assert lines[0].endswith("their sources, Lamb's"), lines[:2]
+
+
+def _columns(page_html):
+    """{(table id, column): [cell texts]} of every table outside the claims and key results (where each row is
+    its own quantity)."""
+    out = {}
+    for attrs, body in re.findall(r"<figure([^>]*)>(.*?)</figure>", page_html, re.S):
+        if "<table" not in body or "claims" in attrs or "key-results" in attrs:
+            continue
+        name = (re.search(r'id="([^"]+)"', attrs) or re.search(r"(.*)", attrs)).group(1)
+        for row in re.findall(r"<tr[^>]*>(.*?)</tr>", body, re.S):
+            for i, cell in enumerate(re.findall(r"<td[^>]*>(.*?)</td>", row, re.S)):
+                text = html_lib.unescape(re.sub(r"<[^>]+>", "", cell)).strip().replace("\u202f", " ")
+                out.setdefault((name, i), []).append(text)
+    return out
+
+
+@pytest.mark.slow
+def test_a_table_column_keeps_one_notation(built_repo):
+    """No column writes 0.0013 in one row and 5.4 × 10⁻¹² in another: once one row needs a power of ten, every
+    row has one (10⁰ left out, so 1 <= |mantissa| < 10 reads alike)."""
+    power = re.compile(r"[−-]?\d(\.\d+)?\s*×\s*10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+")
+    decimal = re.compile(r"[−-]?\d[\d ]*\.\d+")
+    mixed = {}
+    for key, cells in _columns((built_repo / "results/report.html").read_text(encoding="utf-8")).items():
+        plain = [
+            c
+            for c in cells
+            if decimal.fullmatch(c) and not 1 <= abs(float(c.replace("−", "-").replace(" ", ""))) < 10
+        ]
+        if plain and any(power.fullmatch(c) for c in cells):
+            mixed[key] = plain[:3]
+    assert mixed == {}

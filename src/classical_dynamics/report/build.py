@@ -176,6 +176,7 @@ class Report:
             num=self.num,
             value=self.value,
             shortest=shortest,
+            column=format_column,
             claim_digits=claims_mod.shown_digits,
             source_means=claims_mod.source_means,
             unit=unit_html,
