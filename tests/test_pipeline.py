@@ -14,7 +14,7 @@ import yaml
 
 from .conftest import copy_repository, run_env, snakemake
 
-pytestmark = pytest.mark.slow
+pytestmark = [pytest.mark.slow, pytest.mark.pipeline]
 
 HANGING = ["hanging_continuum", "hanging_particles", "hanging_links", "hanging_time_domain"]
 
