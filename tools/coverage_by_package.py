@@ -26,10 +26,13 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--under", type=float, default=None, help="fail if a package is below this percent")
     args = parser.parse_args(argv)
-    subprocess.run([sys.executable, "-m", "coverage", "combine", "--quiet"], check=False)
+    subprocess.run([sys.executable, "-m", "coverage", "combine", "--append", "--quiet"], check=False)
     with tempfile.TemporaryDirectory() as scratch:
         out = Path(scratch) / "coverage.json"
-        subprocess.run([sys.executable, "-m", "coverage", "json", "--quiet", "-o", str(out)], check=True)
+        # only this checkout's src/: tests also run copies of it in temporary folders, gone by now
+        include = str(Path(__file__).resolve().parents[1] / "src" / "*")
+        command = [sys.executable, "-m", "coverage", "json", "--quiet", "--include", include, "-o", str(out)]
+        subprocess.run(command, check=True)
         files = json.loads(out.read_text())["files"]
     totals = defaultdict(lambda: [0, 0, 0, 0])  # branches, covered branches, statements, covered statements
     for path, data in files.items():
