@@ -12,7 +12,7 @@ CORES     ?= all
 DEBS_REPORT := libpango-1.0-0 libpangoft2-1.0-0 fonts-dejavu-core
 DEBS_TEST   := $(DEBS_REPORT) chromium poppler-utils
 
-.PHONY: report test test-slurm lint format venv venv-test lock bench dist clean system-report system-test
+.PHONY: report test test-slurm coverage lint format venv venv-test lock bench dist clean system-report system-test
 
 report: venv system-report
 	$(BIN)/snakemake --cores $(CORES)
@@ -27,6 +27,12 @@ test: venv-test system-test
 test-slurm: venv-test system-test
 	tools/local-slurm up
 	$(BIN)/python -m pytest -m slurm
+
+# Branch coverage of src/ by the fast tests (everything but the pipeline builds), printed per package.
+coverage: venv-test
+	rm -f .coverage .coverage.*
+	$(BIN)/python -m coverage run -m pytest -m "not pipeline and not slurm" -q
+	$(BIN)/python tools/coverage_by_package.py
 
 # One format and one lint for the tree (ruff, configured in pyproject.toml): `make format` applies both's fixes.
 lint: venv-test

@@ -84,12 +84,15 @@ def scratch(built_repo, tmp_path):
 
 
 def pytest_collection_modifyitems(items):
-    """Tests that need the shared build run last: while one worker builds it, the others run everything
-    else."""
+    """Tests that need the shared build are pipeline tests, and run last: while one worker builds it, the
+    others run everything else."""
 
     def needs_build(item):
         return bool({"built_repo", "scratch"} & set(getattr(item, "fixturenames", ())))
 
+    for item in items:
+        if needs_build(item):  # fixturenames is the transitive closure: a fixture built on the build counts
+            item.add_marker(pytest.mark.pipeline)
     items.sort(key=needs_build)  # stable: the order within each group is kept
 
 

@@ -100,6 +100,7 @@ sys.exit(status)
 
 
 @pytest.mark.slow
+@pytest.mark.pipeline  # a real scene job of each study
 @pytest.mark.parametrize("study", sorted(STUDIES))
 def test_every_module_a_real_scene_job_imports_is_in_its_digest(study, tmp_path):
     """Run one scene as its job does and list the package's modules it imported: each must be in what its

@@ -12,17 +12,37 @@ from classical_dynamics.report import assets, claims
 from classical_dynamics.report.bib import read_bib
 from classical_dynamics.report.numbering import Numbering
 
+# A write that fails after its first 4096 bytes are on disk, as on a full disk: the file-size limit makes the
+# kernel refuse the rest (EFBIG; SIGXFSZ ignored). In a child, so the limit is not the test process's.
+WRITE_PAST_A_SIZE_LIMIT = """
+import resource, signal, sys
+from classical_dynamics import io
+signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+resource.setrlimit(resource.RLIMIT_FSIZE, (4096, resource.getrlimit(resource.RLIMIT_FSIZE)[1]))
+try:
+    io.atomic_write_bytes(sys.argv[1], b"x" * 100000)
+except OSError as error:
+    print(error.errno)
+"""
+
 
 def test_atomic_write_leaves_nothing_half_written(tmp_path):
+    import errno
+    import subprocess
+    import sys
+
+    from .conftest import ROOT, run_env
+
     target = tmp_path / "summary.json"
     io.write_json(target, {"a": 1})
-
-    class Boom:
-        def __float__(self):
-            raise RuntimeError("interrupted")
-
-    with pytest.raises(Exception):
-        io.atomic_write_bytes(target, Boom())  # fails mid-write
+    done = subprocess.run(
+        [sys.executable, "-c", WRITE_PAST_A_SIZE_LIMIT, str(target)],
+        env=run_env(ROOT),
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert done.stdout.strip() == str(errno.EFBIG), done.stderr  # it failed mid-write, bytes already out
     assert io.read_json(target) == {"a": 1}
     assert sorted(p.name for p in tmp_path.iterdir()) == ["summary.json"]
     assert oct(target.stat().st_mode & 0o777) != oct(0o600)

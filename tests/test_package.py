@@ -12,7 +12,7 @@ from classical_dynamics.studies import STUDIES
 
 from .conftest import ROOT, copy_repository
 
-pytestmark = pytest.mark.slow
+pytestmark = [pytest.mark.slow, pytest.mark.pipeline]
 
 
 @pytest.fixture(scope="module")

@@ -14,7 +14,7 @@ import yaml
 
 from .conftest import copy_repository, run_env, snakemake
 
-pytestmark = pytest.mark.slow
+pytestmark = [pytest.mark.slow, pytest.mark.pipeline]
 
 HANGING = ["hanging_continuum", "hanging_particles", "hanging_links", "hanging_time_domain"]
 
@@ -584,12 +584,26 @@ def test_a_build_killed_mid_job_resumes_to_the_same_results(scratch, signal_name
         stderr=subprocess.DEVNULL,
         start_new_session=True,
     )
+
+    def job_running():  # the scene's job command in the build's session (its client, or the job itself)
+        for stat in Path("/proc").glob("[0-9]*/stat"):
+            try:
+                session = int(stat.read_text().rsplit(")", 1)[1].split()[3])
+                cmdline = (stat.parent / "cmdline").read_bytes()
+            except (OSError, ValueError, IndexError):
+                continue
+            if session == build.pid and b"hanging_links" in cmdline and b"snakemake" not in cmdline:
+                return True
+        return False
+
     deadline = time.monotonic() + 120
-    while not log.exists() and time.monotonic() < deadline:  # the scene's job has started
-        time.sleep(0.05)
-    time.sleep(0.5)
+    while not (log.exists() and job_running()) and time.monotonic() < deadline:
+        time.sleep(0.02)
+    assert job_running(), "the scene's job never started"
     os.killpg(build.pid, getattr(signal, signal_name))
     build.wait(timeout=60)
+    # the kill hit the job mid-run: it had started (above) and left no finished result
+    assert not (target / "summary.json").exists(), "the job had finished before the kill: nothing was tested"
     if signal_name == "SIGKILL":
         snakemake(scratch, "--unlock")
     snakemake(scratch, "-c", "1", "results/chains/hanging_links", "--config", "quick=1")

@@ -426,7 +426,8 @@ def test_the_good_scene_and_every_shipped_scene_validate(tmp_path):
 
 
 def test_lamb_examples_from_the_model():
-    """Ex. VI.5 from the torque routine equals 3(C - A) sin d cos d/(E rho); Ex. XI.1's couple is C n psi'."""
+    """Ex. VI.5 from the torque routine and Ex. XI.1 from Euler's equations, each against its closed form
+    written out here from the example's data (not the module's own closed-form number) and Lamb's answer."""
     from classical_dynamics.studies.precession import examples
 
     class Collect:
@@ -440,9 +441,11 @@ def test_lamb_examples_from_the_model():
     examples.moon_line_offset(
         r, {"C_minus_A_over_Ea2": 0.00109, "moon_distance_radii": 60, "declination_deg": 28}
     )
+    d = np.radians(28)
     assert r.numbers["moon_line_offset_radii"] == pytest.approx(
-        r.numbers["moon_line_offset_closed_form_radii"], rel=1e-13
+        3 * 0.00109 * np.sin(d) * np.cos(d) / 60, rel=1e-13
     )
+    assert r.numbers["moon_line_offset_radii"] == pytest.approx(0.0000225, rel=0.01)  # Lamb's answer
     examples.gyroscope_couple(
         r,
         {
@@ -454,6 +457,8 @@ def test_lamb_examples_from_the_model():
             "transverse_over_axial": 0.3,
         },
     )
-    assert r.numbers["gyroscope_couple_ft_lb"] == pytest.approx(
-        r.numbers["gyroscope_couple_closed_form_ft_lb"], rel=1e-13
-    )
+    C = (300 * 1.0**2 + 35 * 2.5**2) / 32.2  # slug ft^2
+    assert r.numbers["gyroscope_axial_moment_slug_ft2"] == pytest.approx(C, rel=1e-14)
+    # C n psi' with n = 2 pi 20 /s, psi' = 2 pi/10 /s
+    assert r.numbers["gyroscope_couple_ft_lb"] == pytest.approx(C * 40 * np.pi * 0.2 * np.pi, rel=1e-13)
+    assert r.numbers["gyroscope_couple_ft_lb"] == pytest.approx(1270, rel=0.005)  # Lamb: [1270 ft.-lbs.]

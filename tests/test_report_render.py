@@ -9,7 +9,7 @@ from PIL import Image
 
 from .test_report_typesetting import CHROMIUM, FLAGS
 
-pytestmark = pytest.mark.slow
+pytestmark = [pytest.mark.slow, pytest.mark.pipeline]
 
 
 def test_html_in_a_real_browser(built_repo, tmp_path):

@@ -13,7 +13,7 @@ import pytest
 from .conftest import snakemake
 from .test_code_dependencies import stale_scenes
 
-pytestmark = pytest.mark.slow
+pytestmark = [pytest.mark.slow, pytest.mark.pipeline]
 SCENE = ("chains", "loaded_string")
 
 

@@ -315,6 +315,23 @@ def test_a_bad_scene_stops_only_the_commands_that_need_it():
     assert needed_scenes(["results/chains/unknown_product"], [], scenes)("chains", "spring_chain")
 
 
+# The scene job with its study's work replaced by 200 MB held and a wait on stdin, which the test holds open:
+# the job runs until a limit stops it, however fast the machine (a real scene once had to outlast 1.2 s).
+JOB_THAT_WAITS = """
+import sys
+from classical_dynamics import scene_job
+from classical_dynamics.studies import study_module
+
+def wait_for_the_test(scene, quick=False):
+    held = b"x" * (200 * 2**20)  # resident: every page written
+    sys.stdin.read()  # the test never writes: only a limit ends this
+    raise SystemExit(f"the job was not stopped ({len(held)} bytes held)")
+
+study_module(sys.argv[1]).run = wait_for_the_test
+sys.exit(scene_job.main(sys.argv[1:]))
+"""
+
+
 @pytest.mark.parametrize(
     "limit,says",
     [
@@ -324,24 +341,26 @@ def test_a_bad_scene_stops_only_the_commands_that_need_it():
 )
 def test_a_job_past_its_limit_is_stopped_in_one_line_and_writes_nothing(tmp_path, limit, says):
     scene = ROOT / "workflow/scenes/chains/hanging_particles.yaml"
-    result = subprocess.run(
+    with subprocess.Popen(
         [
             sys.executable,
-            "-m",
-            "classical_dynamics",
-            "run",
+            "-c",
+            JOB_THAT_WAITS,
             "chains",
             str(scene),
             str(tmp_path / "out"),
-            str(tmp_path / "timings"),
+            str(tmp_path / "t"),
             limit,
         ],
-        capture_output=True,
+        stdin=subprocess.PIPE,  # held open until the job has exited
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
         text=True,
-        timeout=120,
-    )
-    assert result.returncode == 3
-    assert result.stderr.count("\n") == 1 and says in result.stderr and result.stderr.startswith(str(scene))
+    ) as job:
+        status = job.wait(timeout=120)
+        stderr = job.stderr.read()
+    assert status == 3, stderr
+    assert stderr.count("\n") == 1 and says in stderr and stderr.startswith(str(scene))
     assert list(tmp_path.iterdir()) == []
 
 

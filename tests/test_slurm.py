@@ -16,7 +16,7 @@ from benchmarks.job_resources import used
 from .conftest import copy_repository, snakemake
 from .test_pipeline import result_files
 
-pytestmark = [pytest.mark.slurm, pytest.mark.slow]
+pytestmark = [pytest.mark.slurm, pytest.mark.slow, pytest.mark.pipeline]
 
 PROFILE = ("--profile", "workflow/profiles/slurm")
 

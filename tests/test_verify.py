@@ -254,6 +254,7 @@ def test_tolerance_rule():
 
 
 @pytest.mark.slow
+@pytest.mark.pipeline
 def test_the_snakemake_target_verifies_and_writes_only_its_log(built, sandbox):
     from .conftest import snakemake
 

@@ -264,15 +264,8 @@ def forced(results, built, spec):
         note="the sum at $\\sigma = 0$ against the statical displacement $K^{-1}F$",
     )
 
-    # Near the gravest resonance the response grows as 1/(sigma_1^2 - sigma^2), its shape the first mode's.
-    # sigma = sigma_1 (1 - delta) rounds sigma^2 to eps, so forming K - sigma^2 M loses eps/delta of the
-    # answer; in normal coordinates the detuning stays exact: sigma_1^2 - sigma^2 = sigma_1^2 delta (2 -
-    # delta).
     def detuned(delta):
-        s = sigma[0] * (1 - delta)
-        gap = sigma**2 - s**2
-        gap[0] = sigma[0] ** 2 * delta * (2 - delta)
-        return phi @ (modal_force / gap), s
+        return detuned_response(sigma, phi, modal_force, delta)
 
     residue = phi[:, 0] * modal_force[0]
     exact_sigma1 = _exact_lowest(built)
@@ -330,6 +323,19 @@ def forced(results, built, spec):
     )
     _transient(results, built, sigma, phi, modal_force, spec)
     _response_figure(results, grid, direct, static, sigma)
+
+
+def detuned_response(sigma, phi, modal_force, delta):
+    """Art. 95's sum over normal coordinates at sigma = sigma_1 (1 - delta): (response, sigma).
+
+    Near the gravest resonance the response grows as 1/(sigma_1^2 - sigma^2), its shape the first mode's.
+    sigma = sigma_1 (1 - delta) rounds sigma^2 to eps, so forming K - sigma^2 M loses eps/delta of the
+    answer; in normal coordinates the detuning stays exact: sigma_1^2 - sigma^2 = sigma_1^2 delta (2 - delta).
+    """
+    s = sigma[0] * (1 - delta)
+    gap = sigma**2 - s**2
+    gap[0] = sigma[0] ** 2 * delta * (2 - delta)
+    return phi @ (modal_force / gap), s
 
 
 def _exact_lowest(built):

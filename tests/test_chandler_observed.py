@@ -1,0 +1,63 @@
+"""The observed polar motion study (studies/chandler/observed.py): a series built here with a known Chandler
+period, amplitudes and drift comes back from the whole study step; the real IERS series gives Vicente and
+Wilson's period (433.1 +- 1.7 d, 1997)."""
+
+import numpy as np
+import pytest
+
+from classical_dynamics.models import earth
+from classical_dynamics.studies import validate
+from classical_dynamics.studies.chandler import observed
+from classical_dynamics.studies.chandler import polar_motion as pm
+from classical_dynamics.studies.results import Results
+
+from .conftest import ROOT
+
+SCENE = ROOT / "workflow/scenes/chandler/observed.yaml"
+
+
+def run(scene):
+    results = Results("chandler", scene.name, scene.title)
+    observed.run(scene, results, quick=True)
+    return {name: entry["value"] for name, entry in results.numbers.items()}, results
+
+
+def test_a_series_of_known_terms_comes_back(monkeypatch):
+    t = np.arange(-6.0, 18.0, 1.0 / 365.25)  # daily, 1994 to 2018, years from J2000
+    period_days, chandler, annual = 433.0, 150.0, 90.0
+    f_c = earth.JULIAN_YEAR_DAYS / period_days
+    drift = 3.5 * np.exp(1j * np.radians(-80.0))  # mas/yr
+    m = (
+        40.0
+        + drift * t
+        + chandler * np.exp(2j * np.pi * f_c * t + 0.3j)
+        + annual * np.exp(2j * np.pi * pm.ANNUAL_CPY * t)
+        + 10.0 * np.exp(-2j * np.pi * pm.ANNUAL_CPY * t)
+    )
+    rng = np.random.default_rng(0)
+    m = m + rng.normal(0.0, 1.0, t.size) + 1j * rng.normal(0.0, 1.0, t.size)  # 1 mas noise each
+    monkeypatch.setattr(pm, "read_eop", lambda path, start, end: (t, m))
+    numbers, results = run(validate("chandler", SCENE))
+    assert numbers["observed_chandler_period_days"] == pytest.approx(period_days, abs=0.05)
+    assert numbers["observed_chandler_amplitude_mas"] == pytest.approx(chandler, rel=1e-3)
+    assert numbers["observed_annual_amplitude_mas"] == pytest.approx(annual, rel=1e-3)
+    assert numbers["observed_annual_retrograde_mas"] == pytest.approx(10.0, abs=0.05)
+    assert numbers["mean_pole_drift_mas_per_year"] == pytest.approx(3.5, rel=1e-2)
+    assert numbers["mean_pole_drift_toward_longitude_deg"] == pytest.approx(-80.0, abs=0.5)
+    assert numbers["residual_rms_mas"] == pytest.approx(np.sqrt(2.0), rel=0.05)  # the noise put in
+    assert numbers["samples"] == t.size and numbers["first_year"] == pytest.approx(1994.0)
+    assert numbers["difference_from_vicente_wilson_sigmas"] == pytest.approx((433.0 - 433.1) / 1.7, abs=0.05)
+    thirds = results.tables["period_by_thirds"][0]
+    np.testing.assert_allclose(thirds.chandler_period_days, period_days, atol=0.5)
+
+
+def test_the_iers_series_gives_the_published_period(tmp_path):
+    import yaml
+
+    data = yaml.safe_load(SCENE.read_text())
+    data["observation"]["start_year"] = 1994.0  # thirty years: five beats of the two wobbles, and quick
+    (tmp_path / "observed.yaml").write_text(yaml.safe_dump(data))
+    numbers, _ = run(validate("chandler", tmp_path / "observed.yaml"))
+    # Vicente and Wilson (1997): 433.1 +- 1.7 d; three of their sigmas
+    assert numbers["observed_chandler_period_days"] == pytest.approx(433.1, abs=3 * 1.7)
+    assert numbers["first_year"] == pytest.approx(1994.0, abs=0.01)

@@ -1,0 +1,118 @@
+"""Direct tests of small modules the pipeline uses: provenance, the effect registry, figure data. Each
+against what the test itself knows: files it wrote, git and /proc read here, the arrays it plotted."""
+
+import hashlib
+import subprocess
+from importlib import metadata
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+
+from classical_dynamics import provenance
+from classical_dynamics.scenes.effects import EffectRegistry
+from classical_dynamics.studies.figure_data import figure_data
+
+from .conftest import ROOT
+
+
+def test_provenance_against_git_metadata_and_hashlib(tmp_path):
+    path = tmp_path / "scene.yaml"
+    path.write_bytes(b"title: x\n")
+    assert provenance.sha256_file(path) == hashlib.sha256(b"title: x\n").hexdigest()
+    versions = provenance.package_versions()
+    assert versions["numpy"] == metadata.version("numpy") and versions["classical-dynamics"] == "0.1.0"
+    assert set(provenance.KEY_PACKAGES) < set(versions)
+    head = subprocess.run(["git", "rev-parse", "HEAD"], cwd=ROOT, capture_output=True, text=True).stdout
+    state = provenance.git_state()
+    assert state["commit"] == head.strip() and isinstance(state["dirty"], bool)
+    assert provenance.git(tmp_path, "rev-parse", "HEAD") is None  # not a checkout
+    assert provenance.git(tmp_path, "no-such-command") is None
+    m = provenance.machine()
+    assert m["cores"] >= 1 and m["python"].count(".") == 2
+    cpuinfo = open("/proc/cpuinfo").read()
+    assert m["cpu_model"] in cpuinfo
+    stamp = provenance.software_stamp()
+    assert (
+        stamp.startswith(f"{m['cpu_model']}, {m['cores']} cores;") and f"numpy {versions['numpy']}" in stamp
+    )
+
+
+def test_package_versions_names_a_missing_package(monkeypatch):
+    monkeypatch.setattr(provenance, "KEY_PACKAGES", ("numpy", "no-such-package-here"))
+    provenance.package_versions.cache_clear()
+    try:
+        assert provenance.package_versions()["no-such-package-here"] == "not installed"
+    finally:
+        provenance.package_versions.cache_clear()
+
+
+def test_the_registry_builds_the_listed_effects_only_in_order():
+    registry = EffectRegistry("demo")
+    built = []
+
+    @registry.register("b", "torque", "B")
+    def build_b(params, context):
+        built.append("b")
+        return ("b", params, context)
+
+    @registry.register("a", "force", "A")
+    def build_a(params, context):
+        built.append("a")
+        return ("a", params, context)
+
+    @registry.register("never", "force", "N")
+    def build_never(params, context):
+        raise AssertionError("an effect not listed was built")
+
+    assert registry.names() == ["a", "b", "never"]
+    assert registry["a"].kind == "force" and registry["b"].summary == "B"
+    components = registry.assemble({"b": {"k": 1}, "a": None}, "ctx")
+    assert list(components) == ["b", "a"] and built == ["b", "a"]
+    assert components == {"b": ("b", {"k": 1}, "ctx"), "a": ("a", {}, "ctx")}  # None is no parameters
+    with pytest.raises(ValueError, match="'a' registered twice in demo"):
+        registry.register("a", "force", "again")(build_a)
+    with pytest.raises(KeyError):
+        registry.assemble({"unknown": {}}, None)
+
+
+def test_figure_data_is_what_was_drawn():
+    x = np.linspace(0.0, 1.0, 5)
+    fig, (left, right) = plt.subplots(1, 2)
+    left.plot(x, x**2, label="square")
+    left.plot([], [])  # nothing drawn: no rows, and no place in the numbering
+    left.plot(x, -x)  # no label: named by kind and place
+    left.set_xlabel("t")
+    left.set_title("one")
+    right.scatter([1.0, 2.0], [3.0, 4.0], label="dots")
+    right.plot([0.5], [0.5], "o")
+    X, Y = np.meshgrid(np.linspace(-1, 1, 21), np.linspace(-1, 1, 21))
+    right.contour(X, Y, X**2 + Y**2, levels=[0.25])
+    fig.colorbar(right.collections[0], ax=right)
+    data, axes = figure_data(fig)
+    plt.close(fig)
+    assert axes[0] == {"panel": 1, "title": "one", "x": "t", "y": ""} and len(axes) == 2  # no colorbar
+    square = data[data.series == "square"]
+    np.testing.assert_array_equal(square.x, x)
+    np.testing.assert_array_equal(square.y, x**2)
+    np.testing.assert_array_equal(data[data.series == "line 2"].y, -x)
+    right_rows = data[data.panel == 2]
+    dots = right_rows[right_rows.series == "dots"]
+    assert list(zip(dots.x, dots.y)) == [(1.0, 3.0), (2.0, 4.0)]
+    assert list(right_rows[right_rows.series.str.startswith("points")].x) == [0.5]
+    ring = right_rows[right_rows.series.str.contains("level 0.25")]
+    assert len(ring) > 10
+    # the circle r = 1/2, to marching squares on a 0.1 grid (r^2 interpolated linearly along each edge)
+    np.testing.assert_allclose(np.hypot(ring.x, ring.y), 0.5, atol=5e-3)
+    assert set(data.panel) == {1, 2}
+
+
+def test_figure_data_of_an_empty_figure():
+    fig = plt.figure()
+    fig.add_subplot()
+    data, axes = figure_data(fig)
+    plt.close(fig)
+    assert list(data.columns) == ["panel", "series", "x", "y"] and data.empty and len(axes) == 1
