@@ -91,6 +91,24 @@ def test_splitting_entry_converges_at_its_order_to_the_elliptic_solution():
     assert list(frame.evaluations) == [n * k for n, k in zip(frame.steps, [5, 5, 5, 15, 15, 15])]
 
 
+def test_a_splittings_order_is_fitted_against_the_step_it_took():
+    """Over a span of 5, h = 0.1 and 0.05 both round to 99 steps (a multiple of 99): fitted against the
+    nominal h the order-2 splitting would read as order 1 or less; against span/steps it reads 2."""
+    I = np.array([1.0, 2.0, 3.0])
+    m0 = I * np.array([0.4, 0.2, 0.9])
+    case = wp.Case(
+        "free body",
+        Problem(oscillator, m0 / I, (0.0, 5.0), np.array([1.0])),
+        lambda t: references.free_rigid_body(I, m0, np.asarray(t)),
+        {},
+    )
+    two = wp.splitting(case, I, 2)
+    two.settings = [0.1, 0.05, 0.0125]  # 99, 99 and 396 steps
+    frame = wp.sweep(case, [two], repeats=1, budget_s=0.0)
+    assert list(frame.steps) == [99, 99, 396]
+    assert wp.fitted_orders(frame)["splitting, order 2"] == pytest.approx(2.0, abs=0.1)
+
+
 def test_fitted_orders_of_errors_built_to_an_order():
     h = np.array([0.1, 0.05, 0.02, 0.01])
     frame = pd.DataFrame(
@@ -98,6 +116,7 @@ def test_fitted_orders_of_errors_built_to_an_order():
             "method": ["a"] * 4 + ["b"] * 4 + ["c"] * 4 + ["d"] * 2,
             "kind": ["step"] * 8 + ["tolerance"] * 4 + ["step"] * 2,
             "setting": np.concatenate([h, h, h, [0.1, 0.05]]),
+            "steps": np.round(1.0 / np.concatenate([h, h, h, [0.1, 0.05]])).astype(int),  # a span of 1
             "error_final": np.concatenate([3 * h**2, 0.5 * h**3, h, [1e-16, 1e-3]]),
         }
     )
