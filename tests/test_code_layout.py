@@ -45,3 +45,36 @@ def test_no_module_imports_itself_back():
         in graph["classical_dynamics.studies.self_excited.accuracy"]
     )
     assert circles(graph) == []
+
+
+# docs/design.md's layers, lowest first; the rest of the package's top (io, formatting, units, ...)
+# is the base, below them all, and the entry points are above them all.
+LAYERS = {"solvers": 1, "scenes": 2, "models": 3, "studies": 4, "report": 5}
+ENTRY_POINTS = {"cli", "verify", "scene_job", "jobserver", "__main__"}
+
+
+def layer(module):
+    parts = module.split(".")
+    if len(parts) == 1:
+        return None  # the package itself
+    return 6 if parts[1] in ENTRY_POINTS else LAYERS.get(parts[1], 0)
+
+
+def upward_imports(graph):
+    return sorted(
+        (a, b)
+        for a, targets in graph.items()
+        for b in targets
+        if layer(a) is not None and layer(b) is not None and layer(b) > layer(a)
+    )
+
+
+def test_imports_point_down_the_layers():
+    """A solver never imports a model, a model never a study, a study never the report (the report reads
+    results files), and nothing below the entry points imports one."""
+    assert upward_imports(import_graph()) == []
+
+
+def test_the_layer_check_finds_an_upward_import():
+    graph = {"p.solvers.ode": {"p.models.earth"}, "p.models.earth": set(), "p.io": {"p.cli"}, "p.cli": set()}
+    assert upward_imports(graph) == [("p.io", "p.cli"), ("p.solvers.ode", "p.models.earth")]

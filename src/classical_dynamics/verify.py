@@ -1,6 +1,6 @@
 """Check a cited number: rebuild a dist archive and compare every number with it, or compare two builds.
 
-Both read only the results contract (design.md): the numbers of results/<study>/<scene>/summary.json
+Both read only the results contract (docs/design.md): the numbers of results/<study>/<scene>/summary.json
 (headline numbers and the hard cases' measured values) and, for notes, provenance.json. Nothing is
 written outside temporary folders.
 

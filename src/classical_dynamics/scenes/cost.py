@@ -18,13 +18,14 @@ from pathlib import Path
 
 import yaml
 
-from ..models.earth import JULIAN_YEAR_DAYS
 from .loader import SceneError, lookup
 
 EPS = 2.220446049250313e-16  # double precision: 1 + EPS is the next number after 1
 BASE_MEMORY_MB = 1000  # the interpreter with numpy, scipy, numba and matplotlib loaded: 200-320 MB seen
 TIME_MARGIN, MEMORY_MARGIN = 10, 2  # a job may take this many times its estimate before it is stopped
 MIN_TIME_LIMIT_S = 300  # imports, numba compilation and a slow machine fit in this
+
+SECONDS_PER_JULIAN_YEAR = 86400 * 365.25  # how an estimate is said; scenes sit below models (no import)
 
 
 @dataclass(frozen=True)
@@ -146,4 +147,4 @@ def _duration(seconds: float) -> str:
         return f"{seconds:.0f} s"
     if seconds < 86400 * 365:
         return f"{seconds / 3600:.3g} h"
-    return f"{seconds / (86400 * JULIAN_YEAR_DAYS):.2g} years".replace("e+0", "e").replace("e+", "e")
+    return f"{seconds / SECONDS_PER_JULIAN_YEAR:.2g} years".replace("e+0", "e").replace("e+", "e")

@@ -1,4 +1,4 @@
-"""What a study run produces, and how it is written (results contract of design.md).
+"""What a study run produces, and how it is written (the results contract of docs/design.md).
 
 results/<study>/<scene>/summary.json, provenance.json, *.csv, *.svg     deterministic
 results/<study>/timings/<scene>/*.csv, *.svg                            measured times
