@@ -243,17 +243,36 @@ def run(args: list[str], tmpdir: Path, env: dict | None = None) -> Outcome:
     env = {**os.environ, **(env or {}), "TMPDIR": str(tmpdir)}
     env["PYTHONPATH"] = str(root / "src") + os.pathsep + env.get("PYTHONPATH", "")
     start = time.perf_counter()
-    with tempfile.TemporaryFile("w+") as out, tempfile.TemporaryFile("w+") as err:
-        child = subprocess.Popen(
-            [sys.executable, "-m", "classical_dynamics", *args], stdout=out, stderr=err, env=env
+    with (
+        tempfile.TemporaryFile("w+") as out,
+        tempfile.TemporaryFile("w+") as err,
+        tempfile.NamedTemporaryFile("r") as peak,
+    ):
+        # The command is started by a small interpreter, not by this process: a child forked from a process
+        # reports that process's resident size at the fork as its own peak (Linux copies the high-water mark),
+        # so from a 650 MB test worker any command would read 650 MB.
+        child = subprocess.run(
+            [sys.executable, "-c", MEASURE, peak.name, sys.executable, "-m", "classical_dynamics", *args],
+            stdout=out,
+            stderr=err,
+            env=env,
         )
-        _, status, usage = os.wait4(child.pid, 0)  # the child's own rusage: its peak memory
-        child.returncode = os.waitstatus_to_exitcode(status)
         seconds = time.perf_counter() - start
         out.seek(0)
         err.seek(0)
         stdout, stderr = out.read(), err.read()
-    return Outcome(child.returncode, stdout, stderr, seconds, usage.ru_maxrss / 1024)
+        peak_kb = float(peak.read() or "nan")
+    return Outcome(child.returncode, stdout, stderr, seconds, peak_kb / 1024)
+
+
+# Run argv[2:], pass on its exit code, and write its own peak resident memory (kB) to argv[1].
+MEASURE = (
+    "import os, sys, subprocess\n"
+    "child = subprocess.Popen(sys.argv[2:])\n"
+    "_, status, usage = os.wait4(child.pid, 0)\n"
+    "open(sys.argv[1], 'w').write(str(usage.ru_maxrss))\n"
+    "sys.exit(os.waitstatus_to_exitcode(status))\n"
+)
 
 
 def digest(folder: Path) -> str:

@@ -60,6 +60,16 @@ def test_svg_is_deterministic():
     assert draw() == draw()
 
 
+def test_a_count_from_numpy_prints_exactly():
+    """A table's integer column arrives as numpy.int64: 16, never 1.600 × 10¹, also beside powers of ten."""
+    import numpy as np
+
+    from classical_dynamics.formatting import format_column
+
+    assert format_number(np.int64(16)) == "16"
+    assert format_column([np.int64(16), 2.5e-5])[0] == "16"
+
+
 @pytest.mark.parametrize(
     "value,sig,text",
     [

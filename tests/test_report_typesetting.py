@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from classical_dynamics.figure_style import MAX_HEIGHT_IN, MIN_FONT_PT, TEXT_WIDTH_IN
+from classical_dynamics.figure_style import GRID_MAX_HEIGHT_IN, MAX_HEIGHT_IN, MIN_FONT_PT, TEXT_WIDTH_IN
 from classical_dynamics.inline_math import MathError, render_text
 
 CHROMIUM = "/usr/bin/chromium"
@@ -234,12 +234,13 @@ def test_identifiers_and_commands_break_only_at_separators(built_repo, pdf_text)
     assert [p for p in sorted(pieces) if p not in pdf_text] == []
 
 
-def _figures(page_html):
-    for uri in re.findall(
-        r'<figure id="[^"]+" class="figure">(?:<a [^>]*>)?<img src="data:image/svg\+xml;base64,([^"]+)"',
+def _figures(page_html, with_ids=False):
+    for label, uri in re.findall(
+        r'<figure id="([^"]+)" class="figure">(?:<a [^>]*>)?<img src="data:image/svg\+xml;base64,([^"]+)"',
         page_html,
     ):
-        yield base64.b64decode(uri).decode("utf-8")
+        svg = base64.b64decode(uri).decode("utf-8")
+        yield (label, svg) if with_ids else svg
 
 
 @pytest.mark.slow
@@ -254,9 +255,10 @@ def test_figure_text_is_legible_at_print_size(built_repo):
     """Every text of every figure at least 7 pt as the PDF prints it (scaled into the text block)."""
     page = (built_repo / "results/report.html").read_text(encoding="utf-8")
     small = []
-    for svg in _figures(page):
+    for label, svg in _figures(page, with_ids=True):
         width, height = (float(v) for v in re.search(r'width="([\d.]+)pt" height="([\d.]+)pt"', svg).groups())
-        scale = min(1.0, TEXT_WIDTH_IN * 72 / width, MAX_HEIGHT_IN * 72 / height)
+        cap = GRID_MAX_HEIGHT_IN if label.startswith("fig:self-excited-grid-") else MAX_HEIGHT_IN  # print.css
+        scale = min(1.0, TEXT_WIDTH_IN * 72 / width, cap * 72 / height)
         for group in re.findall(r'<g id="text_\d+">(.*?)</g>\s*</g>', svg, re.S):
             label = re.search(r"<!-- (.*?) -->", group)
             sizes = [100 * float(s) for s in re.findall(r"scale\(([\d.]+) -[\d.]+\)", group)]

@@ -9,7 +9,7 @@ import pandas as pd
 import pytest
 
 from classical_dynamics.cli import main as cli
-from classical_dynamics.figure_style import MAX_HEIGHT_IN, MIN_FONT_PT, TEXT_WIDTH_IN
+from classical_dynamics.figure_style import GRID_MAX_HEIGHT_IN, MIN_FONT_PT, TEXT_WIDTH_IN
 from classical_dynamics.studies.self_excited import gallery
 
 from .conftest import ROOT
@@ -123,7 +123,7 @@ def test_grids_fit_the_page_and_their_text_is_legible(built):
     for path in sorted((built / "gallery").glob("grid_*.svg")):
         svg = path.read_text()
         width, height = (float(v) for v in re.search(r'width="([\d.]+)pt" height="([\d.]+)pt"', svg).groups())
-        assert width <= TEXT_WIDTH_IN * 72 and height <= MAX_HEIGHT_IN * 72
+        assert width <= TEXT_WIDTH_IN * 72 and height <= GRID_MAX_HEIGHT_IN * 72
         for group in re.findall(r'<g id="text_\d+">(.*?)</g>\s*</g>', svg, re.S):
             sizes = [100 * float(s) for s in re.findall(r"scale\(([\d.]+) -[\d.]+\)", group)]
             assert not sizes or max(sizes) >= MIN_FONT_PT - 0.05

@@ -12,8 +12,9 @@ from cycler import cycler
 TEXT_WIDTH_IN = 174 / 25.4  # A4 less 18 mm margins: the widest a figure prints
 # a full-width figure: room for the saved SVG's pad and labels past the axes
 FULL_WIDTH_IN = TEXT_WIDTH_IN - 0.2
-# print.css caps a figure's height at 150 mm: a grid of four rows of panels keeps its text
-MAX_HEIGHT_IN = 150 / 25.4
+MAX_HEIGHT_IN = 95 / 25.4  # print.css caps a figure's height at 95 mm
+# ... and a grid of phase portraits (fig:self-excited-grid-*) at 150 mm: four rows of panels keep their text
+GRID_MAX_HEIGHT_IN = 150 / 25.4
 PAIR_WIDTH_IN = 0.4 * TEXT_WIDTH_IN  # print.css: a figure paired with a table (.pair) takes 40 % of the width
 MIN_FONT_PT = 7.0  # the smallest text allowed at print size
 

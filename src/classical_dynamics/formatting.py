@@ -7,6 +7,7 @@ wherever it appears. Plain text out (Unicode), no markup: the report escapes and
 from __future__ import annotations
 
 import math
+from numbers import Integral
 
 MINUS = "\u2212"  # −
 GROUP = "\u202f"  # narrow no-break space between groups of three digits
@@ -38,7 +39,8 @@ def format_number(value, sig: int = 4, *, fixed_range=FIXED_RANGE) -> str:
         return "—"
     if isinstance(value, bool):
         return "yes" if value else "no"
-    if isinstance(value, int):
+    if isinstance(value, Integral):  # a count (numpy's integers too) prints exactly
+        value = int(value)
         text = _group(str(abs(value)))
         return (MINUS if value < 0 else "") + text
     if isinstance(value, str):
@@ -79,7 +81,7 @@ def format_column(values, sig: int = 4) -> list[str]:
         return [format_number(v, sig) for v in values]
     out = []
     for v in values:
-        if isinstance(v, (bool, int, str)) or v is None or not math.isfinite(float(v)) or float(v) == 0:
+        if isinstance(v, (bool, Integral, str)) or v is None or not math.isfinite(float(v)) or float(v) == 0:
             out.append(format_number(v, sig))
         else:
             text = format_number(v, sig, fixed_range=(0, 0))

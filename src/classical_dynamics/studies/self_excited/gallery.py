@@ -465,7 +465,7 @@ LEGEND_HEIGHT_IN = 0.4
 def grid_figure(group, found):
     """The grid of one group: panels in Lee's order, shared axes where the windows agree, one legend (in a
     spare slot when there is one, otherwise below)."""
-    from ...figure_style import FULL_WIDTH_IN, MAX_HEIGHT_IN
+    from ...figure_style import FULL_WIDTH_IN, GRID_MAX_HEIGHT_IN
     from ...solvers.workprecision import legend_below
     from ..results import subplots  # with the report's figure style
     from . import portrait
@@ -481,7 +481,7 @@ def grid_figure(group, found):
     columns, rows = layout(len(found))
     spare = columns * rows > len(found)
     height = min(
-        MAX_HEIGHT_IN, rows * ROW_HEIGHT_IN + (0.0 if spare else LEGEND_HEIGHT_IN) + (0.5 if body else 0)
+        GRID_MAX_HEIGHT_IN, rows * ROW_HEIGHT_IN + (0.0 if spare else LEGEND_HEIGHT_IN) + (0.5 if body else 0)
     )
     zoom = any(p.kind == "zoom" for p in found)  # a zoom keeps its own window: share by hand, not by subplots
     fig, axes = subplots(
