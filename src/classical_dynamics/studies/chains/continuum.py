@@ -120,7 +120,7 @@ def run(scene, results, quick):
 
 
 def _mode_shape_figure(results, j):
-    fig, ax = new_figure(4.4, 3.65)
+    fig, ax = new_figure(4.4, 3.2)
     x = np.linspace(0, 1, 801)
     for idx, style in zip(range(3), ("-", "--", "-.")):
         y = special.j0(j[idx] * np.sqrt(x))

@@ -354,7 +354,7 @@ def _mode_shapes(results, shapes, n, k):
     # 1/2) of the length above the free end. (At l = na the lowest particle would sit on the free end and
     # modes 2 and 3 would look several times further from the continuum than they are.)
     height = (n + 0.5 - np.arange(1, n + 1)) / (n + 0.5)
-    fig, ax = new_figure(4.4, 3.65)
+    fig, ax = new_figure(4.4, 3.2)
     x = np.linspace(0, 1, 400)
     misfits = []
     shown = min(3, k, n)
