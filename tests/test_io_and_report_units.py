@@ -240,6 +240,9 @@ def test_bibliography_has_the_required_sources():
         ("50.385″/yr", 50.38481507, {"absolute": 0.05}, ""),  # a printed number is not repeated
         ("$360°/\\psi_\\mathrm{A}$ = 25 722 yr", 25722.0, {"relative": 0.01}, ""),
         ("stable", True, {"equals": True}, ""),  # a verdict means no number
+        ("unstable", 1.0, {"at_least": 100.0}, ""),  # ... nor a flag checked by a bound on ours
+        ("$5\\pi/3$", 5.235987755982988, {"relative": 1e-9}, "5.2359878"),  # its 5 is no print of 5.236
+        ("$J_3^{-2}$", -2.0, {"absolute": 0.1}, ""),
     ],
 )
 def test_a_symbolic_source_value_shows_the_number_it_means(text, value, check, means):

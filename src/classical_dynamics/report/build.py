@@ -370,10 +370,11 @@ class Report:
             else:
                 mask = frame[column].isin(allowed)
             frame = frame[mask]
+        headers = {**meta.get("headers", {}), **(rename or {})}
+        left_out = [c for c in frame.columns if columns and c not in columns]
         if columns:
             frame = frame[columns]
         number = self.numbering.label(label)
-        headers = {**meta.get("headers", {}), **(rename or {})}
         head, numeric = [], {}
         for c in frame.columns:
             numeric[c] = pd.api.types.is_numeric_dtype(frame[c]) and not pd.api.types.is_bool_dtype(frame[c])
@@ -405,6 +406,9 @@ class Report:
                 )
             body.append("<tr>" + "".join(cells) + "</tr>")
         note = " Measured times: they vary from run to run." if timing else ""
+        if left_out:  # the caption names every column the study wrote: say which this table leaves to the CSV
+            names = ", ".join(_header_html(headers.get(c, c.replace("_", " "))) for c in left_out)
+            note += f" Not shown here, in the CSV: {names}."
         csv = f"results/{study}/{'timings/' if timing else ''}{scene}/{name}.csv"
         long = long and len(frame) > LONG_TABLE_ROWS  # a short one stays where it is read
         markup = Markup(

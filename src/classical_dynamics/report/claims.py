@@ -126,14 +126,29 @@ def source_means(claim: ClaimResult) -> str:
     """The number a symbolic or verbal source value means ("√7" means 2.6457513), to the figures "ours" is
     shown to; "" when the source prints no value, or its text already prints that number (50.385″/yr)."""
     text, value = claim.source.get("text"), claim.source.get("value")
-    if not text or not isinstance(value, (int, float)) or isinstance(value, bool):
-        return ""
+    if (
+        not text
+        or not isinstance(value, (int, float))
+        or isinstance(value, bool)
+        or not compares(claim.check)
+    ):
+        return ""  # a verdict ("stable", "no inflexion") checked by a bound on ours means no number
     for match in _NUMBER.findall(text):
         printed = match.replace(" ", "").replace("\u2009", "").replace("\u202f", "")
         decimals = len(printed.partition(".")[2])
-        if abs(abs(value) - float(printed)) <= 0.5 * 10.0**-decimals:
+        figures = len(printed.replace(".", "").lstrip("0"))
+        # a number of two figures or more met to its last place, or one equal to the value (J₃⁻² for −2);
+        # the 5 of 5π/3 is no print of 5.236
+        if abs(abs(value) - float(printed)) <= 0.5 * 10.0**-decimals and (
+            figures > 1 or abs(value) == float(printed)
+        ):
             return ""
     return format_number(value, shown_digits(claim))
+
+
+def compares(check: dict) -> bool:
+    """The check is against the source's value (a deviation from it means something), not a bound on ours."""
+    return bool({"absolute", "relative", "factor"} & set(check))
 
 
 def _pick(value, spec):
@@ -159,7 +174,7 @@ def evaluate(study: str, claims_file: Path, lookup) -> list[ClaimResult]:
         passed = False
         if computed is not None:
             reference = source.get("value")
-            if reference is not None and not isinstance(computed, bool):
+            if reference is not None and not isinstance(computed, bool) and compares(check):
                 deviation = computed - reference
                 relative = deviation / reference if reference else None
             if "absolute" in check:

@@ -65,6 +65,7 @@ def _solver_line(ax, method, n, y):
         color=colour,
         lw=1.0,
         label=label,
+        zorder=3 if marker in "^s" else 2,  # an open marker over a filled one, where two solvers agree
     )
 
 
@@ -660,7 +661,7 @@ def _accuracy_cost(results, spec, quick):
         "and the pliability solver grow about linearly and are the only ones run up to the "
         "largest $n$.",
     )
-    fig, ax = new_figure(5.4, 2.1)
+    fig, ax = new_figure(5.4, 2.7)
     for method, part in frame.groupby("solver", sort=False):
         _solver_line(ax, method, part.n, np.maximum(part.algebraic_relative_error, 1e-17))
     ns = np.array(sorted(frame.n.unique()), float)
@@ -674,7 +675,7 @@ def _accuracy_cost(results, spec, quick):
     )
     ax.set_xlabel("$n$")
     ax.set_ylabel(r"relative error of $\lambda_1$")
-    ax.legend(loc="upper left")
+    legend_below(fig, ncol=3)  # off the data: the lines fill the panel
     results.figure(
         "solver_accuracy",
         fig,

@@ -345,9 +345,11 @@ def _iau_nutation(results, model, t, psi, eps, fp, fe, args):
         years, (ours_eps - d_eps)[show] / earth.ARCSEC, lw=0.5, color="C1", label=r"$\Delta\varepsilon$"
     )
     axes[2].set_ylabel("model − IAU (″)")
-    axes[2].legend(loc="upper right", ncol=2)
     axes[2].grid(True, alpha=0.25)
-    axes[0].legend(loc="upper center", ncol=2)
+    # one legend above the panels, off the data (the curves fill each panel's width)
+    handles = axes[0].get_legend_handles_labels()[0] + axes[2].get_legend_handles_labels()[0]
+    labels = ["IAU 2000B", "full model", r"difference, $\Delta\psi$", r"difference, $\Delta\varepsilon$"]
+    fig.legend(handles, labels, loc="outside upper center", ncol=4)
     axes[2].set_xlabel("year")
     axes[2].xaxis.set_major_locator(MaxNLocator(integer=True, steps=[1, 2, 5, 10]))  # calendar years
     axes[2].xaxis.set_major_formatter("{x:.0f}")

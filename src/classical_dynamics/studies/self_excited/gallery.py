@@ -459,6 +459,7 @@ def layout(n):
 
 
 ROW_HEIGHT_IN = 1.3  # a panel's plot, title and tick labels at three columns across the text width
+FEW_ROWS_HEIGHT_IN = 1.7  # a grid of one or two rows can afford taller panels: its orbits read apart
 LEGEND_HEIGHT_IN = 0.4
 
 
@@ -481,7 +482,10 @@ def grid_figure(group, found):
     columns, rows = layout(len(found))
     spare = columns * rows > len(found)
     height = min(
-        GRID_MAX_HEIGHT_IN, rows * ROW_HEIGHT_IN + (0.0 if spare else LEGEND_HEIGHT_IN) + (0.5 if body else 0)
+        GRID_MAX_HEIGHT_IN,
+        rows * (ROW_HEIGHT_IN if rows > 2 else FEW_ROWS_HEIGHT_IN)
+        + (0.0 if spare else LEGEND_HEIGHT_IN)
+        + (0.5 if body else 0),
     )
     zoom = any(p.kind == "zoom" for p in found)  # a zoom keeps its own window: share by hand, not by subplots
     fig, axes = subplots(
