@@ -19,7 +19,7 @@ import pandas as pd
 from jinja2.ext import Extension
 from markupsafe import Markup
 
-from .. import io
+from .. import io, scene_results
 from ..formatting import format_column, format_number, shortest
 from ..inline_math import plain_text, render_markup, render_text
 from ..provenance import git_state, machine, package_versions, sha256_file
@@ -41,11 +41,10 @@ class ResultsIndex:
 
     def __init__(self, results_dir: Path):
         self.dir = Path(results_dir)
-        self.summaries, self.provenance = {}, {}
-        for study in STUDIES:
-            for folder in io.result_folders(self.dir / study):  # whole ones only: ResultError otherwise
-                self.provenance[(study, folder.name)] = io.check_result_folder(folder)
-                self.summaries[(study, folder.name)] = io.read_json(folder / "summary.json")
+        # whole results only (io.ResultError otherwise), read as any user reads them (scene_results)
+        self.results = scene_results.load_folder(self.dir, STUDIES)
+        self.summaries = {key: r.summary for key, r in self.results.items()}
+        self.provenance = {key: r.provenance for key, r in self.results.items()}
 
     def studies(self):
         present = {study for study, _ in self.summaries}
@@ -74,8 +73,7 @@ class ResultsIndex:
         return numbers[number]
 
     def csv(self, study, scene, name, timing=False):
-        folder = self.dir / study / ("timings/" + scene if timing else scene)
-        return pd.read_csv(folder / f"{name}.csv")
+        return self.results[(study, scene)].table(name, timing)
 
     def svg_uri(self, study, scene, name, timing=False):
         folder = self.dir / study / ("timings/" + scene if timing else scene)
