@@ -7,12 +7,13 @@ VENV      := .venv
 BIN       := $(VENV)/bin
 STAMP     := $(VENV)/.installed
 TEST_STAMP := $(VENV)/.installed-test
+SLURM_STAMP := $(VENV)/.installed-slurm
 CORES     ?= all
 # Debian packages: pango and fonts for WeasyPrint (PDF); chromium and poppler for the tests.
 DEBS_REPORT := libpango-1.0-0 libpangoft2-1.0-0 fonts-dejavu-core
 DEBS_TEST   := $(DEBS_REPORT) chromium poppler-utils
 
-.PHONY: report test test-slurm coverage lint format venv venv-test lock bench dist clean system-report system-test
+.PHONY: report test test-slurm coverage lint format venv venv-test venv-slurm lock bench dist clean system-report system-test
 
 report: venv system-report
 	$(BIN)/snakemake --cores $(CORES)
@@ -24,7 +25,7 @@ test: venv-test system-test
 	$(BIN)/python -m pytest
 
 # The pipeline through a real Slurm cluster started on this machine (tools/local-slurm; as root, it installs it).
-test-slurm: venv-test system-test
+test-slurm: venv-test venv-slurm system-test
 	tools/local-slurm up
 	$(BIN)/python -m pytest -m slurm
 
@@ -45,6 +46,8 @@ format: venv-test
 
 venv: $(STAMP)
 venv-test: $(TEST_STAMP)
+# Snakemake's Slurm executor, only where a cluster is used (installed, every snakemake start asks Slurm for its state)
+venv-slurm: $(SLURM_STAMP)
 
 $(STAMP): requirements/pipeline.lock pyproject.toml
 	test -d $(VENV) || $(PYTHON) -m venv $(VENV)
@@ -55,6 +58,10 @@ $(STAMP): requirements/pipeline.lock pyproject.toml
 
 $(TEST_STAMP): $(STAMP) requirements/test.lock
 	$(BIN)/python -m pip install --quiet --require-virtualenv --require-hashes -r requirements/test.lock
+	touch $@
+
+$(SLURM_STAMP): $(STAMP) requirements/slurm.lock
+	$(BIN)/python -m pip install --quiet --require-virtualenv --require-hashes -r requirements/slurm.lock
 	touch $@
 
 # Installs missing Debian packages when run as root; otherwise says what to install.

@@ -33,7 +33,7 @@ def pins(lock: str) -> dict[str, tuple[str, int]]:
 
 
 def test_every_package_is_pinned_with_hashes():
-    for lock in ("pipeline.lock", "test.lock"):
+    for lock in ("pipeline.lock", "test.lock", "slurm.lock"):
         unhashed = [name for name, (_, hashes) in pins(lock).items() if hashes == 0]
         assert pins(lock) and not unhashed, (lock, unhashed)
 
@@ -47,8 +47,21 @@ def test_the_tests_lock_adds_to_the_pipelines():
         assert normalized(requirement) in pipeline, requirement
     for requirement in project["optional-dependencies"]["test"]:
         assert normalized(requirement) in pipeline | test, requirement
-    assert {"snakemake-executor-plugin-slurm", "weasyprint", "setuptools"} <= set(pipeline)
+    assert {"weasyprint", "setuptools"} <= set(pipeline)
     assert "pytest" in test and "pytest" not in pipeline
+
+
+def test_slurm_is_an_extra_a_bare_install_goes_without():
+    """The Slurm executor is pinned apart (requirements/slurm.lock, the `slurm` extra): `make report` installs
+    only pipeline.lock, so a machine with Slurm's commands but no cluster never waits on the plugin."""
+    pipeline, slurm = pins("pipeline.lock"), pins("slurm.lock")
+    assert (LOCKS / "slurm.lock").read_text().count("-r pipeline.lock\n") == 1
+    assert "snakemake-executor-plugin-slurm" in slurm and not set(slurm) & set(pipeline)
+    assert not any(name.startswith("snakemake-executor-plugin-slurm") for name in pipeline)
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
+    assert [normalized(r) for r in project["optional-dependencies"]["slurm"]] == [
+        "snakemake-executor-plugin-slurm"
+    ]
 
 
 def test_the_conda_environment_has_the_pipelines_pins():

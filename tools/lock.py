@@ -1,8 +1,9 @@
-"""Pin every package, with hashes, in two lock files: requirements/pipeline.lock (what `make report` and the
-cluster's jobs need: pyproject's dependencies and what the editable install builds with) and
-requirements/test.lock (only what the tests add: pyproject's `test` extra; it starts with `-r pipeline.lock`).
-Then write workflow/envs/pipeline.yaml, the conda environment of `snakemake --use-conda`, with the pipeline's
-pins (tests/test_locks.py checks they agree).
+"""Pin every package, with hashes, in lock files: requirements/pipeline.lock (what `make report` and the
+cluster's jobs need: pyproject's dependencies and what the editable install builds with), and for each extra
+only what it adds (each starts with `-r pipeline.lock`): requirements/test.lock (the `test` extra) and
+requirements/slurm.lock (the `slurm` extra: Snakemake's Slurm executor, for a cluster only). Then write
+workflow/envs/pipeline.yaml, the conda environment of `snakemake --use-conda`, with the pipeline's pins
+(tests/test_locks.py checks they agree).
 
     python tools/lock.py            # after changing dependencies in pyproject.toml (needs pip-tools)
 
@@ -93,29 +94,42 @@ def main() -> int:
             )
             + draft.read_text()
         )
-        everything = Path(scratch) / "everything.lock"
-        shutil.copy(draft, everything)  # the tests' packages agree with the pipeline's pins
-        compile_(everything, "pyproject.toml", "requirements/build.in", extra=["--extra", "test"])
-        shared, together = blocks(draft.read_text()), blocks(everything.read_text())
-        added = {name: lines for name, lines in together.items() if name not in shared}
-        moved = [
-            name
-            for name, lines in together.items()
-            if name in shared and lines.split()[0] != shared[name].split()[0]
-        ]
-        if moved:
-            raise SystemExit(f"the test extra moves pipeline pins: {', '.join(moved)}")
-        (FOLDER / "test.lock").write_text(
-            HEADER.format(
-                what="What the tests add to the pipeline's packages (make test).",
-                name="requirements/test.lock",
-            )
-            + "-r pipeline.lock\n\n"
-            + "".join(added.values())
-        )
+        shared = blocks(draft.read_text())
+        counts = []
+        for extra, what in EXTRAS.items():
+            added = extra_lock(Path(scratch), draft, shared, extra, what)
+            counts.append(f"requirements/{extra}.lock: {added} more")
     write_conda_environment(shared)
-    print(f"{pipeline.relative_to(ROOT)}: {len(shared)} packages; requirements/test.lock: {len(added)} more")
+    print(f"{pipeline.relative_to(ROOT)}: {len(shared)} packages; " + "; ".join(counts))
     return 0
+
+
+EXTRAS = {
+    "test": "What the tests add to the pipeline's packages (make test).",
+    "slurm": "What running on a Slurm cluster adds to the pipeline's packages (make venv-slurm).",
+}
+
+
+def extra_lock(scratch: Path, draft: Path, shared: dict, extra: str, what: str) -> int:
+    """requirements/<extra>.lock: only the packages the extra adds, at pins that agree with the pipeline's."""
+    everything = scratch / f"{extra}-everything.lock"
+    shutil.copy(draft, everything)
+    compile_(everything, "pyproject.toml", "requirements/build.in", extra=["--extra", extra])
+    together = blocks(everything.read_text())
+    added = {name: lines for name, lines in together.items() if name not in shared}
+    moved = [
+        name
+        for name, lines in together.items()
+        if name in shared and lines.split()[0] != shared[name].split()[0]
+    ]
+    if moved:
+        raise SystemExit(f"the {extra} extra moves pipeline pins: {', '.join(moved)}")
+    (FOLDER / f"{extra}.lock").write_text(
+        HEADER.format(what=what, name=f"requirements/{extra}.lock")
+        + "-r pipeline.lock\n\n"
+        + "".join(added.values())
+    )
+    return len(added)
 
 
 if __name__ == "__main__":
