@@ -459,7 +459,8 @@ def layout(n):
 
 
 ROW_HEIGHT_IN = 1.3  # a panel's plot, title and tick labels at three columns across the text width
-FEW_ROWS_HEIGHT_IN = 1.7  # a grid of one or two rows can afford taller panels: its orbits read apart
+# a grid of one or two rows can afford taller panels (its orbits read apart), still fitting below a paragraph
+ROW_HEIGHTS_IN = {1: 1.7, 2: 1.45, 3: 1.25}
 LEGEND_HEIGHT_IN = 0.4
 
 
@@ -483,7 +484,7 @@ def grid_figure(group, found):
     spare = columns * rows > len(found)
     height = min(
         GRID_MAX_HEIGHT_IN,
-        rows * (ROW_HEIGHT_IN if rows > 2 else FEW_ROWS_HEIGHT_IN)
+        rows * ROW_HEIGHTS_IN.get(rows, ROW_HEIGHT_IN)
         + (0.0 if spare else LEGEND_HEIGHT_IN)
         + (0.5 if body else 0),
     )
