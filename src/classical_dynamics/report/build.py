@@ -181,6 +181,7 @@ class Report:
             label_number=self.numbering.label,
             fig=self.fig,
             table=self.table,
+            long_table=self.long_table,
             eq=self.eq,
             ref=self.ref,
             cite=self.cite,
@@ -426,6 +427,15 @@ class Report:
         return Markup(
             f'<p class="long-table">{self.ref(label)}, in the appendix (Long tables in full): '
             f"{render_text(meta['caption'])}</p>"
+        )
+
+    def long_table(self, study: str, label: str, says: str, caller=None):
+        """{% call long_table(study, label, says) %}<figure ...>{% endcall %}: a table written in a chapter
+        that is too long to stand there, put in the appendix of long tables as table(..., long=True) puts
+        one; where it was called, one line says what it holds (`says`) and links to it."""
+        self.long_tables.setdefault(study, []).append(Markup(caller()))
+        return Markup(
+            f'<p class="long-table">{self.ref(label)}, in the appendix (Long tables in full): {says}</p>'
         )
 
     def eq(self, label: str | None = None, caller=None):
