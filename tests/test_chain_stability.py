@@ -57,8 +57,11 @@ def test_gyroscopic_switch_secular_instability_and_bowl():
 def test_revolving_examples():
     r = Recorder()
     stability.revolving(r)
+    # by hand: kappa^2 = 3f/r + f' is e^-r (1/r^3 - 1/r^2) for f = e^-r/r^2 (zero at r = a),
+    # e^-r (2/r^2 - 1/r) for the OCR's e^-r/r (zero at 2a); the module bisects a complex-step derivative
     assert abs(r.values["exponential_force_switch"] - 1.0) < 1e-10
     assert abs(r.values["exponential_force_switch_ocr_reading"] - 2.0) < 1e-10
+    # independent sides: a nonlinear integration of Lagrange's equations against Routh's sigma^2 from sympy
     assert r.values["revolving_sigma2_fitted_vs_formula"] < 1e-8
 
 
