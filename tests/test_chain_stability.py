@@ -57,16 +57,38 @@ def test_gyroscopic_switch_secular_instability_and_bowl():
 def test_revolving_examples():
     r = Recorder()
     stability.revolving(r)
+    # by hand: kappa^2 = 3f/r + f' is e^-r (1/r^3 - 1/r^2) for f = e^-r/r^2 (zero at r = a),
+    # e^-r (2/r^2 - 1/r) for the OCR's e^-r/r (zero at 2a); the module bisects a complex-step derivative
     assert abs(r.values["exponential_force_switch"] - 1.0) < 1e-10
     assert abs(r.values["exponential_force_switch_ocr_reading"] - 2.0) < 1e-10
+    # independent sides: a nonlinear integration of Lagrange's equations against Routh's sigma^2 from sympy
     assert r.values["revolving_sigma2_fitted_vs_formula"] < 1e-8
 
 
 def test_ball_modes_are_conjugate_and_fixed_axes():
     r = Recorder()
     stability.ball_modes(r, seed=3)
+    # conjugacy in I and V is what scipy's eigh guarantees: these two show the reported figures are
+    # computed, not that project code is right; the axis check integrates the module's _state (tested below)
     assert r.values["ball_conjugate_inertia"] < 1e-13 and r.values["ball_conjugate_potential"] < 1e-13
     assert r.values["ball_mode_axis_fixed"] < 1e-10
+
+
+def test_state_matrix_has_the_characteristic_roots():
+    # M q'' + (B + G) q' + K q = 0: for one coordinate the roots of m s^2 + c s + k (numpy), and for two
+    # with a gyroscopic G the roots of det(M s^2 + (B + G) s + K), a quartic expanded by hand
+    A = stability._state(np.array([[3.0]]), np.array([[2.0]]), np.array([[0.5]]))
+    assert np.sort_complex(np.linalg.eigvals(A)) == pytest.approx(np.sort_complex(np.roots([2.0, 0.5, 3.0])))
+    k1, k2, b, g = 2.0, 5.0, 0.3, 1.7
+    A = stability._state(np.diag([k1, k2]), np.eye(2), np.diag([b, 0.0]), np.array([[0.0, g], [-g, 0.0]]))
+    # det [[s^2 + b s + k1, g s], [-g s, s^2 + k2]] = (s^2 + b s + k1)(s^2 + k2) + g^2 s^2
+    quartic = [1.0, b, k1 + k2 + g * g, b * k2, k1 * k2]
+    expected = np.sort_complex(np.roots(quartic))
+    assert np.sort_complex(np.linalg.eigvals(A)) == pytest.approx(expected, rel=1e-10)
+    # the spectrum does not see G's sign (g^2 only); the motion does: q'' = -K q - (B + G) q' with M = 1
+    q, v = np.array([0.2, -0.4]), np.array([1.0, 0.5])
+    accel = -np.array([k1 * q[0] + b * v[0] + g * v[1], k2 * q[1] - g * v[0]])
+    assert A @ np.concatenate([q, v]) == pytest.approx(np.concatenate([v, accel]), rel=1e-14)
 
 
 def test_hamilton_chain_converges_at_order_two_to_the_j0_zeros():

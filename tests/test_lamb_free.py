@@ -61,6 +61,10 @@ def test_poinsot_geometry_holds_and_moves():
     out = Numbers()
     lf._poinsot(out, I)
     n = out.numbers
+    # Each is measured on the attitude integrated from Euler's equations (which know nothing of sections,
+    # gyration ellipsoids or planes) against Lamb's closed form of Exx. X.1, X.4, X.5, X.22 written from
+    # A, B, C, T and H alone: a fault in the integration or in either formula breaks the agreement, and the
+    # ranges below show the motion is not a fixed point on which any formula would hold.
     for name in (
         "section_area_max_relative_deviation",
         "poinsot_sum_max_relative_deviation",
@@ -76,9 +80,23 @@ def test_poinsot_geometry_holds_and_moves():
 
 def test_plate_turns_to_the_other_diagonal_after_half_a_period():
     out = Numbers()
-    lf._plate(out, 3.0, 1.0)
+    a, b = 3.0, 1.0
+    lf._plate(out, a, b)
     assert abs(out.numbers["plate_time_relative_error"]) < 1e-10
     assert out.numbers["plate_angle_from_other_diagonal_rad"] < 1e-10
+    # The two numbers above compare the module's integration with the module's closed form, both from the
+    # module's moments: a wrong plate would pass. So the half period again, from the rectangle's moments
+    # M(2b)^2/12, M(2a)^2/12 and their sum (perpendicular axes), and Landau & Lifshitz §37 (L^2 < 2E I2):
+    # omega_3 ~ sn(lambda t, k), zero again at 2K(k)/lambda.
+    from scipy.special import ellipk
+
+    I1, I2, I3 = b * b / 3, a * a / 3, (a * a + b * b) / 3
+    w = np.array([a, b]) / np.hypot(a, b)
+    E2, L2 = I1 * w[0] ** 2 + I2 * w[1] ** 2, (I1 * w[0]) ** 2 + (I2 * w[1]) ** 2
+    lam = np.sqrt((I2 - I1) * (E2 * I3 - L2) / (I1 * I2 * I3))
+    k2 = (I3 - I2) * (L2 - E2 * I1) / ((I2 - I1) * (E2 * I3 - L2))
+    assert out.numbers["plate_modulus_squared"] == pytest.approx(k2, rel=1e-12)
+    assert out.numbers["plate_other_diagonal_time"] == pytest.approx(2 * ellipk(k2) / lam, rel=1e-10)
 
 
 def test_constraining_couples_are_lambs_on_the_phase_average_only():
