@@ -243,6 +243,9 @@ def test_bibliography_has_the_required_sources():
         ("unstable", 1.0, {"at_least": 100.0}, ""),  # ... nor a flag checked by a bound on ours
         ("$5\\pi/3$", 5.235987755982988, {"relative": 1e-9}, "5.2359878"),  # its 5 is no print of 5.236
         ("$J_3^{-2}$", -2.0, {"absolute": 0.1}, ""),
+        (".7655", 0.76548, {"absolute": 1e-4}, ""),  # Lamb's decimals without their 0 are a print
+        ("1/300", 1 / 300, {"relative": 0.02}, "0.003333"),  # four figures at least, not 0.0033
+        ("a constant area", 0.0, {"absolute": 1e-9}, ""),  # words mean no number
     ],
 )
 def test_a_symbolic_source_value_shows_the_number_it_means(text, value, check, means):

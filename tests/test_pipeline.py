@@ -565,9 +565,7 @@ def test_a_build_killed_mid_job_resumes_to_the_same_results(scratch, signal_name
         return files
 
     before = contents()
-    shutil.rmtree(target)
     log = scratch / "results/logs/chains/hanging_links.log"
-    log.unlink(missing_ok=True)
     command = [
         str(Path(sys.executable).parent / "snakemake"),
         "-c",
@@ -576,16 +574,8 @@ def test_a_build_killed_mid_job_resumes_to_the_same_results(scratch, signal_name
         "--config",
         "quick=1",
     ]
-    build = subprocess.Popen(
-        command,
-        cwd=scratch,
-        env=run_env(scratch),
-        stdout=subprocess.DEVNULL,
-        stderr=subprocess.DEVNULL,
-        start_new_session=True,
-    )
 
-    def job_running():  # the scene's job command in the build's session (its client, or the job itself)
+    def job_running(build):  # the scene's job command in the build's session (its client, or the job itself)
         for stat in Path("/proc").glob("[0-9]*/stat"):
             try:
                 session = int(stat.read_text().rsplit(")", 1)[1].split()[3])
@@ -596,14 +586,35 @@ def test_a_build_killed_mid_job_resumes_to_the_same_results(scratch, signal_name
                 return True
         return False
 
-    deadline = time.monotonic() + 120
-    while not (log.exists() and job_running()) and time.monotonic() < deadline:
-        time.sleep(0.02)
-    assert job_running(), "the scene's job never started"
-    os.killpg(build.pid, getattr(signal, signal_name))
-    build.wait(timeout=60)
-    # the kill hit the job mid-run: it had started (above) and left no finished result
-    assert not (target / "summary.json").exists(), "the job had finished before the kill: nothing was tested"
+    # The kill must hit the job mid-run. The build is frozen (SIGSTOP) the moment its job is seen, so that the
+    # check and the kill see one state: the job there, its result not yet written. A job so quick that it ends
+    # between being seen and being frozen is tried again (the scene takes about half a second).
+    for attempt in range(5):
+        shutil.rmtree(target, ignore_errors=True)
+        log.unlink(missing_ok=True)
+        build = subprocess.Popen(
+            command,
+            cwd=scratch,
+            env=run_env(scratch),
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+            start_new_session=True,
+        )
+        deadline = time.monotonic() + 120
+        while not (log.exists() and job_running(build)) and time.monotonic() < deadline:
+            time.sleep(0.01)
+        os.killpg(build.pid, signal.SIGSTOP)
+        mid_run = job_running(build) and not (target / "summary.json").exists()
+        if mid_run:
+            os.killpg(build.pid, getattr(signal, signal_name))
+        try:
+            os.killpg(build.pid, signal.SIGCONT)
+        except ProcessLookupError:  # SIGKILL left no one to continue
+            pass
+        build.wait(timeout=60)
+        if mid_run:
+            break
+    assert mid_run, "the scene's job was never caught mid-run in 5 tries"
     if signal_name == "SIGKILL":
         snakemake(scratch, "--unlock")
     snakemake(scratch, "-c", "1", "results/chains/hanging_links", "--config", "quick=1")

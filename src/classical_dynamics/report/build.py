@@ -169,6 +169,8 @@ class Report:
             extensions=[InlineMath],
         )
         self.env.filters["fmt"] = lambda v, sig=4: format_number(v, sig)
+        # a column of deviations in one notation: 2.4 × 10⁻³ beside 3.0 × 10⁻⁴, never 0.0024 beside it
+        self.env.filters["fmt_power"] = lambda v, sig=2: format_number(v, sig, fixed_range=(0, 1))
         self.env.filters["math"] = lambda text: Markup(render_text(str(text)))
         self.env.globals.update(
             num=self.num,
@@ -177,6 +179,7 @@ class Report:
             column=format_column,
             claim_digits=claims_mod.shown_digits,
             source_means=claims_mod.source_means,
+            means_digits=claims_mod.means_digits,
             unit=unit_html,
             label_number=self.numbering.label,
             fig=self.fig,

@@ -119,7 +119,7 @@ def shown_digits(claim: ClaimResult) -> int:
     return digits
 
 
-_NUMBER = re.compile(r"\d+(?:[ \u2009\u202f]\d{3})*(?:\.\d+)?")
+_NUMBER = re.compile(r"\d+(?:[ \u2009\u202f]\d{3})*(?:\.\d+)?|\.\d+")  # 25 722, 50.385, Lamb's .00327
 
 
 def source_means(claim: ClaimResult) -> str:
@@ -133,6 +133,8 @@ def source_means(claim: ClaimResult) -> str:
         or not compares(claim.check)
     ):
         return ""  # a verdict ("stable", "no inflexion") checked by a bound on ours means no number
+    if value == 0 or not re.search(r"[\d$\\√π/]", text):
+        return ""  # words ("stable", "a constant area"), or a formula met to round-off: no number they mean
     for match in _NUMBER.findall(text):
         printed = match.replace(" ", "").replace("\u2009", "").replace("\u202f", "")
         decimals = len(printed.partition(".")[2])
@@ -143,7 +145,13 @@ def source_means(claim: ClaimResult) -> str:
             figures > 1 or abs(value) == float(printed)
         ):
             return ""
-    return format_number(value, shown_digits(claim))
+    return format_number(value, means_digits(claim))
+
+
+def means_digits(claim: ClaimResult) -> int:
+    """The figures a number evaluated from the source is shown to: as many as ours, and at least four
+    (1/300 = 0.003333, not 0.0033, where a 2 % check gives ours two)."""
+    return max(shown_digits(claim), 4)
 
 
 def compares(check: dict) -> bool:
