@@ -27,6 +27,8 @@ import time
 from collections import defaultdict
 from pathlib import Path
 
+import yaml
+
 ROOT = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(ROOT / "src"), str(ROOT)]
 from classical_dynamics.scenes import SceneError  # noqa: E402
@@ -206,6 +208,26 @@ def main() -> int:
         row[5] = max(row[5], snake_s)
         if not clean:
             rows.append(f"  not clean: {case.id}: {message}")
+    # the configuration (issue 35, item 5): each bad --config of the tests, refused by the workflow's check
+    from classical_dynamics.workflow_config import ConfigError, check_config
+    from tests.test_bad_input import BAD_CONFIG
+
+    for setting, expected in BAD_CONFIG:
+        key, _, raw = setting.partition("=")
+        reset_peak()
+        start = time.perf_counter()
+        try:
+            check_config({key: yaml.safe_load(raw)}, ROOT / "workflow/config.yaml")
+            message = None
+        except ConfigError as error:
+            message = str(error)
+        seconds, memory = time.perf_counter() - start, peak_mb()
+        clean = message is not None and "\n" not in message and message.startswith(expected)
+        row = tally["config"]
+        row[0], row[1] = row[0] + 1, row[1] + clean
+        row[2], row[3] = max(row[2], seconds), max(row[3], memory)
+        if not clean:
+            rows.append(f"  not clean: --config {setting}: {message}")
     print(
         "max s: the validator's time to refuse; max MB: this process's peak resident memory while refusing;"
         "\nsnakemake s: the whole `snakemake -n` that refused it (--snakemake only)"
