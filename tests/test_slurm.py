@@ -67,7 +67,8 @@ def test_the_quick_build_on_slurm_is_the_local_one(cluster, built_repo, tmp_path
     assert len(benchmarks) == len(asks) == jobs - 2
     for tsv in benchmarks:
         job, ask = used(tsv), asks[tsv.relative_to(repo).as_posix()]
-        assert 50 < job["max_rss_mb"] < ask["mem_mb"], (tsv.name, job, ask)
+        # above 20 MB: the job's own interpreter and imports were measured (the streamed archive job: ~40)
+        assert 20 < job["max_rss_mb"] < ask["mem_mb"], (tsv.name, job, ask)
         assert job["seconds"] < 60 * ask["runtime"], (tsv.name, job, ask)
 
 
