@@ -125,6 +125,18 @@ def test_a_scene_written_onto_an_injected_full_disk(tmp_path, full, capsys):
     assert hf.digest(out) == before and hidden(tmp_path / "disk") == []
 
 
+def keeps_the_last(render, target, full, capsys):
+    """render() writes target whole; on a disk then full it exits 2 with one line and leaves target as it was,
+    with no temporary file beside it."""
+    assert render() == 0
+    before = target.read_bytes()
+    full(target.parent)
+    assert render() == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and f"{target}: no space left on device" in err, err
+    assert target.read_bytes() == before and hidden(target.parent) == []
+
+
 def test_the_report_rendered_onto_a_full_disk_keeps_the_last_report(tmp_path, full, monkeypatch, capsys):
     class Rendered:
         def __init__(self, *args):
@@ -136,13 +148,7 @@ def test_the_report_rendered_onto_a_full_disk_keeps_the_last_report(tmp_path, fu
     monkeypatch.setattr(build, "Report", Rendered)
     monkeypatch.setattr(build, "ResultsIndex", lambda results: None)
     html = tmp_path / "disk/report.html"
-    assert build.main([str(tmp_path), str(html)]) == 0
-    before = html.read_bytes()
-    full(tmp_path / "disk")
-    assert build.main([str(tmp_path), str(html)]) == 2
-    err = capsys.readouterr().err
-    assert err.count("\n") == 1 and f"{html}: no space left on device" in err, err
-    assert html.read_bytes() == before and hidden(tmp_path / "disk") == []
+    keeps_the_last(lambda: build.main([str(tmp_path), str(html)]), html, full, capsys)
 
 
 def test_the_pdf_written_onto_a_full_disk_keeps_the_last_pdf(tmp_path, full, monkeypatch, capsys):
@@ -164,11 +170,5 @@ def test_the_pdf_written_onto_a_full_disk_keeps_the_last_pdf(tmp_path, full, mon
     monkeypatch.setattr(weasyprint, "HTML", HTML)
     html, target = tmp_path / "report.html", tmp_path / "disk/report.pdf"
     html.write_text("<html></html>")
-    assert pdf.main([str(html), str(target)]) == 0
-    before = target.read_bytes()
-    full(tmp_path / "disk")
-    assert pdf.main([str(html), str(target)]) == 2
-    err = capsys.readouterr().err
-    assert err.count("\n") == 1 and f"{target}: no space left on device" in err, err
-    assert target.read_bytes() == before and hidden(tmp_path / "disk") == []
+    keeps_the_last(lambda: pdf.main([str(html), str(target)]), target, full, capsys)
     assert sys.modules["weasyprint"] is weasyprint

@@ -100,9 +100,7 @@ class Results(dict):
     """{(study, scene): SceneResults} of a results folder or an archive (an archive's unpacked copy lives as
     long as this object)."""
 
-    def __init__(self, scenes, keep=None):
-        super().__init__(scenes)
-        self._keep = keep  # the temporary folder an archive was unpacked into
+    _keep = None  # the temporary folder an archive was unpacked into
 
     def scenes(self, study: str) -> list[str]:
         return sorted(scene for s, scene in self if s == study)
