@@ -148,6 +148,37 @@ def test_a_claims_value_shows_no_string_of_zeros(check, value, figures):
     assert claims.shown_digits(claim) == figures
 
 
+@pytest.mark.parametrize(
+    "check,source,value,shown",
+    [
+        ({"absolute": 0.3}, 4.0, 3.968, "3.97"),  # Lee's slope: not "4" beside a deviation of −0.032
+        ({"absolute": 1.7}, 433.1, 432.61, "432.6"),  # not "433"
+        ({"relative": 0.003}, 50.385, 50.4001, "50.40"),  # not "50.4", which would read as 50.385 rounded
+        ({"relative": 1e-8}, 0.288675134594813, 0.28867513459485, "0.28867513"),  # 1e-13: the column says it
+        ({"at_most": 0.5}, 0.5, 0.49999992538819, "0.49999993"),  # under ½, not "0.5"
+        ({"at_least": 10}, None, 9730.91, "9731"),  # far from its bound: the figures its check supports
+    ],
+)
+def test_ours_never_reads_as_the_sources_value_when_it_differs(check, source, value, shown):
+    claim = claims.ClaimResult(
+        "x",
+        "s",
+        "chains",
+        "a",
+        "p",
+        value,
+        "",
+        {"value": source},
+        None,
+        check,
+        None if "at_most" in check or "at_least" in check else value - source,
+        0.0,
+        True,
+        True,
+    )
+    assert format_number(value, claims.shown_digits(claim)) == shown
+
+
 def test_plural_and_units():
     from classical_dynamics.units import UnknownUnit, unit_text
 

@@ -291,12 +291,12 @@ def test_a_paragraph_does_not_open_with_one_word_alone(tmp_path):
     assert lines[0].endswith("their sources, Lamb's"), lines[:2]
 
 
-def _columns(page_html):
+def _columns(page_html, every_table=False):
     """{(table id, column): [cell texts]} of every table outside the claims and key results (where each row is
-    its own quantity)."""
+    its own quantity), or of every table."""
     out = {}
     for attrs, body in re.findall(r"<figure([^>]*)>(.*?)</figure>", page_html, re.S):
-        if "<table" not in body or "claims" in attrs or "key-results" in attrs:
+        if "<table" not in body or not every_table and ("claims" in attrs or "key-results" in attrs):
             continue
         name = (re.search(r'id="([^"]+)"', attrs) or re.search(r"(.*)", attrs)).group(1)
         for row in re.findall(r"<tr[^>]*>(.*?)</tr>", body, re.S):
@@ -322,3 +322,12 @@ def test_a_table_column_keeps_one_notation(built_repo):
         if plain and any(power.fullmatch(c) for c in cells):
             mixed[key] = plain[:3]
     assert mixed == {}
+
+
+@pytest.mark.slow
+def test_no_table_column_is_empty_in_every_row(built_repo):
+    """A column that holds "—" in every row (the key results' reference column once did) promises what the
+    table does not give."""
+    columns = _columns((built_repo / "results/report.html").read_text(encoding="utf-8"), every_table=True)
+    empty = [key for key, cells in columns.items() if len(cells) > 1 and all(c in ("—", "") for c in cells)]
+    assert empty == []

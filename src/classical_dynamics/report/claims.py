@@ -97,7 +97,7 @@ class ClaimResult:
 def shown_digits(claim: ClaimResult) -> int:
     """The figures a claim's computed value is shown to: what its check supports, less trailing zeros
     (−1.0000000 for a sign, 60.000000 for an angle met to round-off say nothing that the deviation column
-    does not say better)."""
+    does not say better), but never so few that ours reads as the source's value when it is not."""
     check = claim.check
     reference = claim.source.get("value")
     # At most 8: a tighter agreement than that is read from the deviation column, not from digits.
@@ -116,6 +116,18 @@ def shown_digits(claim: ClaimResult) -> int:
         shown = float(f"{value:.{digits - 1}e}")
         while digits > 1 and float(f"{value:.{digits - 2}e}") == shown:
             digits -= 1
+        # Ours differs visibly from the source where it does (3.97 against 4, not 4 beside a deviation of
+        # −0.032); a difference below a millionth is read from the deviation column.
+        deviation = claim.deviation
+        if isinstance(deviation, float) and math.isfinite(deviation) and deviation != 0:
+            needed = math.floor(math.log10(abs(value))) - math.floor(math.log10(abs(deviation))) + 1
+            if needed <= 6:
+                digits = max(digits, needed)
+        # ... and a bound is visibly met: 0.49999993 under ½, not 0.5 (no deviation column says it)
+        bound = check.get("at_most", check.get("at_least"))
+        if isinstance(bound, (int, float)) and bound != value and math.isfinite(bound):
+            needed = math.floor(math.log10(abs(value))) - math.floor(math.log10(abs(value - bound))) + 1
+            digits = max(digits, min(needed, 8))
     return digits
 
 

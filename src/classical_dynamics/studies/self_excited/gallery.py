@@ -30,8 +30,8 @@ class Group:
 
 EULER = (
     "The dots, integrations of Euler's equations in three dimensions mapped into the plane, lie on the "
-    "plane's "
-    "trajectories."
+    "plane's trajectories; one that leaves the window at once is a lone dot where it starts, on the window's "
+    "edge."
 )
 
 GROUPS = (

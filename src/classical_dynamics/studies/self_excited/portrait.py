@@ -213,6 +213,7 @@ ELEMENTS = {  # element: (plot keywords, legend label); the singular points are 
     ),
 }
 CROSSING_NAMES = {1: "$f_1$", 2: "$f_2$", 3: "$g_1$", 4: "$g_2$"}  # the curve numbers of the crossings
+CROSSING_OFFSETS = {1: (-11, -9), 2: (-11, 1), 3: (-12, -9), 4: (3, 2)}  # their names' places (points)
 POINT_TYPES = ("saddle", "center", "degenerate")
 DIGITS = 5  # decimals kept in the table: far below what a printed portrait resolves
 
@@ -337,11 +338,12 @@ def draw(ax, frame, y_name, window=None, small=False):
             )
             first = False
             if element == "crossing":
-                # f1, f2 left of C's vertical, g1, g2 right
+                # each name where no line passes: f1 under T1's crest (F runs just above), f2 left of T2's,
+                # g1 inside the frame's right edge under T1, g2 right of where T2 leaves the axis
                 ax.annotate(
                     CROSSING_NAMES[int(curve.curve.iloc[0])],
                     (curve.phi2.iloc[0], curve[y_name].iloc[0]),
-                    xytext=(-11, 1) if curve.curve.iloc[0] <= 2 else (3, 2),
+                    xytext=CROSSING_OFFSETS[int(curve.curve.iloc[0])],
                     textcoords="offset points",
                     fontsize=7 if small else 8,
                 )
