@@ -213,7 +213,7 @@ ELEMENTS = {  # element: (plot keywords, legend label); the singular points are 
     ),
 }
 CROSSING_NAMES = {1: "$f_1$", 2: "$f_2$", 3: "$g_1$", 4: "$g_2$"}  # the curve numbers of the crossings
-CROSSING_OFFSETS = {1: (-11, -9), 2: (-11, 1), 3: (-12, -9), 4: (3, 2)}  # their names' places (points)
+CROSSING_OFFSETS = {1: (-11, -9), 2: (4, -9), 3: (-12, -9), 4: (3, 2)}  # their names' places (points)
 POINT_TYPES = ("saddle", "center", "degenerate")
 DIGITS = 5  # decimals kept in the table: far below what a printed portrait resolves
 
@@ -338,7 +338,7 @@ def draw(ax, frame, y_name, window=None, small=False):
             )
             first = False
             if element == "crossing":
-                # each name where no line passes: f1 under T1's crest (F runs just above), f2 left of T2's,
+                # each name where no line passes: f1 under T1's crest (F runs just above), f2 inside T2's arch,
                 # g1 inside the frame's right edge under T1, g2 right of where T2 leaves the axis
                 ax.annotate(
                     CROSSING_NAMES[int(curve.curve.iloc[0])],
