@@ -1,4 +1,4 @@
-"""The quick build locally and through Slurm (workflow/profiles/slurm), and what one job costs beyond its own
+"""The quick build locally and through Slurm (profiles/slurm), and what one job costs beyond its own
 work on each (issue 20). Needs a Slurm cluster that answers: `tools/local-slurm up` starts one on this
 machine.
 
@@ -26,7 +26,7 @@ from benchmarks.job_resources import used  # noqa: E402
 from tests.conftest import copy_repository, snakemake  # noqa: E402
 
 SCENE = "chains/loaded_string"
-PROFILE = ("--profile", "workflow/profiles/slurm")
+PROFILE = ("--profile", "profiles/slurm")
 
 
 def timed(repo: Path, *args) -> tuple[float, str]:

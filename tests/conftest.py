@@ -23,7 +23,10 @@ def copy_repository(target: Path) -> Path:
     )
     for rel in filter(None, listed):
         source = ROOT / rel
-        if source.is_file():
+        if source.is_symlink():  # the package's link to report/: a link in the copy too
+            (target / rel).parent.mkdir(parents=True, exist_ok=True)
+            (target / rel).symlink_to(os.readlink(source))
+        elif source.is_file():
             (target / rel).parent.mkdir(parents=True, exist_ok=True)
             shutil.copy2(source, target / rel)
     # Compiled code travels with the sources it was compiled from (bytecode, numba's cache): each entry is

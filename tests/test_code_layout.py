@@ -82,3 +82,20 @@ def test_imports_point_down_the_layers():
 def test_the_layer_check_finds_an_upward_import():
     graph = {"p.solvers.ode": {"p.models.earth"}, "p.models.earth": set(), "p.io": {"p.cli"}, "p.cli": set()}
     assert upward_imports(graph) == [("p.io", "p.cli"), ("p.solvers.ode", "p.models.earth")]
+
+
+def test_the_top_level_is_the_layout_the_project_card_names():
+    """Snakefile at the top (the rules in workflow/rules), Snakemake's default profile beside it, and report/
+    holding the report's templates, styles, ledgers and bibliography, which the package reads through its link
+    report/files (the wheel ships them as files)."""
+    from pathlib import Path
+
+    from classical_dynamics.report import assets
+
+    root = Path(__file__).resolve().parents[1]
+    assert (root / "Snakefile").is_file() and not (root / "workflow/Snakefile").exists()
+    assert sorted(p.name for p in (root / "workflow/rules").glob("*.smk"))
+    assert (root / "profiles/default/config.yaml").is_file()  # where Snakemake looks beside a top Snakefile
+    for name in ("templates/report.html.j2", "templates/print.css", "references.bib", "ledger/lee1964.yaml"):
+        assert (root / "report" / name).is_file()
+    assert assets.TEMPLATES == (root / "report/templates").resolve()

@@ -39,13 +39,20 @@ def installed(tmp_path_factory):
 
 
 def shipped_beside_code() -> set[str]:
-    """Every file of the package that is not code, as the checkout has it."""
+    """Every file of the package that is not code, as the checkout has it, and every file of report/ (which
+    the package reaches through its link report/files)."""
     package = ROOT / "src"
-    return {
+    beside = {
         path.relative_to(package).as_posix()
         for path in (package / "classical_dynamics").rglob("*")
         if path.is_file() and path.suffix not in (".py", ".pyc") and "__pycache__" not in path.parts
     }
+    report = {
+        f"classical_dynamics/report/files/{p.relative_to(ROOT / 'report').as_posix()}"
+        for p in (ROOT / "report").rglob("*")
+        if p.is_file()
+    }
+    return beside | report
 
 
 def test_the_wheel_ships_every_file_the_package_reads_and_the_console_script(installed):

@@ -479,14 +479,14 @@ def test_a_checkout_path_with_a_space_runs(tmp_path):
 
 
 def test_the_workflow_runs_from_another_directory(tmp_path):
-    """snakemake -s <checkout>/workflow/Snakefile -d <elsewhere>: results/ and .snakemake/ are made there,
+    """snakemake -s <checkout>/Snakefile -d <elsewhere>: results/ and .snakemake/ are made there,
     everything else is read beside the Snakefile and from the package; the checkout gets nothing."""
     repo, elsewhere = copy_repository(tmp_path / "checkout"), tmp_path / "elsewhere"
     (tmp_path / "cwd").mkdir()
     command = [
         str(Path(sys.executable).parent / "snakemake"),
         "-s",
-        str(repo / "workflow/Snakefile"),
+        str(repo / "Snakefile"),
         "-d",
         str(elsewhere),
         "--config",

@@ -1,5 +1,5 @@
 """The pipeline on a real Slurm cluster (tools/local-slurm starts one on this machine, with accounting),
-through workflow/profiles/slurm and Snakemake's executor plugin for Slurm: the quick build gives the local
+through profiles/slurm and Snakemake's executor plugin for Slurm: the quick build gives the local
 quick build's results, every job asks for at least what it used, and a job that fails on the cluster is
 reported with its log.
 
@@ -18,7 +18,7 @@ from .test_pipeline import result_files
 
 pytestmark = [pytest.mark.slurm, pytest.mark.slow, pytest.mark.pipeline]
 
-PROFILE = ("--profile", "workflow/profiles/slurm")
+PROFILE = ("--profile", "profiles/slurm")
 
 
 @pytest.fixture(scope="module")

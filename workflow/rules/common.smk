@@ -1,6 +1,6 @@
 # Shared by every study: scene discovery, and validation of every scene before anything runs. The studies are
 # those of classical_dynamics/studies/registry.py. (Rules live in their own files: Snakemake's linter wants them
-# apart.) Paths: WORKFLOW (this folder) and ROOT (the checkout) are set in the Snakefile; results/ and .snakemake/
+# apart.) Paths: WORKFLOW (workflow/) and ROOT (the checkout) are set in the Snakefile; results/ and .snakemake/
 # are in the working directory.
 
 import os

@@ -1,7 +1,8 @@
 """What the report is made from besides its code and the results: templates, styles and script, the sources'
-ledgers and the bibliography here, each study's chapter and claims in its package (studies/registry.py).
-Shipped inside the package and found through importlib.resources, so an installed package renders the report
-from any directory (it is installed as files, not zipped: Jinja and the checks read real paths)."""
+ledgers and the bibliography in the checkout's report/ folder, each study's chapter and claims in its package
+(studies/registry.py). The package reaches report/ as its `files` folder (a link in the checkout, real files
+in the wheel), found through importlib.resources, so an installed package renders the report from any
+directory (it is installed as files, not zipped: Jinja and the checks read real paths)."""
 
 from __future__ import annotations
 
@@ -10,11 +11,13 @@ from pathlib import Path
 
 from ..studies import registry
 
-HERE = Path(str(files(__package__)))
+# report/ of the checkout (through the link), or the wheel's copy: as real paths, so a checkout's inputs read
+# report/templates/..., as a reader finds them
+HERE = Path(str(files(__package__) / "files")).resolve()
 # report.html.j2, _macros.html.j2, report.css, screen.css, print.css, report.js
 TEMPLATES = HERE / "templates"
 LEDGER = HERE / "ledger"  # <source>.yaml: every quantitative statement of a source
-LEDGER_SHOWN = "src/classical_dynamics/report/ledger"  # where a reader of the report finds it in the checkout
+LEDGER_SHOWN = "report/ledger"  # where a reader of the report finds it in the checkout
 BIBLIOGRAPHY = HERE / "references.bib"
 
 
@@ -34,5 +37,5 @@ def template_folders() -> list[str]:
 
 def asset_files() -> list[Path]:
     """Every file the report reads besides the results and its code: a change to one rebuilds the report."""
-    own = [path for path in HERE.rglob("*") if path.is_file() and path.suffix not in (".py", ".pyc")]
+    own = [path for path in HERE.rglob("*") if path.is_file()]
     return sorted(own) + registry.resource_files()

@@ -1,4 +1,4 @@
-"""The report's bibliography: report/references.bib (in this package) read with pybtex, each entry typeset as
+"""The report's bibliography: report/references.bib read with pybtex, each entry typeset as
 an HTML fragment, and numbered citations in order of first use.
 
 pybtex parses the file (entries, @string macros, names split into first/von/last/jr parts). Field values keep

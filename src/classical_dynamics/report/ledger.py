@@ -1,6 +1,6 @@
 """The source ledger: every quantitative statement of a source, and what in the report checks it.
 
-report/ledger/<source>.yaml (in this package) lists a source's statements (where, what it states, its value as
+report/ledger/<source>.yaml lists a source's statements (where, what it states, its value as
 printed). Each maps to exactly one of: a claim (claim: <study>/<claim id>), a figure (figure: <label>), a
 reason it is out of scope (out_of_scope: why), or, until the report checks it, missing: what would. A
 statement that maps to nothing, to two things, or to a claim or figure that does not exist stops the build.

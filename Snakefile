@@ -6,30 +6,30 @@
 #   snakemake -c1 dist               a citable archive with SHA256SUMS
 #   snakemake -c1 verify             rebuild that archive with this checkout, compare every number
 #   snakemake -c all --config quick=1    a reduced build (what the tests run)
-#   snakemake --profile workflow/profiles/slurm      all of it on a Slurm cluster
+#   snakemake --profile profiles/slurm               all of it on a Slurm cluster
 #
-# Run from the repository's root, Snakemake finds this file (workflow/Snakefile) and its default profile
-# (workflow/profiles/default). From elsewhere: snakemake -s path/to/workflow/Snakefile -d somewhere: results/
-# and .snakemake/ are made in the working directory (-d), everything else is read beside this file.
-# The studies, in report order, are those of src/classical_dynamics/studies/registry.py.
+# Run from the repository's root, Snakemake finds this file and its default profile (profiles/default). From
+# elsewhere: snakemake -s path/to/Snakefile -d somewhere: results/ and .snakemake/ are made in the working
+# directory (-d), everything else is read from the checkout. The rules are in workflow/rules/, the scenes in
+# workflow/scenes/<study>/; the studies, in report order, are those of src/classical_dynamics/studies/registry.py.
 
 import os
 from pathlib import Path
 
-# This folder and the checkout, as paths from the working directory ("workflow" and "." from the root, as every
-# scene's provenance records them)
-WORKFLOW = Path(os.path.relpath(workflow.basedir))
-ROOT = Path(os.path.normpath(WORKFLOW / ".."))
+# The checkout and its workflow folder, as paths from the working directory ("." and "workflow" from the root,
+# as every scene's provenance records them)
+ROOT = Path(os.path.relpath(workflow.basedir))
+WORKFLOW = ROOT / "workflow"
 
 
 configfile: WORKFLOW / "config.yaml"
 
 
-include: "rules/common.smk"
-include: "rules/scenes.smk"
-include: "rules/self_excited_gallery.smk"
-include: "rules/report.smk"
-include: "rules/dist.smk"
+include: "workflow/rules/common.smk"
+include: "workflow/rules/scenes.smk"
+include: "workflow/rules/self_excited_gallery.smk"
+include: "workflow/rules/report.smk"
+include: "workflow/rules/dist.smk"
 
 
 rule all:
