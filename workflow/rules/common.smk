@@ -14,6 +14,7 @@ from snakemake_interface_executor_plugins.settings import ExecMode
 from classical_dynamics import code_graph, jobserver
 from classical_dynamics.io import stale_reason
 from classical_dynamics.limits import rule_resources
+from classical_dynamics.report import snakemake_report
 from classical_dynamics.scenes import SceneError
 from classical_dynamics.scenes.loader import is_leftover
 from classical_dynamics.scenes.cost import Budget

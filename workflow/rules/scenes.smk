@@ -12,9 +12,24 @@ rule scene:
         scene=f"{SCENES}/{{study}}/{{scene}}.yaml",
         schema=lambda wc: here(STUDIES[wc.study].schema),
         checked=result_check,
+    # report(): what `snakemake --report` shows of the scene, its figures and tables with their captions, in its
+    # chapter's category (classical_dynamics/report/snakemake_report.py). A flag: neither what the job writes nor
+    # what reruns it changes.
     output:
-        results=directory("results/{study}/{scene}"),
-        timings=directory("results/{study}/timings/{scene}"),
+        results=report(
+            directory("results/{study}/{scene}"),
+            caption="../report/result.rst",
+            category=snakemake_report.category("results"),
+            subcategory="{scene}",
+            patterns=snakemake_report.PATTERNS,
+        ),
+        timings=report(
+            directory("results/{study}/timings/{scene}"),
+            caption="../report/timing.rst",
+            category=snakemake_report.category("timings"),
+            subcategory="{scene}",
+            patterns=snakemake_report.PATTERNS,
+        ),
     params:
         quick=QUICK,
         budget=BUDGET_ARGS,

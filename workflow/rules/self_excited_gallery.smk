@@ -11,8 +11,20 @@ rule self_excited_gallery:
     input:
         scenes=expand("results/self_excited/{scene}", scene=GALLERY_SCENES),
     output:
-        results=directory("results/self_excited/gallery"),
-        timings=directory("results/self_excited/timings/gallery"),
+        results=report(
+            directory("results/self_excited/gallery"),
+            caption="../report/result.rst",
+            category=snakemake_report.category("results", study="self_excited"),
+            subcategory="gallery",
+            patterns=snakemake_report.PATTERNS,
+        ),
+        timings=report(
+            directory("results/self_excited/timings/gallery"),
+            caption="../report/timing.rst",
+            category=snakemake_report.category("timings", study="self_excited"),
+            subcategory="gallery",
+            patterns=snakemake_report.PATTERNS,
+        ),
     params:
         quick=QUICK,
         code=job_code("studies.self_excited.gallery"),
