@@ -432,6 +432,112 @@ def test_dist_archive_with_checksums(scratch):
     assert hashlib.sha256(archives[0].read_bytes()).hexdigest() == first
 
 
+# The RO-Crate 1.1 JSON-LD context, which roc-validator downloads (and caches) before it reads a crate: this
+# machine reaches no such host, so the test serves it from the cache. It is rocrate's own copy of the 1.3
+# context (a superset) with the terms 1.1 maps otherwise: those of the RO-Crate repository's
+# docs/_specification/1.1/context.jsonld (CC0), compared term by term.
+RO_CRATE_11_CONTEXT = "https://w3id.org/ro/crate/1.1/context"
+TERMS_OF_1_1 = {
+    "ComputationalWorkflow": "https://bioschemas.org/ComputationalWorkflow",
+    "FormalParameter": "https://bioschemas.org/FormalParameter",
+    "input": "https://bioschemas.org/ComputationalWorkflow#input",
+    "output": "https://bioschemas.org/ComputationalWorkflow#output",
+    "cite-as": "https://www.w3.org/ns/iana/link-relations/relation#cite-as",
+    "AuthenticContent": "http://schema.org/AuthenticContent",
+    "MissingContext": "http://schema.org/MissingContext",
+    "constrainingProperty": "http://schema.org/constrainingProperty",
+    "measuredValue": "http://schema.org/measuredValue",
+    "observedNode": "http://schema.org/observedNode",
+}
+
+
+def offline_validator_cache(cache: Path) -> Path:
+    """A roc-validator HTTP cache (requests-cache, SQLite) holding the RO-Crate 1.1 context, for --offline."""
+    import io
+    from importlib import resources
+
+    import urllib3
+    from requests.adapters import HTTPAdapter
+    from requests_cache import CachedSession
+
+    document = json.loads(resources.files("rocrate").joinpath("data/ro-crate.jsonld").read_text())
+    document["@id"] = RO_CRATE_11_CONTEXT
+    document["@context"].update(TERMS_OF_1_1)
+    body = json.dumps(document).encode()
+
+    class Serve(HTTPAdapter):
+        def send(self, request, **kwargs):
+            raw = urllib3.HTTPResponse(
+                body=io.BytesIO(body),
+                headers={"Content-Type": "application/ld+json"},
+                status=200,
+                preload_content=False,
+                request_url=request.url,
+            )
+            return self.build_response(request, raw)
+
+    with CachedSession(cache_name=str(cache), backend="sqlite", allowable_methods=("GET",)) as session:
+        session.mount("https://", Serve())
+        session.get(RO_CRATE_11_CONTEXT, headers={"Accept": "application/ld+json, application/json"})
+    return cache
+
+
+def test_the_dist_archive_carries_a_workflow_run_crate_that_validates(scratch, tmp_path):
+    """Issue 36, item 2: the dist archive's ro-crate-metadata.json, made with rocrate, validates with
+    roc-validator (offline) against the Workflow Run Crate and Provenance Run Crate profiles 0.5 at their
+    required level, and describes the run: the Snakefile the mainEntity, one CreateAction of the workflow
+    with the configuration and each scene as objects and every result (with its SHA-256) and the report as
+    results, one CreateAction per scene job, the software of the lock, the license and the citation."""
+    from rocrate.rocrate import ROCrate
+    from rocrate_validator import services
+    from rocrate_validator.models import Severity, ValidationSettings
+
+    snakemake(scratch, "-c", "1", "dist", "--config", "quick=1")
+    (archive,) = (scratch / "results/dist").glob("classical-dynamics-*[0-9].tar.gz")
+    with tarfile.open(archive) as tar:
+        tar.extractall(tmp_path / "unpacked", filter="data")
+    (folder,) = (tmp_path / "unpacked").iterdir()
+    cache = offline_validator_cache(tmp_path / "validator-cache")
+    for profile in ("workflow-run-crate-0.5", "provenance-run-crate-0.5"):
+        settings = ValidationSettings(
+            rocrate_uri=str(folder),
+            profile_identifier=profile,
+            requirement_severity=Severity.REQUIRED,
+            offline=True,
+            cache_path=str(cache),
+        )
+        result = services.validate(settings)
+        issues = [f"{i.check.identifier}: {i.message}" for i in result.get_issues()]
+        assert result.passed() and not issues, f"{profile}: {issues}"
+
+    crate = ROCrate(folder)
+    assert crate.mainEntity.id == "Snakefile" and crate.mainEntity.lang.id.endswith("#snakemake")
+    sums = dict(reversed(line.split("  ", 1)) for line in (folder / "SHA256SUMS").read_text().splitlines())
+    files = {e.id: e for e in crate.data_entities if "File" in e.type}
+    assert sorted(files) == sorted(set(sums) - {"ro-crate-metadata.json"})
+    assert all(files[name]["sha256"] == digest for name, digest in sums.items() if name in files)
+    actions = [e for e in crate.contextual_entities if e.type == "CreateAction"]
+    (run,) = [a for a in actions if a["instrument"] is crate.mainEntity]
+    scenes = {p.parent.relative_to(folder).as_posix() for p in folder.glob("*/*/provenance.json")}
+    objects = {e.id for e in run["object"]}
+    assert "workflow/config.yaml" in objects and "#pv-quick" in objects
+    assert {f"{s}/scene.yaml" for s in scenes if (folder / s / "scene.yaml").is_file()} <= objects
+    results = {e.id for e in run["result"]}
+    assert {"report.html", "report.pdf", "chains/hanging_particles/summary.json"} <= results
+    assert len(actions) == 1 + len(scenes)  # the run, and one per scene job (Provenance Run Crate)
+    assert run["startTime"] <= run["endTime"] == crate.root_dataset["datePublished"]
+    software = {
+        e["name"]: e["softwareVersion"]
+        for e in crate.contextual_entities
+        if e.type == "SoftwareApplication" and "softwareVersion" in e
+    }
+    lock = (scratch / "requirements/pipeline.lock").read_text()
+    assert software["rocrate"] == re.search(r"^rocrate==(\S+)", lock, re.M).group(1)
+    assert software["snakemake"] == re.search(r"^snakemake==(\S+)", lock, re.M).group(1)
+    assert crate.root_dataset["license"].id == "https://spdx.org/licenses/MIT"
+    assert crate.root_dataset["citation"].id == "CITATION.cff" and "LICENSE" in files
+
+
 def test_the_report_prints_the_sha256_of_the_results_archive(built_repo):
     """The archive of every result but the report is made first; the report and its BibTeX name its
     checksum."""

@@ -1,6 +1,7 @@
 """verify and diff: a small archive of two cheap chain scenes, rebuilt and compared through the CLI."""
 
 import gzip
+import hashlib
 import io
 import json
 import shutil
@@ -163,6 +164,67 @@ def test_a_bad_archive_is_refused_in_one_line(built, sandbox, kind, message):
     assert done.returncode == 2 and done.stdout == ""
     assert message in done.stderr and done.stderr.count("\n") == 1 and "Traceback" not in done.stderr
     assert listing(sandbox / "bad") == [ARCHIVE]
+
+
+def _crate_changed(kind):
+    """change(name, data) for _rewrite: the crate edited (`kind`), SHA256SUMS made to agree with the new
+    crate, so that only the crate disagrees with the members."""
+    state = {}
+
+    def change(name, data):
+        if name.endswith("/ro-crate-metadata.json"):
+            crate = json.loads(data)
+            entity = next(e for e in crate["@graph"] if e["@id"] == CHANGED)
+            if kind == "sha256":
+                entity["sha256"] = "0" * 64
+            else:  # the File dropped from the crate
+                crate["@graph"].remove(entity)
+                for other in crate["@graph"]:
+                    if isinstance(other.get("hasPart"), list):
+                        other["hasPart"] = [p for p in other["hasPart"] if p != {"@id": CHANGED}]
+            data = json.dumps(crate, indent=4).encode()
+            state["digest"] = hashlib.sha256(data).hexdigest()
+        elif name.endswith("/SHA256SUMS"):
+            lines = data.decode().splitlines()
+            data = "".join(
+                f"{state['digest']}  ro-crate-metadata.json\n"
+                if line.endswith("  ro-crate-metadata.json")
+                else line + "\n"
+                for line in lines
+            ).encode()
+        return data
+
+    return change
+
+
+def test_verify_reads_the_crate_and_refuses_one_that_disagrees_with_sha256sums(built, sandbox):
+    """The archive's RO-Crate, read back through rocrate, names every member with its SHA-256: a crate edited
+    (its SHA256SUMS line made to match) is refused in one line, exit 2, before anything is rebuilt."""
+    from rocrate.rocrate import ROCrate
+
+    from classical_dynamics.verify import unpack_archive
+
+    crate = ROCrate(unpack_archive(built["archive"], sandbox / "tmp" / "into"))
+    shutil.rmtree(sandbox / "tmp" / "into")
+    assert crate.mainEntity.id == "Snakefile"
+    (run,) = [e for e in crate.contextual_entities if e.id == "#run"]
+    assert run["instrument"] is crate.mainEntity
+    assert {e.id for e in run["result"]} >= {"report.html", "report.pdf", CHANGED}
+    assert (
+        crate.dereference(CHANGED)["sha256"]
+        == hashlib.sha256((built["results"] / CHANGED).read_bytes()).hexdigest()
+    )
+    for kind, message in (
+        ("sha256", f"ro-crate-metadata.json disagrees with SHA256SUMS for {CHANGED}"),
+        ("missing", f"{CHANGED} is not a File of the crate"),
+    ):
+        bad = sandbox / kind / ARCHIVE
+        bad.parent.mkdir()
+        _rewrite(built["archive"], bad, _crate_changed(kind))
+        done = cli("verify", bad, "--root", built["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
+        assert done.returncode == 2 and done.stdout == "", done.stdout + done.stderr
+        assert message in done.stderr and done.stderr.count("\n") == 1 and "Traceback" not in done.stderr
+        shutil.rmtree(bad.parent)
 
 
 @pytest.mark.parametrize(

@@ -3,7 +3,7 @@
   python -m classical_dynamics validate STUDY SCENE...
   python -m classical_dynamics run STUDY SCENE OUT_DIR TIMINGS_DIR [--quick]     (the scene job: scene_job.py)
   python -m classical_dynamics report RESULTS_DIR HTML PDF [--quick]
-  python -m classical_dynamics dist RESULTS_DIR ARCHIVE
+  python -m classical_dynamics dist RESULTS_DIR ARCHIVE [--snakefile SNAKEFILE]
   python -m classical_dynamics verify ARCHIVE|RESULTS [--scenes STUDY/SCENE,...] [--root .] [--cores N]
   python -m classical_dynamics diff RESULTS_A RESULTS_B      (results folders or dist archives)
 
@@ -43,7 +43,7 @@ def cmd_report(args) -> int:
 def cmd_dist(args) -> int:
     from .report.dist import make_archive
 
-    make_archive(Path(args.results), Path(args.archive))
+    make_archive(Path(args.results), Path(args.archive), snakefile=args.snakefile and Path(args.snakefile))
     return 0
 
 
@@ -80,6 +80,10 @@ def main(argv=None) -> int:
     p = sub.add_parser("dist", help="a citable archive with SHA256SUMS")
     p.add_argument("results")
     p.add_argument("archive")
+    p.add_argument(
+        "--snakefile",
+        help="the Snakefile that ran (the crate's workflow; default: found as Snakemake finds it)",
+    )
     p.set_defaults(func=cmd_dist)
     p = sub.add_parser(
         "verify",

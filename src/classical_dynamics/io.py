@@ -38,6 +38,7 @@ def make_shareable(path: Path | str, directory: bool = False) -> None:
 
 # A full disk (or quota) is a condition the user fixes, said in one line naming the file (no_space_line).
 NO_SPACE = (errno.ENOSPC, errno.EDQUOT)
+RO_CRATE = "ro-crate-metadata.json"  # an archive's RO-Crate (report/crate.py writes it, verify reads it)
 
 
 def no_space_line(error: BaseException) -> str | None:

@@ -336,7 +336,8 @@ def unpack_archive(archive: Path, into: Path) -> Path:
     Refused with one line: what is not an archive file (each its own line), unreadable or truncated
     gzip/tar, a member over limits.py's bounds (count, size, total), not a plain file or leaving the archive's
     one classical-dynamics-<version>/ folder, a member missing from or not matching the SHA256SUMS inside,
-    an archive not matching a SHA256SUMS beside it, no summaries.
+    an RO-Crate missing or disagreeing with that SHA256SUMS, an archive not matching a SHA256SUMS beside it,
+    no summaries.
     """
     archive = Path(archive)
     if why := _not_an_archive(archive):
@@ -363,6 +364,7 @@ def unpack_archive(archive: Path, into: Path) -> Path:
         raise VerifyError(f"{archive}: not a classical-dynamics archive (no {prefix}/SHA256SUMS inside)")
     digests = {name.removeprefix(prefix + "/"): digest for name, digest in digests.items()}
     _check_sums(archive, results, digests, complete=True)
+    _check_crate(archive, results, digests)
     beside = archive.parent / "SHA256SUMS"  # the one dist writes next to the archive
     if beside.is_file():
         for line in _read_lines(beside, archive):
@@ -377,6 +379,50 @@ def unpack_archive(archive: Path, into: Path) -> Path:
         ) from None
     check_results(results, archive)
     return results
+
+
+def _check_crate(label: Path, folder: Path, digests: dict[str, str]) -> None:
+    """The archive's RO-Crate (report/crate.py), read back through rocrate, against its members (which
+    _check_sums found to be those SHA256SUMS lists): every member but SHA256SUMS and the crate is a File of
+    the crate with the same SHA-256, every File of the crate with a SHA-256 is a member, and the crate's
+    mainEntity, the workflow, is one of them. Read bounded (io.read_json_checked); whatever rocrate makes of
+    a hostile crate is one line."""
+    name = f"{folder.name}/{io.RO_CRATE}"
+    if io.RO_CRATE not in digests:
+        raise VerifyError(f"{label}: no {name} inside (every dist archive carries its RO-Crate)")
+    metadata = _read_json(folder / io.RO_CRATE)
+    try:
+        from rocrate.rocrate import ROCrate
+
+        crate = ROCrate(metadata)
+        files = {}
+        for entity in crate.data_entities:
+            types = entity.type if isinstance(entity.type, list) else [entity.type]
+            if "File" in types:
+                files[entity.id] = entity.get("sha256")
+        main = crate.mainEntity
+        main = main.id if main is not None else None
+    except Exception as error:  # rocrate's own refusals are of many kinds: any is one line here
+        raise VerifyError(
+            f"{label}: {name} is not an RO-Crate ({type(error).__name__}: {str(error)[:80]})"
+        ) from None
+    for member in sorted(digests):
+        if member in ("SHA256SUMS", io.RO_CRATE):
+            continue
+        if member not in files:
+            raise VerifyError(
+                f"{label}: {name} disagrees with SHA256SUMS: {member} is not a File of the crate"
+            )
+        if files[member] != digests[member]:
+            raise VerifyError(
+                f"{label}: {name} disagrees with SHA256SUMS for {member} (crate sha256 "
+                f"{str(files[member])[:12]}, SHA256SUMS {digests[member][:12]})"
+            )
+    for entity_id, digest in sorted(files.items(), key=lambda item: str(item[0])):
+        if digest is not None and entity_id not in digests:
+            raise VerifyError(f"{label}: {name} lists {str(entity_id)[:60]!r}, which SHA256SUMS does not")
+    if main is None or main not in digests:
+        raise VerifyError(f"{label}: {name} names no workflow of the archive as its mainEntity")
 
 
 def _read_lines(path: Path, label: Path) -> list[str]:

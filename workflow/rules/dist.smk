@@ -17,6 +17,8 @@ rule dist:
         **measured_resources("dist"),
     params:
         code=job_code("cli"),
+        # the crate's workflow, the Snakefile that ran: relative, as a moved checkout must not look stale
+        snakefile=os.path.relpath(workflow.main_snakefile),
     log:
         "results/logs/dist.log",
     conda:
@@ -25,7 +27,7 @@ rule dist:
         "results/benchmarks/dist.tsv"
     shell:
         "python3 -m classical_dynamics.jobserver"
-        " classical_dynamics dist results {output.archive:q} > {log:q} 2>&1"
+        " classical_dynamics dist results {output.archive:q} --snakefile {params.snakefile:q} > {log:q} 2>&1"
 
 
 localrules:

@@ -49,6 +49,8 @@ rule results_archive:
         **measured_resources("results_archive"),
     params:
         code=job_code("report.dist"),
+        # the crate's workflow, the Snakefile that ran: relative, as a moved checkout must not look stale
+        snakefile=os.path.relpath(workflow.main_snakefile),
     log:
         "results/logs/results_archive.log",
     conda:
@@ -57,7 +59,7 @@ rule results_archive:
         "results/benchmarks/results_archive.tsv"
     shell:
         "python3 -m classical_dynamics.jobserver"
-        " classical_dynamics.report.dist results {output.archive:q} > {log:q} 2>&1"
+        " classical_dynamics.report.dist results {output.archive:q} --snakefile {params.snakefile:q} > {log:q} 2>&1"
 
 
 rule report_html:

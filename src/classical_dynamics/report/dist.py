@@ -15,6 +15,7 @@ import zlib
 from pathlib import Path
 
 from .. import io, limits
+from . import crate
 
 INCLUDE = ("report.html", "report.pdf")
 SUFFIXES = {".json", ".csv", ".svg", ".yaml", ".py"}  # .yaml: each scene's file; .py: measured/'s scripts
@@ -22,10 +23,7 @@ SUFFIXES = {".json", ".csv", ".svg", ".yaml", ".py"}  # .yaml: each scene's file
 
 def results_archive_name(results_dir: Path, root: Path = Path(".")) -> Path:
     """results/dist/<name>-<version>-results.tar.gz: the archive whose SHA-256 the report prints."""
-    import tomllib
-
-    with open(Path(root) / "pyproject.toml", "rb") as handle:
-        project = tomllib.load(handle)["project"]
+    project = _project(root)
     return Path(results_dir) / "dist" / f"{project['name']}-{project['version']}-results.tar.gz"
 
 
@@ -87,20 +85,48 @@ class _Gzip:
         self.out.write(self.compressor.flush())
 
 
-def make_archive(results_dir: Path, archive: Path, with_report: bool = True) -> None:
+def _project(root: Path) -> dict:
+    import tomllib
+
+    with open(Path(root) / "pyproject.toml", "rb") as handle:
+        return tomllib.load(handle)["project"]
+
+
+def _provenance(results_dir: Path, sums: dict[str, str]) -> dict[str, dict]:
+    """{scene folder: its provenance record} of the archived scene folders (the crate's per-job actions)."""
+    records = {}
+    for rel in sums:
+        if rel.endswith("/provenance.json"):
+            record = io.read_json_checked(Path(results_dir) / rel)
+            if isinstance(record, dict):
+                records[rel.removesuffix("/provenance.json")] = record
+    return records
+
+
+def make_archive(
+    results_dir: Path, archive: Path, with_report: bool = True, snakefile: Path | None = None
+) -> None:
     """Deterministic tar.gz (sorted, fixed times and owners) with a SHA256SUMS of its members inside, and
     beside it (SHA256SUMS for the dist archive, <prefix>.SHA256SUMS for the results archive) the archive's own
     sum.
 
     Each manifest names files relative to the folder it lies in, so `sha256sum -c` checks it there: beside the
     archive for the archive, inside the unpacked <prefix>/ for the members.
+
+    With them, the checkout's files its RO-Crate describes (the Snakefile, found as Snakemake finds it unless
+    `snakefile` names the one it ran, its configuration, LICENSE, CITATION.cff, the lock) and last the crate,
+    ro-crate-metadata.json (report/crate.py), listed in SHA256SUMS like every member.
     """
     results_dir, archive = Path(results_dir), Path(archive)
     prefix = archive.name.removesuffix(".tar.gz")
-    members = archive_members(results_dir, with_report)
-    if len(members) >= limits.MAX_MEMBERS:  # verify would refuse the archive: refused here first
+    root, snakefile = crate.find_checkout(results_dir, snakefile)
+    members = [
+        (path, path.relative_to(results_dir).as_posix()) for path in archive_members(results_dir, with_report)
+    ]
+    members += [(root / rel, rel.as_posix()) for rel in crate.checkout_members(root, snakefile)]
+    if len(members) + 1 >= limits.MAX_MEMBERS:  # verify would refuse the archive: refused here first
         raise io.ResultError(f"{results_dir}: {len(members)} files, over limits.MAX_MEMBERS for an archive")
-    sums = []
+    sums = {}
     # Streamed: each file read in pieces, hashed as it is packed, the archive hashed as it is written; nothing
     # is held whole (the same bytes as compressing the whole tar at once).
     with io.atomic_writer(archive) as out:
@@ -109,8 +135,7 @@ def make_archive(results_dir: Path, archive: Path, with_report: bool = True) -> 
         # results.
         packed = _Gzip(written, level=6)
         with tarfile.open(fileobj=packed, mode="w", format=tarfile.PAX_FORMAT) as tar:
-            for path in members:
-                rel = path.relative_to(results_dir).as_posix()
+            for path, rel in members:
                 try:  # a regular file within limits.MAX_MEMBER_BYTES: verify refuses a larger one
                     size = io.regular_size(path, limits.MAX_MEMBER_BYTES)
                 except ValueError as error:
@@ -120,8 +145,15 @@ def make_archive(results_dir: Path, archive: Path, with_report: bool = True) -> 
                 with open(path, "rb") as handle:
                     source = _Hashing(handle)
                     tar.addfile(info, source)
-                sums.append(f"{source.digest.hexdigest()}  {rel}")
-            manifest = ("\n".join(sums) + "\n").encode()
+                sums[rel] = source.digest.hexdigest()
+            metadata = crate.build(
+                root, snakefile, sums, _provenance(results_dir, sums), _project(root), with_report
+            )
+            info = tarfile.TarInfo(f"{prefix}/{crate.NAME}")
+            info.size, info.mtime, info.mode = len(metadata), 0, 0o644
+            tar.addfile(info, _io.BytesIO(metadata))
+            sums[crate.NAME] = hashlib.sha256(metadata).hexdigest()
+            manifest = "".join(f"{digest}  {rel}\n" for rel, digest in sums.items()).encode()
             info = tarfile.TarInfo(f"{prefix}/SHA256SUMS")
             info.size, info.mtime, info.mode = len(manifest), 0, 0o644
             tar.addfile(info, _io.BytesIO(manifest))
@@ -137,9 +169,15 @@ if __name__ == "__main__":
     )
     parser.add_argument("results")
     parser.add_argument("archive")
+    parser.add_argument("--snakefile", help="the Snakefile that ran (default: found as Snakemake finds it)")
     args = parser.parse_args()
     try:
-        make_archive(Path(args.results), Path(args.archive), with_report=False)
+        make_archive(
+            Path(args.results),
+            Path(args.archive),
+            with_report=False,
+            snakefile=args.snakefile and Path(args.snakefile),
+        )
     except io.ResultError as error:
         raise SystemExit(f"{error}")
     except OSError as error:  # a full disk: no archive half-written, the last one kept
