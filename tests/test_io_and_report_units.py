@@ -151,9 +151,10 @@ def test_a_claims_value_shows_no_string_of_zeros(check, value, figures):
 @pytest.mark.parametrize(
     "check,source,value,shown",
     [
-        ({"absolute": 0.3}, 4.0, 3.968, "3.97"),  # Lee's slope: not "4" beside a deviation of −0.032
-        ({"absolute": 1.7}, 433.1, 432.61, "432.6"),  # not "433"
-        ({"relative": 0.003}, 50.385, 50.4001, "50.40"),  # not "50.4", which would read as 50.385 rounded
+        ({"absolute": 0.3}, 4.0, 3.968, "3.968"),  # Lee's slope: not "4" beside a deviation of −3.2 × 10⁻²
+        ({"absolute": 1.7}, 433.1, 432.61, "432.61"),  # not "433"
+        ({"relative": 0.003}, 50.385, 50.4001, "50.400"),  # not "50.4", which would read as 50.385 rounded
+        ({"relative": 0.02}, 300.0, 305.47, "305.5"),  # its deviation 1.8 × 10⁻² reads back from 305.5
         ({"relative": 1e-8}, 0.288675134594813, 0.28867513459485, "0.28867513"),  # 1e-13: the column says it
         ({"at_most": 0.5}, 0.5, 0.49999992538819, "0.49999993"),  # under ½, not "0.5"
         ({"at_least": 10}, None, 9730.91, "9731"),  # far from its bound: the figures its check supports

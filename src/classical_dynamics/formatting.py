@@ -76,7 +76,8 @@ def needs_power_of_ten(value, sig: int = 4) -> bool:
 
 def format_column(values, sig: int = 4) -> list[str]:
     """A table column in one notation: if any value needs a power of ten, every value is written as
-    mantissa × 10ⁿ (10⁰ left out), so a column never mixes 0.0044 with 2.3 × 10⁻⁶."""
+    mantissa × 10ⁿ, 10⁰ included, so a column never mixes 0.0044 or 2.41 with 2.3 × 10⁻⁶ (two readers of the
+    report took 2.41 beside 5.01 × 10⁻¹ for a mixed column)."""
     if not any(needs_power_of_ten(v, sig) for v in values):
         return [format_number(v, sig) for v in values]
     out = []
@@ -85,7 +86,7 @@ def format_column(values, sig: int = 4) -> list[str]:
             out.append(format_number(v, sig))
         else:
             text = format_number(v, sig, fixed_range=(0, 0))
-            out.append(text.replace(TIMES + "10⁰", ""))
+            out.append(text)
     return out
 
 

@@ -116,11 +116,11 @@ def shown_digits(claim: ClaimResult) -> int:
         shown = float(f"{value:.{digits - 1}e}")
         while digits > 1 and float(f"{value:.{digits - 2}e}") == shown:
             digits -= 1
-        # Ours differs visibly from the source where it does (3.97 against 4, not 4 beside a deviation of
-        # −0.032); a difference below a millionth is read from the deviation column.
+        # Ours differs visibly from the source where it does, by the two figures the deviation column shows
+        # (3.968 against 4 beside −3.2 × 10⁻², not 4); a difference under 10⁻⁶ is read from that column.
         deviation = claim.deviation
         if isinstance(deviation, float) and math.isfinite(deviation) and deviation != 0:
-            needed = math.floor(math.log10(abs(value))) - math.floor(math.log10(abs(deviation))) + 1
+            needed = math.floor(math.log10(abs(value))) - math.floor(math.log10(abs(deviation))) + 2
             if needed <= 6:
                 digits = max(digits, needed)
         # ... and a bound is visibly met: 0.49999993 under ½, not 0.5 (no deviation column says it)

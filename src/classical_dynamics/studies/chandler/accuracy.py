@@ -87,7 +87,7 @@ def run(scene, results, quick):
         "tolerance (rtol): the error at the end relative to the wobble's amplitude, the amplitude's "
         "relative change, and the quality factor $Q_\\mathrm{num}$ that change amounts to (negative: the "
         "method pumps energy in; ∞: no change at all in double precision). Compare with the Earth's "
-        "$Q \\approx 100$.",
+        "own $Q$ (the damped scene's, in the text).",
         headers=HEADERS,
     )
     results.timing_table(
