@@ -37,9 +37,10 @@ def cli(*args, cwd, tmpdir=None):
 
 
 def checkout_copy(target):
-    """What a rebuild reads: the code and the workflow (scenes, schemas)."""
+    """What a rebuild reads: the code, the Snakefile and the workflow (rules, scenes, configuration)."""
     for part in ("src", "workflow"):
         shutil.copytree(ROOT / part, target / part, ignore=shutil.ignore_patterns("__pycache__"))
+    shutil.copy2(ROOT / "Snakefile", target / "Snakefile")
     return target
 
 

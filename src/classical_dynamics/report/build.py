@@ -357,9 +357,11 @@ class Report:
         keep=None,
         sigs=None,
         long: bool = False,
+        together=(),
     ):
         """A results table: headers as the study declared them ("quantity (unit)", with math), numbers
-        right-aligned to `sig` figures (per column in `sigs`), columns of whole numbers printed as such.
+        right-aligned to `sig` figures (per column in `sigs`), columns of whole numbers printed as such;
+        the columns of each group in `together` (ours beside a reference's) share one notation.
         keep = {column: [values]} shows the rows whose values are listed (by value, not position, so a
         reduced build that has fewer rows shows fewer)."""
         study, scene = where.split("/")
@@ -397,6 +399,11 @@ class Report:
                 for v in frame[c].tolist()
             ]
             texts[c] = format_column(column, (sigs or {}).get(c, sig))
+        for group in together:  # one notation across the group: format its columns as one, then split
+            joined = [v for c in group for v in frame[c].tolist()]
+            shared = format_column(joined, (sigs or {}).get(group[0], sig))
+            for k, c in enumerate(group):
+                texts[c] = shared[k * len(frame) : (k + 1) * len(frame)]
         for i in range(len(frame)):
             cells = []
             for c in frame.columns:

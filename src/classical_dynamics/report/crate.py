@@ -74,7 +74,7 @@ def find_checkout(results_dir: Path, snakefile: Path | None = None) -> tuple[Pat
 def checkout_members(root: Path, snakefile: PurePosixPath) -> list[PurePosixPath]:
     """The checkout's files that an archive carries for its crate: the Snakefile, its configuration, the
     license, the citation and the lock."""
-    config = snakefile.parent / "config.yaml"
+    config = PurePosixPath("workflow/config.yaml")  # beside the rules, wherever the Snakefile is
     return [snakefile] + [config] * (root / config).is_file() + [PurePosixPath(p) for p in CHECKOUT_FILES]
 
 

@@ -770,7 +770,7 @@ def _cost_to_target(results, targets, quick):
 def _work_precision_figure(results, errors, cost, ns):
     """Error of omega_1 against the time it took, one line per route (and LAPACK's floor)."""
     j1 = bessel_j0_zeros(1)[0] / 2
-    fig, ax = new_figure(5.6, 2.5)
+    fig, ax = new_figure(5.6, 3.1)
     for scheme, err in errors.items():
         n_sorted = sorted(err)
         label, colour, _ = SCHEMES[_scheme(scheme)]
@@ -801,7 +801,7 @@ def _work_precision_figure(results, errors, cost, ns):
     ax.set_xlabel(r"relative error of $\omega_1$ against the continuum")
     ax.set_ylabel("wall time (s)")
     ax.invert_xaxis()
-    ax.legend(loc="lower right")
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.22), ncol=2)  # below the axes: off the lines
     results.timing_figure(
         "work_precision",
         fig,
