@@ -171,6 +171,15 @@ def test_editing_one_scene_reruns_that_scene_and_the_report_only(scratch):
     )
 
 
+def test_an_edit_to_what_the_archives_pack_from_the_checkout_rebuilds_them(scratch):
+    """The archives carry the Snakefile, configuration, licence, citation and lock for their RO-Crate: an edit
+    to the licence reruns the archives and what prints the archive's checksum (the report), no scene."""
+    licence = scratch / "LICENSE"
+    licence.write_text(licence.read_text() + "\n")
+    counts = job_counts(snakemake(scratch, "-n", "dist", "--config", "quick=1").stdout)
+    assert counts == {"results_archive": 1, "report_html": 1, "report_pdf": 1, "dist": 1}
+
+
 def test_a_new_scene_file_is_picked_up_with_no_rule_edit(scratch):
     source = scratch / "workflow/scenes/chains/loaded_string.yaml"
     (scratch / "workflow/scenes/chains/short_string.yaml").write_text(

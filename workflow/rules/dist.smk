@@ -9,6 +9,8 @@ rule dist:
         rules.report_html.output,
         rules.report_pdf.output,
         every_result(),
+        snakefile=ARCHIVED_CHECKOUT[0],  # the crate's workflow, the Snakefile that ran
+        checkout=ARCHIVED_CHECKOUT[1:],
     output:
         archive=ARCHIVE,
         sums="results/dist/SHA256SUMS",
@@ -17,8 +19,6 @@ rule dist:
         **measured_resources("dist"),
     params:
         code=job_code("cli"),
-        # the crate's workflow, the Snakefile that ran: relative, as a moved checkout must not look stale
-        snakefile=os.path.relpath(workflow.main_snakefile),
     log:
         "results/logs/dist.log",
     conda:
@@ -27,7 +27,7 @@ rule dist:
         "results/benchmarks/dist.tsv"
     shell:
         "python3 -m classical_dynamics.jobserver"
-        " classical_dynamics dist results {output.archive:q} --snakefile {params.snakefile:q} > {log:q} 2>&1"
+        " classical_dynamics dist results {output.archive:q} --snakefile {input.snakefile:q} > {log:q} 2>&1"
 
 
 localrules:

@@ -2,12 +2,23 @@
 
 import tomllib
 
+from pathlib import PurePosixPath
+
 from classical_dynamics.report import assets as report_assets
+from classical_dynamics.report import crate as report_crate
 
 with open(ROOT / "pyproject.toml", "rb") as _handle:
     _project = tomllib.load(_handle)["project"]
 # Every result but the report, archived before the report so that the report can print its SHA-256.
 RESULTS_ARCHIVE = f"results/dist/{_project['name']}-{_project['version']}-results.tar.gz"
+# What an archive packs from the checkout for its RO-Crate (the Snakefile, the configuration, the licence, the
+# citation, the lock): inputs of the archives, so an edit to one of them rebuilds them.
+ARCHIVED_CHECKOUT = [
+    os.path.relpath(ROOT / path)
+    for path in report_crate.checkout_members(
+        ROOT, PurePosixPath(os.path.relpath(workflow.main_snakefile, ROOT))
+    )
+]
 
 
 # What the benchmarks measured that the report shows (benchmarks/results/), and the script that measured each,
@@ -41,6 +52,8 @@ rule results_archive:
     input:
         every_result(),
         rules.measured.output,
+        snakefile=ARCHIVED_CHECKOUT[0],  # the crate's workflow, the Snakefile that ran
+        checkout=ARCHIVED_CHECKOUT[1:],
     output:
         archive=RESULTS_ARCHIVE,
         sums=RESULTS_ARCHIVE.removesuffix(".tar.gz") + ".SHA256SUMS",
@@ -49,8 +62,6 @@ rule results_archive:
         **measured_resources("results_archive"),
     params:
         code=job_code("report.dist"),
-        # the crate's workflow, the Snakefile that ran: relative, as a moved checkout must not look stale
-        snakefile=os.path.relpath(workflow.main_snakefile),
     log:
         "results/logs/results_archive.log",
     conda:
@@ -59,7 +70,7 @@ rule results_archive:
         "results/benchmarks/results_archive.tsv"
     shell:
         "python3 -m classical_dynamics.jobserver"
-        " classical_dynamics.report.dist results {output.archive:q} --snakefile {params.snakefile:q} > {log:q} 2>&1"
+        " classical_dynamics.report.dist results {output.archive:q} --snakefile {input.snakefile:q} > {log:q} 2>&1"
 
 
 rule report_html:

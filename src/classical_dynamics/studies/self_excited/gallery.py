@@ -30,9 +30,10 @@ class Group:
 
 EULER = (
     "The dots, integrations of Euler's equations in three dimensions mapped into the plane, lie on the "
-    "plane's trajectories; one that leaves the window at once is a lone dot where it starts, on the window's "
-    "edge."
+    "plane's trajectories."
 )
+# Lee's middle-axis planes start integrations on the window's edge too: one that leaves at once is one dot
+EDGE = " One that leaves the window at once is a lone dot where it starts, on the window's edge."
 
 GROUPS = (
     Group(
@@ -573,7 +574,8 @@ TABLE_HEADERS = {
 
 
 def caption(group, found):
-    return group.lead + " " + " ".join(f"({p.letter}) {p.text}" for p in found)
+    lead = group.lead.replace(EULER, EULER + EDGE) if group.axis == "middle" else group.lead
+    return lead + " " + " ".join(f"({p.letter}) {p.text}" for p in found)
 
 
 # Lee's closed-form figures (no integration): the potential of the unperturbed plane (2.20), Figures 2.1 and
