@@ -321,3 +321,20 @@ def test_a_value_no_source_prints_is_marked_evaluated():
             if figures > 8 or re.search(r"evaluat|mpmath|sympy|quadrature|derived", source.get("where", "")):
                 unmarked.append(f"{study}/{claim['id']}")
     assert not unmarked, unmarked
+
+
+def test_a_claim_says_when_ours_is_an_input_and_refuses_another_word(tmp_path):
+    """A row whose "ours" is the model's input (or the reference's own value) says so beside the value; a
+    misspelt ours_is stops the build rather than pass unmarked."""
+    import yaml
+
+    base = {"id": "x", "statement": "s", "kind": "reference", "source": {"value": 1.0}}
+    base |= {"computed": {"scene": "a", "number": "n"}, "check": {"relative": 0.1}}
+    lookup = lambda study, scene, number: {"value": 1.01, "unit": "1"}  # noqa: E731
+    path = tmp_path / "claims.yaml"
+    path.write_text(yaml.safe_dump([base | {"ours_is": "input"}]))
+    (claim,) = claims.evaluate("chains", path, lookup)
+    assert claim.ours_is == "input"
+    path.write_text(yaml.safe_dump([base | {"ours_is": "inptu"}]))
+    with pytest.raises(claims.ClaimFailure, match="ours_is"):
+        claims.evaluate("chains", path, lookup)

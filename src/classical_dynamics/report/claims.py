@@ -5,7 +5,8 @@ the computed number (scene and name in that scene's summary.json), an optional m
 and a check: {absolute: tol}, {relative: tol} or {factor: f} (within a factor f) against the source value, or
 {at_most: x} / {at_least: x} / {equals: x} on the computed value. A failing claim with must_hold: true fails
 the build. Optional: headline: true puts a claim in the report's key results; explanation says why a claim
-that may fail does (a failing claim without one fails the build: the report explains every failure it shows).
+that may fail does (a failing claim without one fails the build: the report explains every failure it shows);
+ours_is: input (or reference) says that "ours" is a model input (or the reference's value), not a result.
 """
 
 from __future__ import annotations
@@ -70,6 +71,9 @@ class ClaimResult:
     kind: str = "statement"
     omits: str = ""  # a limit: what the model leaves out, and its expected size
     consistency: str = ""  # an input fitted to the observable it is compared with: what the match tests
+    ours_is: str = (
+        ""  # "input" or "reference": "ours" is a model input or the reference's value, not a result
+    )
 
     @property
     def anchor(self) -> str:
@@ -235,6 +239,7 @@ def evaluate(study: str, claims_file: Path, lookup) -> list[ClaimResult]:
                 kind=_kind(claim),
                 omits=claim.get("omits", ""),
                 consistency=claim.get("consistency", ""),
+                ours_is=claim.get("ours_is", ""),
             )
         )
     return results
@@ -244,6 +249,8 @@ def _kind(claim: dict) -> str:
     kind = claim.get("kind")
     if kind not in KINDS:
         raise ClaimFailure(f"claim {claim.get('id')}: kind {kind!r} is not one of {', '.join(KINDS)}")
+    if claim.get("ours_is", "") not in ("", "input", "reference"):
+        raise ClaimFailure(f"claim {claim.get('id')}: ours_is is input or reference")
     if kind == "limit" and not claim.get("omits"):
         raise ClaimFailure(f"claim {claim.get('id')}: a limit of the model says what it omits (omits:)")
     return kind
