@@ -142,10 +142,14 @@ def test_claim_digits_follow_the_check(check, value, figures):
     ],
 )
 def test_a_claims_value_shows_no_string_of_zeros(check, value, figures):
-    claim = claims.ClaimResult(
-        "x", "s", "chains", "a", "p", value, "", {"value": value}, None, check, 0.0, 0.0, True, True
+    assert claims.shown_digits(a_claim(value, {"value": value}, check)) == figures
+
+
+def a_claim(computed, source: dict, check: dict, deviation=0.0) -> claims.ClaimResult:
+    """A claim that holds and must, with what these tests vary."""
+    return claims.ClaimResult(
+        "x", "s", "chains", "a", "p", computed, "", source, None, check, deviation, 0.0, True, True
     )
-    assert claims.shown_digits(claim) == figures
 
 
 @pytest.mark.parametrize(
@@ -161,22 +165,8 @@ def test_a_claims_value_shows_no_string_of_zeros(check, value, figures):
     ],
 )
 def test_ours_never_reads_as_the_sources_value_when_it_differs(check, source, value, shown):
-    claim = claims.ClaimResult(
-        "x",
-        "s",
-        "chains",
-        "a",
-        "p",
-        value,
-        "",
-        {"value": source},
-        None,
-        check,
-        None if "at_most" in check or "at_least" in check else value - source,
-        0.0,
-        True,
-        True,
-    )
+    bound = "at_most" in check or "at_least" in check  # a bound has no deviation
+    claim = a_claim(value, {"value": source}, check, None if bound else value - source)
     assert format_number(value, claims.shown_digits(claim)) == shown
 
 
@@ -281,23 +271,7 @@ def test_bibliography_has_the_required_sources():
     ],
 )
 def test_a_symbolic_source_value_shows_the_number_it_means(text, value, check, means):
-    claim = claims.ClaimResult(
-        "x",
-        "s",
-        "chains",
-        "a",
-        "p",
-        value,
-        "",
-        {"text": text, "value": value},
-        None,
-        check,
-        0.0,
-        0.0,
-        True,
-        True,
-    )
-    assert claims.source_means(claim) == means
+    assert claims.source_means(a_claim(value, {"text": text, "value": value}, check)) == means
 
 
 def test_a_value_no_source_prints_is_marked_evaluated():

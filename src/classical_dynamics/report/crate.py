@@ -17,10 +17,6 @@ import mimetypes
 import re
 from pathlib import Path, PurePosixPath
 
-from .. import io
-
-NAME = io.RO_CRATE
-
 CRATE_VERSION = "1.1"  # the RO-Crate version the Workflow Run Crate profiles 0.5 build on
 PROFILES = {
     "https://w3id.org/ro/wfrun/process/0.5": "Process Run Crate",
@@ -56,13 +52,10 @@ def snakefile_choices() -> list[PurePosixPath]:
 def find_checkout(results_dir: Path, snakefile: Path | None = None) -> tuple[Path, PurePosixPath]:
     """(the checkout's root, the Snakefile relative to it): from the Snakefile Snakemake ran, else the first
     of the results folder's parent, this package's checkout and the working directory that has one."""
-    if snakefile is not None:
+    if snakefile is not None:  # the checkout is the nearest folder above it with the project's pyproject.toml
         snakefile = Path(snakefile).resolve()
-        for choice in sorted(snakefile_choices(), key=lambda c: -len(c.parts)):  # workflow/Snakefile first
-            root = Path(snakefile.as_posix().removesuffix(choice.as_posix()))
-            if snakefile == root / choice and (root / "pyproject.toml").is_file():
-                return root, choice
-        return snakefile.parent, PurePosixPath(snakefile.name)
+        root = next((p for p in snakefile.parents if (p / "pyproject.toml").is_file()), snakefile.parent)
+        return root, PurePosixPath(snakefile.relative_to(root).as_posix())
     candidates = [Path(results_dir).resolve().parent, Path(__file__).resolve().parents[3], Path.cwd()]
     for root in candidates:
         for choice in snakefile_choices():

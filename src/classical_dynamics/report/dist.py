@@ -149,10 +149,10 @@ def make_archive(
             metadata = crate.build(
                 root, snakefile, sums, _provenance(results_dir, sums), _project(root), with_report
             )
-            info = tarfile.TarInfo(f"{prefix}/{crate.NAME}")
+            info = tarfile.TarInfo(f"{prefix}/{io.RO_CRATE}")
             info.size, info.mtime, info.mode = len(metadata), 0, 0o644
             tar.addfile(info, _io.BytesIO(metadata))
-            sums[crate.NAME] = hashlib.sha256(metadata).hexdigest()
+            sums[io.RO_CRATE] = hashlib.sha256(metadata).hexdigest()
             manifest = "".join(f"{digest}  {rel}\n" for rel, digest in sums.items()).encode()
             info = tarfile.TarInfo(f"{prefix}/SHA256SUMS")
             info.size, info.mtime, info.mode = len(manifest), 0, 0o644
