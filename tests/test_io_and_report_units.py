@@ -312,3 +312,23 @@ def test_a_claim_says_when_ours_is_an_input_and_refuses_another_word(tmp_path):
     path.write_text(yaml.safe_dump([base | {"ours_is": "inptu"}]))
     with pytest.raises(claims.ClaimFailure, match="ours_is"):
         claims.evaluate("chains", path, lookup)
+
+
+def test_the_count_by_kind_says_how_many_set_a_sources_value_beside_todays():
+    """A row whose "ours" is an input or the reference's value checks no result of ours: the abstract's count
+    of comparisons says how many of them are such, or that all are."""
+
+    def claim(kind, ours_is=""):
+        c = a_claim(1.0, {"value": 1.0}, {"relative": 0.1})
+        c.kind, c.ours_is = kind, ours_is
+        return c
+
+    rows = [claim("statement"), claim("statement"), claim("reference"), claim("reference", "input")]
+    assert claims.count_by_kind(rows) == (
+        "2 checks of the sources' statements and formulas, 2 comparisons with external references (1 of them "
+        "sets a source's value beside today's, with no result of our model)"
+    )
+    assert claims.count_by_kind([claim("reference", "reference")]) == (
+        "1 comparison with an external reference (it sets a source's value beside today's, with no result of "
+        "our model)"
+    )

@@ -1,6 +1,8 @@
 """Precession of the equinoxes: the secular formula, the averaged and the full model, hard cases, bad
 scenes."""
 
+import dataclasses
+
 import numpy as np
 import pytest
 import yaml
@@ -466,3 +468,45 @@ def test_lamb_examples_from_the_model():
     # C n psi' with n = 2 pi 20 /s, psi' = 2 pi/10 /s
     assert r.numbers["gyroscope_couple_ft_lb"] == pytest.approx(C * 40 * np.pi * 0.2 * np.pi, rel=1e-13)
     assert r.numbers["gyroscope_couple_ft_lb"] == pytest.approx(1270, rel=0.005)  # Lamb: [1270 ft.-lbs.]
+
+
+def test_the_suns_obliquity_sidebands_are_e_and_7e_over_3_of_the_semiannual_term():
+    """The closed form against the couple itself: the obliquity rate goes as (a/r)^3 sin 2 lambda; its
+    harmonics in the mean anomaly, from Kepler's equation solved here and an FFT, integrated over their
+    frequencies (1, 2, 3 n'), give the annual, semi-annual and 122-day amplitudes."""
+    from scipy.optimize import brentq
+
+    e, varpi = 1e-3, 1.3  # a small e: the closed form is first order
+    M = 2 * np.pi * np.arange(4096) / 4096
+    E = np.array([brentq(lambda x: x - e * np.sin(x) - m, m - 1, m + 1) for m in M])
+    nu = 2 * np.arctan2(np.sqrt(1 + e) * np.sin(E / 2), np.sqrt(1 - e) * np.cos(E / 2))
+    rate = (1 / (1 - e * np.cos(E))) ** 3 * np.sin(2 * (nu + varpi))
+    c = np.abs(np.fft.rfft(rate)) / len(M)
+    annual, semiannual, day122 = c[1] / 1, c[2] / 2, c[3] / 3
+    m = model(("solar_torque", "orbit_eccentricity"), orbits=dataclasses.replace(prec.modern(), sun_e=e))
+    closed_annual, closed_122 = m.solar_obliquity_sidebands()
+    assert closed_annual / m.semiannual()[1] == pytest.approx(annual / semiannual, rel=3e-3)
+    assert closed_122 / m.semiannual()[1] == pytest.approx(day122 / semiannual, rel=3e-3)
+
+
+def test_the_advancing_perigee_moves_the_monthly_term_to_the_anomalistic_month():
+    """With the perigee fixed, l and 2L - l turn together and the Moon's 2L - l obliquity term (e times the
+    fortnightly, first order) lands on the monthly argument; advancing, the monthly argument turns in the
+    anomalistic month (27.55 d, IAU's l) and the rigid Earth's monthly obliquity term is small."""
+    fixed = model(("lunar_torque", "orbit_eccentricity"))
+    advancing = model(("lunar_torque", "orbit_eccentricity", "lunar_perigee_advance"))
+    anomalistic = 2 * np.pi / (advancing.orbits.moon_n - advancing.perigee_rate)
+    assert anomalistic == pytest.approx(27.554550, abs=1e-4)  # the anomalistic month (Simon et al. 1994)
+    amplitudes = {}
+    for name, m in (("fixed", fixed), ("advancing", advancing)):
+        fp, fe, *_ = full_rate(m, 20)
+        amplitudes[name] = fitting.amplitude(fe, "monthly"), fitting.amplitude(fe, "fortnightly")
+    monthly, fortnightly = amplitudes["fixed"]
+    assert monthly == pytest.approx(prec.modern().moon_e * fortnightly, rel=0.05)
+    assert amplitudes["advancing"][0] < 0.1 * monthly
+
+
+def test_the_perigee_advance_is_refused_where_it_cannot_act(tmp_path):
+    data = yaml.safe_load((ROOT / "workflow/scenes/precession/averaged_cycle.yaml").read_text())
+    data["effects"]["lunar_perigee_advance"] = None
+    assert_refused(tmp_path, "precession", data, "effects.lunar_perigee_advance")

@@ -7,6 +7,7 @@ the PDF's text from pdftotext and its pages as pixels from pdftoppm, the figures
 import base64
 import hashlib
 import html as html_lib
+import io
 import re
 import subprocess
 
@@ -250,9 +251,43 @@ def test_no_two_figures_are_the_same(built_repo):
     assert len(hashes) >= 10 and len(hashes) == len(set(hashes))
 
 
+def _glyph_sizes_pt(group: str) -> list[float]:
+    """The size of each glyph of a matplotlib SVG text (svg.fonttype path): its block's scale(s -s), 0.01 per
+    point, times the glyph's own scale(k) (mathtext's sub- and superscripts). A radical sign or a large
+    delimiter (STIX's size variants) is stretched to what it encloses: drawn, not text."""
+    sizes = []
+    for block_scale, block in re.findall(r"scale\(([\d.]+) -[\d.]+\)\">(.*?)(?=<g transform|$)", group, re.S):
+        for use in re.findall(r"<use [^>]*>", block):
+            if "STIXSize" in use:
+                continue
+            k = re.search(r"\) scale\(([\d.]+)\)", use)
+            sizes.append(100 * float(block_scale) * (float(k.group(1)) if k else 1.0))
+    return sizes
+
+
+def test_glyph_sizes_read_the_exponents_of_a_log_axis():
+    """The reader of the test below: a tick label 10^{-3} is read as its base's size and its exponent's."""
+    from matplotlib.figure import Figure
+
+    from classical_dynamics import figure_style
+
+    figure_style.use()
+    fig = Figure(figsize=(3, 2))
+    fig.subplots().loglog([1e-3, 1], [1e-6, 1])
+    out = io.StringIO()
+    fig.savefig(out, format="svg")
+    group = re.findall(r'<g id="text_\d+">(.*?)</g>\s*</g>', out.getvalue(), re.S)[0]
+    tick = figure_style.STYLE["xtick.labelsize"]
+    assert sorted(set(round(s, 3) for s in _glyph_sizes_pt(group))) == [
+        round(tick * figure_style.SCRIPT_SHRINK, 3),
+        tick,
+    ]
+
+
 @pytest.mark.slow
 def test_figure_text_is_legible_at_print_size(built_repo):
-    """Every text of every figure at least 7 pt as the PDF prints it (scaled into the text block)."""
+    """Every text of every figure at least 7 pt as the PDF prints it (scaled into the text block), its sub-
+    and superscripts (a log axis's exponents) included."""
     page = (built_repo / "results/report.html").read_text(encoding="utf-8")
     small = []
     for label, svg in _figures(page, with_ids=True):
@@ -261,9 +296,9 @@ def test_figure_text_is_legible_at_print_size(built_repo):
         scale = min(1.0, TEXT_WIDTH_IN * 72 / width, cap * 72 / height)
         for group in re.findall(r'<g id="text_\d+">(.*?)</g>\s*</g>', svg, re.S):
             label = re.search(r"<!-- (.*?) -->", group)
-            sizes = [100 * float(s) for s in re.findall(r"scale\(([\d.]+) -[\d.]+\)", group)]
-            if sizes and max(sizes) * scale < MIN_FONT_PT - 0.05:
-                small.append((label.group(1) if label else "?", round(max(sizes) * scale, 1)))
+            sizes = _glyph_sizes_pt(group)
+            if sizes and min(sizes) * scale < MIN_FONT_PT - 0.05:
+                small.append((label.group(1) if label else "?", round(min(sizes) * scale, 1)))
     assert small == []
 
 

@@ -12,7 +12,8 @@ units of C with H = (C - A)/C, so C - A is never formed as a difference.
   full      Euler's equations and the attitude of a symmetric Earth spinning once a sidereal day, torqued
             by the Sun and the Moon as point masses on Keplerian orbits: N = 3 GM/r^3 (C - A) s3 (s x e3)
 
-Effects: solar_torque, lunar_torque, orbit_eccentricity, lunar_inclination, node_regression. A body not
+Effects: solar_torque, lunar_torque, orbit_eccentricity, lunar_inclination, node_regression,
+lunar_perigee_advance. A body not
 listed is not evaluated (its block of the compiled kernels is skipped, not multiplied by zero).
 """
 
@@ -33,7 +34,8 @@ EFFECTS = EffectRegistry("precession")
 N_SPIN, H_ = 0, 1
 SUN, SUN_K, SUN_E, SUN_N, SUN_L0, SUN_VARPI = 2, 3, 4, 5, 6, 7
 MOON, MOON_K, MOON_E, MOON_N, MOON_L0, MOON_VARPI, MOON_I, NODE0, NODE_RATE = 8, 9, 10, 11, 12, 13, 14, 15, 16
-N_PARAMS = 17
+PERIGEE_RATE = 17
+N_PARAMS = 18
 
 
 @dataclass(frozen=True)
@@ -51,6 +53,7 @@ class Orbits:
     moon_i_rad: float
     moon_n: float  # rad/day
     node_period_days: float
+    perigee_period_days: float = np.inf  # the lunar perigee's circuit against the stars
     sun_L0: float = 0.0  # mean longitudes, perigees and node at J2000 (rad)
     sun_varpi: float = 0.0
     moon_L0: float = 0.0
@@ -101,6 +104,9 @@ def lamb1920() -> Orbits:
 SIDEREAL_YEAR_DAYS = 365.256363
 SIDEREAL_MONTH_DAYS = 27.321662
 NODE_SIDEREAL_PERIOD_DAYS = 360.0 * 36525.0 / (1934.1362891 + 5028.796195 / 3600.0)
+# The perigee: the Moon's mean longitude less its mean anomaly (the IAU's F + Omega - l, Simon et al. 1994)
+# advances 1732564372.3047 - 1717915923.2178 ″ per century against the moving equinox.
+PERIGEE_SIDEREAL_PERIOD_DAYS = 1296000.0 * 36525.0 / (1732564372.3047 - 1717915923.2178 - 5028.796195)
 SUN_OVER_EARTH_MOON = 328900.5596
 MOON_OVER_EARTH = 0.0123000371
 MOON_DISTANCE_M = 384400.0e3
@@ -121,6 +127,7 @@ def modern() -> Orbits:
         moon_i_rad=np.radians(5.145),
         moon_n=2.0 * np.pi / SIDEREAL_MONTH_DAYS,
         node_period_days=NODE_SIDEREAL_PERIOD_DAYS,
+        perigee_period_days=PERIGEE_SIDEREAL_PERIOD_DAYS,
         sun_L0=np.radians(280.46646),
         sun_varpi=np.radians(102.93735),
         moon_L0=np.radians(218.31665),
@@ -128,9 +135,8 @@ def modern() -> Orbits:
         node0=np.radians(125.04452),
         sources=(
             "IERS Conventions (2010) Table 1.1: GM_E, M/E = 0.0123000371, S/(E+M) = 328900.5596",
-            "sidereal year 365.256363 d, sidereal month 27.321662 d, node 6793.48 d against the stars; mean "
-            "elements at J2000 "
-            "(Simon et al. 1994)",
+            "sidereal year 365.256363 d, sidereal month 27.321662 d, node 6793.48 d and lunar perigee "
+            "3232.6 d against the stars; mean elements at J2000 (Simon et al. 1994)",
             "e' = 0.0167086, e_Moon = 0.0549, i = 5.145°, a_Moon = 384 400 km",
         ),
     )
@@ -151,6 +157,7 @@ class PrecessionModel:
     eccentric: bool = False
     inclined: bool = False
     regressing: bool = False
+    advancing: bool = False  # the lunar perigee
     listed: list = field(default_factory=list)
 
     @property
@@ -174,6 +181,11 @@ class PrecessionModel:
         """rad/day, negative: the node regresses."""
         return -2.0 * np.pi / self.orbits.node_period_days if self.regressing else 0.0
 
+    @property
+    def perigee_rate(self) -> float:
+        """rad/day, positive: the lunar perigee advances (its mean anomaly turns in the anomalistic month)."""
+        return 2.0 * np.pi / self.orbits.perigee_period_days if self.advancing else 0.0
+
     def parameters(self) -> np.ndarray:
         o = self.orbits
         p = np.zeros(N_PARAMS)
@@ -192,6 +204,7 @@ class PrecessionModel:
                 o.node0,
                 self.node_rate,
             )
+            p[PERIGEE_RATE] = self.perigee_rate
         return p
 
     # --- rung 1: the secular formula ---------------------------------------------------------------------
@@ -242,6 +255,17 @@ class PrecessionModel:
         half_cycle = 2.0 * self.orbits.sun_n
         return self.solar_rate() / half_cycle, self.solar_rate() * np.tan(self.obliquity) / half_cycle
 
+    def solar_obliquity_sidebands(self) -> tuple[float, float]:
+        """First-order amplitudes (rad) of the annual (2L - l') and 122-day (2L + l') terms in obliquity.
+
+        The obliquity moves only with the couple's sin 2 lambda (lambda the Sun's true longitude); with
+        (a/r)^3 = 1 + 3e cos l' and lambda = L + 2e sin l', (a/r)^3 sin 2 lambda = sin 2L
+        + (7e/2) sin(2L + l') - (e/2) sin(2L - l'), and integrating over frequencies n' and 3n' against the
+        semi-annual 2n' gives e and 7e/3 times the semi-annual amplitude. The term in l' alone has no
+        obliquity part at this order."""
+        semiannual_eps = self.semiannual()[1]
+        return self.sun_e * semiannual_eps, 7.0 / 3.0 * self.sun_e * semiannual_eps
+
 
 # Each effect switches on one block of the kernels (a flag of the model); none takes parameters.
 SWITCHES = {
@@ -250,6 +274,7 @@ SWITCHES = {
     "orbit_eccentricity": ("eccentric", "orbit", "Keplerian ellipses: e' = 0.0167 (Sun), 0.0549 (Moon)"),
     "lunar_inclination": ("inclined", "orbit", "the lunar orbit tilted by i = 5.145° to the ecliptic"),
     "node_regression": ("regressing", "orbit", "the lunar node regresses once in 18.6 years"),
+    "lunar_perigee_advance": ("advancing", "orbit", "the lunar perigee advances once in 8.85 years"),
 }
 for _name, (_flag, _kind, _summary) in SWITCHES.items():
     EFFECTS.register(_name, _kind, _summary)(lambda params, model, flag=_flag: setattr(model, flag, True))
@@ -318,6 +343,8 @@ def _kepler(mean_anomaly, e):
 def _body_position(t, p, k):
     """Unit vector (ecliptic frame) to the body whose block starts at p[k], and (a/r)^3."""
     e, n, L0, varpi = p[k + 2], p[k + 3], p[k + 4], p[k + 5]
+    if k == MOON:
+        varpi += p[PERIGEE_RATE] * t
     mean_anomaly = L0 + n * t - varpi
     if e != 0.0:
         cE, sE = _kepler(mean_anomaly, e)
@@ -329,7 +356,7 @@ def _body_position(t, p, k):
     y = np.sqrt(1.0 - e * e) * sE * a_over_r
     if k == MOON and p[MOON_I] != 0.0:
         node = p[NODE0] + p[NODE_RATE] * t
-        w = varpi - node  # argument of perigee (the perigee stays fixed)
+        w = varpi - node  # argument of perigee
         cw, sw, cn, sn = np.cos(w), np.sin(w), np.cos(node), np.sin(node)
         ci, si = np.cos(p[MOON_I]), np.sin(p[MOON_I])
         u0, u1 = cw * x - sw * y, sw * x + cw * y  # in the orbit plane from the node

@@ -46,6 +46,13 @@ def count_by_kind(claims) -> str:
         n = sum(1 for claim in claims if claim.kind == kind)
         if n:
             parts.append(f"{n} {one if n == 1 else many}")
+        # a source's value set beside today's (ours_is: input or reference) checks no result of ours: say so
+        beside = sum(1 for claim in claims if claim.kind == kind and claim.ours_is)
+        if beside:
+            who = "it sets" if n == 1 else "they set" if beside == n else f"{beside} of them set"
+            if beside == 1 and n > 1:
+                who += "s"
+            parts[-1] += f" ({who} a source's value beside today's, with no result of our model)"
     return ", ".join(parts)
 
 

@@ -11,18 +11,17 @@ import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
-import matplotlib
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from .. import io
-from ..figure_style import STYLE, TEXT_WIDTH_IN
+from .. import figure_style, io
+from ..figure_style import TEXT_WIDTH_IN
 from .figure_data import figure_data
 
 # One style for every figure of the report: applied once, when a study first imports this module. Figures
 # are made without pyplot (bare_figure and subplots below): no backend is chosen for the importer, no window
 # can open.
-matplotlib.rcParams.update(STYLE)
+figure_style.use()
 
 
 def _share_math_parses() -> None:

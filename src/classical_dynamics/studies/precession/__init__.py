@@ -2,7 +2,7 @@
 
 A scene chooses the rung (`fidelity`: secular, averaged, full), the constants (Lamb's or today's), the
 Earth (H, obliquity) and the effects that act: solar_torque, lunar_torque, orbit_eccentricity,
-lunar_inclination, node_regression.
+lunar_inclination, node_regression, lunar_perigee_advance.
 """
 
 from __future__ import annotations
@@ -29,9 +29,21 @@ def check(path: Path, data: dict) -> None:
         raise SceneError(
             path, "effects", "solar_torque or lunar_torque (nothing else exerts a couple)", sorted(effects)
         )
-    for name, needs in (("lunar_inclination", "lunar_torque"), ("node_regression", "lunar_inclination")):
+    for name, needs in (
+        ("lunar_inclination", "lunar_torque"),
+        ("node_regression", "lunar_inclination"),
+        ("lunar_perigee_advance", "orbit_eccentricity"),
+        ("lunar_perigee_advance", "lunar_torque"),
+    ):
         if name in effects and needs not in effects:
             raise SceneError(path, f"effects.{name}", f"{needs} as well", sorted(effects))
+    if "lunar_perigee_advance" in effects and fidelity != "full":
+        raise SceneError(
+            path,
+            "effects.lunar_perigee_advance",
+            "the full rung (the secular and averaged rungs average the perigee away)",
+            fidelity,
+        )
     if fidelity == "secular" and "lunar_inclination" in effects and "node_regression" not in effects:
         raise SceneError(
             path,

@@ -51,7 +51,7 @@ def arguments(model: PrecessionModel, rate_rad_per_day: float) -> dict:
     L_sun = lambda t: o.sun_L0 + (o.sun_n + rate_rad_per_day) * t
     L_moon = lambda t: o.moon_L0 + (o.moon_n + rate_rad_per_day) * t
     l_sun = lambda t: o.sun_L0 - o.sun_varpi + o.sun_n * t
-    l_moon = lambda t: o.moon_L0 - o.moon_varpi + o.moon_n * t
+    l_moon = lambda t: o.moon_L0 - o.moon_varpi + (o.moon_n - model.perigee_rate) * t
     if model.sun:
         terms["semi-annual"] = lambda t: 2.0 * L_sun(t)
         if model.eccentric:

@@ -156,6 +156,14 @@ def run(scene, model, results, quick):
         if closed_psi:
             results.number(f"nutation_longitude_{name}_first_order_arcsec", closed_psi / earth.ARCSEC, "″")
             results.number(f"nutation_obliquity_{name}_first_order_arcsec", closed_eps / earth.ARCSEC, "″")
+    if model.sun_e:
+        for key, closed in zip(("annual", "122day"), model.solar_obliquity_sidebands()):
+            results.number(
+                f"nutation_obliquity_{key}_first_order_arcsec",
+                closed / earth.ARCSEC,
+                "″",
+                note="first order: e′ (annual) and 7e′/3 (122-day) times the semi-annual term",
+            )
     results.number(
         "fit_residual_longitude_mas",
         fp.residual_rms / earth.MAS,
@@ -462,7 +470,14 @@ def _free_nutation(results, model, order):
     )
 
 
-LADDER = ("solar_torque", "lunar_torque", "orbit_eccentricity", "lunar_inclination", "node_regression")
+LADDER = (
+    "solar_torque",
+    "lunar_torque",
+    "orbit_eccentricity",
+    "lunar_inclination",
+    "node_regression",
+    "lunar_perigee_advance",
+)
 
 
 def _effect_ladder(results, model, scene, step, order, years):

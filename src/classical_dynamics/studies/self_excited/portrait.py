@@ -345,7 +345,7 @@ def draw(ax, frame, y_name, window=None, small=False):
                     (curve.phi2.iloc[0], curve[y_name].iloc[0]),
                     xytext=CROSSING_OFFSETS[int(curve.curve.iloc[0])],
                     textcoords="offset points",
-                    fontsize=7 if small else 8,
+                    fontsize=7.5 if small else 8,  # its subscript at 7 pt or more
                 )
     points = [
         {"phi2": row.phi2, "type": row.element} for row in frame[frame.element.isin(POINT_TYPES)].itertuples()

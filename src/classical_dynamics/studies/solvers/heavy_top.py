@@ -216,7 +216,7 @@ def _general(results, top, n, alpha, nutations, rtol):
     ax.set_aspect("equal")
     ax.set_xlabel("$k_x$")
     ax.set_ylabel("$k_y$")
-    ax.legend(loc="center", fontsize=7, frameon=False)
+    ax.legend(loc="center", frameon=False)
     results.figure(
         "apex_path",
         fig,
