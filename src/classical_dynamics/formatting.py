@@ -74,12 +74,43 @@ def needs_power_of_ten(value, sig: int = 4) -> bool:
     return not FIXED_RANGE[0] <= exponent < FIXED_RANGE[1]
 
 
+COLUMN_FIXED_RANGE = (-4, 5)  # a column reads 0.0002178 beside 9.226 before it writes 9.226 × 10⁰
+
+
+def _whole(v) -> bool:
+    """A float that holds a count (16.0 from a CSV column with a gap): printed as the count it is."""
+    return isinstance(v, float) and math.isfinite(v) and v.is_integer() and abs(v) < 1e15
+
+
+def _figures(value: float) -> int:
+    """The significant figures of the shortest decimal that reads back as this float (0.25 -> 2)."""
+    mantissa = repr(abs(value)).partition("e")[0]
+    return max(len(mantissa.replace(".", "").lstrip("0").rstrip("0")), 1)
+
+
 def format_column(values, sig: int = 4) -> list[str]:
     """A table column in one notation: if any value needs a power of ten, every value is written as
-    mantissa × 10ⁿ, 10⁰ included, so a column never mixes 0.0044 or 2.41 with 2.3 × 10⁻⁶ (two readers of the
-    report took 2.41 beside 5.01 × 10⁻¹ for a mixed column)."""
-    if not any(needs_power_of_ten(v, sig) for v in values):
-        return [format_number(v, sig) for v in values]
+    mantissa × 10ⁿ, so a column never mixes 0.0044 or 2.41 with 2.3 × 10⁻⁶ (two readers of the report took
+    2.41 beside 5.01 × 10⁻¹ for a mixed column). A column of counts prints them exactly, and a column within
+    10⁻⁴ to 10⁵ stays in decimals (9.226 and 0.0002178, not 9.226 × 10⁰)."""
+    finite = [
+        v
+        for v in values
+        if isinstance(v, (float, Integral)) and not isinstance(v, bool) and math.isfinite(float(v))
+    ]
+    if finite and all(isinstance(v, Integral) or _whole(float(v)) for v in finite):
+        return [format_number(int(v)) if v in finite else format_number(v, sig) for v in values]
+    # no figures a value does not have: a column of targets 10⁻⁶, 10⁻⁸ reads 1 × 10⁻⁶, not 1.000 × 10⁻⁶
+    sig = min(sig, max((_figures(float(v)) for v in finite if v != 0), default=sig))
+
+    def in_range(v) -> bool:
+        if isinstance(v, (bool, Integral, str)) or v is None or not math.isfinite(float(v)) or v == 0:
+            return True
+        exponent = int(f"{abs(float(v)):.{max(int(sig), 1) - 1}e}".split("e")[1])
+        return COLUMN_FIXED_RANGE[0] <= exponent < COLUMN_FIXED_RANGE[1]
+
+    if all(in_range(v) for v in values):
+        return [format_number(v, sig, fixed_range=COLUMN_FIXED_RANGE) for v in values]
     out = []
     for v in values:
         if isinstance(v, (bool, Integral, str)) or v is None or not math.isfinite(float(v)) or float(v) == 0:
