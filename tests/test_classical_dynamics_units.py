@@ -5,6 +5,7 @@ tampered, stale results, the command line's one-line refusals, a child process s
 import hashlib
 import json
 import math
+from io import BytesIO
 
 import pandas as pd
 import pytest
@@ -262,3 +263,119 @@ def test_inline_math_typesets_and_flattens():
     html = inline_math.render_text("the period $T = 2\\pi/\\omega$ in s")
     assert html == "the period <span class=math><i>T</i> = 2<i>π</i>/<i>ω</i></span> in s"
     assert "$" not in inline_math.plain_text("$\\omega_0^2$")
+
+
+# ---- verify.py in-process: diff of two tiny builds, an archive checked whole and refused once tampered
+
+
+def write_build(base, value, extra_scene=False):
+    results = base / "results"
+    for scene, x in (("toy", value), ("more", 1.0)) if extra_scene else (("toy", value),):
+        r = Results("chains", scene, "t")
+        r.number("x", x, "1")
+        r.number("n", 3, "1")
+        r.hard_case("small", "a small error", 1e-12, 1e-10)
+        folder = results / "chains" / scene
+        r.write(folder, results / "chains" / "timings" / scene, {"commit": "abc"}, {"wall_seconds": 0.0})
+    return results
+
+
+def test_diff_names_each_changed_number_and_each_scene_present_on_one_side(tmp_path):
+    import io as stdio
+
+    from classical_dynamics import verify
+
+    a, b = write_build(tmp_path / "a", 0.1), write_build(tmp_path / "b", 0.1 * (1 + 1e-6), extra_scene=True)
+    out = stdio.StringIO()
+    assert verify.diff(a, b, out) == 1
+    lines = out.getvalue().splitlines()
+    assert lines[0].split() == ["study/scene", "number", "A", "B", "relative", "change"]
+    assert any(line.split()[:2] == ["chains/more", "(whole"] and "added" in line for line in lines)
+    (row,) = [line.split() for line in lines if line.startswith("chains/toy")]
+    assert row[1] == "x" and float(row[4]) == pytest.approx(1e-6, rel=1e-6)  # (B - A)/|A|, by hand
+    assert lines[-1].startswith("changed: 2 numbers in 2 scenes")
+    out = stdio.StringIO()
+    assert verify.diff(a, a, out) == 0 and out.getvalue().startswith(
+        "no numbers changed (3 numbers in 1 scenes)"
+    )
+    with pytest.raises(verify.VerifyError, match="not a results folder"):
+        verify.diff(tmp_path, a)
+
+
+def retar(archive, target, change):
+    """A copy of `archive` with one member's bytes changed by change(name, data)."""
+    import tarfile
+
+    with tarfile.open(archive) as source, tarfile.open(target, "w:gz") as out:
+        for member in source.getmembers():
+            data = source.extractfile(member).read()
+            data = change(member.name, data)
+            member.size = len(data)
+            out.addfile(member, BytesIO(data))
+
+
+def test_an_archive_is_checked_whole_and_refused_once_a_member_is_tampered(tmp_path):
+    from classical_dynamics import verify
+    from classical_dynamics.report.dist import make_archive
+
+    results = write_build(tmp_path, 0.25)
+    archive = tmp_path / "dist" / "classical-dynamics-0.0.0-results.tar.gz"
+    make_archive(results, archive, with_report=False)
+    unpacked = verify.unpack_archive(archive, tmp_path / "unpacked")
+    assert verify.scenes_of(unpacked) == [("chains", "toy")]
+    numbers = verify.read_numbers(unpacked)
+    assert (
+        numbers["chains", "toy", "x"]["value"] == 0.25
+        and numbers["chains", "toy", "hard_case:small"]["value"]
+    )
+    assert (
+        verify.open_results(unpacked, tmp_path / "unused") == unpacked
+    )  # an unpacked archive, checked again
+    # the same archive with one byte of a summary changed: its SHA256SUMS no longer matches
+    bad = tmp_path / "bad" / archive.name
+    bad.parent.mkdir()
+    retar(
+        archive,
+        bad,
+        lambda name, data: data.replace(b"0.25", b"0.26") if name.endswith("summary.json") else data,
+    )
+    with pytest.raises(verify.VerifyError, match="checksum mismatch for .*summary.json"):
+        verify.unpack_archive(bad, tmp_path / "bad_unpacked")
+    # a member SHA256SUMS does not list
+    retar(
+        archive,
+        bad,
+        lambda name, data: data + b"0" * 64 + b"  extra\n" if name.endswith("/SHA256SUMS") else data,
+    )
+    with pytest.raises(verify.VerifyError, match="extra is listed in SHA256SUMS but missing"):
+        verify.unpack_archive(bad, tmp_path / "bad_unpacked2")
+    (tmp_path / "garbage.tar.gz").write_bytes(b"not gzip at all")
+    for given, words in (
+        (tmp_path / "garbage.tar.gz", "not a readable tar.gz"),
+        (tmp_path / "nothing.tar.gz", "no such file"),
+        (tmp_path, "a folder, not a dist archive"),
+    ):
+        with pytest.raises(verify.VerifyError, match=words):
+            verify.unpack_archive(given, tmp_path / "x")
+    # the sum written beside the archive: a changed archive no longer matches it
+    copy = tmp_path / "dist2" / archive.name
+    copy.parent.mkdir()
+    retar(archive, copy, lambda name, data: data)  # the same members, other gzip bytes
+    (copy.parent / "SHA256SUMS").write_text(
+        (archive.parent / "classical-dynamics-0.0.0-results.SHA256SUMS").read_text()
+    )
+    with pytest.raises(verify.VerifyError, match="checksum mismatch with"):
+        verify.unpack_archive(copy, tmp_path / "copy_unpacked")
+
+
+def test_a_tolerance_must_be_a_number_or_one_kind_and_value():
+    from classical_dynamics import verify
+
+    assert verify.parse_tolerance({"tolerance": {"relative": 0.1}}, "w") == ("relative", 0.1)
+    assert verify.parse_tolerance({}, "w") is None
+    for bad in (-1, {"relative": -1}, {"fuzzy": 1}, "1", {"relative": 1, "absolute": 1}):
+        with pytest.raises(verify.VerifyError, match="w: tolerance"):
+            verify.parse_tolerance({"tolerance": bad}, "w")
+    change = verify.Change("s/c", "x", 2.0, 1.0)
+    assert change.relative == -0.5 and verify.Change("s/c", "x", 0.0, 1.0).relative == math.inf
+    assert verify.Change("s/c", "x", "a", 1.0).relative is None
