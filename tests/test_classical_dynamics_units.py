@@ -379,3 +379,48 @@ def test_a_tolerance_must_be_a_number_or_one_kind_and_value():
     change = verify.Change("s/c", "x", 2.0, 1.0)
     assert change.relative == -0.5 and verify.Change("s/c", "x", 0.0, 1.0).relative == math.inf
     assert verify.Change("s/c", "x", "a", 1.0).relative is None
+
+
+@pytest.mark.parametrize(
+    "source,html",
+    [
+        # what TeX prints, written out by hand: letters italic, \text and \mathrm upright, − for -
+        (r"\text{a b}", "a b"),
+        (r"\text x", "x"),  # TeX skips the space before an argument
+        (r"\text{a{b}c}", "a{b}c"),
+        (r"\mathrm{d}t", "d<i>t</i>"),
+        (r"\frac12", "½"),
+        (r"\frac {1}{4}", "¼"),
+        (r"\frac{a+b}{c}", "(<i>a</i>+<i>b</i>)/<i>c</i>"),
+        (r"\tfrac{x}{y}", "<i>x</i>/<i>y</i>"),
+        (r"\sqrt{x}", "√<span class=radicand><i>x</i></span>"),
+        (r"\dot{x}", "<i>x\u0307</i>"),
+        (r"\mathbf{m}", "<b><i>m</i></b>"),
+        (r"\sin x", "<span class=fn>sin</span>\u2009<i>x</i>"),
+        (r"\sin(x)", "<span class=fn>sin</span>(<i>x</i>)"),
+        (r"a'", "<i>a</i>′"),
+        (r"-x", "−<i>x</i>"),
+        (r"x^{2}_1", "<i>x</i><sub>1</sub><sup>2</sup>"),
+        (r"x_ {i}", "<i>x</i><sub><i>i</i></sub>"),
+        (r"\left( x \right)", "( <i>x</i> )"),
+        (r"\Omega \epsilon \infty", "Ω <i>ϵ</i> ∞"),
+    ],
+)
+def test_inline_math_is_typeset_as_tex_would(source, html):
+    assert inline_math.math_html(source) == f"<span class=math>{html}</span>"
+
+
+@pytest.mark.parametrize(
+    "source,words",
+    [
+        ("x_", "ends early"),
+        (r"\frac{1}", "ends early"),
+        ("_x", "'_' with nothing before it"),
+        ("{x", "missing '}'"),
+        ("x}", "unbalanced '}'"),
+        (r"\foo", r"unknown command \\foo"),
+    ],
+)
+def test_malformed_inline_math_is_refused_naming_the_formula(source, words):
+    with pytest.raises(inline_math.MathError, match=words):
+        inline_math.math_html(source)
