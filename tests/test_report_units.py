@@ -277,3 +277,60 @@ def test_the_assets_name_every_studys_template_and_claims_file():
         assert any((Path(folder) / template).is_file() for folder in assets.template_folders())
     files = assets.asset_files()
     assert assets.BIBLIOGRAPHY in files and all(p.is_file() for p in files)
+
+
+# ---- snakemake_report.py: the captions of Snakemake's own report, from the written summary
+
+
+def test_snakemakes_report_captions_each_file_as_the_summary_does(results_dir, tmp_path, monkeypatch):
+    from types import SimpleNamespace
+
+    from classical_dynamics.report import snakemake_report as sr
+    from classical_dynamics.studies import STUDIES
+
+    summary = json.loads((results_dir / "chains" / "toy" / "summary.json").read_text())
+    assert sr.caption(summary, "line.svg") == "A line."
+    assert sr.caption(summary, "modes.csv") == "The modes."
+    assert sr.caption(summary, "line.csv") == "The data of line.svg: A line."
+    assert sr.caption(summary, "hard_cases.csv").startswith("The scene's hard cases")
+    assert sr.caption(summary, "run.csv", timing=True).startswith("What the job cost")
+    assert sr.caption(summary, "other.csv") == "A file of chains/toy."
+    # the chapter as the report numbers it: the introduction is 1, the studies follow in order
+    assert sr.chapter("chains") == f"{list(STUDIES).index('chains') + 2} {STUDIES['chains'].title}"
+    # as Snakemake asks: folders relative to the working directory, the caption written under it
+    monkeypatch.chdir(tmp_path)
+    import shutil
+
+    shutil.copytree(results_dir, tmp_path / "results")
+    output = SimpleNamespace(results="results/chains/toy", timings="results/chains/timings/toy")
+    assert sr.category("results")(SimpleNamespace(file="line.svg", study="chains"), output) == sr.chapter(
+        "chains"
+    )
+    assert (sr.CAPTIONS / "results/chains/toy/line.svg.rst").read_text() == "A line.\n"
+    sr.category("timings", "chains")(SimpleNamespace(file="run.csv"), output)
+    timing = (sr.CAPTIONS / "results/chains/timings/toy/run.csv.rst").read_text()
+    assert (
+        timing == "What the job cost\\: its wall and CPU time and peak memory, beside what was estimated.\n"
+    )
+    # RST: markup characters escaped, math as a role, a paragraph that would open a list escaped
+    assert sr.rst("a *b* $x_1$th") == r"a \*b\* :math:`x_1`\ th"
+    assert sr.rst("1. first") == r"\1. first"
+    assert sr.rst(r"$\tfrac12 \sin x$") == r":math:`\tfrac{1}{2} \operatorname{sin} x`"
+
+
+def test_the_context_of_a_partial_build_sums_its_times_and_pins_the_results_archive(report, results_dir):
+    import hashlib
+
+    context = report.context()
+    assert context["studies"] == ["chains"] and context["build_times"] == {"chains": 0.25}
+    assert context["results_commit"] == "abc" and context["quick"] is True
+    assert set(context["css"]) == {"report", "screen", "print"} and context["script"]
+    archive = dist.results_archive_name(results_dir, ROOT)
+    archive.parent.mkdir(parents=True, exist_ok=True)
+    try:
+        archive.write_bytes(b"a stand-in archive")
+        pinned = report.context()["results_archive"]
+        assert pinned == {"name": archive.name, "sha256": hashlib.sha256(b"a stand-in archive").hexdigest()}
+    finally:
+        archive.unlink()
+    assert report._benchmark("no_such_benchmark") is None
