@@ -200,6 +200,8 @@ class _Parser:
 
     def raw_group(self) -> str:
         """The text of a {group} taken literally (for \\text{...})."""
+        while (tok := self.peek()) is not None and tok[1]:
+            self.i += 1  # TeX skips spaces before an argument, as argument() does
         command, space, char = self.next()
         if char != "{":
             return html.escape(char or space or "")
