@@ -241,9 +241,13 @@ def test_formatting_rounds_first_then_chooses_the_notation():
         "−∞",
         "0",
     ]
-    # a column in one notation once any value needs a power of ten
-    assert formatting.format_column([1.0, 0.0001, None, 0.0]) == [f"1.000{x}10⁰", f"1.000{x}10⁻⁴", "—", "0"]
-    assert formatting.format_column([1, 2.5]) == ["1", "2.500"]
+    # a column in one notation once any value needs a power of ten; decimals down to 10⁻⁴; no figures a value
+    # does not have; counts exactly
+    assert formatting.format_column([1.0, 1e-6, None, 0.0]) == [f"1{x}10⁰", f"1{x}10⁻⁶", "—", "0"]
+    assert formatting.format_column([1.0, 0.0001, None, 0.0]) == ["1", "0.0001", "—", "0"]
+    assert formatting.format_column([9.22649, 0.000217893]) == ["9.226", "0.0002179"]
+    assert formatting.format_column([1, 2.5]) == ["1", "2.5"]
+    assert formatting.format_column([16.0, 262144.0, float("nan")]) == ["16", "262\u202f144", "NaN"]
     assert (
         formatting.format_decimals(-0.0004, 2) == "0.00"
         and formatting.format_decimals(-3.14159, 2) == "−3.14"
