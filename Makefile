@@ -13,7 +13,7 @@ CORES     ?= all
 DEBS_REPORT := libpango-1.0-0 libpangoft2-1.0-0 fonts-dejavu-core
 DEBS_TEST   := $(DEBS_REPORT) chromium poppler-utils
 
-.PHONY: report test test-slurm coverage lint format venv venv-test venv-slurm lock bench dist clean system-report system-test
+.PHONY: report test test-slurm coverage mutants lint format venv venv-test venv-slurm lock bench dist clean system-report system-test
 
 report: venv system-report
 	$(BIN)/snakemake --cores $(CORES)
@@ -34,6 +34,12 @@ coverage: venv-test
 	rm -f .coverage .coverage.*
 	$(BIN)/python -m coverage run -m pytest -m "not pipeline and not slurm" -q
 	$(BIN)/python tools/coverage_by_package.py
+
+# Mutation testing of the studies' and models' Python code by the fast tests (mutmut): the score per package and
+# the surviving mutants. A benchmark, not a gate: it runs long.
+mutants: venv-test
+	rm -rf mutants
+	$(BIN)/python tools/mutants.py
 
 # One format and one lint for the tree (ruff, configured in pyproject.toml): `make format` applies both's fixes.
 lint: venv-test

@@ -1,0 +1,87 @@
+"""Mutation testing as a measured figure (make mutants): mutmut mutates the studies' and models' Python code
+(pyproject.toml's [tool.mutmut]; functions under a decorator, the compiled loops among them, are left alone),
+runs the fast tests that reach each mutant, and this prints the score per package and the surviving mutants.
+
+    python tools/mutants.py [--max-children N] [--results-only]
+
+A benchmark, not a gate: it takes long (every mutant reruns the tests that cover it). Score: killed (a test
+failed, or the mutant timed out) over all mutants; "no tests" counts as not killed: no fast test reaches it.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import re
+import subprocess
+import sys
+from collections import Counter, defaultdict
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+KILLED = {"killed", "timeout"}
+
+
+def package_of(mutant: str) -> str:
+    """classical_dynamics.studies.chains for classical_dynamics.studies.chains.planar.x_modes__mutmut_3 (a
+    method's name reads module.xǁClassǁmethod__mutmut_n)."""
+    module = re.split(r"\.x[_ǁ]", mutant, maxsplit=1)[0]
+    return module.rsplit(".", 1)[0]
+
+
+def statuses() -> dict[str, str]:
+    out = subprocess.run(
+        [sys.executable, "-m", "mutmut", "results", "--all", "true"],
+        cwd=ROOT,
+        env=environment(),
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout
+    return dict(re.findall(r"^\s*(\S+__mutmut_\d+): (.+?)\s*$", out, re.M))
+
+
+def environment() -> dict:
+    # mutmut copies src/ into mutants/ and runs there: its copy must come before the editable install's
+    return {**os.environ, "PYTHONPATH": "src" + os.pathsep + os.environ.get("PYTHONPATH", "")}
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--max-children", type=int, default=os.cpu_count())
+    parser.add_argument("--results-only", action="store_true", help="print the last run's figures")
+    args = parser.parse_args(argv)
+    if not args.results_only:
+        # mutmut copies files, not links: the report's files (report/, linked into the package) are linked
+        # into its copy by hand, to its copy of report/ (pyproject's also_copy)
+        link = ROOT / "mutants/src/classical_dynamics/report/files"
+        link.parent.mkdir(parents=True, exist_ok=True)
+        if not link.is_symlink():
+            link.symlink_to(os.readlink(ROOT / "src/classical_dynamics/report/files"))
+        run = [sys.executable, "-m", "mutmut", "run", "--max-children", str(args.max_children)]
+        subprocess.run(run, cwd=ROOT, env=environment(), check=True)
+    found = statuses()
+    by_package: dict[str, Counter] = defaultdict(Counter)
+    survivors = defaultdict(list)
+    for mutant, status in found.items():
+        by_package[package_of(mutant)][status] += 1
+        if status == "survived":
+            survivors[package_of(mutant)].append(mutant)
+    print(f"{'package':44} {'mutants':>8} {'killed':>7} {'survived':>9} {'no tests':>9} {'score':>6}")
+    total = Counter()
+    for package in sorted(by_package):
+        c = by_package[package]
+        total += c
+        n, killed = sum(c.values()), sum(c[s] for s in KILLED)
+        print(f"{package:44} {n:8d} {killed:7d} {c['survived']:9d} {c['no tests']:9d} {killed / n:6.1%}")
+    n, killed = sum(total.values()), sum(total[s] for s in KILLED)
+    row = f"{'all':44} {n:8d} {killed:7d} {total['survived']:9d} {total['no tests']:9d}"
+    print(f"{row} {killed / max(n, 1):6.1%}")
+    print("\nSurviving mutants (mutmut show <name> prints the change):")
+    for package in sorted(survivors):
+        print(f"  {package}: " + ", ".join(m.split(".", 3)[-1] for m in sorted(survivors[package])))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
