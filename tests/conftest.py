@@ -87,11 +87,12 @@ def scratch(built_repo, tmp_path):
 
 
 def pytest_collection_modifyitems(items):
-    """Tests that need the shared build are pipeline tests, and run last: while one worker builds it, the
-    others run everything else."""
+    """Tests that need the shared build, or rebuild scenes as verify does, are pipeline tests, and run last:
+    while one worker builds, the others run everything else."""
 
     def needs_build(item):
-        return bool({"built_repo", "scratch"} & set(getattr(item, "fixturenames", ())))
+        # archived: test_verify's archive of two scenes, which verify rebuilds by running their jobs
+        return bool({"built_repo", "scratch", "archived"} & set(getattr(item, "fixturenames", ())))
 
     for item in items:
         if needs_build(item):  # fixturenames is the transitive closure: a fixture built on the build counts

@@ -49,7 +49,7 @@ def listing(folder):
 
 
 @pytest.fixture(scope="module")
-def built(tmp_path_factory):
+def archived(tmp_path_factory):
     """results/ with two quick chain scenes, a stand-in report, and its dist archive."""
     base = tmp_path_factory.mktemp("verify")
     results = base / "results"
@@ -83,23 +83,28 @@ def sandbox(tmp_path):
     assert listing(tmp_path / "cwd") == [] and listing(tmp_path / "tmp") == []
 
 
-def test_verify_passes_on_an_unchanged_archive(built, sandbox):
-    before = listing(built["checkout"])
+def test_verify_passes_on_an_unchanged_archive(archived, sandbox):
+    before = listing(archived["checkout"])
     done = cli(
-        "verify", built["archive"], "--root", built["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp"
+        "verify",
+        archived["archive"],
+        "--root",
+        archived["checkout"],
+        cwd=sandbox / "cwd",
+        tmpdir=sandbox / "tmp",
     )
     assert done.returncode == 0, done.stdout + done.stderr
     assert "OK: all" in done.stdout and "2 scenes" in done.stdout and "(quick build)" in done.stdout
-    assert listing(built["checkout"]) == before
+    assert listing(archived["checkout"]) == before
 
 
-def test_verify_fails_naming_the_number_when_a_scene_value_changes(built, sandbox):
+def test_verify_fails_naming_the_number_when_a_scene_value_changes(archived, sandbox):
     checkout = checkout_copy(sandbox / "checkout")
     scene = checkout / "workflow/scenes/chains/two_masses_three_springs.yaml"
     scene.write_text(scene.read_text().replace("[1.0, 3.0, 1.0]", "[1.0, 3.5, 1.0]"))
     done = cli(
         "verify",
-        built["archive"],
+        archived["archive"],
         "--root",
         checkout,
         "--scenes",
@@ -143,14 +148,14 @@ def _rewrite(archive, target, change):
         ("not gzip", "not a readable tar.gz"),
     ],
 )
-def test_a_bad_archive_is_refused_in_one_line(built, sandbox, kind, message):
+def test_a_bad_archive_is_refused_in_one_line(archived, sandbox, kind, message):
     bad = sandbox / "bad" / ARCHIVE
     bad.parent.mkdir()
     if kind == "truncated":
-        bad.write_bytes(built["archive"].read_bytes()[:-2000])
+        bad.write_bytes(archived["archive"].read_bytes()[:-2000])
     elif kind == "tampered":
         _rewrite(
-            built["archive"],
+            archived["archive"],
             bad,
             lambda name, data: (
                 data.replace(b"2.64575131106459", b"2.6457513110646") if name.endswith(CHANGED) else data
@@ -158,10 +163,10 @@ def test_a_bad_archive_is_refused_in_one_line(built, sandbox, kind, message):
         )
     elif kind == "foreign":
         with tarfile.open(bad, "w:gz") as tar:
-            tar.add(built["results"] / "chains", arcname="chains")
+            tar.add(archived["results"] / "chains", arcname="chains")
     else:
         bad.write_text("not an archive\n")
-    done = cli("verify", bad, "--root", built["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
+    done = cli("verify", bad, "--root", archived["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
     assert done.returncode == 2 and done.stdout == ""
     assert message in done.stderr and done.stderr.count("\n") == 1 and "Traceback" not in done.stderr
     assert listing(sandbox / "bad") == [ARCHIVE]
@@ -198,14 +203,14 @@ def _crate_changed(kind):
     return change
 
 
-def test_verify_reads_the_crate_and_refuses_one_that_disagrees_with_sha256sums(built, sandbox):
+def test_verify_reads_the_crate_and_refuses_one_that_disagrees_with_sha256sums(archived, sandbox):
     """The archive's RO-Crate, read back through rocrate, names every member with its SHA-256: a crate edited
     (its SHA256SUMS line made to match) is refused in one line, exit 2, before anything is rebuilt."""
     from rocrate.rocrate import ROCrate
 
     from classical_dynamics.verify import unpack_archive
 
-    crate = ROCrate(unpack_archive(built["archive"], sandbox / "tmp" / "into"))
+    crate = ROCrate(unpack_archive(archived["archive"], sandbox / "tmp" / "into"))
     shutil.rmtree(sandbox / "tmp" / "into")
     assert crate.mainEntity.id == "Snakefile"
     (run,) = [e for e in crate.contextual_entities if e.id == "#run"]
@@ -213,7 +218,7 @@ def test_verify_reads_the_crate_and_refuses_one_that_disagrees_with_sha256sums(b
     assert {e.id for e in run["result"]} >= {"report.html", "report.pdf", CHANGED}
     assert (
         crate.dereference(CHANGED)["sha256"]
-        == hashlib.sha256((built["results"] / CHANGED).read_bytes()).hexdigest()
+        == hashlib.sha256((archived["results"] / CHANGED).read_bytes()).hexdigest()
     )
     for kind, message in (
         ("sha256", f"ro-crate-metadata.json disagrees with SHA256SUMS for {CHANGED}"),
@@ -221,8 +226,8 @@ def test_verify_reads_the_crate_and_refuses_one_that_disagrees_with_sha256sums(b
     ):
         bad = sandbox / kind / ARCHIVE
         bad.parent.mkdir()
-        _rewrite(built["archive"], bad, _crate_changed(kind))
-        done = cli("verify", bad, "--root", built["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
+        _rewrite(archived["archive"], bad, _crate_changed(kind))
+        done = cli("verify", bad, "--root", archived["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
         assert done.returncode == 2 and done.stdout == "", done.stdout + done.stderr
         assert message in done.stderr and done.stderr.count("\n") == 1 and "Traceback" not in done.stderr
         shutil.rmtree(bad.parent)
@@ -236,67 +241,72 @@ def test_verify_reads_the_crate_and_refuses_one_that_disagrees_with_sha256sums(b
         ("/dev/null", "not a regular file"),
     ],
 )
-def test_what_is_not_an_archive_gets_its_own_line(built, sandbox, given, message):
+def test_what_is_not_an_archive_gets_its_own_line(archived, sandbox, given, message):
     """A typo, a folder that holds no results, a device: each one accurate line, exit 2, nothing written."""
     (sandbox / "a-folder").mkdir()
     given = given if given.startswith("/") else sandbox / given
-    done = cli("verify", given, "--root", built["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
+    done = cli("verify", given, "--root", archived["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
     assert done.returncode == 2 and done.stdout == ""
     assert message in done.stderr and done.stderr.count("\n") == 1 and "Traceback" not in done.stderr
 
 
-def test_verify_takes_a_results_folder_checked_as_an_archive_is(built, sandbox):
+def test_verify_takes_a_results_folder_checked_as_an_archive_is(archived, sandbox):
     """The folder itself, and an unpacked archive (its SHA256SUMS checked too); an edited file is refused by
     name, as in an archive, before anything is rebuilt."""
     done = cli(
-        "verify", built["results"], "--root", built["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp"
+        "verify",
+        archived["results"],
+        "--root",
+        archived["checkout"],
+        cwd=sandbox / "cwd",
+        tmpdir=sandbox / "tmp",
     )
     assert done.returncode == 0 and "OK: all" in done.stdout, done.stdout + done.stderr
     unpacked = sandbox / "unpacked"
-    with tarfile.open(built["archive"]) as tar:
+    with tarfile.open(archived["archive"]) as tar:
         tar.extractall(unpacked, filter="data")
     folder = unpacked / ARCHIVE.removesuffix(".tar.gz")
     (folder / "report.html").write_text("<html>edited</html>")  # listed in SHA256SUMS only
-    done = cli("verify", folder, "--root", built["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
+    done = cli("verify", folder, "--root", archived["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
     assert done.returncode == 2 and "checksum mismatch for" in done.stderr and "report.html" in done.stderr
     edited = sandbox / "edited"
-    shutil.copytree(built["results"], edited)
+    shutil.copytree(archived["results"], edited)
     (edited / CHANGED).write_text(
         (edited / CHANGED).read_text().replace("2.64575131106459", "2.6457513110646")
     )
-    done = cli("verify", edited, "--root", built["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
+    done = cli("verify", edited, "--root", archived["checkout"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
     assert done.returncode == 2 and done.stdout == "" and done.stderr.count("\n") == 1
     assert f"{edited / CHANGED}: does not match its checksum" in done.stderr
     shutil.rmtree(unpacked)
     shutil.rmtree(edited)
 
 
-def test_diff_of_a_build_against_itself_is_empty(built, sandbox):
-    done = cli("diff", built["results"], built["results"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
+def test_diff_of_a_build_against_itself_is_empty(archived, sandbox):
+    done = cli("diff", archived["results"], archived["results"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
     assert (
         done.returncode == 0 and done.stdout.startswith("no numbers changed") and done.stdout.count("\n") == 1
     )
-    done = cli("diff", built["archive"], built["results"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
+    done = cli("diff", archived["archive"], archived["results"], cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
     assert done.returncode == 0 and done.stdout.startswith("no numbers changed"), done.stdout + done.stderr
 
 
-def test_diff_names_each_changed_number_with_its_relative_change(built, sandbox):
+def test_diff_names_each_changed_number_with_its_relative_change(archived, sandbox):
     other = sandbox / "other"
-    shutil.copytree(built["results"], other)
+    shutil.copytree(archived["results"], other)
     path = other / CHANGED
     summary = json.loads(path.read_text())
     summary["numbers"]["frequencies_rad_per_s"]["value"][1] *= 1.01
     del summary["numbers"]["n"]
     path.write_text(json.dumps(summary))
-    done = cli("diff", built["results"], other, cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
+    done = cli("diff", archived["results"], other, cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
     assert done.returncode == 1, done.stdout + done.stderr
     rows = {line.split()[1]: line for line in done.stdout.splitlines()[1:-1]}
     assert set(rows) == {"frequencies_rad_per_s[1]", "n"}
     assert "+1.000e-02" in rows["frequencies_rad_per_s[1]"] and "removed" in rows["n"]
 
 
-def test_diff_refuses_a_folder_that_is_not_results(built, sandbox):
-    done = cli("diff", built["results"], sandbox / "cwd", cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
+def test_diff_refuses_a_folder_that_is_not_results(archived, sandbox):
+    done = cli("diff", archived["results"], sandbox / "cwd", cwd=sandbox / "cwd", tmpdir=sandbox / "tmp")
     assert done.returncode == 2 and done.stdout == ""
     assert "not a results folder" in done.stderr and done.stderr.count("\n") == 1
 
@@ -318,12 +328,12 @@ def test_tolerance_rule():
 
 @pytest.mark.slow
 @pytest.mark.pipeline
-def test_the_snakemake_target_verifies_and_writes_only_its_log(built, sandbox):
+def test_the_snakemake_target_verifies_and_writes_only_its_log(archived, sandbox):
     from .conftest import snakemake
 
     repo = checkout_copy(sandbox / "repo")
     shutil.copy2(ROOT / "pyproject.toml", repo / "pyproject.toml")
-    done = snakemake(repo, "-c", "1", "verify", "--config", f"archive={built['archive']}")
+    done = snakemake(repo, "-c", "1", "verify", "--config", f"archive={archived['archive']}")
     assert "OK: all" in done.stdout + done.stderr
     assert listing(repo / "results") == ["logs", "logs/verify.log"]
     shutil.rmtree(repo)
