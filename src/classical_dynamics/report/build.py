@@ -191,6 +191,7 @@ class Report:
             benchmark_fig=self.benchmark_fig,
             claims=self.claims,
             count_by_kind=claims_mod.count_by_kind,
+            effect_names=lambda study: STUDIES[study].effect_names(),
             long_tables=lambda study: Markup("".join(self.long_tables.get(study, []))),
             stability=self.stability,
             scenes=self.scenes_table,

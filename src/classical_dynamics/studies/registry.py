@@ -38,6 +38,12 @@ class Study:
     def schema(self) -> Path:
         return self.file("schema.yaml")
 
+    def effect_names(self) -> list[str]:
+        """The effects its scenes may list, in the schema's order (the tests hold schema and registry
+        equal)."""
+        schema = yaml.load(self.schema.read_text(encoding="utf-8"), Loader=yaml.SafeLoader)
+        return list(schema["properties"].get("effects", {}).get("properties", {}))
+
 
 LIST = HERE / "registry.yaml"
 STUDIES = {
