@@ -6,12 +6,14 @@ steady rotations of Theorems 2 and 3 solved here from the same equations, the en
 from dataclasses import replace
 from types import SimpleNamespace
 
+import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
+from scipy.spatial.transform import Rotation
 
 from classical_dynamics.studies.results import Results
-from classical_dynamics.studies.self_excited import viscous
+from classical_dynamics.studies.self_excited import space, viscous
 
 
 def _results():
@@ -145,3 +147,116 @@ def test_special_function_costs_keep_their_bounds():
     # the series serves small x, the expansion large x (Lee (5.38)-(5.48))
     assert got["si_ci_reaches_1e-12_x2_series"] == 1
     assert got["si_ci_asymptotic_error_x30"] < 1e-12
+
+
+# --- accuracy.py: what accuracy costs on Lee's plane (2.10) --------------------------------------------
+
+
+@pytest.fixture
+def small_accuracy(monkeypatch):
+    """accuracy.py with two methods, two settings and a single timed run each (no time is asserted)."""
+    from classical_dynamics.studies.self_excited import accuracy
+
+    monkeypatch.setattr(accuracy, "ADAPTIVE", ("dop853", "scipy:DOP853"))
+    monkeypatch.setattr(accuracy, "TOLERANCES", (1e-6, 1e-10))
+    # no fixed-step splitting: numba compiles symplectic.integrate anew for each force function (3 s); the
+    # splitting's order is tested on the oscillator in test_solvers.py
+    monkeypatch.setattr(accuracy, "STEPS", ())
+    monkeypatch.setattr(accuracy, "PERIODS", 2)
+    monkeypatch.setattr(accuracy, "min_time", lambda run, **_: (1e-3, run(), 1))
+    return accuracy
+
+
+def _plane_energy(phi2, p1, m1):
+    """Lee (2.10) without drag, phi2'' = m1 + sin(phi2): E = p1^2/2 - m1 phi2 + cos(phi2) is constant."""
+    return 0.5 * p1**2 - m1 * phi2 + np.cos(phi2)
+
+
+def test_separatrix_energy_gap_and_the_runs_that_cross_it(small_accuracy):
+    m1 = 0.5
+    results = _results()
+    small_accuracy.separatrix(results, m1, True)
+    got = _values(results)
+    # the start: p1 on the separatrix through the saddle phi_s = -arcsin m1 at the far turning point phi_c,
+    # lowered by 1e-6; its energy below the saddle's, from E written out here
+    phi_s = -np.arcsin(m1)
+    phi_c = phi_s - (np.pi - 2 * np.arcsin(m1))
+    p_sep = np.sqrt(2 * (_plane_energy(phi_s, 0.0, m1) - _plane_energy(phi_c, 0.0, m1)))
+    gap = _plane_energy(phi_s, 0.0, m1) - _plane_energy(phi_c, p_sep * (1 - 1e-6), m1)
+    assert got["separatrix_energy_gap"] == pytest.approx(gap, rel=1e-6)
+    frame = results.tables["accuracy_separatrix"][0]
+    assert (~frame.wrong_side | (frame.energy_error >= gap)).all()  # crossing needs |dE| >= the gap
+    tight = frame[(frame.kind == "tolerance") & (frame.setting == 1e-10)]
+    assert (tight.energy_error < gap).all() and not tight.wrong_side.any()
+    loose = frame[(frame.kind == "tolerance") & (frame.setting == 1e-6)]
+    assert (loose.energy_error.to_numpy() > tight.energy_error.to_numpy()).all()
+    assert got["separatrix_runs_on_wrong_side"] == int(frame.wrong_side.sum())
+    assert "work_precision_separatrix" in results.timing_figures
+
+
+def test_limit_cycle_runs_end_where_the_closed_form_puts_them(small_accuracy):
+    # F of (2.30): after two of Jacobi's periods 4K(k)/sqrt(alpha + beta), phi2 has advanced 4 pi and p1 is
+    # back; scipy's ellipk gives the period, and a run of solve_ivp on (2.10) written here must agree
+    from scipy.special import ellipk
+
+    m1, nu = 1.2, 0.3
+    results = _results()
+    small_accuracy.limit_cycle(results, m1, nu, True)
+    frame = results.tables["accuracy_limit_cycle"][0]
+    alpha, beta = m1 / nu, 2 / np.sqrt(1 + 4 * nu**2)
+    span = 2 * 4 * ellipk(2 * beta / (alpha + beta)) / np.sqrt(alpha + beta)
+    sigma3 = np.arctan(-1 / (2 * nu))
+    y0 = [-sigma3, np.sqrt(alpha + beta * np.sin(0.0))]
+    run = solve_ivp(
+        lambda _, y: [y[1], m1 + np.sin(y[0]) - nu * y[1] ** 2], (0, span), y0, rtol=1e-12, atol=1e-12
+    )
+    assert np.hypot(run.y[0, -1] - y0[0] - 4 * np.pi, run.y[1, -1] - y0[1]) < 1e-8
+    tight = frame[frame.setting == 1e-10]
+    assert (tight.error < 1e-7).all()
+    assert (frame[frame.setting == 1e-6].error.to_numpy() > tight.error.to_numpy()).all()
+
+
+# --- space.py: the attitude's geometry ----------------------------------------------------------------------
+
+
+def test_wander_of_a_cone_is_its_half_angle_about_its_axis():
+    # unit vectors on a cone of half-angle 3 degrees about a tilted axis c: the mean direction is c and the
+    # largest angle from it is the half-angle; the path in the tangent plane is a circle of that radius
+    c = np.array([1.0, 2.0, 2.0]) / 3.0
+    e1 = np.cross(c, [0.0, 0.0, 1.0])
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(c, e1)
+    half = np.radians(3.0)
+    t = np.linspace(0.0, 2 * np.pi, 360, endpoint=False)[:, None]
+    ls = np.cos(half) * c + np.sin(half) * (np.cos(t) * e1 + np.sin(t) * e2)
+    plane, largest = space.wander(ls)
+    assert largest == pytest.approx(3.0, rel=1e-9)
+    np.testing.assert_allclose(np.hypot(*plane.T), np.degrees(np.sin(half)), rtol=1e-9)
+
+
+def test_euler_angle_figure_draws_the_line_of_nodes_normal_to_both_z_axes():
+    # Lee's Figures 1.1-1.2: the line of nodes lies in the space XY-plane and in the body's xy-plane, so it is
+    # normal to Z and to the body z-axis, whose angle from Z is theta; the matrix is built here from scipy
+    angles = (0.7, 0.5, 1.1)
+    R = Rotation.from_euler("ZXZ", angles).as_matrix()
+    np.testing.assert_allclose(space.angles_matrix(*angles), R, atol=1e-14)
+    fig = plt.figure()
+    ax = fig.add_subplot(projection="3d")
+    space.draw_frames(ax, angles)
+    dashed = [line for line in ax.lines if line.get_linestyle() == "--"]
+    assert len(dashed) == 1
+    x, y, z = (np.asarray(v) for v in dashed[0].get_data_3d())
+    node = np.array([x[1] - x[0], y[1] - y[0], z[1] - z[0]])
+    assert abs(node[2]) < 1e-14 and abs(node @ R[:, 2]) < 1e-14
+    # the arcs: theta's runs from Z to the body z-axis at radius 0.55, through the angle theta
+    arc = space._arc(np.array([0.0, 0.0, 1.0]), R[:, 2], 0.55)
+    np.testing.assert_allclose(np.linalg.norm(arc, axis=1), 0.55, rtol=1e-14)
+    assert np.arccos(arc[-1] @ R[:, 2] / 0.55) < 1e-7 and np.arccos(R[2, 2]) == pytest.approx(0.5)
+    # the quaternion of the matrix gives it back (Shepperd's branch by the largest term; a turn near pi too)
+    for matrix in (R, Rotation.from_rotvec([0.0, 3.1, 0.2]).as_matrix()):
+        np.testing.assert_allclose(
+            space.quaternion_matrix(space.matrix_quaternion(matrix)), matrix, atol=1e-14
+        )
+    assert space.rotation_angle(R) == pytest.approx(Rotation.from_matrix(R).magnitude(), rel=1e-12)
+    space.draw_sphere(fig.add_subplot(projection="3d"), np.eye(3)[[0, 1]], np.eye(3)[[2, 2]] + [0.01, 0, 0])
+    plt.close(fig)
