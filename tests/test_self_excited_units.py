@@ -260,3 +260,60 @@ def test_euler_angle_figure_draws_the_line_of_nodes_normal_to_both_z_axes():
     assert space.rotation_angle(R) == pytest.approx(Rotation.from_matrix(R).magnitude(), rel=1e-12)
     space.draw_sphere(fig.add_subplot(projection="3d"), np.eye(3)[[0, 1]], np.eye(3)[[2, 2]] + [0.01, 0, 0])
     plt.close(fig)
+
+
+# --- largest_axis.py: the degenerate point, the bifurcations, the cylinder ----------------------------------
+
+
+@pytest.mark.parametrize("m1", [1.0, -1.0])
+def test_degenerate_point_is_reached_algebraically_at_lees_rate(m1):
+    from classical_dynamics.studies.self_excited import largest_axis
+
+    # |m1| = 1: along the separatrix p1^2 = 2(x - sin x) ~ x^3/3, so dx/dtau = -x^(3/2)/sqrt3 and
+    # x = 12/(tau + c)^2: C = 12 exactly (the quadrature done by hand)
+    results = _results()
+    largest_axis._degenerate_approach(results, m1)
+    got = _values(results)
+    assert got["degenerate_approach_coefficient"] == pytest.approx(12.0, rel=1e-4)
+    # from x = 0.5 at tau = 0: c = sqrt(12/0.5) to leading order, so x(100) is near 12/(100 + 4.9)^2
+    assert got["degenerate_distance_tau100"] == pytest.approx(12 / (100 + np.sqrt(24)) ** 2, rel=0.05)
+    assert all(case["holds"] for case in results.stability)
+
+
+def test_singular_points_appear_in_pairs_only_for_m1_within_one():
+    from classical_dynamics.studies.self_excited import largest_axis
+
+    # sin(phi2) = -m1 has two roots in (-pi, pi] for |m1| < 1 (a saddle where cos > 0, a center where
+    # cos < 0) and none beyond: the figure's markers, counted here
+    results = _results()
+    largest_axis._singular_point_bifurcation(results)
+    assert results.stability[0]["measured"] == 0
+    fig = results.figures["bifurcation_m1"][0]
+    markers = {line.get_label(): line.get_xdata() for line in fig.axes[0].lines if line.get_marker() in "xo"}
+    m1_grid = np.linspace(-1.5, 1.5, 60)
+    inside = m1_grid[np.abs(m1_grid) < 1]
+    for kind in ("saddles", "centers"):
+        np.testing.assert_allclose(np.sort(markers[f"{kind}, found numerically"]), inside)
+    plt.close(fig)
+
+
+def test_cylinder_draws_f_and_its_mirror_and_a_start_that_winds_onto_f():
+    from classical_dynamics.models import self_excited as se
+    from classical_dynamics.studies.self_excited import largest_axis
+
+    m1, nu = 0.8, 0.2
+    results = _results()
+    largest_axis._cylinder(results, m1, nu, se.singular_points(m1, -nu, -np.pi, np.pi))
+    fig = results.figures["cylinder"][0]
+    lines = {line.get_label(): np.array(line.get_data_3d()) for line in fig.axes[0].lines}
+    # F of (2.30) written out here: p1^2 = m1/nu + 2 sin(phi2 + sigma3)/sqrt(1 + 4 nu^2)
+    sigma3 = np.arctan(-1 / (2 * nu))
+    x, y, p1 = lines["$F$ (stable)"]
+    phi = np.arctan2(y, x)
+    np.testing.assert_allclose(p1**2, m1 / nu + 2 * np.sin(phi + sigma3) / np.sqrt(1 + 4 * nu**2), rtol=1e-12)
+    np.testing.assert_allclose(lines["$F_1$ (unstable)"][2], -p1)
+    # the start above F1 has wound onto F by tau = 60: its end satisfies the closed form above
+    x, y, q = lines["above $F_1$: winds onto $F$"]
+    end = np.arctan2(y[-1], x[-1])
+    assert q[-1] ** 2 == pytest.approx(m1 / nu + 2 * np.sin(end + sigma3) / np.sqrt(1 + 4 * nu**2), rel=1e-6)
+    plt.close(fig)
