@@ -317,3 +317,50 @@ def test_cylinder_draws_f_and_its_mirror_and_a_start_that_winds_onto_f():
     end = np.arctan2(y[-1], x[-1])
     assert q[-1] ** 2 == pytest.approx(m1 / nu + 2 * np.sin(end + sigma3) / np.sqrt(1 + 4 * nu**2), rel=1e-6)
     plt.close(fig)
+
+
+# --- middle_axis.py: the plane's force and its singular points ----------------------------------------------
+
+_FORMS = {"sinh": np.sinh, "cosh": np.cosh, "exp": np.exp, "exp-": lambda x: np.exp(-x)}
+
+
+@pytest.mark.parametrize("form", list(_FORMS))
+def test_middle_axis_force_derivatives_by_central_differences(form):
+    from classical_dynamics.studies.self_excited import middle_axis
+
+    # F = m + eps f(phi2) with f written out here; its derivatives by central differences of numpy's values
+    m, eps, phi, h = 0.4, -1.3, 0.37, 1e-3
+    values = middle_axis._derivatives(m, form, eps, phi)
+    F = lambda x: m + eps * _FORMS[form](x)  # noqa: E731
+    assert values[0] == pytest.approx(F(phi), rel=1e-14)
+    assert values[1] == pytest.approx((F(phi + h) - F(phi - h)) / (2 * h), rel=1e-6)
+    assert values[2] == pytest.approx((F(phi + h) - 2 * F(phi) + F(phi - h)) / h**2, rel=1e-5)
+    third = (F(phi + 2 * h) - 2 * F(phi + h) + 2 * F(phi - h) - F(phi - 2 * h)) / (2 * h**3)
+    assert values[3] == pytest.approx(third, rel=1e-4)
+    assert middle_axis._derivatives(m, "rare", eps, phi) == (m, 0.0, 0.0, 0.0)
+
+
+@pytest.mark.parametrize(
+    "m,form,eps,count",
+    [
+        (0.5, "sinh", 1.0, 1),
+        (-2.0, "cosh", 1.0, 2),
+        (0.5, "cosh", 1.0, 0),
+        (-0.5, "exp", 1.0, 1),
+        (0.5, "exp", 1.0, 0),
+        (-2.0, "exp-", 1.0, 1),
+        (0.3, "rare", 0.0, 0),
+    ],
+)
+def test_middle_axis_singular_points_are_the_zeros_of_the_force_typed_by_its_slope(m, form, eps, count):
+    from classical_dynamics.studies.self_excited import middle_axis
+
+    # q1' = F(phi2) + mu1 q1^2 vanishes with q1 = 0 where F = 0; the linearization [[0, 1], [F', 0]] makes a
+    # saddle where F' > 0 and a center where F' < 0
+    points = middle_axis._singular_points(m, form, eps)
+    assert len(points) == count
+    for point in points:
+        phi = point["phi2"]
+        assert m + eps * _FORMS[form](phi) == pytest.approx(0.0, abs=1e-12)
+        slope = (_FORMS[form](phi + 1e-6) - _FORMS[form](phi - 1e-6)) / 2e-6 * eps
+        assert point["type"] == ("saddle" if slope > 0 else "center")
