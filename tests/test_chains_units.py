@@ -335,3 +335,32 @@ def test_time_domain_run_on_two_particles_reads_the_laguerre_frequencies():
     shift = results.tables["amplitude_shift"][0]
     assert shift.omega_over_linear.iloc[0] == pytest.approx(1.0, abs=1e-3)
     assert 0.9 < shift.omega_over_linear.iloc[1] < 0.99  # larger swings are slower
+
+
+# --- planar.py: the rotating ring (Lamb Art. 98) ---------------------------------------------------------
+
+
+def test_ring_run_records_lambs_tension_and_wave_speeds_for_a_small_ring():
+    from classical_dynamics.studies.chains import planar
+
+    n, omega = 48, 1.5
+    data = {
+        "chain": {"model": "ring", "n": n, "length_m": 2 * np.pi, "mass_kg": 1.0},
+        "effects": {"rotation": {"omega_rad_per_s": omega}, "springs": {"k_n_per_m": 1e5}},
+        "analysis": {"ring_waves": {"s_max": 3}},
+    }
+    results = _results()
+    planar.run_ring(SimpleNamespace(name="r", title="r", data=data), results, True)
+    got = _values(results)
+    # each bead m = rho 2 pi a/n is held by two tensions T at the angle 2 pi/n: 2 T sin(pi/n) = m omega^2 a,
+    # so T/(rho omega^2 a^2) = (pi/n)/sin(pi/n), Lamb's 1 as n grows
+    assert got["tension_over_rho_omega2_a2"] == pytest.approx((np.pi / n) / np.sin(np.pi / n), rel=1e-12)
+    assert got["stiffness_ratio"] == pytest.approx(1e5 / (1.0 / n * omega**2), rel=1e-12)
+    # Lamb: the first wave at rest in space, the second at 2 omega (s^2 - 1)/(s^2 + 1), to O((s/n)^2)
+    assert got["stationary_wave_speed_max"] < 2 * (3 / n) ** 2
+    assert got["second_wave_deviation_max"] < 4 * (3 / n) ** 2
+    frame = results.tables["waves"][0]
+    s = frame.s.to_numpy()
+    np.testing.assert_allclose(frame.lamb_space_2, 2 * (s**2 - 1) / (s**2 + 1))
+    assert got["dispersion_roots_exact"] == 1
+    assert all(case["holds"] for case in results.stability), results.stability
