@@ -364,3 +364,73 @@ def test_middle_axis_singular_points_are_the_zeros_of_the_force_typed_by_its_slo
         assert m + eps * _FORMS[form](phi) == pytest.approx(0.0, abs=1e-12)
         slope = (_FORMS[form](phi + 1e-6) - _FORMS[form](phi - 1e-6)) / 2e-6 * eps
         assert point["type"] == ("saddle" if slope > 0 else "center")
+
+
+# --- section5.py: time-dependent torques and Lee's Case I -------------------------------------------------
+
+
+def _modulated_by_scipy(V, F, t):
+    """Lee (5.3) with the torque m F(t) (5.4), written out here and integrated by scipy."""
+    (m1, m2, m3), h, nu, mu = V.m, V.h, V.nu, V.mu
+
+    def rhs(s, w):
+        f = F(s)
+        return [
+            h * w[1] * w[2] + m1 * f - nu * w[0],
+            -h * w[0] * w[2] + m2 * f - nu * w[1],
+            m3 * f - mu * w[2],
+        ]
+
+    return solve_ivp(rhs, (0.0, t), V.omega0, method="DOP853", rtol=1e-12, atol=1e-14).y[:, -1]
+
+
+def test_time_dependent_torque_quadratures_against_scipy_and_the_principal_arctan_slip():
+    from classical_dynamics.models.viscous_medium import modulation
+    from classical_dynamics.studies.self_excited import section5
+
+    V = viscous.medium(
+        _viscous_scene(
+            {"nu": 0.3, "mu": 0.5, "torque": [0.4, -0.2, 0.3], "omega0": [0.5, 0.8, 2.0], "t_max": 1}
+        ).data
+    )
+    written = {(0, 0.5, 2.0): lambda s: 1 + 0.5 * np.sin(2 * s), (1, 1.0, 1.0): lambda s: 1 - np.exp(-s)}
+    for spec, F in written.items():
+        reference = _modulated_by_scipy(V, F, 5.0)
+        q = section5._quadratures(V, modulation(*spec), 5.0)
+        np.testing.assert_allclose(q["general"], reference, atol=1e-9)
+        np.testing.assert_allclose(q["fixed"], reference, atol=1e-9)
+        # sigma1 = arctan(m1/m2) as a principal value puts the torque term in the wrong quadrant (m2 < 0)
+        assert np.max(np.abs(q["principal"][:2] - reference[:2])) > 0.05
+    results = _results()
+    section5.time_dependent_torque(results, V)
+    got = _values(results)
+    assert got["td_general_vs_ode"] < 1e-9 and got["td_frictionless_fixed_vs_ode"] < 1e-9
+    assert 0 < got["td_theorem_1_ratio"] <= 1  # Theorem 1 with M_i' = |m_i| max F
+    assert got["td_fixed_principal_arctan_gap"] > 0.05
+
+
+def test_case_one_panels_run_straight_to_the_point_and_keep_r_zero():
+    # Lee's Case I (r0 = 0, m3 = 0): r' = -mu r keeps r = 0, so (5.49) is linear and (p, q) runs straight
+    # to (m1/nu, m2/nu); without friction to infinity along p0 + m1 t
+    block = {"nu": 0.3, "mu": 0.5, "torque": [0.4, -0.2, 0.0], "omega0": [0.5, 0.8, 2.0], "t_max": 10}
+    results = _results()
+    viscous.run(_viscous_scene(block, analysis={"case_one": True}), results, True)
+    got = _values(results)
+    assert got["case_one_r_max"] == 0.0
+    assert got["case_one_line_distance"] < 1e-9 and got["case_one_frictionless_gap"] < 1e-9
+    assert got["case_one_limit_gap"] < 1e-9
+    assert len(results.figures["solution"][0].axes) >= 4
+    plt.close(results.figures["solution"][0])
+
+
+def test_singular_curve_panel_finds_theorem_2s_center():
+    block = {"torque": [0.4, -0.2, 0.0], "omega0": [0.5, 0.8, 2.0], "t_max": 10}
+    results = _results()
+    viscous.run(
+        _viscous_scene(block, drag=False, moments=(2.5, 1.0, 2.5), analysis={"singular_curve": True}),
+        results,
+        True,
+    )
+    got = _values(results)
+    assert got["circle_center_fit_gap"] < 1e-8  # the fitted center against (m2/(h r0), -m1/(h r0))
+    plt.close(results.figures["solution"][0])
