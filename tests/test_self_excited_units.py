@@ -434,3 +434,50 @@ def test_singular_curve_panel_finds_theorem_2s_center():
     got = _values(results)
     assert got["circle_center_fit_gap"] < 1e-8  # the fitted center against (m2/(h r0), -m1/(h r0))
     plt.close(results.figures["solution"][0])
+
+
+# --- middle_axis.py: three planes of Lee §3 run whole -----------------------------------------------------
+
+
+def _middle_scene(name):
+    import yaml
+
+    from .conftest import ROOT
+
+    path = ROOT / "workflow" / "scenes" / "self_excited" / f"{name}.yaml"
+    return SimpleNamespace(name=name, title=name, data=yaml.safe_load(path.read_text()), path=path)
+
+
+def _nu_c(moments):
+    """Lee's critical drag b/(2(a + c)) from the moments, a = (B - C)/A, b = (A - C)/B, c = (A - B)/C."""
+    A, B, C = sorted(moments, reverse=True)
+    a, b, c = (B - C) / A, (A - C) / B, (A - B) / C
+    return b / (2 * (a + c))
+
+
+def test_middle_axis_planes_runaway_escape_and_the_rare_case():
+    from classical_dynamics.studies import self_excited
+
+    # plane II without drag (3.25): q1' = m3 + eps e^(-phi2); phi2 runs away and q1' tends to m3
+    runaway = self_excited.run(_middle_scene("middle_plane_two_runaway"), True)
+    got = _values(runaway)
+    assert got["form"] == "exp-" and got["singular_points"] == []
+    assert got["runaway_rate"] == pytest.approx(0.5, rel=1e-9)
+    # beyond the critical drag the cosh form (3.56); m2 + eps cosh(phi2) = 0 has no root for m2 = 0.5 > 0
+    beyond = self_excited.run(_middle_scene("middle_beyond_critical_none"), True)
+    got = _values(beyond)
+    moments = _middle_scene("middle_beyond_critical_none").data["body"]["moments"]
+    assert got["nu_c"] == pytest.approx(_nu_c(moments), rel=1e-14) and got["nu"] > got["nu_c"]
+    assert got["form"] == "cosh" and got["n_saddles"] == got["n_centers"] == 0
+    # the rare case (3.65) at nu = nu_c: q1' = m + mu1 q1^2 with mu1 = -nu tends to sqrt(m/nu) from above
+    # the line q1 = -sqrt(m/nu); below it q1 escapes as e^(2 nu tau)
+    rare = self_excited.run(_middle_scene("middle_rare"), True)
+    got = _values(rare)
+    nu = _nu_c(_middle_scene("middle_rare").data["body"]["moments"])
+    assert got["form"] == "rare" and got["nu"] == pytest.approx(nu, rel=1e-14)
+    assert got["limit_q1"] == pytest.approx(np.sqrt(0.5 / nu), rel=1e-9)
+    assert got["escape_exponent"] == pytest.approx(2 * nu, rel=1e-6)
+    for results in (runaway, beyond, rare):
+        assert all(case["holds"] for case in results.stability), results.stability
+        for fig, _ in results.figures.values():
+            plt.close(fig)
