@@ -340,10 +340,12 @@ def test_time_domain_run_on_two_particles_reads_the_laguerre_frequencies():
 # --- planar.py: the rotating ring (Lamb Art. 98) ---------------------------------------------------------
 
 
-def test_ring_run_records_lambs_tension_and_wave_speeds_for_a_small_ring():
+def test_ring_run_records_lambs_tension_and_wave_speeds_for_a_small_ring(monkeypatch):
     from classical_dynamics.studies.chains import planar
 
-    n, omega = 48, 1.5
+    # sympy's roots of Lamb's (44) take most of the run's time: test_chains_planar.py checks them
+    monkeypatch.setattr(planar, "dispersion", lambda: (None, True))
+    n, omega = 40, 1.5
     data = {
         "chain": {"model": "ring", "n": n, "length_m": 2 * np.pi, "mass_kg": 1.0},
         "effects": {"rotation": {"omega_rad_per_s": omega}, "springs": {"k_n_per_m": 1e5}},
@@ -362,5 +364,4 @@ def test_ring_run_records_lambs_tension_and_wave_speeds_for_a_small_ring():
     frame = results.tables["waves"][0]
     s = frame.s.to_numpy()
     np.testing.assert_allclose(frame.lamb_space_2, 2 * (s**2 - 1) / (s**2 + 1))
-    assert got["dispersion_roots_exact"] == 1
     assert all(case["holds"] for case in results.stability), results.stability
