@@ -341,7 +341,8 @@ def detuned_response(sigma, phi, modal_force, delta):
 def _exact_lowest(built):
     """sigma_1 at 50 digits from the closed form the scene's chain has (sympy): the reference's resonance."""
     _, roots, values = symbolic.derive(built.masses, built.segment_stiffness, built.geometry.ends)
-    return symbolic.sp.sqrt(roots[0].subs(values)).evalf(60)
+    exact = {symbol: symbolic.sp.Rational(value) for symbol, value in values.items()}  # a float: 15 digits
+    return symbolic.sp.sqrt(roots[0].subs(exact)).evalf(60)
 
 
 def _response_mp(built, sigma1, delta):

@@ -1,0 +1,483 @@
+"""Unit tests of studies/self_excited: viscous.py (Lee §5), accuracy.py and space.py, each against a
+reference the module does not compute: Lee's equations (5.49) integrated here by scipy's solve_ivp, the
+steady rotations of Theorems 2 and 3 solved here from the same equations, the energy integral of Lee's plane
+(2.10), and the closed form of his limit cycle F."""
+
+from dataclasses import replace
+from types import SimpleNamespace
+
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+from scipy.spatial.transform import Rotation
+
+from classical_dynamics.studies.results import Results
+from classical_dynamics.studies.self_excited import space, viscous
+
+
+def _results():
+    return Results("self_excited", "test", "test")
+
+
+def _values(results):
+    return {name: entry["value"] for name, entry in results.numbers.items()}
+
+
+# --- viscous.py: Lee §5 ----------------------------------------------------------------------------------
+
+
+def _viscous_scene(viscous_block, drag=True, moments=(2.5, 2.5, 1.0), analysis=None):
+    effects = {"body_torque": None, **({"drag": None} if drag else {})}
+    data = {"body": {"moments": list(moments)}, "viscous": viscous_block, "effects": effects}
+    return SimpleNamespace(name="v", title="v", data={**data, "analysis": analysis or {}})
+
+
+def _lee_549(h, nu, mu, m, omega0, t_max, t_eval):
+    """Lee (5.49) written out here: p' - h q r = m1 - nu p, q' + h p r = m2 - nu q, r' = m3 - mu r."""
+
+    def rhs(_, w):
+        p, q, r = w
+        return [h * q * r + m[0] - nu * p, -h * p * r + m[1] - nu * q, m[2] - mu * r]
+
+    return solve_ivp(rhs, (0.0, t_max), omega0, method="DOP853", rtol=1e-12, atol=1e-14, t_eval=t_eval)
+
+
+def test_viscous_run_with_friction_tends_to_theorem_3s_rotation():
+    block = {"nu": 0.3, "mu": 0.5, "torque": [0.4, -0.2, 0.3], "omega0": [0.5, 0.8, 2.0], "t_max": 60}
+    results = _results()
+    viscous.run(_viscous_scene(block), results, True)
+    got = _values(results)
+    h = (2.5 - 1.0) / 2.5
+    assert got["h"] == pytest.approx(h) and got["case"] == "III"
+    # Theorem 3: the steady state of (5.49), r = m3/mu and (p, q) from the 2x2 linear system it leaves
+    r = 0.3 / 0.5
+    p, q = np.linalg.solve([[-0.3, h * r], [-h * r, -0.3]], [-0.4, 0.2])
+    assert (got["limit_p"], got["limit_q"], got["limit_r"]) == pytest.approx((p, q, r), rel=1e-12)
+    run = _lee_549(h, 0.3, 0.5, (0.4, -0.2, 0.3), [0.5, 0.8, 2.0], 60.0, [60.0])
+    assert got["limit_gap"] == pytest.approx(np.max(np.abs(run.y[:, -1] - [p, q, r])), rel=1e-4)
+    assert got["closed_vs_ode"] < 1e-9
+    # Theorem 1: |p|, |q| <= delta + (|m1| + |m2|)/nu, |r| <= |r0| + |m3|/mu
+    assert 0 < got["theorem_1_ratio"] <= 1
+    assert got["singular_points"][0]["type"] == "stable focus"
+    # w = 1 + (nu + i g1)/mu, g1 = h m3/mu, xi's final rate (5.27)
+    g1 = h * r
+    assert complex(got["w_real"], got["w_imag"]) == pytest.approx(1 + (0.3 + 1j * g1) / 0.5, rel=1e-14)
+    assert all(case["holds"] for case in results.stability)
+    assert "solution" in results.figures
+
+
+def test_viscous_run_without_friction_circles_about_theorem_2s_center():
+    block = {"torque": [0.4, -0.2, 0.0], "omega0": [0.5, 0.8, 2.0], "t_max": 10}
+    results = _results()
+    viscous.run(_viscous_scene(block, drag=False), results, True)
+    got = _values(results)
+    h, r0 = 0.6, 2.0
+    # Theorem 2: the permanent rotation (m2/(h r0), -m1/(h r0), r0), period 2 pi/|h r0|
+    center = got["singular_points"][0]
+    assert (center["p"], center["q"], center["r"]) == pytest.approx((-0.2 / (h * r0), -0.4 / (h * r0), r0))
+    assert got["period_tau"] == pytest.approx(2 * np.pi / (h * r0), rel=1e-14)
+    assert got["period_measured"] == pytest.approx(2 * np.pi / (h * r0), rel=1e-9)
+    assert got["radius_spread"] < 1e-10
+    run = _lee_549(h, 0.0, 0.0, (0.4, -0.2, 0.0), [0.5, 0.8, 2.0], 10.0, np.linspace(0, 10, 101))
+    radius = np.hypot(run.y[0] - center["p"], run.y[1] - center["q"])
+    assert np.ptp(radius) < 1e-9  # the circle, from scipy's integration of (5.49)
+
+
+def test_viscous_run_without_friction_with_an_axial_torque_has_no_singular_point():
+    block = {"torque": [0.4, -0.2, 0.3], "omega0": [0.5, 0.8, 2.0], "t_max": 6}
+    results = _results()
+    viscous.run(_viscous_scene(block, drag=False), results, True)
+    got = _values(results)
+    assert got["singular_points"] == []
+    assert got["r_final"] == pytest.approx(2.0 + 0.3 * 6, rel=1e-13)  # r = r0 + m3 t
+    t = np.linspace(0.0, 6.0, viscous.SAMPLES)
+    run = _lee_549(0.6, 0.0, 0.0, (0.4, -0.2, 0.3), [0.5, 0.8, 2.0], 6.0, t)
+    assert got["pq_max"] == pytest.approx(np.max(np.abs(run.y[:2])), rel=1e-9)
+    assert got["closed_form_error"] <= got["closed_form_bound"] + 1e-13
+
+
+def test_large_order_bound_holds_and_the_factor_is_lees():
+    V = viscous.medium(
+        _viscous_scene(
+            {"nu": 0.3, "mu": 0.5, "torque": [0.4, -0.2, 0.3], "omega0": [0.5, 0.8, 2.0], "t_max": 1}
+        ).data
+    )
+    results = _results()
+    viscous.large_order(results, V, nu=0.32, mu=0.05, times=(5.0, 20.0))
+    got = _values(results)
+    h, g1 = 0.6, 0.6 * 0.3 / 0.05  # xi's final rate h m3/mu
+    assert complex(got["large_order_w_real"], got["large_order_w_imag"]) == pytest.approx(
+        1 + (0.32 + 1j * g1) / 0.05, rel=1e-13
+    )
+    # the formula in double precision loses digits here (w = 7.4 + 72i, |g| = 48): its error against 30
+    # digits is its distance from the true motion, scipy's integration of (5.49), and its bound covers it
+    run = _lee_549(h, 0.32, 0.05, (0.4, -0.2, 0.3), [0.5, 0.8, 2.0], 20.0, [5.0, 20.0])
+    y, _ = replace(V, nu=0.32, mu=0.05).closed_form([5.0, 20.0])
+    distance = np.max(np.hypot(*(y[:, :2] - run.y.T[:, :2]).T))
+    assert got["large_order_error"] == pytest.approx(distance, rel=1e-6)
+    assert 1e-3 < got["large_order_error"] <= got["large_order_bound"] + 1e-13
+
+
+def test_solution_costs_reach_the_30_digit_state_by_series_and_integration():
+    V = viscous.medium(
+        _viscous_scene(
+            {"nu": 0.3, "mu": 0.5, "torque": [0.4, -0.2, 0.3], "omega0": [0.5, 0.8, 2.0], "t_max": 1}
+        ).data
+    )
+    results = _results()
+    viscous.solution_costs(results, V, True, t_end=2.0)
+    frame = results.tables["accuracy_solution"][0]
+    # more terms of the series, a smaller error; the best integrator reaches 1e-10
+    series = frame[frame.method == "Lee formula, series"].sort_values("setting")
+    assert series.error.iloc[-1] < 1e-12 < series.error.iloc[0]
+    assert frame[frame.method == "scipy:DOP853"].error.min() < 1e-10
+    # the state at t = 2 against scipy's own integration of (5.49)
+    run = _lee_549(0.6, 0.3, 0.5, (0.4, -0.2, 0.3), [0.5, 0.8, 2.0], 2.0, [2.0])
+    state, _ = V.closed_form([2.0])
+    np.testing.assert_allclose(state[0], run.y[:, 0], atol=1e-10)
+
+
+def test_special_function_costs_keep_their_bounds():
+    results = _results()
+    viscous.special_function_costs(results, True)
+    got = _values(results)
+    assert got["si_ci_error_over_bound"] <= 1.0
+    assert all(case["holds"] for case in results.stability)
+    # the series serves small x, the expansion large x (Lee (5.38)-(5.48))
+    assert got["si_ci_reaches_1e-12_x2_series"] == 1
+    assert got["si_ci_asymptotic_error_x30"] < 1e-12
+
+
+# --- accuracy.py: what accuracy costs on Lee's plane (2.10) --------------------------------------------
+
+
+@pytest.fixture
+def small_accuracy(monkeypatch):
+    """accuracy.py with two methods, two settings and a single timed run each (no time is asserted)."""
+    from classical_dynamics.studies.self_excited import accuracy
+
+    monkeypatch.setattr(accuracy, "ADAPTIVE", ("dop853", "scipy:DOP853"))
+    monkeypatch.setattr(accuracy, "TOLERANCES", (1e-6, 1e-10))
+    # no fixed-step splitting: numba compiles symplectic.integrate anew for each force function (3 s); the
+    # splitting's order is tested on the oscillator in test_solvers.py
+    monkeypatch.setattr(accuracy, "STEPS", ())
+    monkeypatch.setattr(accuracy, "PERIODS", 2)
+    monkeypatch.setattr(accuracy, "min_time", lambda run, **_: (1e-3, run(), 1))
+    return accuracy
+
+
+def _plane_energy(phi2, p1, m1):
+    """Lee (2.10) without drag, phi2'' = m1 + sin(phi2): E = p1^2/2 - m1 phi2 + cos(phi2) is constant."""
+    return 0.5 * p1**2 - m1 * phi2 + np.cos(phi2)
+
+
+def test_separatrix_energy_gap_and_the_runs_that_cross_it(small_accuracy):
+    m1 = 0.5
+    results = _results()
+    small_accuracy.separatrix(results, m1, True)
+    got = _values(results)
+    # the start: p1 on the separatrix through the saddle phi_s = -arcsin m1 at the far turning point phi_c,
+    # lowered by 1e-6; its energy below the saddle's, from E written out here
+    phi_s = -np.arcsin(m1)
+    phi_c = phi_s - (np.pi - 2 * np.arcsin(m1))
+    p_sep = np.sqrt(2 * (_plane_energy(phi_s, 0.0, m1) - _plane_energy(phi_c, 0.0, m1)))
+    gap = _plane_energy(phi_s, 0.0, m1) - _plane_energy(phi_c, p_sep * (1 - 1e-6), m1)
+    assert got["separatrix_energy_gap"] == pytest.approx(gap, rel=1e-6)
+    frame = results.tables["accuracy_separatrix"][0]
+    assert (~frame.wrong_side | (frame.energy_error >= gap)).all()  # crossing needs |dE| >= the gap
+    tight = frame[(frame.kind == "tolerance") & (frame.setting == 1e-10)]
+    assert (tight.energy_error < gap).all() and not tight.wrong_side.any()
+    loose = frame[(frame.kind == "tolerance") & (frame.setting == 1e-6)]
+    assert (loose.energy_error.to_numpy() > tight.energy_error.to_numpy()).all()
+    assert got["separatrix_runs_on_wrong_side"] == int(frame.wrong_side.sum())
+    assert "work_precision_separatrix" in results.timing_figures
+
+
+def test_limit_cycle_runs_end_where_the_closed_form_puts_them(small_accuracy):
+    # F of (2.30): after two of Jacobi's periods 4K(k)/sqrt(alpha + beta), phi2 has advanced 4 pi and p1 is
+    # back; scipy's ellipk gives the period, and a run of solve_ivp on (2.10) written here must agree
+    from scipy.special import ellipk
+
+    m1, nu = 1.2, 0.3
+    results = _results()
+    small_accuracy.limit_cycle(results, m1, nu, True)
+    frame = results.tables["accuracy_limit_cycle"][0]
+    alpha, beta = m1 / nu, 2 / np.sqrt(1 + 4 * nu**2)
+    span = 2 * 4 * ellipk(2 * beta / (alpha + beta)) / np.sqrt(alpha + beta)
+    sigma3 = np.arctan(-1 / (2 * nu))
+    y0 = [-sigma3, np.sqrt(alpha + beta * np.sin(0.0))]
+    run = solve_ivp(
+        lambda _, y: [y[1], m1 + np.sin(y[0]) - nu * y[1] ** 2], (0, span), y0, rtol=1e-12, atol=1e-12
+    )
+    assert np.hypot(run.y[0, -1] - y0[0] - 4 * np.pi, run.y[1, -1] - y0[1]) < 1e-8
+    tight = frame[frame.setting == 1e-10]
+    assert (tight.error < 1e-7).all()
+    assert (frame[frame.setting == 1e-6].error.to_numpy() > tight.error.to_numpy()).all()
+
+
+# --- space.py: the attitude's geometry ----------------------------------------------------------------------
+
+
+def test_wander_of_a_cone_is_its_half_angle_about_its_axis():
+    # unit vectors on a cone of half-angle 3 degrees about a tilted axis c: the mean direction is c and the
+    # largest angle from it is the half-angle; the path in the tangent plane is a circle of that radius
+    c = np.array([1.0, 2.0, 2.0]) / 3.0
+    e1 = np.cross(c, [0.0, 0.0, 1.0])
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(c, e1)
+    half = np.radians(3.0)
+    t = np.linspace(0.0, 2 * np.pi, 360, endpoint=False)[:, None]
+    ls = np.cos(half) * c + np.sin(half) * (np.cos(t) * e1 + np.sin(t) * e2)
+    plane, largest = space.wander(ls)
+    assert largest == pytest.approx(3.0, rel=1e-9)
+    np.testing.assert_allclose(np.hypot(*plane.T), np.degrees(np.sin(half)), rtol=1e-9)
+
+
+def test_euler_angle_figure_draws_the_line_of_nodes_normal_to_both_z_axes():
+    # Lee's Figures 1.1-1.2: the line of nodes lies in the space XY-plane and in the body's xy-plane, so it is
+    # normal to Z and to the body z-axis, whose angle from Z is theta; the matrix is built here from scipy
+    angles = (0.7, 0.5, 1.1)
+    R = Rotation.from_euler("ZXZ", angles).as_matrix()
+    np.testing.assert_allclose(space.angles_matrix(*angles), R, atol=1e-14)
+    fig = plt.figure()
+    ax = fig.add_subplot(projection="3d")
+    space.draw_frames(ax, angles)
+    dashed = [line for line in ax.lines if line.get_linestyle() == "--"]
+    assert len(dashed) == 1
+    x, y, z = (np.asarray(v) for v in dashed[0].get_data_3d())
+    node = np.array([x[1] - x[0], y[1] - y[0], z[1] - z[0]])
+    assert abs(node[2]) < 1e-14 and abs(node @ R[:, 2]) < 1e-14
+    # the arcs: theta's runs from Z to the body z-axis at radius 0.55, through the angle theta
+    arc = space._arc(np.array([0.0, 0.0, 1.0]), R[:, 2], 0.55)
+    np.testing.assert_allclose(np.linalg.norm(arc, axis=1), 0.55, rtol=1e-14)
+    assert np.arccos(arc[-1] @ R[:, 2] / 0.55) < 1e-7 and np.arccos(R[2, 2]) == pytest.approx(0.5)
+    # the quaternion of the matrix gives it back (Shepperd's branch by the largest term; a turn near pi too)
+    for matrix in (R, Rotation.from_rotvec([0.0, 3.1, 0.2]).as_matrix()):
+        np.testing.assert_allclose(
+            space.quaternion_matrix(space.matrix_quaternion(matrix)), matrix, atol=1e-14
+        )
+    assert space.rotation_angle(R) == pytest.approx(Rotation.from_matrix(R).magnitude(), rel=1e-12)
+    space.draw_sphere(fig.add_subplot(projection="3d"), np.eye(3)[[0, 1]], np.eye(3)[[2, 2]] + [0.01, 0, 0])
+    plt.close(fig)
+
+
+# --- largest_axis.py: the degenerate point, the bifurcations, the cylinder ----------------------------------
+
+
+@pytest.mark.parametrize("m1", [1.0, -1.0])
+def test_degenerate_point_is_reached_algebraically_at_lees_rate(m1):
+    from classical_dynamics.studies.self_excited import largest_axis
+
+    # |m1| = 1: along the separatrix p1^2 = 2(x - sin x) ~ x^3/3, so dx/dtau = -x^(3/2)/sqrt3 and
+    # x = 12/(tau + c)^2: C = 12 exactly (the quadrature done by hand)
+    results = _results()
+    largest_axis._degenerate_approach(results, m1)
+    got = _values(results)
+    assert got["degenerate_approach_coefficient"] == pytest.approx(12.0, rel=1e-4)
+    # from x = 0.5 at tau = 0: c = sqrt(12/0.5) to leading order, so x(100) is near 12/(100 + 4.9)^2
+    assert got["degenerate_distance_tau100"] == pytest.approx(12 / (100 + np.sqrt(24)) ** 2, rel=0.05)
+    assert all(case["holds"] for case in results.stability)
+
+
+def test_singular_points_appear_in_pairs_only_for_m1_within_one():
+    from classical_dynamics.studies.self_excited import largest_axis
+
+    # sin(phi2) = -m1 has two roots in (-pi, pi] for |m1| < 1 (a saddle where cos > 0, a center where
+    # cos < 0) and none beyond: the figure's markers, counted here
+    results = _results()
+    largest_axis._singular_point_bifurcation(results)
+    assert results.stability[0]["measured"] == 0
+    fig = results.figures["bifurcation_m1"][0]
+    markers = {line.get_label(): line.get_xdata() for line in fig.axes[0].lines if line.get_marker() in "xo"}
+    m1_grid = np.linspace(-1.5, 1.5, 60)
+    inside = m1_grid[np.abs(m1_grid) < 1]
+    for kind in ("saddles", "centers"):
+        np.testing.assert_allclose(np.sort(markers[f"{kind}, found numerically"]), inside)
+    plt.close(fig)
+
+
+def test_cylinder_draws_f_and_its_mirror_and_a_start_that_winds_onto_f():
+    from classical_dynamics.models import self_excited as se
+    from classical_dynamics.studies.self_excited import largest_axis
+
+    m1, nu = 0.8, 0.2
+    results = _results()
+    largest_axis._cylinder(results, m1, nu, se.singular_points(m1, -nu, -np.pi, np.pi))
+    fig = results.figures["cylinder"][0]
+    lines = {line.get_label(): np.array(line.get_data_3d()) for line in fig.axes[0].lines}
+    # F of (2.30) written out here: p1^2 = m1/nu + 2 sin(phi2 + sigma3)/sqrt(1 + 4 nu^2)
+    sigma3 = np.arctan(-1 / (2 * nu))
+    x, y, p1 = lines["$F$ (stable)"]
+    phi = np.arctan2(y, x)
+    np.testing.assert_allclose(p1**2, m1 / nu + 2 * np.sin(phi + sigma3) / np.sqrt(1 + 4 * nu**2), rtol=1e-12)
+    np.testing.assert_allclose(lines["$F_1$ (unstable)"][2], -p1)
+    # the start above F1 has wound onto F by tau = 60: its end satisfies the closed form above
+    x, y, q = lines["above $F_1$: winds onto $F$"]
+    end = np.arctan2(y[-1], x[-1])
+    assert q[-1] ** 2 == pytest.approx(m1 / nu + 2 * np.sin(end + sigma3) / np.sqrt(1 + 4 * nu**2), rel=1e-6)
+    plt.close(fig)
+
+
+# --- middle_axis.py: the plane's force and its singular points ----------------------------------------------
+
+_FORMS = {"sinh": np.sinh, "cosh": np.cosh, "exp": np.exp, "exp-": lambda x: np.exp(-x)}
+
+
+@pytest.mark.parametrize("form", list(_FORMS))
+def test_middle_axis_force_derivatives_by_central_differences(form):
+    from classical_dynamics.studies.self_excited import middle_axis
+
+    # F = m + eps f(phi2) with f written out here; its derivatives by central differences of numpy's values
+    m, eps, phi, h = 0.4, -1.3, 0.37, 1e-3
+    values = middle_axis._derivatives(m, form, eps, phi)
+    F = lambda x: m + eps * _FORMS[form](x)  # noqa: E731
+    assert values[0] == pytest.approx(F(phi), rel=1e-14)
+    assert values[1] == pytest.approx((F(phi + h) - F(phi - h)) / (2 * h), rel=1e-6)
+    assert values[2] == pytest.approx((F(phi + h) - 2 * F(phi) + F(phi - h)) / h**2, rel=1e-5)
+    third = (F(phi + 2 * h) - 2 * F(phi + h) + 2 * F(phi - h) - F(phi - 2 * h)) / (2 * h**3)
+    assert values[3] == pytest.approx(third, rel=1e-4)
+    assert middle_axis._derivatives(m, "rare", eps, phi) == (m, 0.0, 0.0, 0.0)
+
+
+@pytest.mark.parametrize(
+    "m,form,eps,count",
+    [
+        (0.5, "sinh", 1.0, 1),
+        (-2.0, "cosh", 1.0, 2),
+        (0.5, "cosh", 1.0, 0),
+        (-0.5, "exp", 1.0, 1),
+        (0.5, "exp", 1.0, 0),
+        (-2.0, "exp-", 1.0, 1),
+        (0.3, "rare", 0.0, 0),
+    ],
+)
+def test_middle_axis_singular_points_are_the_zeros_of_the_force_typed_by_its_slope(m, form, eps, count):
+    from classical_dynamics.studies.self_excited import middle_axis
+
+    # q1' = F(phi2) + mu1 q1^2 vanishes with q1 = 0 where F = 0; the linearization [[0, 1], [F', 0]] makes a
+    # saddle where F' > 0 and a center where F' < 0
+    points = middle_axis._singular_points(m, form, eps)
+    assert len(points) == count
+    for point in points:
+        phi = point["phi2"]
+        assert m + eps * _FORMS[form](phi) == pytest.approx(0.0, abs=1e-12)
+        slope = (_FORMS[form](phi + 1e-6) - _FORMS[form](phi - 1e-6)) / 2e-6 * eps
+        assert point["type"] == ("saddle" if slope > 0 else "center")
+
+
+# --- section5.py: time-dependent torques and Lee's Case I -------------------------------------------------
+
+
+def _modulated_by_scipy(V, F, t):
+    """Lee (5.3) with the torque m F(t) (5.4), written out here and integrated by scipy."""
+    (m1, m2, m3), h, nu, mu = V.m, V.h, V.nu, V.mu
+
+    def rhs(s, w):
+        f = F(s)
+        return [
+            h * w[1] * w[2] + m1 * f - nu * w[0],
+            -h * w[0] * w[2] + m2 * f - nu * w[1],
+            m3 * f - mu * w[2],
+        ]
+
+    return solve_ivp(rhs, (0.0, t), V.omega0, method="DOP853", rtol=1e-12, atol=1e-14).y[:, -1]
+
+
+def test_time_dependent_torque_quadratures_against_scipy_and_the_principal_arctan_slip():
+    from classical_dynamics.models.viscous_medium import modulation
+    from classical_dynamics.studies.self_excited import section5
+
+    V = viscous.medium(
+        _viscous_scene(
+            {"nu": 0.3, "mu": 0.5, "torque": [0.4, -0.2, 0.3], "omega0": [0.5, 0.8, 2.0], "t_max": 1}
+        ).data
+    )
+    written = {(0, 0.5, 2.0): lambda s: 1 + 0.5 * np.sin(2 * s), (1, 1.0, 1.0): lambda s: 1 - np.exp(-s)}
+    for spec, F in written.items():
+        reference = _modulated_by_scipy(V, F, 5.0)
+        q = section5._quadratures(V, modulation(*spec), 5.0)
+        np.testing.assert_allclose(q["general"], reference, atol=1e-9)
+        np.testing.assert_allclose(q["fixed"], reference, atol=1e-9)
+        # sigma1 = arctan(m1/m2) as a principal value puts the torque term in the wrong quadrant (m2 < 0)
+        assert np.max(np.abs(q["principal"][:2] - reference[:2])) > 0.05
+    results = _results()
+    section5.time_dependent_torque(results, V)
+    got = _values(results)
+    assert got["td_general_vs_ode"] < 1e-9 and got["td_frictionless_fixed_vs_ode"] < 1e-9
+    assert 0 < got["td_theorem_1_ratio"] <= 1  # Theorem 1 with M_i' = |m_i| max F
+    assert got["td_fixed_principal_arctan_gap"] > 0.05
+
+
+def test_case_one_panels_run_straight_to_the_point_and_keep_r_zero():
+    # Lee's Case I (r0 = 0, m3 = 0): r' = -mu r keeps r = 0, so (5.49) is linear and (p, q) runs straight
+    # to (m1/nu, m2/nu); without friction to infinity along p0 + m1 t
+    block = {"nu": 0.3, "mu": 0.5, "torque": [0.4, -0.2, 0.0], "omega0": [0.5, 0.8, 2.0], "t_max": 10}
+    results = _results()
+    viscous.run(_viscous_scene(block, analysis={"case_one": True}), results, True)
+    got = _values(results)
+    assert got["case_one_r_max"] == 0.0
+    assert got["case_one_line_distance"] < 1e-9 and got["case_one_frictionless_gap"] < 1e-9
+    assert got["case_one_limit_gap"] < 1e-9
+    assert len(results.figures["solution"][0].axes) >= 4
+    plt.close(results.figures["solution"][0])
+
+
+def test_singular_curve_panel_finds_theorem_2s_center():
+    block = {"torque": [0.4, -0.2, 0.0], "omega0": [0.5, 0.8, 2.0], "t_max": 10}
+    results = _results()
+    viscous.run(
+        _viscous_scene(block, drag=False, moments=(2.5, 1.0, 2.5), analysis={"singular_curve": True}),
+        results,
+        True,
+    )
+    got = _values(results)
+    assert got["circle_center_fit_gap"] < 1e-8  # the fitted center against (m2/(h r0), -m1/(h r0))
+    plt.close(results.figures["solution"][0])
+
+
+# --- middle_axis.py: three planes of Lee §3 run whole -----------------------------------------------------
+
+
+def _middle_scene(name):
+    import yaml
+
+    from .conftest import ROOT
+
+    path = ROOT / "workflow" / "scenes" / "self_excited" / f"{name}.yaml"
+    return SimpleNamespace(name=name, title=name, data=yaml.safe_load(path.read_text()), path=path)
+
+
+def _nu_c(moments):
+    """Lee's critical drag b/(2(a + c)) from the moments, a = (B - C)/A, b = (A - C)/B, c = (A - B)/C."""
+    A, B, C = sorted(moments, reverse=True)
+    a, b, c = (B - C) / A, (A - C) / B, (A - B) / C
+    return b / (2 * (a + c))
+
+
+def test_middle_axis_planes_runaway_escape_and_the_rare_case():
+    from classical_dynamics.studies import self_excited
+
+    # plane II without drag (3.25): q1' = m3 + eps e^(-phi2); phi2 runs away and q1' tends to m3
+    runaway = self_excited.run(_middle_scene("middle_plane_two_runaway"), True)
+    got = _values(runaway)
+    assert got["form"] == "exp-" and got["singular_points"] == []
+    assert got["runaway_rate"] == pytest.approx(0.5, rel=1e-9)
+    # beyond the critical drag the cosh form (3.56); m2 + eps cosh(phi2) = 0 has no root for m2 = 0.5 > 0
+    beyond = self_excited.run(_middle_scene("middle_beyond_critical_none"), True)
+    got = _values(beyond)
+    moments = _middle_scene("middle_beyond_critical_none").data["body"]["moments"]
+    assert got["nu_c"] == pytest.approx(_nu_c(moments), rel=1e-14) and got["nu"] > got["nu_c"]
+    assert got["form"] == "cosh" and got["n_saddles"] == got["n_centers"] == 0
+    # the rare case (3.65) at nu = nu_c: q1' = m + mu1 q1^2 with mu1 = -nu tends to sqrt(m/nu) from above
+    # the line q1 = -sqrt(m/nu); below it q1 escapes as e^(2 nu tau)
+    rare = self_excited.run(_middle_scene("middle_rare"), True)
+    got = _values(rare)
+    nu = _nu_c(_middle_scene("middle_rare").data["body"]["moments"])
+    assert got["form"] == "rare" and got["nu"] == pytest.approx(nu, rel=1e-14)
+    assert got["limit_q1"] == pytest.approx(np.sqrt(0.5 / nu), rel=1e-9)
+    assert got["escape_exponent"] == pytest.approx(2 * nu, rel=1e-6)
+    for results in (runaway, beyond, rare):
+        assert all(case["holds"] for case in results.stability), results.stability
+        for fig, _ in results.figures.values():
+            plt.close(fig)
