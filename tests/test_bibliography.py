@@ -146,3 +146,39 @@ def test_html_in_fields_is_escaped(tmp_path):
     fragment = format_entry(entries["m"])
     assert "<script>" not in fragment and "&lt;script&gt;" in fragment
     assert html.unescape(fragment).startswith('<script>alert("x")</script> (n.d.).')
+
+
+@pytest.mark.parametrize(
+    "tex,html_out",
+    [
+        (r"The {Bessel} functions", "The Bessel functions"),
+        (r"$J_0$ and $x^{2}$", "<em>J</em><sub>0</sub> and <em>x</em><sup>2</sup>"),
+        (r"\emph{Der Kreisel} and \textbf{bold}", "<em>Der Kreisel</em> and <strong>bold</strong>"),
+        (r"``quoted'' and $f'$", "\u201cquoted\u201d and <em>f</em>\u2032"),
+        (r"$\alpha$ \& 50\%", "\u03b1 &amp; 50%"),
+        (r"\url{https://example.org/a_b}", '<a href="https://example.org/a_b">https://example.org/a_b</a>'),
+    ],
+)
+def test_a_field_is_typeset_from_its_tex(tex, html_out):
+    """The TeX a field may hold, read by hand here into what a reader should see."""
+    from classical_dynamics.report.bib import _rich
+
+    assert _rich(tex, "t").render_as("html") == html_out
+
+
+@pytest.mark.parametrize(
+    "tex,what",
+    [
+        ("a } b", "an unmatched '}'"),
+        ("{a", "an unclosed '{'"),
+        ("$x", "an unclosed '$'"),
+        ("a \\", "can't decode"),  # latexcodec refuses it before the reader sees it
+        ("\\emph", "a command without its argument"),
+        ("\\frobnicate{x}", "the command \\frobnicate"),
+    ],
+)
+def test_tex_the_reader_does_not_know_is_refused_naming_it(tex, what):
+    from classical_dynamics.report.bib import _rich
+
+    with pytest.raises(ValueError, match=re.escape(what)):
+        _rich(tex, "entry x, field title")

@@ -332,3 +332,42 @@ def test_the_count_by_kind_says_how_many_set_a_sources_value_beside_todays():
         "1 comparison with an external reference (it sets a source's value beside today's, with no result of "
         "our model)"
     )
+
+
+def test_a_ledger_maps_each_statement_to_one_thing_and_counts_them(tmp_path):
+    """A tiny ledger written here: what it counts, and each way a statement can be mis-mapped refused."""
+    import yaml
+
+    from classical_dynamics.report import ledger
+
+    claims_file = tmp_path / "claims.yaml"
+    claims_file.write_text(yaml.safe_dump([{"id": "c1"}]))
+    folder = tmp_path / "ledger"
+    folder.mkdir()
+
+    def write(statements):
+        (folder / "src.yaml").write_text(
+            yaml.safe_dump({"source": {"key": "k", "title": "T"}, "statements": statements})
+        )
+        return ledger.read_ledger(folder, {"chains": claims_file})
+
+    (source,) = write(
+        [
+            {"id": "a", "claim": "chains/c1"},
+            {"id": "b", "figure": "fig:x"},
+            {"id": "c", "out_of_scope": "unreadable"},
+        ]
+    )
+    assert (source.key, source.title, source.in_scope, source.covered) == ("k", "T", 2, 2)
+    assert [s.study for s in source.statements] == ["chains", None, None]
+    ledger.require_figures([source], {"fig:x"})
+    with pytest.raises(ledger.LedgerError, match="maps to figure 'fig:x'"):
+        ledger.require_figures([source], {"fig:y"})
+    for statements, refusal in (
+        ([{"id": "a", "claim": "chains/c1"}, {"id": "a", "claim": "chains/c1"}], "appears twice"),
+        ([{"id": "a"}], "it maps to nothing"),
+        ([{"id": "a", "claim": "chains/c1", "figure": "fig:x"}], "it maps to claim, figure"),
+        ([{"id": "a", "claim": "chains/c9"}], "which no study's claims.yaml declares"),
+    ):
+        with pytest.raises(ledger.LedgerError, match=refusal):
+            write(statements)
