@@ -674,7 +674,9 @@ def closed_form_figure(frame, mu_c, body):
     axes[2].set_ylabel("$k_1$, $k_2$")
     axes[3].sharey(axes[2])
     axes[3].tick_params(labelleft=False)
-    for ax in axes[2:]:  # ticks every 0.2 short of the axis' end: the last stays clear of the next panel's first
+    for ax in axes[
+        2:
+    ]:  # ticks every 0.2 short of the axis' end: the last stays clear of the next panel's first
         ax.set_xticks(np.arange(0.0, 0.85 * frame[frame.panel == "c"].x.max(), 0.2))
     handles = [
         Line2D([], [], color="k", lw=1.0),
