@@ -341,7 +341,8 @@ def draw(ax, frame, y_name, window=None, small=False):
             first = False
             if element == "crossing":
                 # each name where no line passes: f1 under T1's crest (F runs just above), f2 under its
-                # point inside T2's arch, g1 inside the frame's right edge under T1, g2 right of where T2 leaves the axis
+                # point inside T2's arch, g1 inside the frame's right edge under T1, g2 right of where T2
+                # leaves the axis
                 ax.annotate(
                     CROSSING_NAMES[int(curve.curve.iloc[0])],
                     (curve.phi2.iloc[0], curve[y_name].iloc[0]),
