@@ -704,3 +704,25 @@ def test_motion_in_space_needs_the_limit_cycle(tmp_path):
     data = yaml.safe_load((ROOT / "workflow/scenes/self_excited/largest_unperturbed.yaml").read_text())
     data.setdefault("analysis", {})["motion_in_space"] = True
     assert_refused(tmp_path, "self_excited", data, "analysis.motion_in_space")
+
+
+def test_next_to_the_separatrix_the_sign_of_the_energy_error_decides_the_side():
+    """A start a relative 1e-6 inside the homoclinic loop: 'crossed' is read from where the motion ends (past
+    the saddle), not from the size of the energy error at the end. Errors larger than the gap that lower the
+    energy keep the motion inside; an energy raised past the separatrix's always means a crossing."""
+    import pandas as pd
+
+    from classical_dynamics.studies.results import Results
+    from classical_dynamics.studies.self_excited import accuracy
+
+    results = Results("self_excited", "t", "t")
+    accuracy.separatrix(results, 0.5, quick=True)
+    frame = results.tables["accuracy_separatrix"][0]
+    assert isinstance(frame, pd.DataFrame)
+    gap = results.numbers["separatrix_energy_gap"]["value"]
+    assert (frame.energy_error == frame.energy_change.abs()).all()
+    assert frame[frame.energy_change >= gap].wrong_side.all()  # raised past the separatrix: across
+    inside = frame[~frame.wrong_side & (frame.energy_error > gap)]
+    assert len(inside) > 0 and (inside.energy_change < 0).all()  # large, but lowered: inside
+    assert results.numbers["separatrix_large_errors_inside"]["value"] == len(inside)
+    assert results.numbers["separatrix_runs_on_wrong_side"]["value"] == int(frame.wrong_side.sum())

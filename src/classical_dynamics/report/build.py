@@ -20,7 +20,7 @@ from jinja2.ext import Extension
 from markupsafe import Markup
 
 from .. import io, scene_results
-from ..formatting import format_column, format_number, shortest
+from ..formatting import format_column, format_decimals, format_number, shortest
 from ..inline_math import plain_text, render_markup, render_text
 from ..provenance import git_state, machine, package_versions, sha256_file
 from ..studies import STUDIES
@@ -359,12 +359,14 @@ class Report:
         sigs=None,
         long: bool = False,
         together=(),
+        decimals=None,
     ):
         """A results table: headers as the study declared them ("quantity (unit)", with math), numbers
         right-aligned to `sig` figures (per column in `sigs`), columns of whole numbers printed as such;
         the columns of each group in `together` (ours beside a reference's) share one notation.
         keep = {column: [values]} shows the rows whose values are listed (by value, not position, so a
-        reduced build that has fewer rows shows fewer)."""
+        reduced build that has fewer rows shows fewer). decimals = {column: n} prints that column as plain
+        decimals to n places (a quantity known to an absolute resolution: a change below it reads 0.000)."""
         study, scene = where.split("/")
         summary = self.index.summary(study, scene)
         meta = (summary["timings"]["tables"] if timing else summary["tables"])[name]
@@ -399,7 +401,14 @@ class Report:
                 else (int(v) if isinstance(v, float) and whole.get(c) else v)
                 for v in frame[c].tolist()
             ]
-            texts[c] = format_column(column, (sigs or {}).get(c, sig))
+            if c in (decimals or {}):
+                places = int(decimals[c])
+                texts[c] = [
+                    format_number(v) if v is None or isinstance(v, str) else format_decimals(v, places)
+                    for v in column
+                ]
+            else:
+                texts[c] = format_column(column, (sigs or {}).get(c, sig))
         for group in together:  # one notation across the group: format its columns as one, then split
             joined = [v for c in group for v in frame[c].tolist()]
             shared = format_column(joined, (sigs or {}).get(group[0], sig))

@@ -636,7 +636,9 @@ def _accuracy_cost(results, spec, quick):
         "Lowest five eigenvalues of the hanging chain of $n$ particles, by "
         "solver: wall time (minimum over repeats), the relative error of $\\lambda_1$ against the "
         "exact Laguerre zero, and the relative error of $\\omega_1$ (end-corrected) against the "
-        f"continuum. {software_stamp()}.",
+        "continuum. The times are runs of their own, of five eigenvalues each: the cost-to-target table "
+        "times the lowest alone, in fewer repeats, so its time at the same $n$ differs; compare times "
+        f"within one table. {software_stamp()}.",
         headers={
             "n": "$n$",
             "solver": "solver",
@@ -755,7 +757,9 @@ def _cost_to_target(results, targets, quick):
         "What it costs to reach a given relative error of $\\omega_1$ "
         "against the continuum, with the pliability solver: the smallest $n = 2^p$ that reaches it "
         f"and its time; where no $n$ up to $2^{{{top}}}$ reaches it, the $n$ the error law predicts "
-        f"(not run, no time). {software_stamp()}.",
+        "(not run, no time). The times are runs of their own, of the lowest eigenvalue alone and in "
+        "fewer repeats: the solver-cost table times five eigenvalues, so its time at the same $n$ "
+        f"differs; compare times within one table. {software_stamp()}.",
         headers={
             "scheme": "scheme",
             "target": "target error",

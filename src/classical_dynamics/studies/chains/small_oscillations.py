@@ -412,7 +412,7 @@ def _transient(results, built, sigma, phi, modal_force, spec):
 
 
 def _response_figure(results, grid, direct, static, sigma):
-    fig, ax = new_figure(FULL_WIDTH_IN, 2.1)
+    fig, ax = new_figure(FULL_WIDTH_IN, 3.4)  # five decades need height: about 0.5 in each
     fine = np.linspace(grid[0], grid[-1], 3001)
     amplitude = np.array([np.abs(direct(s)) for s in fine]) / np.linalg.norm(static)
     for j, style in enumerate(("-", "--", ":")):

@@ -22,6 +22,9 @@ SAMPLE_DAYS = 2.0
 PERIOD_BOUND = 1e-6  # the hard case: the wobble's period to 1e-6 relative over 100 years
 Q_BOUND = 0.05  # the hard case: Q recovered from a damped series to 5 %
 PATH_YEARS = 13.0  # the model's polar path: the last two beats of the wobble with the year
+# the fitted period's figures, in the polar path's caption as in the chapter's num(..., sig=5) and Table
+# "excited" (tests/test_report_typesetting.py reads the chapter's sig against this)
+FITTED_PERIOD_SIG = 5
 
 
 def arcsec_text(angle_rad) -> str:
@@ -494,7 +497,9 @@ def _excited(results, t, m, model, closed):
         "The model pole excited by an annual term and a seeded random "
         f"process: its path over the last {shortest(shown)} {plural(shown, 'year')} with the trend removed "
         "(left) and its two coordinates "
-        f"against time (right). The {format_number(fit.chandler_period_days, 4)}-day wobble beats with the "
+        "against time (right). The "
+        f"{format_number(results.numbers['fitted_chandler_period_days']['value'], FITTED_PERIOD_SIG)}-day "
+        "wobble beats with the "
         f"year every {format_number(beat, 3)} years, swelling and shrinking the path.",
         last_years=PATH_YEARS,
         time_label="time from the start (yr)",

@@ -17,6 +17,9 @@ from .secular import ARCSEC_PER_TURN
 
 RTOL = 1e-12
 SAMPLE_DAYS = 0.25 * earth.JULIAN_YEAR_DAYS
+# the obliquity's whole range, in the cone's caption as in the chapter's num(..., sig=3) (tests/
+# test_report_typesetting.py reads the chapter's sig against this)
+RANGE_SIG = 3
 RATE_BOUND = 1e-9  # hard case: the averaged rate against the secular formula (exact without i)
 MEAN_OBLIQUITY_BOUND_ARCSEC = (
     0.1  # hard case: the mean obliquity stays the scene's (start on the forced state)
@@ -232,7 +235,7 @@ def _cone_figure(results, model, s, t, eps_arcsec, span_years):
     effects = ", ".join(e.replace("_", " ") for e in model.listed)
     offset = (
         f" (shown as $\\varepsilon - \\varepsilon_0$, $\\varepsilon_0$ = {format_number(eps0_deg, 6)}°; "
-        f"whole range {format_number(float(np.ptp(eps_arcsec)), 2)}″)"
+        f"whole range {format_number(results.numbers['obliquity_range_arcsec']['value'], RANGE_SIG)}″)"
         if small
         else ""
     )

@@ -12,7 +12,7 @@ import pandas as pd
 from matplotlib.ticker import MaxNLocator
 
 from ...figure_style import FULL_WIDTH_IN
-from ...formatting import format_number, plural, shortest
+from ...formatting import format_decimals, format_number, plural, shortest
 from ...models import earth
 from ...models import precession as prec
 from ...solvers import rigid_body
@@ -470,6 +470,7 @@ def _free_nutation(results, model, order):
     )
 
 
+LADDER_DECIMALS = 3  # the ladder's rate change (″/yr) when no aliasing windows give the fit's scatter
 LADDER = (
     "solar_torque",
     "lunar_torque",
@@ -513,6 +514,31 @@ def _effect_ladder(results, model, scene, step, order, years):
         )
     frame = pd.DataFrame(rows)
     frame["rate_change"] = frame.rate.diff().fillna(frame.rate)
+    # the change is printed to the decimals the fit resolves: its last place ten times the fit's own scatter
+    # (the rate's spread over windows of awkward lengths) or more, so a change below the scatter reads 0.000
+    spread = results.numbers.get("aliasing_spread_with_terms")
+    scatter = spread["value"] * abs(float(frame.rate.iloc[-1])) if spread else None
+    decimals = int(np.floor(-np.log10(10.0 * scatter))) if scatter else LADDER_DECIMALS
+    results.number(
+        "effect_ladder_rate_change_decimals",
+        decimals,
+        "1",
+        note="decimals of the ladder's rate change (″/yr): last place ten times the fit's scatter or more",
+    )
+    if scatter:
+        results.number(
+            "effect_ladder_rate_scatter_arcsec_per_year",
+            scatter,
+            "″/yr",
+            note="the rate's spread over the aliasing windows (relative spread times the rate)",
+        )
+    unseen = [  # the effects whose change reads as zero, with what it is
+        f"{name.removeprefix('+ ').replace('_', ' ')}, {format_number(float(change), 2)} ″/yr"
+        for name, change in zip(frame.adds, frame.rate_change)
+        if round(abs(change), decimals) == 0
+    ]
+    zero = format_decimals(0.0, decimals)
+    below = f" (here: {'; '.join(unseen)})" if unseen else ""
     results.table(
         "effect_ladder",
         frame,
@@ -520,7 +546,15 @@ def _effect_ladder(results, model, scene, step, order, years):
         "at a time (each row adds one to those above): the fitted rate beside the secular formula for the "
         "same effects, the 18.6-year and semi-annual nutations in longitude, and the change in the rate "
         "each effect brings. A tilted lunar orbit with a fixed node changes the rate by several ″/yr; "
-        "with the node regressing the rate returns to the secular formula's.",
+        "with the node regressing the rate returns to the secular formula's. The change is printed to "
+        f"{decimals} decimals"
+        + (
+            f", whose last place is ten times the fit's own scatter or more ({format_number(scatter, 2)} "
+            "″/yr, the rate's spread over windows of awkward lengths)"
+            if scatter
+            else ""
+        )
+        + f": a change below half that place, as any below the scatter is, reads {zero}{below}.",
         headers={
             "adds": "effect added",
             "rate": "rate (″/yr)",

@@ -67,8 +67,11 @@ def separatrix(results, m1, quick):
     span = PERIODS * period
 
     def error_of(y):
-        dE = float(se.energy(np.asarray(y), m1)[0]) - E0
-        return {"energy_error": abs(dE), "wrong_side": bool(dE >= gap)}
+        # crossed: the end lies past the saddle. Beyond it the potential falls without bound, so a motion that
+        # passed the saddle never returns; its energy at the end, far out, is no guide to which side it is on
+        y = np.asarray(y)
+        dE = float(se.energy(y, m1)[0]) - E0
+        return {"energy_error": abs(dE), "energy_change": dE, "wrong_side": bool(side * (y[0] - phi_s) < 0)}
 
     rows = _adaptive_rows(Problem(se.plane_largest, y0, (0.0, span), [m1, 0.0, 1.0]), error_of, quick)
     force = np.array([m1])
@@ -101,7 +104,51 @@ def separatrix(results, m1, quick):
         "separatrix_runs_on_wrong_side",
         int(frame.wrong_side.sum()),
         "1",
-        note="settings whose energy error carried the motion across the separatrix",
+        note="settings that carried the motion across the separatrix (past the saddle at the end)",
+    )
+    # the size of the energy error does not decide the side, its sign does: errors above the gap that lowered
+    # the energy (deeper inside the loop) and kept the motion inside
+    inside = frame[~frame.wrong_side & (frame.energy_error > gap)]
+    results.number(
+        "separatrix_large_errors_inside",
+        len(inside),
+        "1",
+        note="settings whose energy error exceeds the gap, yet the motion stayed inside",
+    )
+    results.number(
+        "separatrix_large_errors_inside_lowered",
+        int((inside.energy_change < 0).sum()),
+        "1",
+        note="of those, the settings whose error lowered the energy",
+    )
+    if len(inside):
+        results.number(
+            "separatrix_largest_error_inside",
+            float(inside.energy_error.max()),
+            "1",
+            note="the largest energy error of a motion that stayed inside",
+        )
+    crossed = frame[frame.wrong_side]
+    results.number(
+        "separatrix_crossed_lowered",
+        int((crossed.energy_change < 0).sum()),
+        "1",
+        note="settings that crossed, yet end with an energy below the start's",
+    )
+    results.number("separatrix_step_sizes", int((frame.method == "splitting, order 2").sum()), "1")
+    for method in ("splitting, order 2", "splitting, order 4"):
+        part = frame[frame.method == method]
+        results.number(
+            f"separatrix_crossed_{method.replace(', order ', '')}",
+            int(part.wrong_side.sum()),
+            "1",
+            note=f"step sizes at which the {method} crossed (of {len(part)})",
+        )
+    results.number(
+        "separatrix_crossed_adaptive",
+        int((crossed.kind == "tolerance").sum()),
+        "1",
+        note="adaptive settings that crossed",
     )
     publish(
         results,
@@ -111,9 +158,14 @@ def separatrix(results, m1, quick):
         f"{PERIODS} periods of a closed orbit of Lee (2.10) a "
         f"relative {power_of_ten(round(np.log10(SEPARATRIX_OFFSET)))} inside the separatrix ($m_1$ = "
         f"{shortest(m1)}, $\\nu = 0$), by method and relative tolerance or step $h$: the error of the energy "
-        "$E$ at the end, and whether it carried the motion across the separatrix, where it runs away.",
+        "$E$ at the end, its sign (the change of $E$), and whether the motion crossed the separatrix (it "
+        "ends past the saddle, running away).",
         "error of the energy $E$ at the end",
-        {"energy_error": "energy error", "wrong_side": "crossed the separatrix"},
+        {
+            "energy_error": "energy error",
+            "energy_change": "change of $E$",
+            "wrong_side": "crossed the separatrix",
+        },
     )
 
 

@@ -528,8 +528,8 @@ def grid_figure(group, found):
             )
             portrait.draw(ax, panel.frame, y_name, window=window, small=True)
             portrait.axes_labels(
-                ax, y_label, angle, window[:2], x=bottom or not share_x, y=left or not share_y
-            )
+                ax, y_label, angle, window[:2], x=bottom or not share_x, y=left or not share_y, most_ticks=5
+            )  # a third of the width: ticks every 2π once the window is wider than 4π, so labels stand apart
             ax.tick_params(labelbottom=bottom or not share_x, labelleft=left or not share_y)
             elements |= set(panel.frame.element.unique())
         ax.set_title(panel.title, loc="left")
@@ -674,6 +674,10 @@ def closed_form_figure(frame, mu_c, body):
     axes[2].set_ylabel("$k_1$, $k_2$")
     axes[3].sharey(axes[2])
     axes[3].tick_params(labelleft=False)
+    for ax in axes[
+        2:
+    ]:  # ticks every 0.2 short of the axis' end: the last stays clear of the next panel's first
+        ax.set_xticks(np.arange(0.0, 0.85 * frame[frame.panel == "c"].x.max(), 0.2))
     handles = [
         Line2D([], [], color="k", lw=1.0),
         Line2D([], [], ls="", marker="x", color="k", ms=4),

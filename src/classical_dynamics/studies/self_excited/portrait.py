@@ -162,11 +162,12 @@ def mark_points(ax, points, size=6):
         seen.add(label)
 
 
-def pi_ticks(axis, low, high):
-    """Ticks at multiples of pi (of 2 pi on a long axis), labelled -2π, −π, 0, π, 2π."""
+def pi_ticks(axis, low, high, most=9):
+    """Ticks at multiples of pi (of 2 pi on a long axis), labelled -2π, −π, 0, π, 2π. most: the most ticks the
+    axis has room for (a narrow panel of a grid takes fewer: every 2 pi)."""
     from matplotlib.ticker import FuncFormatter, MultipleLocator
 
-    step = 1 if (high - low) / np.pi <= 8 else 2
+    step = 1 if (high - low) / np.pi <= min(8, most - 1) else 2
 
     def label(x, _):
         k = int(round(x / np.pi))
@@ -186,9 +187,9 @@ def finish(ax, drawing, y_label, angle=False):
     legend_below(ax.figure, *legend_entries(drawing.elements()), ncol=4)
 
 
-def axes_labels(ax, y_label, angle, phi2_range, x=True, y=True):
+def axes_labels(ax, y_label, angle, phi2_range, x=True, y=True, most_ticks=9):
     if angle:
-        pi_ticks(ax.xaxis, *phi2_range)
+        pi_ticks(ax.xaxis, *phi2_range, most=most_ticks)
     if x:
         ax.set_xlabel("$\\varphi_2$ (rad)" if angle else "$\\varphi_2$")
     if y:
@@ -213,7 +214,8 @@ ELEMENTS = {  # element: (plot keywords, legend label); the singular points are 
     ),
 }
 CROSSING_NAMES = {1: "$f_1$", 2: "$f_2$", 3: "$g_1$", 4: "$g_2$"}  # the curve numbers of the crossings
-CROSSING_OFFSETS = {1: (-11, -9), 2: (4, -9), 3: (-12, -9), 4: (3, 2)}  # their names' places (points)
+# their names' places (points): f2 straight under its point, inside T2's arch and clear of both its sides
+CROSSING_OFFSETS = {1: (-11, -9), 2: (-4, -13), 3: (-12, -9), 4: (3, 2)}
 POINT_TYPES = ("saddle", "center", "degenerate")
 DIGITS = 5  # decimals kept in the table: far below what a printed portrait resolves
 
@@ -338,8 +340,9 @@ def draw(ax, frame, y_name, window=None, small=False):
             )
             first = False
             if element == "crossing":
-                # each name where no line passes: f1 under T1's crest (F runs just above), f2 inside T2's
-                # arch, g1 inside the frame's right edge under T1, g2 right of where T2 leaves the axis
+                # each name where no line passes: f1 under T1's crest (F runs just above), f2 under its
+                # point inside T2's arch, g1 inside the frame's right edge under T1, g2 right of where T2
+                # leaves the axis
                 ax.annotate(
                     CROSSING_NAMES[int(curve.curve.iloc[0])],
                     (curve.phi2.iloc[0], curve[y_name].iloc[0]),

@@ -228,18 +228,20 @@ def draw_sphere(ax, xs, ls):
     inset.plot(*plane.T, color="#009E73", lw=0.9)
     inset.plot(*plane[0], color="#009E73", marker="s", ms=3, ls="none")
     inset.set_aspect("equal", adjustable="datalim")
-    inset.tick_params(labelsize=7, length=2, pad=1)
-    inset.set_title("$\\mathbf{L}/|\\mathbf{L}|$ (°)", fontsize=7, pad=2)
+    inset.tick_params(labelsize=7.5, length=2, pad=1)
+    inset.set_title("$\\mathbf{L}/|\\mathbf{L}|$ (°)", fontsize=7.5, pad=2)
     for k, name in enumerate("XYZ"):
+        # X and Y long enough, and seen from a side, that their names stand off the sphere and its loops; Z's
+        # name, above the sphere, stays inside the figure
         tip = np.zeros(3)
-        tip[k] = 1.15
+        tip[k] = 1.2 if name == "Z" else 1.6
         ax.plot(*np.c_[np.zeros(3), tip], color="0.4", lw=0.6)
-        ax.text(*(1.1 * tip), f"${name}$", color="0.2", ha="center", va="center")
+        ax.text(*(1.08 * tip), f"${name}$", color="0.2", ha="center", va="center")
     ax.set_box_aspect((1, 1, 1), zoom=1.2)
     for set_lim in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
         set_lim(-1.0, 1.0)
     ax.set_axis_off()
-    ax.view_init(elev=20, azim=-50)
+    ax.view_init(elev=15, azim=-35)
 
 
 # (psi, theta, phi), chosen to show each
