@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pandas as pd
 import scipy.linalg as sla
@@ -743,7 +745,7 @@ def _cost_to_target(results, targets, quick):
                     {
                         "scheme": scheme,
                         "target": target,
-                        "n": float(n_need),
+                        "n": int(math.ceil(n_need)),  # a count of particles, as the measured rows
                         "error": None,
                         "seconds": None,
                         "measured": False,

@@ -75,7 +75,7 @@ def run(scene, results, quick):
             "casimir_error_max": "Casimir error",
         },
     )
-    fig, axes = new_figure(height=3.6)
+    fig, axes = new_figure(height=3.0)  # fits below the section that opens its page
     for label, (tp, dH, dC, _) in curves.items():
         keep = tp > 0
         running_H = np.maximum.accumulate(dH)
