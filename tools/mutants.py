@@ -29,6 +29,11 @@ def package_of(mutant: str) -> str:
     return module.rsplit(".", 1)[0]
 
 
+def function_of(mutant: str) -> str:
+    """planar.x_modes for classical_dynamics.studies.chains.planar.x_modes__mutmut_3."""
+    return ".".join(mutant.rsplit("__mutmut_", 1)[0].split(".")[-2:])
+
+
 def statuses() -> dict[str, str]:
     out = subprocess.run(
         [sys.executable, "-m", "mutmut", "results", "--all", "true"],
@@ -62,24 +67,28 @@ def main(argv=None) -> int:
         subprocess.run(run, cwd=ROOT, env=environment(), check=True)
     found = statuses()
     by_package: dict[str, Counter] = defaultdict(Counter)
-    survivors = defaultdict(list)
+    survivors = defaultdict(Counter)
     for mutant, status in found.items():
         by_package[package_of(mutant)][status] += 1
         if status == "survived":
-            survivors[package_of(mutant)].append(mutant)
-    print(f"{'package':44} {'mutants':>8} {'killed':>7} {'survived':>9} {'no tests':>9} {'score':>6}")
+            survivors[package_of(mutant)][function_of(mutant)] += 1
+    # score: killed over the mutants checked so far ("not checked": a run still going, or stopped early)
+    header = ("package", "mutants", "checked", "killed", "survived", "no tests", "score")
+    print(f"{header[0]:40} " + " ".join(f"{h:>9}" for h in header[1:]))
     total = Counter()
-    for package in sorted(by_package):
-        c = by_package[package]
-        total += c
+    for package in sorted(by_package) + ["all"]:
+        c = total if package == "all" else by_package[package]
+        if package != "all":
+            total += c
         n, killed = sum(c.values()), sum(c[s] for s in KILLED)
-        print(f"{package:44} {n:8d} {killed:7d} {c['survived']:9d} {c['no tests']:9d} {killed / n:6.1%}")
-    n, killed = sum(total.values()), sum(total[s] for s in KILLED)
-    row = f"{'all':44} {n:8d} {killed:7d} {total['survived']:9d} {total['no tests']:9d}"
-    print(f"{row} {killed / max(n, 1):6.1%}")
-    print("\nSurviving mutants (mutmut show <name> prints the change):")
+        checked = n - c["not checked"]
+        score = f"{killed / checked:9.1%}" if checked else f"{'—':>9}"
+        row = (n, checked, killed, c["survived"], c["no tests"])
+        print(f"{package:40} " + " ".join(f"{v:9d}" for v in row) + " " + score)
+    print("\nSurviving mutants by function (mutmut show <name>__mutmut_<k> prints one change):")
     for package in sorted(survivors):
-        print(f"  {package}: " + ", ".join(m.split(".", 3)[-1] for m in sorted(survivors[package])))
+        listed = ", ".join(f"{name} {count}" for name, count in survivors[package].most_common())
+        print(f"  {package}: {listed}")
     return 0
 
 
