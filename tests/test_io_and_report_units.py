@@ -371,3 +371,26 @@ def test_a_ledger_maps_each_statement_to_one_thing_and_counts_them(tmp_path):
     ):
         with pytest.raises(ledger.LedgerError, match=refusal):
             write(statements)
+
+
+@pytest.mark.parametrize(
+    "source,printed",
+    [
+        ({"value": 50.5}, True),
+        ({"value": 2.18, "text": "2.18"}, True),
+        ({"value": 0.31622776601683794, "text": "$2\\pi/\\sqrt{10}$"}, True),  # a symbol with a figure in it
+        ({"value": 1.0032845478, "text": "$C/A$"}, True),  # a symbol that means a number
+        ({"value": 1, "text": "exact"}, False),  # words, checked as a flag
+        ({"value": -1, "text": "−"}, False),  # a sign
+        (
+            {"value": 1, "text": "$q_r = \\alpha_r(He^{\\lambda t} + Ke^{-\\lambda t})$"},
+            False,
+        ),  # a formula, a flag
+        ({"value": 1}, False),  # a yes, or a ratio to the source's formula
+        ({"value": 1, "text": "1"}, True),  # a 1 the source prints
+        ({"value": 0}, False),
+    ],
+)
+def test_a_flag_for_words_is_no_printed_value(source, printed):
+    """Rows whose source states in words or a formula go to the formula tables, not beside printed values."""
+    assert a_claim(1.0, source, {"relative": 0.1}).compares_a_printed_value is printed

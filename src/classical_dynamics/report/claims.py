@@ -88,9 +88,13 @@ class ClaimResult:
 
     @property
     def compares_a_printed_value(self) -> bool:
-        """The source prints a number (not 0, not a statement) that ours is checked against."""
+        """The source prints a number (not 0, not a statement) that ours is checked against. A statement
+        checked as a flag of 1 or -1 (yes, a sign, a ratio to the source's own formula), with no text or with
+        words or a formula without a figure ('exact', 'prograde', 'stable'), prints no number."""
         value = self.source.get("value")
-        return isinstance(value, (int, float)) and not isinstance(value, bool) and value != 0
+        if not isinstance(value, (int, float)) or isinstance(value, bool) or value == 0:
+            return False
+        return not (abs(value) == 1 and not re.search(r"\d", str(self.source.get("text", ""))))
 
     @property
     def evaluated(self) -> bool:
