@@ -361,6 +361,12 @@ def _with(base, **changes):
     return data
 
 
+def _poinsot(moments):
+    """A rigid scene asking for a Poinsot construction with these moments (the triangle inequality broken)."""
+    spec = {"moments": moments, "omega": [1, 0.3, 1], "span": 10, "samples": 1001, "source": "s"}
+    return _with(MODEL, analysis={"poinsot": spec})
+
+
 @pytest.mark.parametrize(
     "data,field",
     [
@@ -422,36 +428,8 @@ def _with(base, **changes):
             _with(MODEL, effects={"elastic_yielding": ELASTIC}, analysis={"lamb_symmetric": True}),
             "analysis.lamb_symmetric",
         ),
-        (
-            _with(
-                MODEL,
-                analysis={
-                    "poinsot": {
-                        "moments": [1.0, 2.0, 3.5],
-                        "omega": [1, 0.3, 1],
-                        "span": 10,
-                        "samples": 1001,
-                        "source": "s",
-                    }
-                },
-            ),
-            "analysis.poinsot.moments",
-        ),
-        (
-            _with(
-                MODEL,
-                analysis={
-                    "poinsot": {
-                        "moments": [2.0, 1.0, 2.5],
-                        "omega": [1, 0.3, 1],
-                        "span": 10,
-                        "samples": 1001,
-                        "source": "s",
-                    }
-                },
-            ),
-            "analysis.poinsot.moments",
-        ),
+        (_poinsot([1.0, 2.0, 3.5]), "analysis.poinsot.moments"),
+        (_poinsot([2.0, 1.0, 2.5]), "analysis.poinsot.moments"),
     ],
 )
 def test_inconsistent_scenes_name_the_field(tmp_path, data, field):
