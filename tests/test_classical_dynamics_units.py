@@ -248,6 +248,12 @@ def test_formatting_rounds_first_then_chooses_the_notation():
     assert formatting.format_column([9.22649, 0.000217893]) == ["9.226", "0.0002179"]
     assert formatting.format_column([1, 2.5]) == ["1", "2.5"]
     assert formatting.format_column([16.0, 262144.0, float("nan")]) == ["16", "262\u202f144", "NaN"]
+    # a hard case's measured value and bound in one notation, the bound to its own figures
+    assert formatting.measured_and_bound(0.7312, 1.0) == ("0.73", "1")
+    assert formatting.measured_and_bound(2.31e-12, 1e-9) == (f"2.3{x}10⁻¹²", f"1{x}10⁻⁹")
+    assert formatting.measured_and_bound(0.0, 2.5e-6) == ("0", f"2.5{x}10⁻⁶")
+    assert formatting.measured_and_bound(0.5, 1e-6) == (f"5.0{x}10⁻¹", f"1{x}10⁻⁶")
+    assert [formatting.exact_figures(v) for v in (0.5, 100.0, 2.0**-0.5, 0.125)] == [1, 1, 16, 3]
     assert (
         formatting.format_decimals(-0.0004, 2) == "0.00"
         and formatting.format_decimals(-3.14159, 2) == "−3.14"

@@ -268,6 +268,7 @@ def test_bibliography_has_the_required_sources():
         (".7655", 0.76548, {"absolute": 1e-4}, ""),  # Lamb's decimals without their 0 are a print
         ("1/300", 1 / 300, {"relative": 0.02}, "0.003333"),  # four figures at least, not 0.0033
         ("a constant area", 0.0, {"absolute": 1e-9}, ""),  # words mean no number
+        ("$Ma^2/2$", 0.5, {"relative": 1e-12}, "0.5"),  # a short exact decimal as it is, not 0.5000
     ],
 )
 def test_a_symbolic_source_value_shows_the_number_it_means(text, value, check, means):

@@ -328,17 +328,48 @@ def test_a_paragraph_does_not_open_with_one_word_alone(tmp_path):
 
 def _columns(page_html, every_table=False):
     """{(table id, column): [cell texts]} of every table outside the claims and key results (where each row is
-    its own quantity), or of every table."""
+    its own quantity), or of every table. A hard-case table's measured and bound columns (2 and 3) hold each
+    case's own quantity too: they are left out unless every_table."""
     out = {}
     for attrs, body in re.findall(r"<figure([^>]*)>(.*?)</figure>", page_html, re.S):
         if "<table" not in body or not every_table and ("claims" in attrs or "key-results" in attrs):
             continue
         name = (re.search(r'id="([^"]+)"', attrs) or re.search(r"(.*)", attrs)).group(1)
+        per_row = {2, 3} if _HARD_CASES.search(name) and not every_table else set()
         for row in re.findall(r"<tr[^>]*>(.*?)</tr>", body, re.S):
             for i, cell in enumerate(re.findall(r"<td[^>]*>(.*?)</td>", row, re.S)):
-                text = html_lib.unescape(re.sub(r"<[^>]+>", "", cell)).strip().replace("\u202f", " ")
-                out.setdefault((name, i), []).append(text)
+                if i not in per_row:
+                    out.setdefault((name, i), []).append(_cell_text(cell))
     return out
+
+
+_HARD_CASES = re.compile(r"stability|hard-cases")
+
+
+def _cell_text(cell):
+    return html_lib.unescape(re.sub(r"<[^>]+>", "", cell)).strip().replace("\u202f", " ")
+
+
+@pytest.mark.slow
+def test_a_hard_cases_measured_value_and_bound_share_one_notation(built_repo):
+    """Each hard case is its own quantity: its measured value and bound are written alike (0.73 against 1.0,
+    2.3 × 10⁻¹² against 1 × 10⁻⁹), never 7.3 × 10⁻¹ against 1 × 10⁰ nor 0.73 against 1 × 10⁻⁹."""
+    power = re.compile(r"[−-]?\d(\.\d+)?\s*×\s*10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+")
+    page = (built_repo / "results/report.html").read_text(encoding="utf-8")
+    rows, unlike = 0, []
+    for attrs, body in re.findall(r"<figure([^>]*)>(.*?)</figure>", page, re.S):
+        if not _HARD_CASES.search(attrs):
+            continue
+        for row in re.findall(r"<tr[^>]*>(.*?)</tr>", body, re.S):
+            cells = [_cell_text(c) for c in re.findall(r"<td[^>]*>(.*?)</td>", row, re.S)]
+            if len(cells) < 4:
+                continue
+            rows += 1
+            pair = [re.sub(r"\s*[^\d×⁻⁰¹²³⁴⁵⁶⁷⁸⁹.−-]+$", "", c) for c in cells[2:4]]  # drop the unit
+            if "× 10⁰" in " ".join(pair) or len({bool(power.fullmatch(c)) for c in pair if c != "0"}) > 1:
+                unlike.append(pair)
+    assert rows > 30
+    assert unlike == []
 
 
 @pytest.mark.slow

@@ -82,7 +82,7 @@ def _whole(v) -> bool:
     return isinstance(v, float) and math.isfinite(v) and v.is_integer() and abs(v) < 1e15
 
 
-def _figures(value: float) -> int:
+def exact_figures(value: float) -> int:
     """The significant figures of the shortest decimal that reads back as this float (0.25 -> 2)."""
     mantissa = repr(abs(value)).partition("e")[0]
     return max(len(mantissa.replace(".", "").lstrip("0").rstrip("0")), 1)
@@ -101,7 +101,7 @@ def format_column(values, sig: int = 4) -> list[str]:
     if finite and all(isinstance(v, Integral) or _whole(float(v)) for v in finite):
         return [format_number(int(v)) if v in finite else format_number(v, sig) for v in values]
     # no figures a value does not have: a column of targets 10⁻⁶, 10⁻⁸ reads 1 × 10⁻⁶, not 1.000 × 10⁻⁶
-    sig = min(sig, max((_figures(float(v)) for v in finite if v != 0), default=sig))
+    sig = min(sig, max((exact_figures(float(v)) for v in finite if v != 0), default=sig))
 
     def in_range(v) -> bool:
         if isinstance(v, (bool, Integral, str)) or v is None or not math.isfinite(float(v)) or v == 0:
@@ -158,3 +158,19 @@ def sig_for_tolerance(value, *, relative=None, absolute=None, cap: int = 12, flo
 def plural(count, singular: str, plural_form: str | None = None) -> str:
     """1 year, 2 years, 1.5 years: only exactly one takes the singular."""
     return singular if count == 1 else (plural_form or singular + "s")
+
+
+def measured_and_bound(measured, bound, sig: int = 2) -> tuple[str, str]:
+    """A measured value beside the bound it must meet, in one notation (0.73 against 1, 2.3 × 10⁻¹² against
+    1 × 10⁻⁹): the measured value to `sig` figures, the bound to its own (a bound of 10⁻⁹ is not 1.0 × 10⁻⁹)."""
+    pair = [v for v in (measured, bound) if isinstance(v, (int, float)) and not isinstance(v, bool)]
+    power = any(needs_power_of_ten(v, sig) for v in pair if not isinstance(v, Integral))
+    fixed = (0, 0) if power else FIXED_RANGE
+
+    def text(v, figures):
+        if isinstance(v, (bool, Integral, str)) or v is None or not math.isfinite(float(v)) or v == 0:
+            return format_number(v, figures)
+        return format_number(v, figures, fixed_range=fixed)
+
+    bound_figures = min(sig, exact_figures(float(bound))) if isinstance(bound, float) else sig
+    return text(measured, sig), text(bound, bound_figures)

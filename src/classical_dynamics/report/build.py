@@ -20,7 +20,7 @@ from jinja2.ext import Extension
 from markupsafe import Markup
 
 from .. import io, scene_results
-from ..formatting import format_column, format_decimals, format_number, shortest
+from ..formatting import format_column, format_decimals, format_number, measured_and_bound, shortest
 from ..inline_math import plain_text, render_markup, render_text
 from ..provenance import git_state, machine, package_versions, sha256_file
 from ..studies import STUDIES
@@ -177,9 +177,10 @@ class Report:
             value=self.value,
             shortest=shortest,
             column=format_column,
+            measured_and_bound=measured_and_bound,
             claim_digits=claims_mod.shown_digits,
             source_means=claims_mod.source_means,
-            means_digits=claims_mod.means_digits,
+            evaluated_text=claims_mod.evaluated_text,
             unit=unit_html,
             label_number=self.numbering.label,
             fig=self.fig,

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import yaml
 
-from ..formatting import format_number, sig_for_tolerance
+from ..formatting import exact_figures, format_number, sig_for_tolerance
 
 
 class ClaimFailure(RuntimeError):
@@ -172,7 +172,13 @@ def source_means(claim: ClaimResult) -> str:
             figures > 1 or abs(value) == float(printed)
         ):
             return ""
-    return format_number(value, means_digits(claim))
+    return evaluated_text(claim, value)
+
+
+def evaluated_text(claim: ClaimResult, value: float) -> str:
+    """A number we evaluated from the source, to the figures of ours; a value with a short exact decimal
+    as it is (½ means 0.5, not 0.5000)."""
+    return format_number(value, min(means_digits(claim), exact_figures(float(value))))
 
 
 def means_digits(claim: ClaimResult) -> int:
