@@ -162,7 +162,7 @@ def plural(count, singular: str, plural_form: str | None = None) -> str:
 
 def measured_and_bound(measured, bound, sig: int = 2) -> tuple[str, str]:
     """A measured value beside the bound it must meet, in one notation (0.73 against 1, 2.3 × 10⁻¹² against
-    1 × 10⁻⁹): the measured value to `sig` figures, the bound to its own (a bound of 10⁻⁹ is not 1.0 × 10⁻⁹)."""
+    1 × 10⁻⁹): the measured value to `sig` figures, the bound to its own (10⁻⁹, not 1.0 × 10⁻⁹)."""
     pair = [v for v in (measured, bound) if isinstance(v, (int, float)) and not isinstance(v, bool)]
     power = any(needs_power_of_ten(v, sig) for v in pair if not isinstance(v, Integral))
     fixed = (0, 0) if power else FIXED_RANGE
