@@ -36,6 +36,22 @@ from .navigation import add_navigation
 from .numbering import NAMES, Numbering
 
 
+
+def _split_columns(frame, columns, split):
+    """One column per value of `by` for each column in split (see table): "setting" with kind "tolerance"
+    and "step" becomes "setting:tolerance" and "setting:step", empty where the row is of the other kind."""
+    columns = list(columns or frame.columns)
+    for column, by in split.items():
+        parts = [f"{column}:{v}" for v in dict.fromkeys(frame[by])]
+        for part in parts:
+            value = part.split(":", 1)[1]
+            frame = frame.assign(**{part: frame[column].where(frame[by] == value)})
+        at = columns.index(column)
+        columns[at : at + 1] = parts
+        frame = frame.drop(columns=[column, by])
+        columns = [c for c in columns if c != by]
+    return frame, columns
+
 class ResultsIndex:
     """Everything under results/: summaries, provenance, timing tables."""
 
@@ -361,13 +377,17 @@ class Report:
         long: bool = False,
         together=(),
         decimals=None,
+        split=None,
     ):
         """A results table: headers as the study declared them ("quantity (unit)", with math), numbers
         right-aligned to `sig` figures (per column in `sigs`), columns of whole numbers printed as such;
         the columns of each group in `together` (ours beside a reference's) share one notation.
         keep = {column: [values]} shows the rows whose values are listed (by value, not position, so a
         reduced build that has fewer rows shows fewer). decimals = {column: n} prints that column as plain
-        decimals to n places (a quantity known to an absolute resolution: a change below it reads 0.000)."""
+        decimals to n places (a quantity known to an absolute resolution: a change below it reads 0.000).
+        split = {column: by} shows a column that holds different quantities by row (a tolerance in one, a step
+        in days in the next, told apart by the column `by`) as one column per value of `by`, "—" elsewhere,
+        headed by rename["column:value"]; `by` itself is then not shown."""
         study, scene = where.split("/")
         summary = self.index.summary(study, scene)
         meta = (summary["timings"]["tables"] if timing else summary["tables"])[name]
@@ -379,6 +399,7 @@ class Report:
                 mask = frame[column].isin(allowed)
             frame = frame[mask]
         headers = {**meta.get("headers", {}), **(rename or {})}
+        frame, columns = _split_columns(frame, columns, split or {})
         left_out = [c for c in frame.columns if columns and c not in columns]
         if columns:
             frame = frame[columns]
