@@ -76,10 +76,40 @@ def test_the_digest_changes_with_exactly_the_modules_reached(tmp_path):
     ):
         path = modules[name]
         source = path.read_bytes()
-        path.write_bytes(source + b"\n# edited\n")
+        path.write_bytes(source + b"\nEDITED = 1\n")
         assert (digest() != before) == (name in reached), name
         path.write_bytes(source)
     assert digest() == before
+
+
+def test_a_comment_or_docstring_edit_changes_no_digest_and_a_code_edit_does(tmp_path):
+    """What a job depends on is what its code does: a comment, a docstring, blank lines or a reformatting leave
+    the digest (and so every result) standing; a changed constant or a swapped operator change it."""
+    copy = copy_repository(tmp_path / "repo") / "src" / PACKAGE
+    modules = code_graph.modules(copy)
+    entries = (f"{PACKAGE}.jobserver", f"{PACKAGE}.scene_job", f"{PACKAGE}.studies.chains")
+    path = modules[f"{PACKAGE}.formatting"]  # reached by every study
+    source = path.read_text(encoding="utf-8")
+
+    def digest_with(text):
+        path.write_text(text, encoding="utf-8")
+        return code_graph.digest_of(code_graph.import_graph(copy), modules, entries, copy)
+
+    before = digest_with(source)
+    assert source.startswith('"""') and "def format_number(" in source
+    for same in (
+        source + "\n# a comment\n\n",
+        source.replace('"""', '"""Reworded. ', 1),  # the module's docstring
+        source.replace("def format_number(", "def format_number(  ", 1),  # spacing
+    ):
+        assert digest_with(same) == before
+    for different in (
+        source.replace('MINUS = "\\u2212"', 'MINUS = "-"', 1),
+        source.replace("FIXED_RANGE = (-3, 5)", "FIXED_RANGE = (-3, 6)", 1),
+        source + "\nEDITED = 1\n",
+    ):
+        assert different != source
+        assert digest_with(different) != before
 
 
 LIGHT_SCENE = {  # one light scene per study
@@ -176,6 +206,6 @@ EDITED = [
 @pytest.mark.parametrize("name", EDITED)
 def test_editing_a_module_reruns_exactly_the_jobs_that_run_it(scratch, name):
     path = scratch / "src" / (name.replace(".", "/") + ".py")
-    path.write_text(path.read_text() + "\n# edited\n")
+    path.write_text(path.read_text() + "\nEDITED = 1\n")  # code, not a comment: comments rerun nothing
     out = snakemake(scratch, "-n", "--config", "quick=1")
     assert stale_scenes(out.stdout) == expected_after_editing(name, scratch), out.stdout[-3000:]

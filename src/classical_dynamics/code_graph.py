@@ -6,6 +6,10 @@ Snakemake compares with the one it recorded).
 An edge is any import of a module of the package, anywhere in a module (inside functions too: code that runs
 only sometimes still runs), `lazy_module("...")` and `import_module("...")` with a name known from the source,
 and the packages above every module (importing a.b.c runs a/__init__ and a/b/__init__).
+
+A module's part of the digest is its meaning, not its bytes: the parsed syntax tree without docstrings, so a
+comment, a docstring, blank lines or reformatting rerun nothing, and any change to what the code does reruns
+every job that reaches it.
 """
 
 from __future__ import annotations
@@ -59,12 +63,24 @@ def _called_name(node: ast.Call, package_name: str, module: str) -> str | None:
     return None
 
 
-def imported(name: str, path: Path, known: dict[str, Path]) -> set[str]:
+def meaning(tree: ast.Module) -> str:
+    """SHA-256 of what a module does: its syntax tree (no comments, no positions) without the docstrings of the
+    module, its classes and functions (text for a reader; no result depends on it)."""
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef)) and node.body:
+            first = node.body[0]
+            if isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant):
+                if isinstance(first.value.value, str):
+                    node.body = node.body[1:] or [ast.Pass()]
+    return hashlib.sha256(ast.dump(tree).encode()).hexdigest()
+
+
+def imported(name: str, path: Path, known: dict[str, Path], tree: ast.Module | None = None) -> set[str]:
     """The package's modules that the module `name` (at `path`) imports, anywhere in it."""
     is_package = path.name == "__init__.py"
     package_name = name if is_package else name.rpartition(".")[0]
     found = set()
-    for node in ast.walk(ast.parse(path.read_bytes(), str(path))):
+    for node in ast.walk(tree or ast.parse(path.read_bytes(), str(path))):
         if isinstance(node, ast.Import):
             found.update(alias.name for alias in node.names)
         elif isinstance(node, ast.ImportFrom):
@@ -83,26 +99,35 @@ def imported(name: str, path: Path, known: dict[str, Path]) -> set[str]:
 
 
 def import_graph(package: Path = PACKAGE, cache: Path | None = None) -> dict[str, set[str]]:
-    """{module: the package's modules it imports}, imports inside functions included. With `cache` (a JSON
-    file), a module whose bytes and the package's module names are those of an earlier parse is not parsed
-    again (parsing every module costs a Snakemake start 0.7 s)."""
+    """{module: the package's modules it imports}, imports inside functions included."""
+    return parse(package, cache)[0]
+
+
+def parse(package: Path = PACKAGE, cache: Path | None = None) -> tuple[dict[str, set[str]], dict[str, str]]:
+    """The import graph and each module's meaning (see meaning()). With `cache` (a JSON file), a module whose
+    bytes and the package's module names are those of an earlier parse is not parsed again (parsing every
+    module costs a Snakemake start 0.7 s)."""
     known = modules(package)
     names = hashlib.sha256("\n".join(known).encode()).hexdigest()
     try:
         saved = json.loads(cache.read_text()) if cache else {}
     except (OSError, ValueError):
         saved = {}
-    graph, keys = {}, {}
+    graph, meanings, keys = {}, {}, {}
     for name, path in known.items():
-        key = hashlib.sha256(names.encode() + path.read_bytes()).hexdigest()
+        source = path.read_bytes()
+        key = hashlib.sha256(names.encode() + source).hexdigest()
         found = saved.get(key)
-        graph[name] = set(found) if isinstance(found, list) else imported(name, path, known)
-        keys[key] = sorted(graph[name])
+        if not (isinstance(found, dict) and {"imports", "meaning"} <= set(found)):
+            tree = ast.parse(source, str(path))
+            found = {"imports": sorted(imported(name, path, known, tree)), "meaning": meaning(tree)}
+        graph[name], meanings[name] = set(found["imports"]), found["meaning"]
+        keys[key] = found
     if cache and keys != saved:
         from .io import atomic_write_text  # only when the cache is wanted: io imports numpy
 
         atomic_write_text(cache, json.dumps(keys, sort_keys=True))
-    return graph
+    return graph, meanings
 
 
 def reached(graph: dict[str, set[str]], entries) -> set[str]:
@@ -132,19 +157,27 @@ def cache_parses_in(path: Path | str) -> None:
 
 
 @lru_cache(maxsize=1)
-def _graph() -> tuple[dict[str, set[str]], dict[str, Path]]:
-    return import_graph(cache=_CACHE[0]), modules()
+def _graph() -> tuple[dict[str, set[str]], dict[str, Path], dict[str, str]]:
+    graph, meanings = parse(cache=_CACHE[0])
+    return graph, modules(), meanings
 
 
-def digest_of(graph: dict[str, set[str]], paths: dict[str, Path], entries, package: Path = PACKAGE) -> str:
-    """SHA-256 of the sources (path and bytes) of every module that `entries` reach in `graph`."""
+def digest_of(
+    graph: dict[str, set[str]],
+    paths: dict[str, Path],
+    entries,
+    package: Path = PACKAGE,
+    meanings: dict[str, str] | None = None,
+) -> str:
+    """SHA-256 of the meanings (path and syntax tree) of every module that `entries` reach in `graph`."""
     unknown = [entry for entry in entries if entry not in graph]
     if unknown:
         raise KeyError(f"no module {', '.join(unknown)} in {package.name}")
+    if meanings is None:
+        meanings = parse(package)[1]
     digest = hashlib.sha256()
     for name in sorted(reached(graph, entries)):
-        path = paths[name]
-        digest.update(path.relative_to(package).as_posix().encode() + b"\0" + path.read_bytes())
+        digest.update(paths[name].relative_to(package).as_posix().encode() + b"\0" + meanings[name].encode())
     return digest.hexdigest()
 
 
@@ -152,5 +185,5 @@ def digest_of(graph: dict[str, set[str]], paths: dict[str, Path], entries, packa
 def code_digest(*entries: str) -> str:
     """SHA-256 of the sources of every module that the entry modules (dotted names) reach: what a job's result
     depends on besides its inputs."""
-    graph, paths = _graph()
-    return digest_of(graph, paths, entries)
+    graph, paths, meanings = _graph()
+    return digest_of(graph, paths, entries, meanings=meanings)
