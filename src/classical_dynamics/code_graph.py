@@ -64,8 +64,8 @@ def _called_name(node: ast.Call, package_name: str, module: str) -> str | None:
 
 
 def meaning(tree: ast.Module) -> str:
-    """SHA-256 of what a module does: its syntax tree (no comments, no positions) without the docstrings of the
-    module, its classes and functions (text for a reader; no result depends on it)."""
+    """SHA-256 of what a module does: its syntax tree (no comments, no positions) without the docstrings of
+    the module, its classes and functions (text for a reader; no result depends on it)."""
     for node in ast.walk(tree):
         if isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef)) and node.body:
             first = node.body[0]

@@ -36,7 +36,6 @@ from .navigation import add_navigation
 from .numbering import NAMES, Numbering
 
 
-
 def _split_columns(frame, columns, split):
     """One column per value of `by` for each column in split (see table): "setting" with kind "tolerance"
     and "step" becomes "setting:tolerance" and "setting:step", empty where the row is of the other kind."""
@@ -51,6 +50,7 @@ def _split_columns(frame, columns, split):
         frame = frame.drop(columns=[column, by])
         columns = [c for c in columns if c != by]
     return frame, columns
+
 
 class ResultsIndex:
     """Everything under results/: summaries, provenance, timing tables."""
