@@ -83,8 +83,8 @@ def test_the_digest_changes_with_exactly_the_modules_reached(tmp_path):
 
 
 def test_a_comment_or_docstring_edit_changes_no_digest_and_a_code_edit_does(tmp_path):
-    """What a job depends on is what its code does: a comment, a docstring, blank lines or a reformatting leave
-    the digest (and so every result) standing; a changed constant or a swapped operator change it."""
+    """What a job depends on is what its code does: a comment, a docstring, blank lines, reformatting leave
+    the digest (and so every result) standing; a changed constant or a new line of code change it."""
     copy = copy_repository(tmp_path / "repo") / "src" / PACKAGE
     modules = code_graph.modules(copy)
     entries = (f"{PACKAGE}.jobserver", f"{PACKAGE}.scene_job", f"{PACKAGE}.studies.chains")
