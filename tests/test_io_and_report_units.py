@@ -193,6 +193,18 @@ def test_failing_must_hold_claim_names_itself(tmp_path):
         claims.require(results)
 
 
+def test_a_claim_that_does_not_say_whether_it_must_hold_is_refused(tmp_path):
+    """Required of every rebuild, or allowed to fail with its reason: a claim says which (five round-off
+    identities once defaulted to "may fail" without a word)."""
+    spec = tmp_path / "c.yaml"
+    spec.write_text(
+        "- id: silent\n  statement: s\n  kind: statement\n  source: {value: 0}\n"
+        "  computed: {scene: a, number: p}\n  check: {at_most: 1.0e-9}\n"
+    )
+    with pytest.raises(claims.ClaimFailure, match="silent: must_hold"):
+        claims.evaluate("chains", spec, lambda *_: {"value": 0.0, "unit": ""})
+
+
 @pytest.mark.parametrize(
     "fields,refusal",
     [
@@ -207,6 +219,7 @@ def test_a_claim_says_what_it_is(tmp_path, fields, refusal):
     spec = tmp_path / "c.yaml"
     spec.write_text(
         f"- id: x\n  statement: s\n{fields}  computed: {{scene: a, number: p}}\n  check: {{at_most: 1}}\n"
+        "  must_hold: true\n"
     )
     with pytest.raises(claims.ClaimFailure, match=refusal):
         claims.evaluate("chains", spec, lambda *_: {"value": 0.5, "unit": ""})
@@ -304,7 +317,7 @@ def test_a_claim_says_when_ours_is_an_input_and_refuses_another_word(tmp_path):
     import yaml
 
     base = {"id": "x", "statement": "s", "kind": "reference", "source": {"value": 1.0}}
-    base |= {"computed": {"scene": "a", "number": "n"}, "check": {"relative": 0.1}}
+    base |= {"computed": {"scene": "a", "number": "n"}, "check": {"relative": 0.1}, "must_hold": True}
     lookup = lambda study, scene, number: {"value": 1.01, "unit": "1"}  # noqa: E731
     path = tmp_path / "claims.yaml"
     path.write_text(yaml.safe_dump([base | {"ours_is": "input"}]))

@@ -31,7 +31,7 @@ from .bib import Citations, format_entry, read_bib
 from .citation import citation, commit_date
 from .dist import results_archive_name
 from .ledger import read_ledger, require_figures
-from .math import latex_data_uri
+from .math import latex_image
 from .navigation import add_navigation
 from .numbering import NAMES, Numbering
 
@@ -378,6 +378,7 @@ class Report:
         together=(),
         decimals=None,
         split=None,
+        powers=(),
     ):
         """A results table: headers as the study declared them ("quantity (unit)", with math), numbers
         right-aligned to `sig` figures (per column in `sigs`), columns of whole numbers printed as such;
@@ -387,7 +388,8 @@ class Report:
         decimals to n places (a quantity known to an absolute resolution: a change below it reads 0.000).
         split = {column: by} shows a column that holds different quantities by row (a tolerance in one, a step
         in days in the next, told apart by the column `by`) as one column per value of `by`, "—" elsewhere,
-        headed by rename["column:value"]; `by` itself is then not shown."""
+        headed by rename["column:value"]; `by` itself is then not shown. powers = columns always written as
+        mantissa × 10ⁿ to `sigs` figures (a predicted count of 2.5 × 10⁸, not 250 000 000)."""
         study, scene = where.split("/")
         summary = self.index.summary(study, scene)
         meta = (summary["timings"]["tables"] if timing else summary["tables"])[name]
@@ -423,7 +425,13 @@ class Report:
                 else (int(v) if isinstance(v, float) and whole.get(c) else v)
                 for v in frame[c].tolist()
             ]
-            if c in (decimals or {}):
+            if c in powers:
+                figures = (sigs or {}).get(c, sig)
+                texts[c] = [
+                    format_number(v) if v is None else format_number(float(v), figures, fixed_range=(0, 0))
+                    for v in column
+                ]
+            elif c in (decimals or {}):
                 places = int(decimals[c])
                 texts[c] = [
                     format_number(v) if v is None or isinstance(v, str) else format_decimals(v, places)
@@ -484,7 +492,9 @@ class Report:
         """{% call eq("eq:name") %}LaTeX{% endcall %}: a displayed, numbered equation."""
         latex = " ".join(str(caller()).split())
         number = self.numbering.label(label) if label else None
-        img = f'<img class="math" src="{latex_data_uri(latex)}" alt="{html.escape(latex)}">'
+        uri, height_em = latex_image(latex)
+        # --em: the screen sets the image's height in em of the text (screen.css); print keeps its own size
+        img = f'<img class="math" src="{uri}" style="--em: {height_em:.3f}em" alt="{html.escape(latex)}">'
         tag = f'<span class="eqno">({number})</span>' if number else ""
         anchor = f' id="{label}"' if label else ""
         return Markup(f'<div class="equation"{anchor}>{img}{tag}</div>')

@@ -205,6 +205,10 @@ def evaluate(study: str, claims_file: Path, lookup) -> list[ClaimResult]:
     results = []
     for claim in yaml.safe_load(Path(claims_file).read_text(encoding="utf-8")) or []:
         spec, check, source = claim["computed"], claim["check"], claim.get("source", {})
+        if not isinstance(
+            claim.get("must_hold"), bool
+        ):  # five round-off identities once went "may fail" unsaid
+            raise ClaimFailure(f"{claims_file}: claim {claim.get('id')}: must_hold must be true or false")
         problem, computed, unit = "", None, ""
         try:
             entry = lookup(study, spec["scene"], spec["number"])
@@ -249,7 +253,7 @@ def evaluate(study: str, claims_file: Path, lookup) -> list[ClaimResult]:
                 deviation=deviation,
                 relative_deviation=relative,
                 passed=passed,
-                must_hold=bool(claim.get("must_hold", False)),
+                must_hold=claim["must_hold"],
                 problem=problem,
                 headline=bool(claim.get("headline", False)),
                 explanation=claim.get("explanation", ""),

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pandas as pd
 import scipy.linalg as sla
@@ -732,6 +730,7 @@ def _cost_to_target(results, targets, quick):
                         "scheme": scheme,
                         "target": target,
                         "n": n,
+                        "n_predicted": None,
                         "error": err[n],
                         "seconds": cost[scheme](n),
                         "measured": True,
@@ -745,7 +744,9 @@ def _cost_to_target(results, targets, quick):
                     {
                         "scheme": scheme,
                         "target": target,
-                        "n": int(math.ceil(n_need)),  # a count of particles, as the measured rows
+                        "n": None,
+                        # a prediction from a fitted law: two figures, not a count to the particle
+                        "n_predicted": float(f"{n_need:.2g}"),
                         "error": None,
                         "seconds": None,
                         "measured": False,
@@ -759,13 +760,15 @@ def _cost_to_target(results, targets, quick):
         "What it costs to reach a given relative error of $\\omega_1$ "
         "against the continuum, with the pliability solver: the smallest $n = 2^p$ that reaches it "
         f"and its time; where no $n$ up to $2^{{{top}}}$ reaches it, the $n$ the error law predicts "
-        "(not run, no time). The times are runs of their own, of the lowest eigenvalue alone and in "
+        "(to two figures; not run, no time). The times are runs of their own, of the lowest eigenvalue "
+        "alone and in "
         "fewer repeats: the solver-cost table times five eigenvalues, so its time at the same $n$ "
         f"differs; compare times within one table. {software_stamp()}.",
         headers={
             "scheme": "scheme",
             "target": "target error",
             "n": "$n$",
+            "n_predicted": "$n$ predicted",
             "error": "error reached",
             "seconds": "wall time (s)",
             "measured": "run",

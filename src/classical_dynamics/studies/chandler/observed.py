@@ -206,7 +206,7 @@ def _periodogram_figure(results, f, power, fit, compare):
     ax.semilogy(f, np.maximum(power, 1e-8), lw=0.7, color="0.25")
     marks = (
         (rigid, "rigid Earth", "#D55E00", (0, (4, 2))),
-        (elastic, "elastic Earth (Lamb)", "#009E73", (0, (1, 1.5))),
+        (elastic, "elastic Earth (Lamb)", "#CC79A7", (0, (1, 1.5))),
         (fit.chandler_period_days, "observed", "#0072B2", "-"),
     )
     for period, label, colour, style in marks:
