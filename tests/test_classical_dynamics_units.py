@@ -243,7 +243,8 @@ def test_formatting_rounds_first_then_chooses_the_notation():
     ]
     # a column in one notation once any value needs a power of ten; decimals down to 10⁻⁴; no figures a value
     # does not have; counts exactly
-    assert formatting.format_column([1.0, 1e-6, None, 0.0]) == [f"1{x}10⁰", f"1{x}10⁻⁶", "—", "0"]
+    assert formatting.format_column([1.0, 1e-6, None, 0.0]) == ["1", f"1{x}10⁻⁶", "—", "0"]  # no × 10⁰
+    assert formatting.format_column([2.22, 3.1e-16, 45.9]) == ["2.22", f"3.10{x}10⁻¹⁶", f"4.59{x}10¹"]
     assert formatting.format_column([1.0, 0.0001, None, 0.0]) == ["1", "0.0001", "—", "0"]
     assert formatting.format_column([9.22649, 0.000217893]) == ["9.226", "0.0002179"]
     assert formatting.format_column([1, 2.5]) == ["1", "2.5"]

@@ -355,6 +355,7 @@ def test_a_hard_cases_measured_value_and_bound_share_one_notation(built_repo):
     """Each hard case is its own quantity: its measured value and bound are written alike (0.73 against 1.0,
     2.3 × 10⁻¹² against 1 × 10⁻⁹), never 7.3 × 10⁻¹ against 1 × 10⁰ nor 0.73 against 1 × 10⁻⁹."""
     power = re.compile(r"[−-]?\d(\.\d+)?\s*×\s*10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+")
+    mantissa = re.compile(r"[−-]?[1-9](\.\d+)?")  # 1.5 beside 10⁻⁹: the mantissa at 10⁰
     page = (built_repo / "results/report.html").read_text(encoding="utf-8")
     rows, unlike = 0, []
     for attrs, body in re.findall(r"<figure([^>]*)>(.*?)</figure>", page, re.S):
@@ -366,7 +367,8 @@ def test_a_hard_cases_measured_value_and_bound_share_one_notation(built_repo):
                 continue
             rows += 1
             pair = [re.sub(r"\s*[^\d×⁻⁰¹²³⁴⁵⁶⁷⁸⁹.−-]+$", "", c) for c in cells[2:4]]  # drop the unit
-            if "× 10⁰" in " ".join(pair) or len({bool(power.fullmatch(c)) for c in pair if c != "0"}) > 1:
+            powers = {bool(power.fullmatch(c)) for c in pair if c != "0" and not mantissa.fullmatch(c)}
+            if "× 10⁰" in " ".join(pair) or len(powers) > 1:
                 unlike.append(pair)
     assert rows > 30
     assert unlike == []
@@ -374,16 +376,20 @@ def test_a_hard_cases_measured_value_and_bound_share_one_notation(built_repo):
 
 @pytest.mark.slow
 def test_a_table_column_keeps_one_notation(built_repo):
-    """No column writes 0.0013 or 2.41 in one row and 5.4 × 10⁻¹² in another: once one row needs a power of
-    ten, every number of the column has one (10⁰ included)."""
+    """No column writes 0.0013 or 24.1 in one row and 5.4 × 10⁻¹² in another: once one row needs a power of
+    ten, every number of the column is a mantissa d.dd with its power (10⁰ left unwritten: a factor of one),
+    and nowhere does × 10⁰ appear."""
     power = re.compile(r"[−-]?\d(\.\d+)?\s*×\s*10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+")
     decimal = re.compile(r"[−-]?\d[\d ]*\.\d+")
+    mantissa = re.compile(r"[−-]?[1-9](\.\d+)?")  # 2.22: a power-of-ten column's value at 10⁰
     mixed = {}
-    for key, cells in _columns((built_repo / "results/report.html").read_text(encoding="utf-8")).items():
-        plain = [c for c in cells if decimal.fullmatch(c)]
+    page = (built_repo / "results/report.html").read_text(encoding="utf-8")
+    for key, cells in _columns(page).items():
+        plain = [c for c in cells if decimal.fullmatch(c) and not mantissa.fullmatch(c)]
         if plain and any(power.fullmatch(c) for c in cells):
             mixed[key] = plain[:3]
     assert mixed == {}
+    assert "×\u202f10⁰" not in page and "× 10⁰" not in page
 
 
 @pytest.mark.slow

@@ -90,7 +90,7 @@ def exact_figures(value: float) -> int:
 
 def format_column(values, sig: int = 4) -> list[str]:
     """A table column in one notation: if any value needs a power of ten, every value is written as
-    mantissa × 10ⁿ, so a column never mixes 0.0044 or 2.41 with 2.3 × 10⁻⁶ (two readers of the report took
+    mantissa × 10ⁿ (n = 0 as the mantissa alone), so a column never mixes 0.0044 or 24.1 with 2.3 × 10⁻⁶ (two readers of the report took
     2.41 beside 5.01 × 10⁻¹ for a mixed column). A column of counts prints them exactly, and a column within
     10⁻⁴ to 10⁵ stays in decimals (9.226 and 0.0002178, not 9.226 × 10⁰)."""
     finite = [
@@ -115,9 +115,8 @@ def format_column(values, sig: int = 4) -> list[str]:
     for v in values:
         if isinstance(v, (bool, Integral, str)) or v is None or not math.isfinite(float(v)) or float(v) == 0:
             out.append(format_number(v, sig))
-        else:
-            text = format_number(v, sig, fixed_range=(0, 0))
-            out.append(text)
+        else:  # mantissa × 10ⁿ; at n = 0 the mantissa alone (2.22, not 2.22 × 10⁰: a factor of one)
+            out.append(format_number(v, sig, fixed_range=(0, 1)))
     return out
 
 
@@ -168,7 +167,7 @@ def measured_and_bound(measured, bound, sig: int = 2) -> tuple[str, str]:
     1 × 10⁻⁹): the measured value to `sig` figures, the bound to its own (10⁻⁹, not 1.0 × 10⁻⁹)."""
     pair = [v for v in (measured, bound) if isinstance(v, (int, float)) and not isinstance(v, bool)]
     power = any(needs_power_of_ten(v, sig) for v in pair if not isinstance(v, Integral))
-    fixed = (0, 0) if power else FIXED_RANGE
+    fixed = (0, 1) if power else FIXED_RANGE
 
     def text(v, figures):
         if isinstance(v, (bool, Integral, str)) or v is None or not math.isfinite(float(v)) or v == 0:
