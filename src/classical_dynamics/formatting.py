@@ -90,9 +90,9 @@ def exact_figures(value: float) -> int:
 
 def format_column(values, sig: int = 4) -> list[str]:
     """A table column in one notation: if any value needs a power of ten, every value is written as
-    mantissa × 10ⁿ (n = 0 as the mantissa alone), so a column never mixes 0.0044 or 24.1 with 2.3 × 10⁻⁶ (two readers of the report took
-    2.41 beside 5.01 × 10⁻¹ for a mixed column). A column of counts prints them exactly, and a column within
-    10⁻⁴ to 10⁵ stays in decimals (9.226 and 0.0002178, not 9.226 × 10⁰)."""
+    mantissa × 10ⁿ (n = 0 as the mantissa alone), so a column never mixes 0.0044 or 24.1 with 2.3 × 10⁻⁶
+    (two readers of the report took 0.241 beside 5.01 × 10⁻¹ for a mixed column). A column of counts prints
+    them exactly, and a column within 10⁻⁴ to 10⁵ stays in decimals (9.226 and 0.0002178)."""
     finite = [
         v
         for v in values
