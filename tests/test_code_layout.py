@@ -2,7 +2,15 @@
 since a circle that only closes at run time is still one the reader has to untangle). The import graph is the
 package's own (code_graph.py), the one a job's code digest is derived from."""
 
+import pytest
+
 from classical_dynamics.code_graph import import_graph
+
+
+@pytest.fixture(scope="module")
+def graph():
+    """The package's import graph, parsed once for the tests below (each parse reads every module: 0.5 s)."""
+    return import_graph()
 
 
 def circles(graph):
@@ -38,8 +46,7 @@ def test_the_circle_finder_finds_one():
     assert circles({"a": {"b"}, "b": set()}) == []
 
 
-def test_no_module_imports_itself_back():
-    graph = import_graph()
+def test_no_module_imports_itself_back(graph):
     assert (
         "classical_dynamics.studies.self_excited.bounds"
         in graph["classical_dynamics.studies.self_excited.accuracy"]
@@ -69,10 +76,9 @@ def upward_imports(graph):
     )
 
 
-def test_imports_point_down_the_layers():
+def test_imports_point_down_the_layers(graph):
     """A solver never imports a model, a model never a study, a study never the report (the report reads
     results files), and nothing below the entry points imports one."""
-    graph = import_graph()
     # an empty graph would pass: the check must see the package's own downward imports
     assert "classical_dynamics.models.precession" in graph["classical_dynamics.studies.precession.full"]
     assert "classical_dynamics.solvers.ode" in graph["classical_dynamics.studies.chandler.model"]

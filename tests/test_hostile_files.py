@@ -5,7 +5,9 @@ member was held whole: 2.15 GB resident). Time to refuse is a benchmark figure (
 import gzip
 import io
 import tarfile
+import zlib
 
+import numpy as np
 import pytest
 
 from classical_dynamics import limits
@@ -21,6 +23,17 @@ MEMORY_MB = 400  # the interpreter with numpy is about 100 MB; a bomb held whole
 
 def test_the_cases_cover_every_kind():
     assert {c.kind for c in CASES} == set(hf.KINDS)
+
+
+def test_the_checksum_of_zeros_is_zlibs(tmp_path):
+    """The bombs' CRC, taken without reading their zeros, is what zlib reads, and a small bomb made the same
+    way is a gzip file that Python's gzip (which checks the CRC and length) reads back whole."""
+    rng = np.random.default_rng(1)
+    for size in (0, 1, 2, 3, 255, 4096, 12345, (1 << 20) + 7, 3 << 20):
+        start = int(rng.integers(0, 1 << 32))
+        assert hf.crc32_zeros(start, size) == zlib.crc32(bytes(size), start), size
+    hf._zeros_gzip(tmp_path / "small.gz", b"header", 2 << 20)
+    assert gzip.decompress((tmp_path / "small.gz").read_bytes()) == b"header" + bytes(2 << 20)
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c.id for c in CASES])

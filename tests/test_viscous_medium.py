@@ -24,8 +24,9 @@ W = [0.3 + 0.4j, 1.7 + 0.5j, 1.6, 2.6 + 0.72j, 3.3 - 0.2j, 4.45 + 1.0j]
 
 
 def test_reference_is_the_integral_itself():
-    """The incomplete-gamma reference against mpmath's oscillatory quadrature of the definition."""
-    with mpmath.workdps(20):
+    """The incomplete-gamma reference against mpmath's oscillatory quadrature of the definition, at 18 digits:
+    they agree to 5e-20, four orders under the 1e-15 asked (20 digits: 4e-22, in 2.2 s rather than 1.3)."""
+    with mpmath.workdps(18):
         for w, x in ((0.3 + 0.4j, 2.0), (1.7 + 0.5j, 0.7), (1.6, 5.0)):
             si = -mpmath.quadosc(lambda u: mpmath.sin(u) * u ** (-mpmath.mpc(w)), [x, mpmath.inf], omega=1)
             ci = -mpmath.quadosc(lambda u: mpmath.cos(u) * u ** (-mpmath.mpc(w)), [x, mpmath.inf], omega=1)

@@ -11,8 +11,10 @@ from classical_dynamics.studies.self_excited import viscous
 
 
 def _defining_integrals(x, w):
-    """si = -int_x^inf sin(u) u^-w du, ci = -int_x^inf cos(u) u^-w du (Lee §5.4), by quadrature."""
-    with mpmath.workdps(20):
+    """si = -int_x^inf sin(u) u^-w du, ci = -int_x^inf cos(u) u^-w du (Lee §5.4), by quadrature. At 18 digits
+    they are within 7e-20 of the incomplete gamma function at 30 digits at every point of the table, 5 orders
+    under the 1e-14 asked; 20 digits took twice as long (6.2 s, not 3.3) for a margin no assertion uses."""
+    with mpmath.workdps(18):
         w = mpmath.mpc(w)
         si = -mpmath.quadosc(lambda u: mpmath.sin(u) * u ** (-w), [x, mpmath.inf], omega=1)
         ci = -mpmath.quadosc(lambda u: mpmath.cos(u) * u ** (-w), [x, mpmath.inf], omega=1)

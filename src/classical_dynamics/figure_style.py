@@ -80,3 +80,15 @@ def use() -> None:
     """Apply the style to every figure this process draws."""
     matplotlib.rcParams.update(STYLE)
     matplotlib._mathtext.SHRINK_FACTOR = SCRIPT_SHRINK
+
+
+def legend_below(fig, handles=None, labels=None, ncol: int = 4):
+    """A figure legend below the axes, in as many columns (at most ncol) as fit the figure's width."""
+    if handles is None:
+        handles, labels = fig.axes[0].get_legend_handles_labels()
+    renderer = fig.canvas.get_renderer()
+    for n in range(min(ncol, len(labels)), 0, -1):
+        legend = fig.legend(handles, labels, loc="outside lower center", ncol=n)
+        if n == 1 or legend.get_window_extent(renderer).width <= 0.93 * fig.bbox.width:  # SVG text runs wider
+            return legend
+        legend.remove()

@@ -145,7 +145,7 @@ def _draw_a_figure() -> None:
     fills its text caches: 0.3 s, more than a light scene's own work), done here rather than in every job.
     Its caches are keyed by what they hold, so a job draws the same bytes as in a process of its own."""
     from classical_dynamics import io
-    from classical_dynamics.solvers.workprecision import legend_below
+    from classical_dynamics.figure_style import legend_below
     from classical_dynamics.studies.results import new_figure
 
     fig, axes = new_figure()

@@ -16,6 +16,7 @@ from typing import Callable
 import numpy as np
 import pandas as pd
 
+from ..figure_style import legend_below  # noqa: F401 (wp.legend_below, as the studies call it)
 from ..formatting import format_number
 from . import rigid_body
 from .ode import Problem, solve
@@ -192,18 +193,6 @@ def plot(
     ax.invert_xaxis()
     decade_ticks(ax.xaxis)
     decade_ticks(ax.yaxis)
-
-
-def legend_below(fig, handles=None, labels=None, ncol: int = 4):
-    """A figure legend below the axes, in as many columns (at most ncol) as fit the figure's width."""
-    if handles is None:
-        handles, labels = fig.axes[0].get_legend_handles_labels()
-    renderer = fig.canvas.get_renderer()
-    for n in range(min(ncol, len(labels)), 0, -1):
-        legend = fig.legend(handles, labels, loc="outside lower center", ncol=n)
-        if n == 1 or legend.get_window_extent(renderer).width <= 0.93 * fig.bbox.width:  # SVG text runs wider
-            return legend
-        legend.remove()
 
 
 def nominal_order(method: str) -> int | None:

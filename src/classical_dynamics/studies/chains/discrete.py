@@ -6,7 +6,7 @@ import numpy as np
 import pandas as pd
 import scipy.linalg as sla
 
-from ...figure_style import FULL_WIDTH_IN
+from ...figure_style import FULL_WIDTH_IN, legend_below
 from ...formatting import format_number
 from ...lazy import lazy_module
 from ...models.chains import (
@@ -21,7 +21,6 @@ from ...provenance import software_stamp
 from ...solvers import chain_eigen
 from ...solvers.special import bessel_j0_zeros, laguerre_lowest_zero_asymptotic, laguerre_zero_mp
 from ...solvers.timing import min_time
-from ...solvers.workprecision import legend_below
 from ..results import new_figure, subplots
 from . import small_oscillations
 
