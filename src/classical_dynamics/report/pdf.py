@@ -47,9 +47,15 @@ def _relative(target: str, folder: Path) -> str:
     return relative + (f"#{parts.fragment}" if parts.fragment else "")
 
 
-def html_to_pdf(html_path: Path, pdf_path: Path) -> None:
+def html_to_pdf(html_path: Path, pdf_path: Path, fast_svg: bool = True) -> None:
+    """Render the report; `fast_svg=False` draws figures with plain WeasyPrint (the old way)."""
     import weasyprint
     from weasyprint.layout import inline
+
+    if fast_svg:
+        from . import fast_svg as patches
+
+        patches.install()
 
     if not getattr(inline.split_first_line, "keeps_whole_lines", False):
         inline.split_first_line = _keep_whole_lines(inline.split_first_line)

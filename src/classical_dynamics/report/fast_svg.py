@@ -1,0 +1,148 @@
+"""WeasyPrint's SVG drawing without its repeated work: the same PDF operators, fewer times computed.
+
+The report's figures are matplotlib SVGs with text as glyph paths: each glyph is defined once in the
+figure's <defs> and placed by a <use> (20 426 placements in the 57 figures of the full report). WeasyPrint 70
+draws a <use> by
+
+- joining the reference "#DejaVuSans-31" to the image's URL, which for an image inlined in the HTML is its
+  whole data: URL (up to 1 MB), and parsing that URL again, three times per glyph;
+- parsing the glyph's path data again for every placement (a glyph has 20-60 Bézier curves).
+
+Both are pure functions of their inputs, so each is computed once and reused here: a URL by its strings, a
+path by its data (and the sizes its units could refer to). What is written into the PDF does not change: the
+same operators with the same numbers, in the same order (tests/test_report_fast_svg.py compares the
+uncompressed page streams byte for byte, and benchmarks/pdf_render.py the page images of the whole report).
+
+`install()` patches WeasyPrint in this process; it is idempotent.
+"""
+
+from __future__ import annotations
+
+_INSTALLED = "_classical_dynamics_fast_svg"
+CHECKED_ON = "70.0"  # the WeasyPrint these patches were compared against, byte for byte
+
+
+def _memoized_path(path):
+    """`weasyprint.svg.path.path`, replaying the operators and vertices of a path data string seen before.
+
+    Only a path with an id is kept: one that <use> places (matplotlib's glyphs and markers); the rest are
+    drawn once. A path's operators depend on its `d` string and, through units (em, %), on the font size
+    and the image's inner size; they are appended to the stream without reading or changing its state
+    (no colour, no matrix, no resource), so the appended items can be replayed as they are.
+    """
+    cache: dict[tuple, tuple[list, list]] = {}
+
+    def draw(svg, node, font_size):
+        if node.get("id") is None:  # drawn once: a figure's line or patch, not a glyph or a marker
+            path(svg, node, font_size)
+            return
+        key = (node.get("d", ""), font_size, svg.inner_width, svg.inner_height, svg.inner_diagonal)
+        if (hit := cache.get(key)) is not None:
+            operators, vertices = hit
+            svg.stream.stream.extend(operators)
+            node.vertices.extend(vertices)
+            return
+        start, vertices_before = len(svg.stream.stream), len(node.vertices)
+        path(svg, node, font_size)
+        operators = svg.stream.stream[start:]
+        # only what a path appends can be replayed: no graphic state may have been pushed or popped
+        if not any(isinstance(item, bytes) and item in (b"q", b"Q") for item in operators):
+            cache[key] = (operators, list(node.vertices)[vertices_before:])
+
+    return draw
+
+
+def _memoized(function, size: int | None = 1 << 16):
+    import functools
+
+    return functools.lru_cache(maxsize=size)(function)
+
+
+def _fast_size(size):
+    """`weasyprint.svg.utils.size` without a context manager per call: a plain number is returned at once."""
+
+    def fast(string, font_size=None, percentage_reference=None):
+        if not string:
+            return 0
+        try:
+            return float(string)
+        except ValueError:
+            return size(string, font_size, percentage_reference)
+
+    return fast
+
+
+def _copying(function):
+    """A memoized colour parser: the caller scales the colour's alpha in place, so each call gets a copy."""
+    import copy
+
+    cached = _memoized(function, 4096)
+    return lambda string: copy.copy(cached(string))
+
+
+def _copying_matrix(function):
+    """A memoized transform parser: a Matrix is a list, so each caller gets its own copy."""
+    cached = _memoized(function)
+
+    def transform(*args):
+        found = cached(*args)
+        return type(found)(matrix=[row[:] for row in found])
+
+    return transform
+
+
+def _matmul(self, other):
+    """`Matrix.__matmul__` in closed form: the same sums in the same order, so the same floats."""
+    (b00, b01, b02), (b10, b11, b12), (b20, b21, b22) = other
+    return type(self)(
+        matrix=[
+            [
+                0 + a0 * b00 + a1 * b10 + a2 * b20,
+                0 + a0 * b01 + a1 * b11 + a2 * b21,
+                0 + a0 * b02 + a1 * b12 + a2 * b22,
+            ]
+            for a0, a1, a2 in self
+        ]
+    )
+
+
+def install() -> None:
+    """Patch WeasyPrint's SVG drawing in this process, once; a WeasyPrint not checked is left alone."""
+    import weasyprint
+    import weasyprint.matrix as matrix
+    import weasyprint.svg as svg
+    import weasyprint.svg.defs as defs
+    import weasyprint.svg.utils as utils
+
+    if getattr(svg, _INSTALLED, False) or weasyprint.__version__ != CHECKED_ON:
+        return
+    # the parsed URL is a named tuple (immutable): shared safely
+    parse_url = _memoized(utils.parse_url)
+    for module in (svg, defs, utils):
+        module.parse_url = parse_url
+    import weasyprint.svg.css as svg_css
+
+    svg_css.parse_url = parse_url
+
+    get_href = svg.Node.get_href
+    href_cache: dict[tuple, str | None] = {}
+
+    def cached_get_href(self, base_url):
+        key = (self.get("{http://www.w3.org/1999/xlink}href"), self.get("href"), base_url)
+        if key not in href_cache:
+            href_cache[key] = get_href(self, base_url)
+        return href_cache[key]
+
+    svg.Node.get_href = cached_get_href
+    svg.TAGS["path"] = _memoized_path(svg.TAGS["path"])
+    # a style attribute's declarations: read, never changed, by the cascade
+    svg.parse_declarations = _memoized(svg.parse_declarations)
+    svg.color = _copying(svg.color)
+    svg.transform = defs.transform = _copying_matrix(utils.transform)
+    import weasyprint.svg.text as text
+
+    fast_size = _fast_size(utils.size)
+    for module in (svg, defs, utils, text):
+        module.size = fast_size
+    matrix.Matrix.__matmul__ = _matmul
+    setattr(svg, _INSTALLED, True)
