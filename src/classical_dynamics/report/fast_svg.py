@@ -52,6 +52,42 @@ def _memoized_path(path):
     return draw
 
 
+def _indexed_get_child(get_child):
+    """`Node.get_child` by an index of the tree's ids, built once per node it is asked of.
+
+    WeasyPrint searches the whole subtree (ElementTree's find) at every level of its descent, for every
+    glyph of every figure. The element found is the same: the first in document order with that id; the
+    Node returned is reached through the same children (so cascaded as before). Where the Node tree does
+    not follow the XML (text flattened by the cascade), WeasyPrint's own search answers.
+    """
+
+    def indexed(self, id_):
+        index = self.__dict__.get("_fast_svg_ids")
+        if index is None:
+            first, parents = {}, {}
+            for element in self._etree_node.iter():
+                for child in element:
+                    parents[child] = element
+                if element is not self._etree_node:
+                    first.setdefault(element.get("id"), element)
+            index = self._fast_svg_ids = (first, parents)
+        first, parents = index
+        if (target := first.get(id_)) is None:
+            return None
+        chain = []
+        while target is not self._etree_node:
+            chain.append(target)
+            target = parents[target]
+        node = self
+        for element in reversed(chain):
+            node = next((child for child in node if child._etree_node is element), None)
+            if node is None:
+                return get_child(self, id_)
+        return node
+
+    return indexed
+
+
 def _memoized(function, size: int | None = 1 << 16):
     import functools
 
@@ -134,6 +170,7 @@ def install() -> None:
         return href_cache[key]
 
     svg.Node.get_href = cached_get_href
+    svg.Node.get_child = _indexed_get_child(svg.Node.get_child)
     svg.TAGS["path"] = _memoized_path(svg.TAGS["path"])
     # a style attribute's declarations: read, never changed, by the cascade
     svg.parse_declarations = _memoized(svg.parse_declarations)
