@@ -92,6 +92,9 @@ def main():
     parser.add_argument("--keep", type=Path, help="keep the PDFs and page images here")
     args = parser.parse_args()
     html = args.html.resolve()
+    if not html.is_file():
+        print(f"{html}: no report to render (snakemake -c all report first)")
+        return 1
     print(f"# {software_stamp()}")
     print(f"# {html} ({html.stat().st_size / 1e6:.1f} MB)\n")
     with tempfile.TemporaryDirectory() as scratch:

@@ -136,3 +136,15 @@ print("ok")
         env={**os.environ, "PYTHONPATH": str(ROOT / "src")},
     )
     assert out.stdout.strip() == "ok"
+
+
+def test_the_patches_are_for_the_weasyprint_installed():
+    """An upgraded WeasyPrint renders unpatched (correct, slower): compare it byte for byte, then bump."""
+    import weasyprint
+
+    from classical_dynamics.report import fast_svg
+
+    assert fast_svg.CHECKED_ON == weasyprint.__version__, (
+        "run tests/test_report_fast_svg.py and benchmarks/pdf_render.py on the new WeasyPrint, "
+        "then set fast_svg.CHECKED_ON"
+    )
