@@ -126,6 +126,9 @@ image.stream, node = Stream(), Node({"id": "glyph-a", "d": d})
 plain(image, node, 12.0)
 assert all(result == (image.stream.stream, list(node.vertices)) for result in results), results
 assert len(calls) == 3, calls  # the glyph parsed once, the paths without an id each time
+fast_svg.clear()  # what a document remembered is forgotten once it is written
+cached(image, Node({"id": "glyph-a", "d": d}), 12.0)
+assert len(calls) == 4, calls
 print("ok")
 """
     out = subprocess.run(

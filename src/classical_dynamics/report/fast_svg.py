@@ -19,6 +19,9 @@ uncompressed page streams byte for byte, and benchmarks/pdf_render.py the page i
 from __future__ import annotations
 
 _INSTALLED = "_classical_dynamics_fast_svg"
+# what the patches remember (dicts and lru_caches), emptied by clear() once a document is written: an
+# inlined figure's URL is its whole data (up to 1 MB), which a long-lived process should not keep
+_CACHES: list = []
 CHECKED_ON = "70.0"  # the WeasyPrint these patches were compared against, byte for byte
 
 
@@ -31,6 +34,7 @@ def _memoized_path(path):
     (no colour, no matrix, no resource), so the appended items can be replayed as they are.
     """
     cache: dict[tuple, tuple[list, list]] = {}
+    _CACHES.append(cache)
 
     def draw(svg, node, font_size):
         if node.get("id") is None:  # drawn once: a figure's line or patch, not a glyph or a marker
@@ -91,7 +95,9 @@ def _indexed_get_child(get_child):
 def _memoized(function, size: int | None = 1 << 16):
     import functools
 
-    return functools.lru_cache(maxsize=size)(function)
+    cached = functools.lru_cache(maxsize=size)(function)
+    _CACHES.append(cached)
+    return cached
 
 
 def _fast_size(size):
@@ -142,6 +148,12 @@ def _matmul(self, other):
     )
 
 
+def clear() -> None:
+    """Forget what the patches remember (the patches stay)."""
+    for cache in _CACHES:
+        (cache.cache_clear if hasattr(cache, "cache_clear") else cache.clear)()
+
+
 def install() -> None:
     """Patch WeasyPrint's SVG drawing in this process, once; a WeasyPrint not checked is left alone."""
     import weasyprint
@@ -162,6 +174,7 @@ def install() -> None:
 
     get_href = svg.Node.get_href
     href_cache: dict[tuple, str | None] = {}
+    _CACHES.append(href_cache)
 
     def cached_get_href(self, base_url):
         key = (self.get("{http://www.w3.org/1999/xlink}href"), self.get("href"), base_url)
