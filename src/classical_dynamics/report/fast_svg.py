@@ -6,14 +6,18 @@ draws a <use> by
 
 - joining the reference "#DejaVuSans-31" to the image's URL, which for an image inlined in the HTML is its
   whole data: URL (up to 1 MB), and parsing that URL again, three times per glyph;
-- parsing the glyph's path data again for every placement (a glyph has 20-60 Bézier curves).
+- parsing the glyph's path data again for every placement (a glyph has 20-60 Bézier curves);
+- searching the figure's whole tree for the glyph's id at every level of the descent, once per glyph.
 
-Both are pure functions of their inputs, so each is computed once and reused here: a URL by its strings, a
-path by its data (and the sizes its units could refer to). What is written into the PDF does not change: the
-same operators with the same numbers, in the same order (tests/test_report_fast_svg.py compares the
-uncompressed page streams byte for byte, and benchmarks/pdf_render.py the page images of the whole report).
+These are pure functions of their inputs, so each is computed once and reused here: a URL by its strings,
+a path with an id by its data (and the sizes its units could refer to), an id's element by an index. A
+few other pure helpers are memoized (transform lists, colours, style attributes) or written without their
+per-call overhead (a plain number's size, the 3x3 matrix product, in the same order of operations). What
+is written into the PDF does not change: the same operators with the same numbers, in the same order
+(tests/test_report_fast_svg.py compares uncompressed PDFs byte for byte; benchmarks/pdf_render.py compares
+the whole report's PDFs byte for byte and as page images).
 
-`install()` patches WeasyPrint in this process; it is idempotent.
+`install()` patches WeasyPrint in this process (idempotent); `clear()` empties the caches.
 """
 
 from __future__ import annotations
