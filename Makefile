@@ -87,6 +87,7 @@ bench: venv-test
 	$(BIN)/python benchmarks/pipeline_build.py
 	$(BIN)/python benchmarks/pipeline_scaling.py
 	$(BIN)/python benchmarks/bad_input.py
+	$(BIN)/python benchmarks/pdf_render.py
 
 dist: venv
 	$(BIN)/snakemake --cores 1 dist

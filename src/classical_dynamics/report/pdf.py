@@ -47,7 +47,23 @@ def _relative(target: str, folder: Path) -> str:
     return relative + (f"#{parts.fragment}" if parts.fragment else "")
 
 
-def html_to_pdf(html_path: Path, pdf_path: Path) -> None:
+def html_to_pdf(html_path: Path, pdf_path: Path, fast_svg: bool = True) -> None:
+    """Render the report; `fast_svg=False` draws figures with plain WeasyPrint (the old way) in a process
+    that has not installed the patches (they are for the whole process: benchmarks/pdf_render.py runs each
+    way in its own)."""
+    if fast_svg:
+        from . import fast_svg as patches
+
+        patches.install()
+        try:
+            _render(html_path, pdf_path)
+        finally:
+            patches.clear()
+    else:
+        _render(html_path, pdf_path)
+
+
+def _render(html_path: Path, pdf_path: Path) -> None:
     import weasyprint
     from weasyprint.layout import inline
 
