@@ -101,7 +101,7 @@ def slopes(dry: list[dict], built: list[dict]) -> dict:
 def draw(data: dict) -> bytes:
     from classical_dynamics import io
     from classical_dynamics.figure_style import FULL_WIDTH_IN
-    from classical_dynamics.studies.results import subplots
+    from classical_dynamics.results import subplots
 
     fig, (left, right) = subplots(1, 2, figsize=(FULL_WIDTH_IN, 2.6))
     dry, built, fits = data["dry_runs"], data["builds"], data["slopes"]

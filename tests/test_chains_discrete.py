@@ -7,8 +7,8 @@ import pytest
 import sympy as sp
 from scipy import special
 
+from classical_dynamics.results import Results
 from classical_dynamics.studies.chains import discrete
-from classical_dynamics.studies.results import Results
 
 
 def test_loaded_string_approaches_the_continuum_by_the_sine_law():

@@ -13,9 +13,9 @@ from scipy import special
 from scipy.optimize import brentq
 
 from classical_dynamics.models.chains import particle_chain
+from classical_dynamics.results import Results
 from classical_dynamics.solvers import rattle
 from classical_dynamics.studies.chains import continuum, small_oscillations, time_domain
-from classical_dynamics.studies.results import Results
 
 G = 9.81
 

@@ -383,8 +383,8 @@ def test_polar_path_time_axis_reads_calendar_years():
     calendar years divided again by 365.25, must not return)."""
     import numpy as np
 
+    from classical_dynamics.results import Results
     from classical_dynamics.studies.chandler.model import figure_path
-    from classical_dynamics.studies.results import Results
 
     years = np.linspace(1990.0, 2003.0, 2000)
     m = 100 * np.exp(2j * np.pi * years / 1.19)

@@ -6,10 +6,10 @@ import numpy as np
 import pytest
 
 from classical_dynamics.models import earth
+from classical_dynamics.results import Results
 from classical_dynamics.studies import validate
 from classical_dynamics.studies.chandler import observed
 from classical_dynamics.studies.chandler import polar_motion as pm
-from classical_dynamics.studies.results import Results
 
 from .conftest import ROOT
 

@@ -12,10 +12,10 @@ from scipy.integrate import solve_ivp
 
 import classical_dynamics.studies.chandler as study
 from classical_dynamics.models import earth, wobble
+from classical_dynamics.results import Results
 from classical_dynamics.studies import validate
 from classical_dynamics.studies.chandler import accuracy
 from classical_dynamics.studies.chandler import model as wobble_model
-from classical_dynamics.studies.results import Results
 
 from .conftest import ROOT, assert_refused
 

@@ -12,7 +12,7 @@ import pytest
 import yaml
 
 from classical_dynamics import cli, formatting, inline_math, io, limits
-from classical_dynamics.studies.results import Results
+from classical_dynamics.results import Results
 from classical_dynamics.workflow_config import ConfigError, check_config
 
 # ---- workflow_config.py

@@ -40,7 +40,7 @@ def job(entry):
 def test_the_graph_follows_imports_in_functions_lazy_modules_and_parent_packages():
     chains = scene_job("chains")
     # figure_data and lazy: the two modules the hand-written list of shared code had left out
-    assert all(f"{PACKAGE}.studies.figure_data" in scene_job(study) for study in STUDIES)
+    assert all(f"{PACKAGE}.figure_data" in scene_job(study) for study in STUDIES)
     assert f"{PACKAGE}.lazy" in chains
     # loaded only through lazy_module(f"{__package__}.symbolic") in chains/discrete.py
     assert f"{PACKAGE}.studies.chains.symbolic" in chains
@@ -76,7 +76,7 @@ def test_the_digest_changes_with_exactly_the_modules_reached(tmp_path):
     before = digest()
     for name in (
         f"{PACKAGE}.lazy",
-        f"{PACKAGE}.studies.figure_data",
+        f"{PACKAGE}.figure_data",
         f"{PACKAGE}.report.pdf",
         f"{PACKAGE}.studies.chandler.model",
         f"{PACKAGE}.studies.chains.symbolic",
@@ -200,7 +200,7 @@ def expected_after_editing(name, repo):
 
 # One module of each kind: shared by every study, one study's only, loaded lazily, the report's, the PDF's
 EDITED = [
-    f"{PACKAGE}.studies.figure_data",
+    f"{PACKAGE}.figure_data",
     f"{PACKAGE}.lazy",
     f"{PACKAGE}.studies.chains.symbolic",
     f"{PACKAGE}.studies.chandler.observed",

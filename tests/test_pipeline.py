@@ -199,7 +199,7 @@ import math
 
 from ...scenes.cost import Work
 from ...scenes.effects import EffectRegistry
-from ..results import Results
+from ...results import Results
 
 EFFECTS = EffectRegistry("pendulum")
 

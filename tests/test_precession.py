@@ -82,7 +82,7 @@ def test_lamb_ratio_and_the_mass_convention():
 
 
 def test_inverse_problem_returns_lamb_ellipticity(tmp_path):
-    from classical_dynamics.studies.results import Results
+    from classical_dynamics.results import Results
 
     scene = validate("precession", ROOT / "workflow/scenes/precession/lamb_1920.yaml")
     results = Results("precession", scene.name, scene.title)

@@ -12,9 +12,9 @@ from scipy.integrate import solve_ivp
 import classical_dynamics.studies.precession as study
 from classical_dynamics.models import earth
 from classical_dynamics.models import precession as prec
+from classical_dynamics.results import Results
 from classical_dynamics.studies import validate
 from classical_dynamics.studies.precession import accuracy, averaged, examples, full, secular
-from classical_dynamics.studies.results import Results
 
 from .conftest import ROOT, assert_refused
 

@@ -15,7 +15,7 @@ from markupsafe import Markup
 
 from classical_dynamics import io
 from classical_dynamics.report import assets, build, claims, dist
-from classical_dynamics.studies.results import Results, new_figure
+from classical_dynamics.results import Results, new_figure
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -8,7 +8,7 @@ import pytest
 
 from classical_dynamics import io, scene_results
 from classical_dynamics.report.dist import make_archive
-from classical_dynamics.studies.results import Results, new_figure
+from classical_dynamics.results import Results, new_figure
 
 
 def _write_scene(results_dir, study="chains", scene="toy"):

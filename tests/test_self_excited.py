@@ -238,7 +238,7 @@ def test_period_on_F_against_jacobis_form():
 def test_next_to_the_separatrix_each_side_keeps_its_fate(m1, nu, passages):
     """Hard case: 1e-10 either side of the separatrix, the side decides (closed orbit or run past the saddle),
     and the period inside grows like n ln(1/eps)/lambda."""
-    from classical_dynamics.studies.results import Results
+    from classical_dynamics.results import Results
 
     results = Results("self_excited", "t", "t")
     largest_axis._separatrix_sides(results, m1, nu)
@@ -479,7 +479,7 @@ def test_rare_case_without_torque_line_of_rest_points():
     """Lee's Figure 3.18(b), m0 = 0: every point of q1 = 0 is a permanent rotation, above it q1 = q10/(1 + nu
     q10 tau) and omega -> 0 along +y (slope of ln|q| against ln|(p, r)| exactly b/(a + c) < 1), below it the
     blow-up time is 1/(nu |q10|) up to the bound. The scene's check no longer refuses it."""
-    from classical_dynamics.studies.results import Results
+    from classical_dynamics.results import Results
     from classical_dynamics.studies.self_excited import middle_axis, rare_case
 
     body = se.Body.from_moments([3.0, 2.2, 1.2])
@@ -584,7 +584,7 @@ def test_unperturbed_plane_one_without_torque_levels_off():
 def test_huge_excursion_below_the_critical_drag_closes():
     """Digest §7.5: below mu_c a fast spin about the torque axis swings |omega| out by hundreds and back; the
     orbit closes on the closed form's period, turns where the closed form says, and stays on its cylinder."""
-    from classical_dynamics.studies.results import Results
+    from classical_dynamics.results import Results
     from classical_dynamics.studies.self_excited import excursions
 
     M = se.MiddleAxis.with_plane_parameters(se.Body.from_moments([3.0, 2.2, 1.2]), 0.5, -0.3, 0.8, 0.3)
@@ -712,7 +712,7 @@ def test_next_to_the_separatrix_the_sign_of_the_energy_error_decides_the_side():
     energy keep the motion inside; an energy raised past the separatrix's always means a crossing."""
     import pandas as pd
 
-    from classical_dynamics.studies.results import Results
+    from classical_dynamics.results import Results
     from classical_dynamics.studies.self_excited import accuracy
 
     results = Results("self_excited", "t", "t")

@@ -174,7 +174,7 @@ def test_the_torque_laws_differ_so_the_overlay_can_fail():
 
 
 def test_the_zoom_panel_draws_its_crossings_with_their_names():
-    from classical_dynamics.studies.results import new_figure
+    from classical_dynamics.results import new_figure
 
     r = Numbers()
     lc.figure_2_12(r, 0.5, 0.1, zoom=True)

@@ -12,7 +12,7 @@ import pytest
 from scipy.integrate import solve_ivp
 from scipy.spatial.transform import Rotation
 
-from classical_dynamics.studies.results import Results
+from classical_dynamics.results import Results
 from classical_dynamics.studies.self_excited import space, viscous
 
 

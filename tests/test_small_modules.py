@@ -13,8 +13,8 @@ import numpy as np
 import pytest
 
 from classical_dynamics import provenance
+from classical_dynamics.figure_data import figure_data
 from classical_dynamics.scenes.effects import EffectRegistry
-from classical_dynamics.studies.figure_data import figure_data
 
 from .conftest import ROOT
 

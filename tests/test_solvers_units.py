@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 from scipy.integrate import quad, solve_ivp
 
-from classical_dynamics.studies.results import Results
+from classical_dynamics.results import Results
 from classical_dynamics.studies.solvers import hard_cases, heavy_top, inertia, long_horizon, sweeps, top_model
 
 from .conftest import assert_refused

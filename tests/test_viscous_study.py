@@ -5,8 +5,8 @@ module's reference uses), and the scene's reading into a medium."""
 import mpmath
 import pytest
 
+from classical_dynamics.results import Results
 from classical_dynamics.solvers import sine_cosine_integrals as sc
-from classical_dynamics.studies.results import Results
 from classical_dynamics.studies.self_excited import viscous
 
 

@@ -146,7 +146,7 @@ def _draw_a_figure() -> None:
     Its caches are keyed by what they hold, so a job draws the same bytes as in a process of its own."""
     from classical_dynamics import io
     from classical_dynamics.figure_style import legend_below
-    from classical_dynamics.studies.results import new_figure
+    from classical_dynamics.results import new_figure
 
     fig, axes = new_figure()
     axes.loglog([1.0, 10.0], [1e-16, 1e-12], label="$\\sqrt{N}\\,\\varepsilon$, $m_1$")

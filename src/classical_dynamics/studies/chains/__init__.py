@@ -209,7 +209,7 @@ def _check_ring(path, chain, effects, analysis):
 
 
 def run(scene: Scene, quick: bool = False):
-    from ..results import Results  # imported here so that validation stays light
+    from ...results import Results  # imported here so that validation stays light
 
     results = Results("chains", scene.name, scene.title)
     model = scene.data["chain"]["model"]

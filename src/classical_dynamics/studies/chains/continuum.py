@@ -8,9 +8,9 @@ from scipy import special
 
 from ...formatting import format_number
 from ...models.chains import continuum_frequencies, frequency_unit
+from ...results import new_figure
 from ...solvers.special import bessel_j0_zeros
 from ...solvers.spectral import hanging_chain_sigma
-from ..results import new_figure
 
 
 def rayleigh_quotient(beta):

@@ -18,10 +18,10 @@ from ...models.chains import (
     rigid_links_matrices,
 )
 from ...provenance import software_stamp
+from ...results import new_figure, subplots
 from ...solvers import chain_eigen
 from ...solvers.special import bessel_j0_zeros, laguerre_lowest_zero_asymptotic, laguerre_zero_mp
 from ...solvers.timing import min_time
-from ..results import new_figure, subplots
 from . import small_oscillations
 
 symbolic = lazy_module(f"{__package__}.symbolic")  # sympy, for the scenes that ask for a closed form

@@ -16,7 +16,7 @@ from scipy.integrate import solve_ivp
 
 from ...figure_style import FULL_WIDTH_IN
 from ...lazy import lazy_module
-from ..results import new_figure
+from ...results import new_figure
 
 symbolic = lazy_module(f"{__package__}.symbolic")  # sympy, for the scenes that ask for a closed form
 

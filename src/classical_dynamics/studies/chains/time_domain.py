@@ -6,9 +6,9 @@ import numpy as np
 import pandas as pd
 
 from ...formatting import format_number, shortest
+from ...results import new_figure
 from ...solvers import rattle
 from ...solvers.special import laguerre_zeros
-from ..results import new_figure
 
 
 def _mode_angles(n: int, mode: int, amplitude_rad: float):

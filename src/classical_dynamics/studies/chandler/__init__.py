@@ -214,7 +214,7 @@ def _k_s():
 
 
 def run(scene: Scene, quick: bool = False):
-    from ..results import Results  # imported here so that validation stays light
+    from ...results import Results  # imported here so that validation stays light
     from . import accuracy, model, observed, retarding
 
     results = Results("chandler", scene.name, scene.title)

@@ -12,11 +12,11 @@ import pandas as pd
 
 from ...formatting import format_number, plural, shortest
 from ...models import earth
+from ...results import new_figure
 from ...solvers import references as ref
 from ...solvers import rigid_body
 from ...solvers import workprecision as wp
 from ...solvers.timing import min_time
-from ..results import new_figure
 from . import model as wobble_model
 from .model import arcsec_text
 

@@ -9,11 +9,11 @@ from matplotlib.ticker import LogLocator, NullFormatter, ScalarFormatter
 from ...figure_style import FULL_WIDTH_IN
 from ...formatting import format_number, plural, shortest
 from ...models import earth, wobble
+from ...results import new_figure, subplots
 from ...solvers import references as ref
 from ...solvers import rigid_body
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
-from ..results import new_figure, subplots
 from . import polar_motion
 
 DEFAULT_SPAN_YEARS = 100.0

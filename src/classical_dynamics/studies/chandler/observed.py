@@ -8,7 +8,7 @@ import pandas as pd
 from ...formatting import format_number, plural, shortest
 from ...models import earth
 from ...provenance import sha256_file
-from ..results import new_figure
+from ...results import new_figure
 from . import polar_motion as pm
 from .model import figure_path
 

@@ -199,7 +199,7 @@ def _herpolhode_figure(results, x_space, n0, lo, hi, periods, I):
     """The herpolhode on the fixed plane between its two circles (a half-width figure)."""
     from ...figure_style import TEXT_WIDTH_IN
     from ...formatting import shortest
-    from ..results import new_figure
+    from ...results import new_figure
 
     e1 = np.cross(n0, [0.0, 1.0, 0.0])
     e1 /= np.linalg.norm(e1)

@@ -119,7 +119,7 @@ def check(path: Path, data: dict) -> None:
 
 
 def run(scene: Scene, quick: bool = False):
-    from ..results import Results  # imported here so that validation stays light
+    from ...results import Results  # imported here so that validation stays light
     from . import accuracy, averaged, examples, full, secular
 
     results = Results("precession", scene.name, scene.title)

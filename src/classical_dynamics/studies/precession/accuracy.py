@@ -15,11 +15,11 @@ import pandas as pd
 from ...formatting import format_number, plural, shortest
 from ...models import earth
 from ...models import precession as prec
+from ...results import new_figure
 from ...solvers import rigid_body
 from ...solvers import workprecision as wp
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
-from ..results import new_figure
 from . import full
 
 QUICK_SPAN_YEARS = 0.1

@@ -9,9 +9,9 @@ from ...figure_style import FULL_WIDTH_IN
 from ...formatting import format_number, plural, shortest
 from ...models import earth
 from ...models import precession as prec
+from ...results import subplots
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
-from ..results import subplots
 from . import fitting
 from .secular import ARCSEC_PER_TURN
 

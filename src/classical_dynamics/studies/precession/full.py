@@ -15,9 +15,9 @@ from ...figure_style import FULL_WIDTH_IN
 from ...formatting import format_decimals, format_number, plural, shortest
 from ...models import earth
 from ...models import precession as prec
+from ...results import subplots
 from ...solvers import rigid_body
 from ...solvers.timing import min_time
-from ..results import subplots
 from . import averaged, fitting
 from .secular import ARCSEC_PER_TURN
 

@@ -226,7 +226,7 @@ def _check_viscous(path, data):
 
 
 def run(scene: Scene, quick: bool = False):
-    from ..results import Results  # imported here so that validation stays light
+    from ...results import Results  # imported here so that validation stays light
     from . import largest_axis, middle_axis, viscous
 
     results = Results("self_excited", scene.name, scene.title)

@@ -20,11 +20,11 @@ import pandas as pd
 
 from ...formatting import format_number, power_of_ten, shortest
 from ...models import self_excited as se
+from ...results import new_figure
 from ...solvers import symplectic
 from ...solvers import workprecision as wp
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
-from ..results import new_figure
 from .bounds import EXCURSION_PERIODS
 from .portrait import param_text
 

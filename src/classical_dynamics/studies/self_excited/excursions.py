@@ -8,9 +8,9 @@ import numpy as np
 
 from ...formatting import format_number, shortest
 from ...models import self_excited as se
+from ...results import new_figure
 from ...solvers.ode import Events, Problem, solve
 from ...solvers.workprecision import legend_below
-from ..results import new_figure
 from . import portrait
 from .bounds import EXCURSION_PERIODS
 

@@ -469,8 +469,8 @@ def grid_figure(group, found):
     """The grid of one group: panels in Lee's order, shared axes where the windows agree, one legend (in a
     spare slot when there is one, otherwise below)."""
     from ...figure_style import FULL_WIDTH_IN, GRID_MAX_HEIGHT_IN
+    from ...results import subplots  # with the report's figure style
     from ...solvers.workprecision import legend_below
-    from ..results import subplots  # with the report's figure style
     from . import portrait
     from .largest_axis import draw_seen_along_z
 
@@ -637,8 +637,8 @@ def closed_form_figure(frame, mu_c, body):
     from matplotlib.lines import Line2D
 
     from ...figure_style import FULL_WIDTH_IN
+    from ...results import subplots
     from ...solvers.workprecision import legend_below
-    from ..results import subplots
     from . import portrait
 
     fig, axes = subplots(1, 4, figsize=(FULL_WIDTH_IN, 1.95), layout="constrained")
@@ -742,7 +742,7 @@ def closed_forms(results):
 
 def build(study_dir: Path, scenes, quick=False):
     """The gallery's Results: one grid figure and its table per group that has a panel."""
-    from ..results import Results
+    from ...results import Results
 
     results = Results("self_excited", GALLERY, "The phase portraits of the study's scenes, redrawn as grids")
     for group in GROUPS:
@@ -861,8 +861,8 @@ def body_view_figure(frame):
     from matplotlib.lines import Line2D
 
     from ...figure_style import FULL_WIDTH_IN
+    from ...results import subplots
     from ...solvers.workprecision import legend_below
-    from ..results import subplots
 
     fig, axes = subplots(1, 2, figsize=(FULL_WIDTH_IN, 2.25), layout="constrained", sharey=True)
     for ax, panel in zip(axes, "ab"):

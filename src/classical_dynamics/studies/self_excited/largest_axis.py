@@ -15,9 +15,9 @@ import pandas as pd
 from ...figure_style import PAIR_WIDTH_IN, TEXT_WIDTH_IN
 from ...formatting import format_number, shortest
 from ...models import self_excited as se
+from ...results import bare_figure, new_figure, subplots
 from ...solvers.ode import Events, Problem, solve, solve_batch
 from ...solvers.timing import min_time
-from ..results import bare_figure, new_figure, subplots
 from . import accuracy, portrait
 from .bounds import INVARIANT_BOUND, OVERLAY_BOUND
 

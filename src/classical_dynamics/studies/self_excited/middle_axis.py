@@ -18,8 +18,8 @@ import numpy as np
 
 from ...figure_style import TEXT_WIDTH_IN
 from ...models import self_excited as se
+from ...results import new_figure
 from ...solvers.ode import Events, Problem, solve
-from ..results import new_figure
 from . import accuracy, excursions, portrait, rare_case
 from .bounds import INVARIANT_BOUND, OVERLAY_BOUND, PLANE_DEPARTURE
 

@@ -16,11 +16,11 @@ import pandas as pd
 
 from ...formatting import format_number, shortest
 from ...models.viscous_medium import ViscousMedium, symmetric_axis, viscous_symmetric
+from ...results import new_figures
 from ...solvers import sine_cosine_integrals as sc
 from ...solvers import workprecision as wp
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
-from ..results import new_figures
 from . import section5
 from .accuracy import publish
 

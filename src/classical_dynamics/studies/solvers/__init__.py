@@ -106,7 +106,7 @@ def check(path: Path, data: dict) -> None:
 
 
 def run(scene: Scene, quick: bool = False):
-    from ..results import Results
+    from ...results import Results
     from . import hard_cases, heavy_top, inertia, long_horizon, sweeps
 
     results = Results("solvers", scene.name, scene.title)

@@ -9,10 +9,10 @@ from scipy import special
 
 from ...formatting import format_number, power_of_ten, shortest
 from ...models import rigid_body as rhs
+from ...results import new_figure
 from ...solvers import references as ref
 from ...solvers import rigid_body, symplectic
 from ...solvers.ode import Problem, solve
-from ..results import new_figure
 
 
 def tenth_power(value) -> str:

@@ -13,9 +13,9 @@ import pandas as pd
 
 from ...figure_style import PAIR_WIDTH_IN
 from ...provenance import software_stamp
+from ...results import new_figure
 from ...solvers.ode import Events, Problem, solve
 from ...solvers.timing import min_time
-from ..results import new_figure
 from . import top_model as tm
 
 

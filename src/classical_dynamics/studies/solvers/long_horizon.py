@@ -8,11 +8,11 @@ import pandas as pd
 from ...figure_style import method_colour
 from ...formatting import format_number, shortest
 from ...models import rigid_body as rhs
+from ...results import new_figure
 from ...solvers import references as ref
 from ...solvers import rigid_body
 from ...solvers import workprecision as wp
 from ...solvers.ode import Problem, solve
-from ..results import new_figure
 
 EPS = np.finfo(float).eps
 

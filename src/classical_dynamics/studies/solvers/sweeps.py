@@ -7,10 +7,10 @@ import pandas as pd
 
 from ...models import rigid_body as rhs
 from ...provenance import software_stamp
+from ...results import new_figure, new_figures
 from ...solvers import references as ref
 from ...solvers import workprecision as wp
 from ...solvers.ode import Problem, compile_time
-from ..results import new_figure, new_figures
 
 INVARIANTS = {
     "hnw_rigid_body": ("energy", "Casimir $|\\mathbf{m}|^2$"),

@@ -14,9 +14,9 @@ from pathlib import Path
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from .. import figure_style, io
-from ..figure_style import TEXT_WIDTH_IN
+from . import figure_style, io
 from .figure_data import figure_data
+from .figure_style import TEXT_WIDTH_IN
 
 # One style for every figure of the report: applied once, when a study first imports this module. Figures
 # are made without pyplot (bare_figure and subplots below): no backend is chosen for the importer, no window
