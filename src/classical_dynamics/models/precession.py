@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numba import njit
 
+from ..formatting import format_number
 from ..scenes import EffectRegistry
 from ..solvers.runge_kutta import rhs_function
 from . import earth
@@ -134,7 +135,8 @@ def modern() -> Orbits:
         moon_varpi=np.radians(83.35324),
         node0=np.radians(125.04452),
         sources=(
-            "IERS Conventions (2010) Table 1.1: GM_E, M/E = 0.0123000371, S/(E+M) = 328900.5596",
+            f"IERS Conventions (2010) Table 1.1: GM_E = {format_number(earth.GM_M3_PER_S2, 10)} m³ s⁻², "
+            "M/E = 0.0123000371, S/(E+M) = 328900.5596",
             "sidereal year 365.256363 d, sidereal month 27.321662 d, node 6793.48 d and lunar perigee "
             "3232.6 d against the stars; mean elements at J2000 (Simon et al. 1994)",
             "e' = 0.0167086, e_Moon = 0.0549, i = 5.145°, a_Moon = 384 400 km",

@@ -473,7 +473,8 @@ def _sleeping(results, top, rtol, quick):
     )
     results.hard_case(
         "sleeping_top_below",
-        "The same at $\\nu^2/4AMgh = 0.99$: 10° over the largest tilt (the top falls away from the vertical)",
+        "The sleeping top at $\\nu^2/4AMgh = 0.99$, started $10^{-4}$ rad from the vertical: 10° over the "
+        "largest tilt (the top falls away from the vertical)",
         np.radians(10.0) / out[0.99][1],
         1.0,
     )
