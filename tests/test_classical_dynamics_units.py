@@ -274,6 +274,11 @@ def test_inline_math_typesets_and_flattens():
     html = inline_math.render_text("the period $T = 2\\pi/\\omega$ in s")
     assert html == "the period <span class=math><i>T</i> = 2<i>π</i>/<i>ω</i></span> in s"
     assert "$" not in inline_math.plain_text("$\\omega_0^2$")
+    # an operator name stands apart from its argument as \sin does (arcsinh m₁, not arcsinhm₁)
+    assert inline_math.render_text("$\\operatorname{arcsinh}m_1$") == (
+        "<span class=math><span class=fn>arcsinh</span>\u2009<i>m</i><sub>1</sub></span>"
+    )
+    assert "</span>(" in inline_math.render_text("$\\operatorname{arcoth}(x)$")
 
 
 # ---- verify.py in-process: diff of two tiny builds, an archive checked whole and refused once tampered

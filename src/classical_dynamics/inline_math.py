@@ -286,6 +286,12 @@ class _Parser:
         if command in UPRIGHT:
             if command in ("text", "textrm"):
                 return self.raw_group()
+            if command == "operatorname":  # a function's name, spaced from its argument as \sin is
+                name = self.argument("upright")
+                while (following := self.peek()) is not None and following[1]:
+                    self.i += 1
+                spaced = following is not None and not (following[2] and following[2] in ",.;:)]}(_^")
+                return f"<span class=fn>{name}</span>" + ("\u2009" if spaced else "")
             return self.argument("upright")
         if command in BOLD:
             return f"<b>{self.argument(mode)}</b>"

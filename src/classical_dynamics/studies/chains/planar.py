@@ -186,14 +186,15 @@ def run_ring(scene, results, quick):
         frame[["s", "relative_1", "relative_2", "space_2", "lamb_space_2", "deviation"]],
         "Waves on the rotating ring (Lamb Art. 98): pattern speeds over $\\omega$ relative to the chain "
         "and, for the second wave, in space beside Lamb's $2(s^2 - 1)/(s^2 + 1)$; the first wave is at "
-        "rest in space. The deviation is from Lamb's relative speeds.",
+        "rest in space. The deviation is the larger of the two waves' absolute differences from Lamb's "
+        "relative speeds, in units of $\\omega$.",
         headers={
             "s": "$s$",
             "relative_1": "wave 1",
             "relative_2": "wave 2",
             "space_2": "wave 2 in space",
             "lamb_space_2": "Lamb",
-            "deviation": "deviation",
+            "deviation": "largest |deviation|",
         },
     )
     if "gyroscopic" in scene.data["analysis"]:  # Lamb Art. 99: kinetic stability, secular instability
