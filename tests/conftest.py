@@ -6,8 +6,8 @@ from pathlib import Path
 
 # One BLAS thread per test process, as scene_job gives each job, set before anything imports numpy:
 # pytest-xdist runs a worker per core, and OpenBLAS's default, a thread per core in each worker, had them spin
-# against each other (the chains, chandler, precession and poinsot tests: 26.8 s of CPU with them, 15.6 s
-# without, on 2 cores). An exported value wins.
+# against each other (the chains, chandler, precession and poinsot tests: 26.8 and 27.8 s of CPU with
+# them, 16.6 and 17.2 s without, on 2 cores). An exported value wins.
 for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_var, "1")
 

@@ -82,6 +82,11 @@ def _whole(v) -> bool:
     return isinstance(v, float) and math.isfinite(v) and v.is_integer() and abs(v) < 1e15
 
 
+def _plain(v) -> bool:
+    """A value no notation choice applies to: a count, a flag, a text, none, a non-finite number or zero."""
+    return isinstance(v, (bool, Integral, str)) or v is None or not math.isfinite(float(v)) or v == 0
+
+
 def exact_figures(value: float) -> int:
     """The significant figures of the shortest decimal that reads back as this float (0.25 -> 2)."""
     mantissa = repr(abs(value)).partition("e")[0]
@@ -104,7 +109,7 @@ def format_column(values, sig: int = 4) -> list[str]:
     sig = min(sig, max((exact_figures(float(v)) for v in finite if v != 0), default=sig))
 
     def in_range(v) -> bool:
-        if isinstance(v, (bool, Integral, str)) or v is None or not math.isfinite(float(v)) or v == 0:
+        if _plain(v):
             return True
         exponent = int(f"{abs(float(v)):.{max(int(sig), 1) - 1}e}".split("e")[1])
         return COLUMN_FIXED_RANGE[0] <= exponent < COLUMN_FIXED_RANGE[1]
@@ -113,7 +118,7 @@ def format_column(values, sig: int = 4) -> list[str]:
         return [format_number(v, sig, fixed_range=COLUMN_FIXED_RANGE) for v in values]
     out = []
     for v in values:
-        if isinstance(v, (bool, Integral, str)) or v is None or not math.isfinite(float(v)) or float(v) == 0:
+        if _plain(v):
             out.append(format_number(v, sig))
         else:  # mantissa × 10ⁿ; at n = 0 the mantissa alone (2.22, not 2.22 × 10⁰: a factor of one)
             out.append(format_number(v, sig, fixed_range=(0, 1)))
@@ -170,7 +175,7 @@ def measured_and_bound(measured, bound, sig: int = 2) -> tuple[str, str]:
     fixed = (0, 1) if power else FIXED_RANGE
 
     def text(v, figures):
-        if isinstance(v, (bool, Integral, str)) or v is None or not math.isfinite(float(v)) or v == 0:
+        if _plain(v):
             return format_number(v, figures)
         return format_number(v, figures, fixed_range=fixed)
 

@@ -428,7 +428,7 @@ class Report:
             if c in powers:
                 figures = (sigs or {}).get(c, sig)
                 texts[c] = [
-                    format_number(v) if v is None else format_number(float(v), figures, fixed_range=(0, 0))
+                    format_number(v) if v is None else format_number(float(v), figures, fixed_range=(0, 1))
                     for v in column
                 ]
             elif c in (decimals or {}):

@@ -16,7 +16,6 @@ from typing import Callable
 import numpy as np
 import pandas as pd
 
-from ..figure_style import legend_below  # noqa: F401 (wp.legend_below, as the studies call it)
 from ..formatting import format_number
 from . import rigid_body
 from .ode import Problem, solve

@@ -10,6 +10,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from ...figure_style import legend_below
 from ...formatting import format_number, plural, shortest
 from ...models import earth
 from ...results import new_figure
@@ -99,7 +100,7 @@ def run(scene, results, quick):
     )
     fig, ax = new_figure(6.2, 3.6)
     wp.plot(frame, ax, floor=1e-16, xlabel="error at the final time / wobble amplitude")
-    wp.legend_below(fig)  # below the axes: no line hidden under it
+    legend_below(fig)  # below the axes: no line hidden under it
     results.timing_figure(
         "work_precision",
         fig,

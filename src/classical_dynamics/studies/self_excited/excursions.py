@@ -6,11 +6,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...figure_style import legend_below
 from ...formatting import format_number, shortest
 from ...models import self_excited as se
 from ...results import new_figure
 from ...solvers.ode import Events, Problem, solve
-from ...solvers.workprecision import legend_below
 from . import portrait
 from .bounds import EXCURSION_PERIODS
 

@@ -468,9 +468,8 @@ LEGEND_HEIGHT_IN = 0.4
 def grid_figure(group, found):
     """The grid of one group: panels in Lee's order, shared axes where the windows agree, one legend (in a
     spare slot when there is one, otherwise below)."""
-    from ...figure_style import FULL_WIDTH_IN, GRID_MAX_HEIGHT_IN
+    from ...figure_style import FULL_WIDTH_IN, GRID_MAX_HEIGHT_IN, legend_below
     from ...results import subplots  # with the report's figure style
-    from ...solvers.workprecision import legend_below
     from . import portrait
     from .largest_axis import draw_seen_along_z
 
@@ -636,9 +635,8 @@ def closed_form_figure(frame, mu_c, body):
     import numpy as np
     from matplotlib.lines import Line2D
 
-    from ...figure_style import FULL_WIDTH_IN
+    from ...figure_style import FULL_WIDTH_IN, legend_below
     from ...results import subplots
-    from ...solvers.workprecision import legend_below
     from . import portrait
 
     fig, axes = subplots(1, 4, figsize=(FULL_WIDTH_IN, 1.95), layout="constrained")
@@ -860,9 +858,8 @@ def body_view_data():
 def body_view_figure(frame):
     from matplotlib.lines import Line2D
 
-    from ...figure_style import FULL_WIDTH_IN
+    from ...figure_style import FULL_WIDTH_IN, legend_below
     from ...results import subplots
-    from ...solvers.workprecision import legend_below
 
     fig, axes = subplots(1, 2, figsize=(FULL_WIDTH_IN, 2.25), layout="constrained", sharey=True)
     for ax, panel in zip(axes, "ab"):

@@ -9,9 +9,9 @@ import numpy as np
 import pandas as pd
 from matplotlib.lines import Line2D
 
+from ...figure_style import legend_below
 from ...solvers.ode import Events, Problem, solve
 from ...solvers.runge_kutta import rhs_function
-from ...solvers.workprecision import legend_below
 
 RTOL = 1e-12
 BLOW_UP_BOUND = 1e8

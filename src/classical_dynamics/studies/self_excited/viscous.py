@@ -14,6 +14,7 @@ from dataclasses import replace
 import numpy as np
 import pandas as pd
 
+from ...figure_style import legend_below
 from ...formatting import format_number, shortest
 from ...models.viscous_medium import ViscousMedium, symmetric_axis, viscous_symmetric
 from ...results import new_figures
@@ -253,7 +254,7 @@ def _figure(V, t, closed, ode, points, panels=()):
     bx.set_xlabel("$p$ (rad per time unit)")
     bx.set_ylabel("$q$ (rad per time unit)")
     bx.set_aspect("equal", adjustable="datalim")
-    wp.legend_below(fig, *ax.get_legend_handles_labels(), ncol=4)
+    legend_below(fig, *ax.get_legend_handles_labels(), ncol=4)
     return fig
 
 
@@ -454,7 +455,7 @@ def special_function_costs(results, quick):
         ax.set_xlim(3.0, 1e-19)
         ax.set_title(f"$x = {x:g}$")
     axes[1].set_ylabel("")
-    wp.legend_below(fig, *axes[0].get_legend_handles_labels(), ncol=4)
+    legend_below(fig, *axes[0].get_legend_handles_labels(), ncol=4)
     results.timing_figure(
         "si_ci_costs",
         fig,

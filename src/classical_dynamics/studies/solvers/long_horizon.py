@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ...figure_style import method_colour
+from ...figure_style import legend_below, method_colour
 from ...formatting import format_number, shortest
 from ...models import rigid_body as rhs
 from ...results import new_figure
@@ -108,7 +108,7 @@ def run(scene, results, quick):
     axes.set_ylabel("relative error, running maximum")
     wp.decade_ticks(axes.xaxis)
     wp.decade_ticks(axes.yaxis)
-    wp.legend_below(fig, *axes.get_legend_handles_labels(), ncol=3)
+    legend_below(fig, *axes.get_legend_handles_labels(), ncol=3)
     results.figure(
         "long_horizon",
         fig,

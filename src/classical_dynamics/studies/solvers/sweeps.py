@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from ...figure_style import legend_below
 from ...models import rigid_body as rhs
 from ...provenance import software_stamp
 from ...results import new_figure, new_figures
@@ -142,7 +143,7 @@ def run(scene, results, quick):
             "the same steps, so the distance between their lines is interpreter overhead."
         )
     else:
-        wp.legend_below(fig, *ax.get_legend_handles_labels(), ncol=4)
+        legend_below(fig, *ax.get_legend_handles_labels(), ncol=4)
         caption = (
             what + "). Accuracy grows to the right; the compiled DOP853 and SciPy's take the same steps, so "
             "the distance between their lines is interpreter overhead."
