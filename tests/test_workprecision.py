@@ -9,6 +9,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from classical_dynamics.figure_style import legend_below
 from classical_dynamics.models.rigid_body import oscillator
 from classical_dynamics.solvers import references
 from classical_dynamics.solvers import workprecision as wp
@@ -154,7 +155,7 @@ def test_figures_draw_each_method_with_its_data_and_reference_slopes():
     assert lines["scipy:RK45"].get_linestyle() == "--" and lines["mine"].get_linestyle() == "-"
     assert len({line.get_color() for line in lines.values()}) == 3
     assert ax.xaxis_inverted()
-    assert wp.legend_below(fig) is not None
+    assert legend_below(fig) is not None
     plt.close(fig)
 
     fig, ax = plt.subplots(figsize=(4, 3))
