@@ -155,10 +155,14 @@ def a_claim(computed, source: dict, check: dict, deviation=0.0) -> claims.ClaimR
 @pytest.mark.parametrize(
     "check,source,value,shown",
     [
-        ({"absolute": 0.3}, 4.0, 3.968, "3.968"),  # Lee's slope: not "4" beside a deviation of −3.2 × 10⁻²
-        ({"absolute": 1.7}, 433.1, 432.61, "432.61"),  # not "433"
-        ({"relative": 0.003}, 50.385, 50.4001, "50.400"),  # not "50.4", which would read as 50.385 rounded
-        ({"relative": 0.02}, 300.0, 305.47, "305.5"),  # its deviation 1.8 × 10⁻² reads back from 305.5
+        # the figures the check supports, and one more only where they would read as the source's value rounded
+        # alike: the deviation column, not a string of digits, says by how much
+        ({"absolute": 0.3}, 4.0, 3.968, "3.97"),  # Lee's slope: not "4.0" beside a deviation of −3.2 × 10⁻²
+        ({"absolute": 0.3}, 4.0, 4.0027, "4.00"),  # nor 4.0027 for a check of ±0.3
+        ({"absolute": 0.01}, 2.18, 2.17924, "2.179"),  # Lamb's ratio: not 2.17924
+        ({"absolute": 1.7}, 433.1, 432.61, "432.6"),  # not "433", which reads as 433.1 rounded
+        ({"relative": 0.003}, 50.385, 50.4001, "50.40"),  # not "50.4", which would read as 50.385 rounded
+        ({"relative": 0.02}, 300.0, 305.47, "305"),  # no whole figure rounded away (not 310)
         ({"relative": 1e-8}, 0.288675134594813, 0.28867513459485, "0.28867513"),  # 1e-13: the column says it
         ({"at_most": 0.5}, 0.5, 0.49999992538819, "0.49999993"),  # under ½, not "0.5"
         ({"at_least": 10}, None, 9730.91, "9731"),  # far from its bound: the figures its check supports
@@ -309,6 +313,51 @@ def test_a_value_no_source_prints_is_marked_evaluated():
             if figures > 8 or re.search(r"evaluat|mpmath|sympy|quadrature|derived", source.get("where", "")):
                 unmarked.append(f"{study}/{claim['id']}")
     assert not unmarked, unmarked
+
+
+def test_the_rigid_series_values_are_woolards_coefficients_at_mid_run():
+    """The rigid-Earth reference (Woolard's series, epoch 1900) is set at T = 1.5, the middle of the 2000-2100
+    run, to the series' four decimals; the limit rows name the same value as the expected size's reference."""
+    from pathlib import Path
+
+    import yaml
+
+    printed = {  # a + b T, as the almanacs' series prints them
+        "nutation_18p6_longitude": (17.2327, 0.01737),
+        "nutation_18p6_obliquity": (9.2100, 0.00091),
+        "semiannual_longitude": (1.2729, 0.00013),
+        "semiannual_obliquity": (0.5522, -0.00029),
+        "fortnightly_longitude": (0.2037, 0.0),
+        "fortnightly_obliquity": (0.0884, 0.0),
+    }
+    rows = {
+        c["id"]: c
+        for c in yaml.safe_load(
+            (Path(claims.__file__).parents[1] / "studies/precession/claims.yaml").read_text(encoding="utf-8")
+        )
+    }
+    for cid, (a, b) in printed.items():
+        at_mid_run = round(a + b * 1.5, 4)
+        assert rows[cid]["expected"]["value"] == at_mid_run, cid
+        assert rows["woolard_" + cid]["source"]["value"] == at_mid_run, cid
+        assert rows["woolard_" + cid]["computed"] == rows[cid]["computed"], cid
+
+
+def test_a_limits_expected_size_is_the_source_against_a_reference_that_omits_the_same(tmp_path):
+    import yaml
+
+    base = {"id": "x", "statement": "s", "kind": "limit", "omits": "the core."}
+    base |= {"source": {"value": 1.25}, "computed": {"scene": "a", "number": "n"}}
+    base |= {"check": {"relative": 0.1}, "must_hold": True}
+    base["expected"] = {"value": 1.0, "what": "a rigid series", "cite": "woolard1953"}
+    path = tmp_path / "claims.yaml"
+    path.write_text(yaml.safe_dump([base]))
+    (row,) = claims.evaluate("s", path, lambda *a: {"value": 1.2})
+    assert row.expected_size == pytest.approx(0.2)
+    for broken in ({**base, "kind": "reference"}, {**base, "expected": {"value": 1.0}}):
+        path.write_text(yaml.safe_dump([broken]))
+        with pytest.raises(claims.ClaimFailure, match="expected"):
+            claims.evaluate("s", path, lambda *a: {"value": 1.2})
 
 
 def test_a_claim_says_when_ours_is_an_input_and_refuses_another_word(tmp_path):

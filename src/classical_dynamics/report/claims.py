@@ -7,6 +7,9 @@ and a check: {absolute: tol}, {relative: tol} or {factor: f} (within a factor f)
 the build. Optional: headline: true puts a claim in the report's key results; explanation says why a claim
 that may fail does (a failing claim without one fails the build: the report explains every failure it shows);
 ours_is: input (or reference) says that "ours" is a model input (or the reference's value), not a result.
+A limit of the model says what the model omits (omits:) and may name a reference that omits the same
+(expected: {value, cite, what, text}, a rigid-Earth series beside the non-rigid one): the source's distance from it is
+the omitted effect's expected size.
 """
 
 from __future__ import annotations
@@ -81,6 +84,15 @@ class ClaimResult:
     ours_is: str = (
         ""  # "input" or "reference": "ours" is a model input or the reference's value, not a result
     )
+    expected: dict | None = None  # a limit: a reference that leaves out what the model leaves out
+
+    @property
+    def expected_size(self) -> float | None:
+        """What the omitted effect is expected to change, relative to the source's value: (source - the
+        reference that omits it) / source. None unless the limit names such a reference."""
+        if not self.expected or not self.source.get("value"):
+            return None
+        return (self.source["value"] - self.expected["value"]) / self.source["value"]
 
     @property
     def anchor(self) -> str:
@@ -128,16 +140,23 @@ def shown_digits(claim: ClaimResult) -> int:
         digits = 3
     value = claim.computed
     if isinstance(value, float) and math.isfinite(value) and value != 0:
-        shown = float(f"{value:.{digits - 1}e}")
-        while digits > 1 and float(f"{value:.{digits - 2}e}") == shown:
-            digits -= 1
-        # Ours differs visibly from the source where it does, by the two figures the deviation column shows
-        # (3.968 against 4 beside −3.2 × 10⁻², not 4); a difference under 10⁻⁶ is read from that column.
         deviation = claim.deviation
-        if isinstance(deviation, float) and math.isfinite(deviation) and deviation != 0:
-            needed = math.floor(math.log10(abs(value))) - math.floor(math.log10(abs(deviation))) + 2
-            if needed <= 6:
-                digits = max(digits, needed)
+        if (
+            isinstance(deviation, float)
+            and isinstance(reference, (int, float))
+            and reference
+            and abs(deviation / reference) >= 1e-6
+            and float(f"{value:.{digits - 1}e}") == float(f"{reference:.{digits - 1}e}")
+        ):
+            # ours, to the figures its check supports, would read as the source's value rounded alike but is
+            # not: one more figure shows the difference (2.179 against 2.18); how big, the deviation column says
+            digits += 1
+        else:
+            shown = float(f"{value:.{digits - 1}e}")
+            while digits > 1 and float(f"{value:.{digits - 2}e}") == shown:
+                digits -= 1
+        if not value.is_integer():
+            digits = max(digits, math.floor(math.log10(abs(value))) + 1)  # 305, not 310: no whole figure lost
         # ... and a bound is visibly met: 0.49999993 under ½, not 0.5 (no deviation column says it)
         bound = check.get("at_most", check.get("at_least"))
         if isinstance(bound, (int, float)) and bound != value and math.isfinite(bound):
@@ -260,6 +279,7 @@ def evaluate(study: str, claims_file: Path, lookup) -> list[ClaimResult]:
                 omits=claim.get("omits", ""),
                 consistency=claim.get("consistency", ""),
                 ours_is=claim.get("ours_is", ""),
+                expected=claim.get("expected"),
             )
         )
     return results
@@ -273,6 +293,9 @@ def _kind(claim: dict) -> str:
         raise ClaimFailure(f"claim {claim.get('id')}: ours_is is input or reference")
     if kind == "limit" and not claim.get("omits"):
         raise ClaimFailure(f"claim {claim.get('id')}: a limit of the model says what it omits (omits:)")
+    expected = claim.get("expected")
+    if expected is not None and (kind != "limit" or not {"value", "cite", "what"} <= set(expected)):
+        raise ClaimFailure(f"claim {claim.get('id')}: expected: belongs to a limit and has a value, a cite and what it is")
     return kind
 
 

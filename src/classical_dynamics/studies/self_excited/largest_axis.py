@@ -649,6 +649,12 @@ def _limit_cycle_period(results, m1, nu):
     results.number("period_tau_F", float(sol.y[0]), "τ", note="p1 on F, one turn of φ2 (2π), integrated")
     results.number("period_tau_F_jacobi", closed, "τ", note="4K(k)/√(α + β), Jacobi's form")
     results.number(
+        "period_tau_F_minus_jacobi_relative",
+        float(sol.y[0]) / closed - 1.0,
+        "1",
+        note="the integrated period against the rebuilt Jacobi form (Lee's (2.31)-(2.32) are lost)",
+    )
+    results.number(
         "omega_period_tau_F", 2 * float(sol.y[0]), "τ", note="ω returns after two turns of φ2 (4π)"
     )
     results.hard_case(
