@@ -155,7 +155,7 @@ def a_claim(computed, source: dict, check: dict, deviation=0.0) -> claims.ClaimR
 @pytest.mark.parametrize(
     "check,source,value,shown",
     [
-        # the figures the check supports, and one more only where they would read as the source's value rounded
+        # the figures the check supports, one more only where they would read as the source's value rounded
         # alike: the deviation column, not a string of digits, says by how much
         ({"absolute": 0.3}, 4.0, 3.968, "3.97"),  # Lee's slope: not "4.0" beside a deviation of −3.2 × 10⁻²
         ({"absolute": 0.3}, 4.0, 4.0027, "4.00"),  # nor 4.0027 for a check of ±0.3

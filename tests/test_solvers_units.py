@@ -5,6 +5,7 @@ tables), quadratures by scipy.integrate.quad, roots of the turning-point quadrat
 of energy and of the Casimir |m|^2, and the orders of convergence h^2 and h^4."""
 
 import importlib
+import math
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -526,3 +527,13 @@ def test_the_blow_up_times_the_claims_call_evaluated_are_lees_integral():
             rate = lambda p: 1 / (m + mu * p**2)  # noqa: E731
             t_star = mp.quad(rate, [p0, mp.inf]) if direction > 0 else -mp.quad(rate, [-mp.inf, p0])
             assert abs(claims[name]["source"]["value"] - float(t_star)) < 1e-14, name
+
+
+def test_an_apparent_q_is_negative_where_the_method_pumps_energy_in():
+    """Q = -2 pi n/(dE/E): a loss of 2 pi 10⁻⁶ in one period reads as Q = 10⁶, a gain as -10⁶, the sign the
+    Chandler wobble's table gives its amplitude's change; no change at all is an infinite Q."""
+    from classical_dynamics.studies.solvers.hard_cases import _apparent_q
+
+    assert _apparent_q(-2 * math.pi * 1e-6, 1) == pytest.approx(1e6)
+    assert _apparent_q(2 * math.pi * 1e-6, 1) == pytest.approx(-1e6)
+    assert _apparent_q(0.0, 100) == math.inf

@@ -66,7 +66,7 @@ REGISTRY: dict[str, Unit] = {
     "√(k/m)": Unit("$\\sqrt{k/m}$"),
     "k/m": Unit("$k/m$"),
     "μ": Unit("$\\mu$"),
-    "n": Unit("$n$"),
+    "√(g/a)": Unit("$\\sqrt{g/a}$"),
     "a": Unit("$a$"),
     "k": Unit("$k$"),
     "Ω²": Unit("$\\Omega^2$"),

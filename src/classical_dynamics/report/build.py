@@ -197,6 +197,7 @@ class Report:
             claim_digits=claims_mod.shown_digits,
             source_means=claims_mod.source_means,
             evaluated_text=claims_mod.evaluated_text,
+            prints_a_bare_number=claims_mod.prints_a_bare_number,
             unit=unit_html,
             label_number=self.numbering.label,
             fig=self.fig,

@@ -8,8 +8,8 @@ the build. Optional: headline: true puts a claim in the report's key results; ex
 that may fail does (a failing claim without one fails the build: the report explains every failure it shows);
 ours_is: input (or reference) says that "ours" is a model input (or the reference's value), not a result.
 A limit of the model says what the model omits (omits:) and may name a reference that omits the same
-(expected: {value, cite, what, text}, a rigid-Earth series beside the non-rigid one): the source's distance from it is
-the omitted effect's expected size.
+(expected: {value, cite, what, text}, a rigid-Earth series beside the non-rigid one): the source's distance
+from it is the omitted effect's expected size.
 """
 
 from __future__ import annotations
@@ -146,11 +146,11 @@ def shown_digits(claim: ClaimResult) -> int:
             and isinstance(reference, (int, float))
             and reference
             and abs(deviation / reference) >= 1e-6
-            and float(f"{value:.{digits - 1}e}") == float(f"{reference:.{digits - 1}e}")
         ):
-            # ours, to the figures its check supports, would read as the source's value rounded alike but is
-            # not: one more figure shows the difference (2.179 against 2.18); how big, the deviation column says
-            digits += 1
+            # a real difference: the figures the check supports (0.20, not 0.2, against 0.2276), and where
+            # they would read as the source's value rounded alike, one more (2.179 against 2.18)
+            if float(f"{value:.{digits - 1}e}") == float(f"{reference:.{digits - 1}e}"):
+                digits += 1
         else:
             shown = float(f"{value:.{digits - 1}e}")
             while digits > 1 and float(f"{value:.{digits - 2}e}") == shown:
@@ -192,6 +192,12 @@ def source_means(claim: ClaimResult) -> str:
         ):
             return ""
     return evaluated_text(claim, value)
+
+
+def prints_a_bare_number(claim: ClaimResult) -> bool:
+    """The source's text is a number alone ("5.225", "1"), printed without the unit that ours carries: the
+    source cell adds it, so that the two columns read in one unit."""
+    return bool(_NUMBER.fullmatch(str(claim.source.get("text", "")).strip()))
 
 
 def evaluated_text(claim: ClaimResult, value: float) -> str:
@@ -295,7 +301,9 @@ def _kind(claim: dict) -> str:
         raise ClaimFailure(f"claim {claim.get('id')}: a limit of the model says what it omits (omits:)")
     expected = claim.get("expected")
     if expected is not None and (kind != "limit" or not {"value", "cite", "what"} <= set(expected)):
-        raise ClaimFailure(f"claim {claim.get('id')}: expected: belongs to a limit and has a value, a cite and what it is")
+        raise ClaimFailure(
+            f"claim {claim.get('id')}: expected: belongs to a limit and has a value, a cite and what it is"
+        )
     return kind
 
 

@@ -697,6 +697,14 @@ def _accuracy_cost(results, spec, quick):
     _cost_to_target(results, spec["targets"], quick)
 
 
+# the schemes of the cost-to-target table, typeset as the chapter writes them
+PLAIN, END_CORRECTED, RICHARDSON = (
+    "plain ($l = na$)",
+    r"end-corrected ($l = (n + \tfrac12)a$)",
+    "Richardson ($n/2$ and $n$)",
+)
+
+
 def _cost_to_target(results, targets, quick):
     """Smallest n and the time to reach each target error by plain n, end-corrected n, Richardson."""
     j1 = bessel_j0_zeros(1)[0] / 2
@@ -706,18 +714,16 @@ def _cost_to_target(results, targets, quick):
     for n in ns:
         seconds[n], lam[n], _ = min_time(lambda: hanging_particles_scaled(n, 1)[0], repeats=3, budget_s=0.5)
     errors = {
-        "plain n (l = na)": {n: abs(np.sqrt(n * lam[n]) / j1 - 1) for n in ns},
-        "end-corrected (l = (n + ½)a)": {n: abs(np.sqrt((n + 0.5) * lam[n]) / j1 - 1) for n in ns},
-        "Richardson (n/2 and n)": {
-            n: abs(_richardson((n // 2, lam[n // 2]), (n, lam[n])) / j1 - 1) for n in ns[1:]
-        },
+        PLAIN: {n: abs(np.sqrt(n * lam[n]) / j1 - 1) for n in ns},
+        END_CORRECTED: {n: abs(np.sqrt((n + 0.5) * lam[n]) / j1 - 1) for n in ns},
+        RICHARDSON: {n: abs(_richardson((n // 2, lam[n // 2]), (n, lam[n])) / j1 - 1) for n in ns[1:]},
     }
     cost = {
-        "plain n (l = na)": lambda n: seconds[n],
-        "end-corrected (l = (n + ½)a)": lambda n: seconds[n],
-        "Richardson (n/2 and n)": lambda n: seconds[n] + seconds[n // 2],
+        PLAIN: lambda n: seconds[n],
+        END_CORRECTED: lambda n: seconds[n],
+        RICHARDSON: lambda n: seconds[n] + seconds[n // 2],
     }
-    orders = {"plain n (l = na)": 1.0, "end-corrected (l = (n + ½)a)": 2.0, "Richardson (n/2 and n)": 4.0}
+    orders = {PLAIN: 1.0, END_CORRECTED: 2.0, RICHARDSON: 4.0}
     rows = []
     for scheme, err in errors.items():
         for target in targets:

@@ -284,7 +284,7 @@ def gyroscopic(results, spec):
 def _bowl(results, friction):
     """Art. 99 Ex. 2: a particle near the bottom of a spherical bowl (radius a) turning at omega, in axes
     turning with it: x'' - 2 omega y' + (n^2 - omega^2) x + k x' = 0 and y'' + 2 omega x' + (n^2 - omega^2) y
-    + k y' = 0, n^2 = g/a, friction k times the velocity relative to the bowl. Units n = 1."""
+    + k y' = 0, n^2 = g/a, friction k times the velocity relative to the bowl. Units n = sqrt(g/a) = 1."""
     J = np.array([[0.0, -1.0], [1.0, 0.0]])
     I2 = np.eye(2)
 
@@ -299,7 +299,7 @@ def _bowl(results, friction):
     results.number(
         "bowl_switch_omega_over_n",
         switch,
-        "n",
+        "√(g/a)",
         note="$\\omega/n$ at which the largest real part changes sign, friction on (bisection): Lamb's "
         "$\\omega^2 = g/a$",
     )
@@ -312,7 +312,7 @@ def _bowl(results, friction):
     results.number(
         "bowl_space_rates_frictionless",
         [float(v) for v in sorted(space)],
-        "n",
+        "√(g/a)",
         note="$\\omega = 2n$, no friction: the angular speed in space of each circular vibration "
         "(positive: the sense of $\\omega$); Lamb's $\\pm n$",
     )
@@ -324,11 +324,11 @@ def _bowl(results, friction):
     results.number(
         "bowl_growing_mode_space_rate",
         float(relative + 2.0),
-        "n",
+        "√(g/a)",
         note="$\\omega = 2n$ with friction: the angular speed in space of the growing circular "
         "vibration (positive: the sense of $\\omega$) and its real part",
     )
-    results.number("bowl_growing_real_part", float(lam[j].real), "n")
+    results.number("bowl_growing_real_part", float(lam[j].real), "√(g/a)")
     results.number(
         "bowl_conical_pendulum_exact",
         int(symbolic.bowl_relative_equilibrium()),
