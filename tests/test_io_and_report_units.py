@@ -343,6 +343,28 @@ def test_the_rigid_series_values_are_woolards_coefficients_at_mid_run():
         assert rows["woolard_" + cid]["computed"] == rows[cid]["computed"], cid
 
 
+def test_every_limit_of_the_model_says_how_big_what_it_leaves_out_is():
+    """A limit names what the model leaves out and its expected size: a reference that leaves out the same
+    (expected:), or sizes in its text (a published estimate of each part)."""
+    import re
+    from pathlib import Path
+
+    import yaml
+
+    from classical_dynamics.studies.registry import STUDIES
+
+    root = Path(claims.__file__).parents[1] / "studies"
+    unsized = [
+        f"{study}/{claim['id']}"
+        for study in STUDIES
+        for claim in yaml.safe_load((root / study / "claims.yaml").read_text(encoding="utf-8"))
+        if claim["kind"] == "limit"
+        and not claim.get("expected")
+        and not re.search(r"\d\s*(%|d\b|″|mas)", claim["omits"])  # a size: 30 d, 3 %, 0.1″; not MHB2000
+    ]
+    assert not unsized, unsized
+
+
 def test_a_limits_expected_size_is_the_source_against_a_reference_that_omits_the_same(tmp_path):
     import yaml
 
