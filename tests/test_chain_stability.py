@@ -6,6 +6,7 @@ import pytest
 import yaml
 from scipy.special import jn_zeros
 
+from classical_dynamics.models import linear
 from classical_dynamics.scenes import SceneError
 from classical_dynamics.studies import validate
 from classical_dynamics.studies.chains import stability, symbolic
@@ -69,7 +70,7 @@ def test_ball_modes_are_conjugate_and_fixed_axes():
     r = Recorder()
     stability.ball_modes(r, seed=3)
     # conjugacy in I and V is what scipy's eigh guarantees: these two show the reported figures are
-    # computed, not that project code is right; the axis check integrates the module's _state (tested below)
+    # computed, not that project code is right; the axis check integrates linear.state_matrix (tested below)
     assert r.values["ball_conjugate_inertia"] < 1e-13 and r.values["ball_conjugate_potential"] < 1e-13
     assert r.values["ball_mode_axis_fixed"] < 1e-10
 
@@ -77,10 +78,10 @@ def test_ball_modes_are_conjugate_and_fixed_axes():
 def test_state_matrix_has_the_characteristic_roots():
     # M q'' + (B + G) q' + K q = 0: for one coordinate the roots of m s^2 + c s + k (numpy), and for two
     # with a gyroscopic G the roots of det(M s^2 + (B + G) s + K), a quartic expanded by hand
-    A = stability._state(np.array([[3.0]]), np.array([[2.0]]), np.array([[0.5]]))
+    A = linear.state_matrix(np.array([[3.0]]), np.array([[2.0]]), np.array([[0.5]]))
     assert np.sort_complex(np.linalg.eigvals(A)) == pytest.approx(np.sort_complex(np.roots([2.0, 0.5, 3.0])))
     k1, k2, b, g = 2.0, 5.0, 0.3, 1.7
-    A = stability._state(np.diag([k1, k2]), np.eye(2), np.diag([b, 0.0]), np.array([[0.0, g], [-g, 0.0]]))
+    A = linear.state_matrix(np.diag([k1, k2]), np.eye(2), np.diag([b, 0.0]), np.array([[0.0, g], [-g, 0.0]]))
     # det [[s^2 + b s + k1, g s], [-g s, s^2 + k2]] = (s^2 + b s + k1)(s^2 + k2) + g^2 s^2
     quartic = [1.0, b, k1 + k2 + g * g, b * k2, k1 * k2]
     expected = np.sort_complex(np.roots(quartic))

@@ -12,11 +12,12 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import scipy.linalg as sla
-from scipy.integrate import solve_ivp
 
 from ...figure_style import FULL_WIDTH_IN
 from ...lazy import lazy_module
+from ...models import linear
 from ...results import new_figure
+from ...solvers.ode import Problem, solve
 
 symbolic = lazy_module(f"{__package__}.symbolic")  # sympy, for the scenes that ask for a closed form
 
@@ -24,12 +25,6 @@ symbolic = lazy_module(f"{__package__}.symbolic")  # sympy, for the scenes that 
 def _matrices(built):
     K = built.stiffness_matrix()
     return K, np.diag(built.masses)
-
-
-def _state_matrix(K, M, B):
-    """M q'' + B q' + K q = 0 as z' = A z, z = (q, q'): the quadratic eigenproblem linearized."""
-    n = len(K)
-    return np.block([[np.zeros((n, n)), np.eye(n)], [-np.linalg.solve(M, K), -np.linalg.solve(M, B)]])
 
 
 def _modes(built):
@@ -381,17 +376,20 @@ def _transient(results, built, sigma, phi, modal_force, spec):
 
     K, M = _matrices(built)
     n = len(sigma)
-    Minv_K, Minv_F = np.linalg.solve(M, K), np.linalg.solve(M, built.force)
-
-    def rhs(time, z):
-        return np.concatenate([z[n:], -Minv_K @ z[:n] + Minv_F * np.cos(s * time)])
-
-    run = solve_ivp(rhs, (0.0, t[-1]), np.zeros(2 * n), method="DOP853", t_eval=t, rtol=1e-13, atol=1e-16)
+    forcing = np.concatenate([np.zeros(n), np.linalg.solve(M, built.force)])
+    params = linear.pack(linear.state_matrix(K, M), forcing, s)
+    run = solve(
+        Problem(linear.linear_system, np.zeros(2 * n), (0.0, t[-1]), params),
+        "dop853",
+        t_eval=t,
+        rtol=1e-13,
+        atol=1e-16,
+    )
     scale = np.max(np.abs(stable(t)))
     results.number("transient_detuning", delta, "1")
     results.number(
         "transient_integrator_vs_closed_form",
-        float(np.max(np.abs(run.y[:n] - stable(t))) / scale),
+        float(np.max(np.abs(run.y_eval[:, :n].T - stable(t))) / scale),
         "1",
         note="DOP853 (scipy, rtol $10^{-13}$) against the product-of-sines form",
     )
@@ -406,7 +404,7 @@ def _transient(results, built, sigma, phi, modal_force, spec):
         "resonance_transient",
         f"Started from rest at detuning $\\delta = 10^{{{exponent}}}$: the "
         "closed form as a product of sines against DOP853",
-        float(np.max(np.abs(run.y[:n] - stable(t))) / scale),
+        float(np.max(np.abs(run.y_eval[:, :n].T - stable(t))) / scale),
         1e-8,
     )
 
@@ -443,7 +441,7 @@ def friction(results, built, spec):
     rows = []
     for eps in spec["scales"]:
         B = eps * np.diag(built.damping)
-        lam = np.linalg.eigvals(_state_matrix(K, M, B))
+        lam = np.linalg.eigvals(linear.state_matrix(K, M, B))
         lam = np.sort_complex(lam[lam.imag > 0])
         lam = lam[np.argsort(lam.imag)]
         for k, (symbols, C, l1, l2) in enumerate(shift):
@@ -495,7 +493,7 @@ def friction(results, built, spec):
 
 def initial_value(results, built, spec):
     """Art. 91: any motion is the sum of the modes, each started by the mass-weighted projections of the
-    initial state; Ex. XIV.1: its energy is the sum of the modes' energies. Against DOP853 from a random start
+    initial state; Ex. XIV.1: its energy is the sum of the modes' energies. Against dop853 from a random start
     (seeded)."""
     K, M = _matrices(built)
     sigma, phi = _modes(built)
@@ -507,19 +505,13 @@ def initial_value(results, built, spec):
     modal = phi @ (
         a[:, None] * np.cos(sigma[:, None] * t) + (b / sigma)[:, None] * np.sin(sigma[:, None] * t)
     )
-    Minv_K = np.linalg.solve(M, K)
-    run = solve_ivp(
-        lambda _, z: np.concatenate([z[n:], -Minv_K @ z[:n]]),
-        (0.0, t[-1]),
-        np.concatenate([y0, v0]),
-        method="DOP853",
-        t_eval=t,
-        rtol=1e-13,
-        atol=1e-14,
+    free = Problem(
+        linear.linear_system, np.concatenate([y0, v0]), (0.0, t[-1]), linear.pack(linear.state_matrix(K, M))
     )
+    run = solve(free, "dop853", t_eval=t, rtol=1e-13, atol=1e-14)
     results.number(
         "initial_value_modal_vs_integrator",
-        float(np.max(np.abs(run.y[:n] - modal)) / np.max(np.abs(modal))),
+        float(np.max(np.abs(run.y_eval[:, :n].T - modal)) / np.max(np.abs(modal))),
         "1",
         note="the sum of modes against DOP853 (rtol $10^{-13}$), largest difference over the largest "
         "displacement",
@@ -541,15 +533,19 @@ def dissipation(results, built, scale):
     sigma, _ = _modes(built)
     n = len(sigma)
     B = np.diag(built.damping)
-    A = _state_matrix(K, M, B)
+    A = linear.state_matrix(K, M, B)
     t = np.linspace(0.0, 10 * 2 * np.pi / sigma[0], 401)
-
-    def rhs(_, z):  # the state, and the work done against friction, integral of 2F
-        return np.concatenate([A @ z[:-1], [z[n:-1] @ B @ z[n:-1]]])
-
+    work = np.zeros((2 * n, 2 * n))
+    work[n:, n:] = B  # the last component integrates q'^T B q' = 2F: the work done against friction
     z0 = np.concatenate([np.ones(n), np.zeros(n), [0.0]])
-    run = solve_ivp(rhs, (0.0, t[-1]), z0, method="DOP853", t_eval=t, rtol=1e-13, atol=1e-14)
-    q, v, lost = run.y[:n], run.y[n:-1], run.y[-1]
+    run = solve(
+        Problem(linear.linear_system, z0, (0.0, t[-1]), linear.pack(A, work=work)),
+        "dop853",
+        t_eval=t,
+        rtol=1e-13,
+        atol=1e-14,
+    )
+    q, v, lost = run.y_eval[:, :n].T, run.y_eval[:, n:-1].T, run.y_eval[:, -1]
     energy = 0.5 * np.einsum("it,ij,jt->t", v, M, v) + 0.5 * np.einsum("it,ij,jt->t", q, K, q)
     results.number(
         "dissipation_balance",
@@ -557,7 +553,7 @@ def dissipation(results, built, scale):
         "1",
         note="$T + V$ along DOP853 against its start less $\\int 2F\\,dt$ (relative to the start)",
     )
-    lam = np.linalg.eigvals(_state_matrix(K, M, scale * B))
+    lam = np.linalg.eigvals(linear.state_matrix(K, M, scale * B))
     real = lam[np.abs(lam.imag) <= 1e-12 * np.abs(lam).max()].real
     results.number("aperiodic_scale", scale, "1", note="the dashpot raised past critical")
     results.number("aperiodic_real_roots", int(real.size), "1")

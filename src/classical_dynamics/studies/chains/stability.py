@@ -15,18 +15,11 @@ from __future__ import annotations
 
 import numpy as np
 import scipy.linalg as sla
-from scipy.integrate import solve_ivp
 
+from ...models import chains as chain_models
+from ...models import linear
+from ...solvers.ode import Events, Problem, solve
 from . import symbolic
-
-
-def _state(K, M, B=None, G=None):
-    """M q'' + (B + G) q' + K q = 0 as z' = A z."""
-    n = len(K)
-    C = np.zeros((n, n)) if B is None else np.array(B, float)
-    if G is not None:
-        C = C + G
-    return np.block([[np.zeros((n, n)), np.eye(n)], [-np.linalg.solve(M, K), -np.linalg.solve(M, C)]])
 
 
 def _bisect(unstable, lo, hi, tol=1e-12):
@@ -68,7 +61,7 @@ def equilibrium(results, built):
         "k",
         note="springs $k, -k, k$: $K$ has the eigenvalues $\\pm k$, $V$ neither a minimum nor a maximum",
     )
-    A = _state(Kind, m * np.eye(2))
+    A = linear.state_matrix(Kind, m * np.eye(2))
     rate_exact = np.sqrt(k / m)
     lam = np.linalg.eigvals(A)
     results.number(
@@ -80,10 +73,15 @@ def equilibrium(results, built):
     rng = np.random.default_rng(85)
     z0 = 1e-8 * rng.standard_normal(4)
     t1, t2 = 15 / rate_exact, 30 / rate_exact
-    run = solve_ivp(
-        lambda _, z: A @ z, (0.0, t2), z0, method="DOP853", t_eval=[t1, t2], rtol=1e-13, atol=1e-30
+    run = solve(
+        Problem(linear.linear_system, z0, (0.0, t2), linear.pack(A)),
+        "dop853",
+        t_eval=[t1, t2],
+        rtol=1e-13,
+        atol=1e-30,
     )
-    fitted = np.log(np.linalg.norm(run.y[:2, 1]) / np.linalg.norm(run.y[:2, 0])) / (t2 - t1)
+    q = run.y_eval[:, :2]
+    fitted = np.log(np.linalg.norm(q[1]) / np.linalg.norm(q[0])) / (t2 - t1)
     results.number(
         "indefinite_growth_rate_over_root",
         float(fitted / rate_exact),
@@ -91,9 +89,7 @@ def equilibrium(results, built):
         note="rate of growth of $|q|$ between $\\lambda t$ = 15 and 30 (DOP853, rtol $10^{-13}$) over "
         "$\\sqrt{k/m}$: Lamb's $He^{\\lambda t}$",
     )
-    results.number(
-        "indefinite_growth_factor", float(np.linalg.norm(run.y[:2, 1]) / np.linalg.norm(z0[:2])), "1"
-    )
+    results.number("indefinite_growth_factor", float(np.linalg.norm(q[1]) / np.linalg.norm(z0[:2])), "1")
 
     # Art. 92: equal roots. Three particles on a ring, each tied down: K = k I + k L (L the triangle's
     # Laplacian).
@@ -137,7 +133,7 @@ def equilibrium(results, built):
 
 
 def _bounded(K, M, period, periods, rng, samples=8):
-    A = _state(K, M)
+    A = linear.state_matrix(K, M)
     n = len(K)
     step = sla.expm(A * period / samples)
     z = np.concatenate([rng.standard_normal(n), rng.standard_normal(n)])
@@ -174,20 +170,19 @@ def ball_modes(results, seed=9):
         "1",
         note="largest off-diagonal of $\\Phi^TV\\Phi$ over its diagonal",
     )
-    A = _state(V, I)
+    A = linear.state_matrix(V, I)
     worst = 0.0
     for j in range(3):
         axis = phi[:, j] / np.linalg.norm(phi[:, j])
-        run = solve_ivp(
-            lambda _, z: A @ z,
-            (0.0, 5 * 2 * np.pi / np.sqrt(lam[0])),
-            np.concatenate([axis, 0 * axis]),
-            method="DOP853",
+        span = 5 * 2 * np.pi / np.sqrt(lam[0])
+        run = solve(
+            Problem(linear.linear_system, np.concatenate([axis, 0 * axis]), (0.0, span), linear.pack(A)),
+            "dop853",
             rtol=1e-13,
             atol=1e-15,
-            t_eval=np.linspace(0, 5 * 2 * np.pi / np.sqrt(lam[0]), 401),
+            t_eval=np.linspace(0, span, 401),
         )
-        theta = run.y[:3]
+        theta = run.y_eval[:, :3].T
         sideways = np.linalg.norm(theta - np.outer(axis, axis @ theta), axis=0)
         worst = max(worst, float(sideways.max()))
     results.number(
@@ -221,7 +216,7 @@ def gyroscopic(results, spec):
     J = np.array([[0.0, 1.0], [-1.0, 0.0]])
 
     def unstable(beta, c):
-        lam = np.linalg.eigvals(_state(c * I2, I2, G=beta * J))
+        lam = np.linalg.eigvals(linear.state_matrix(c * I2, I2, G=beta * J))
         return bool(np.max(lam.real) > 1e-7)
 
     switch = _bisect(lambda b: unstable(b, -1.0), 1.0, 3.0, 1e-13)
@@ -243,7 +238,10 @@ def gyroscopic(results, spec):
         "kinetic_mixed_c_stable_count",
         int(
             sum(
-                not bool(np.max(np.linalg.eigvals(_state(np.diag([1.0, -1.0]), I2, G=b * J)).real) > 1e-7)
+                not bool(
+                    np.max(np.linalg.eigvals(linear.state_matrix(np.diag([1.0, -1.0]), I2, G=b * J)).real)
+                    > 1e-7
+                )
                 for b in betas
             )
         ),
@@ -254,10 +252,10 @@ def gyroscopic(results, spec):
     eps, beta = spec["epsilon"], spec["beta"]
     rho = symbolic.gyroscopic_first_order_rho()
     for c, label in ((-1.0, "negative"), (1.0, "positive")):
-        lam = np.linalg.eigvals(_state(c * I2, I2, B=eps * I2, G=beta * J))
+        lam = np.linalg.eigvals(linear.state_matrix(c * I2, I2, B=eps * I2, G=beta * J))
         upper = lam[lam.imag > 0]
         upper = upper[np.argsort(upper.imag)]  # slower, faster
-        sigma = np.sort(np.abs(np.linalg.eigvals(_state(c * I2, I2, G=beta * J)).imag))[::2]
+        sigma = np.sort(np.abs(np.linalg.eigvals(linear.state_matrix(c * I2, I2, G=beta * J)).imag))[::2]
         first = np.array([float(rho.subs({"c": c, "beta": beta, "epsilon": eps, "sigma": s})) for s in sigma])
         results.number(
             f"secular_real_parts_c_{label}",
@@ -289,7 +287,7 @@ def _bowl(results, friction):
     I2 = np.eye(2)
 
     def roots(omega, k):
-        A = _state((1 - omega**2) * I2, I2, B=k * I2, G=2 * omega * J)
+        A = linear.state_matrix((1 - omega**2) * I2, I2, B=k * I2, G=2 * omega * J)
         return np.linalg.eig(A)
 
     def growing(omega):
@@ -391,21 +389,15 @@ def revolving(results):
     mu = (M + m) * a**2 * omega + m * b**2 * (omega + eps) + m * a * b * (2 * omega + eps)
     expected = float(sigma2.subs(dict(zip(symbolic.REVOLVING, (M, m, a, b, mu)))))
 
-    def rhs(_, z):  # Lagrange's equations in phi1, phi2, written for phi1 and psi (no
-        d = -z[1]  # difference of two large angles: psi is small)
-        rates = (z[2], z[2] + z[3])
-        mass = np.array([[(M + m) * a**2, m * a * b * np.cos(d)], [m * a * b * np.cos(d), m * b**2]])
-        force = np.array([-m * a * b * np.sin(d) * rates[1] ** 2, m * a * b * np.sin(d) * rates[0] ** 2])
-        acc = np.linalg.solve(mass, force)
-        return np.array([z[2], z[3], acc[0], acc[1] - acc[0]])
-
-    def crossing(_, z):
-        return z[1]
-
-    crossing.direction = 1.0
     span = 30 * 2 * np.pi / np.sqrt(expected)
-    run = solve_ivp(rhs, (0.0, span), z0, method="DOP853", rtol=1e-13, atol=1e-16, events=crossing)
-    times = run.t_events[0]
+    run = solve(
+        Problem(chain_models.revolving_pair, z0, (0.0, span), [M, m, a, b]),
+        "dop853",
+        rtol=1e-13,
+        atol=1e-16,
+        events=Events(chain_models.revolving_pair_crossing, 1, directions=(1,)),
+    )
+    times = run.event_t
     times = times[times > 1e-9]
     period = (times[-1] - times[0]) / (len(times) - 1)
     fitted = (2 * np.pi / period) ** 2
