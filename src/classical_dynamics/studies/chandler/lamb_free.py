@@ -16,53 +16,28 @@ from __future__ import annotations
 
 import numpy as np
 import sympy as sp
-from scipy.integrate import solve_ivp
 from scipy.special import ellipk
 
-from ...models import earth
+from ...models import earth, rigid_body
+from ...solvers.ode import Events, Problem, solve
 
 RTOL = 1e-12
+INDEPENDENT = "scipy:DOP853"  # not the study's own compiled integrators
 
 
 # --- an independent integrator: Euler's equations and the rotation matrix (body -> space) -------------------
-def _rhs(I):
-    A, B, C = I
-
-    def f(t, y):
-        p, q, r = y[0], y[1], y[2]
-        R = y[3:].reshape(3, 3)
-        W = np.array([[0.0, -r, q], [r, 0.0, -p], [-q, p, 0.0]])
-        return np.concatenate(
-            [[(B - C) * q * r / A, (C - A) * r * p / B, (A - B) * p * q / C], (R @ W).ravel()]
-        )
-
-    return f
-
-
 def integrate(I, omega0, span, samples=2001, rtol=RTOL):
     """omega (body, (n, 3)) and R (body -> space, (n, 3, 3)) at `samples` times over [0, span]."""
     t = np.linspace(0.0, span, samples)
     y0 = np.concatenate([omega0, np.eye(3).ravel()])
-    sol = solve_ivp(
-        _rhs(np.asarray(I, float)),
-        (0.0, span),
-        y0,
-        method="DOP853",
+    sol = solve(
+        Problem(rigid_body.free_attitude_matrix, y0, (0.0, span), np.asarray(I, float)),
+        INDEPENDENT,
         rtol=rtol,
         atol=rtol * 1e-6 * np.linalg.norm(omega0),
         t_eval=t,
     )
-    return t, sol.y[:3].T, sol.y[3:].T.reshape(-1, 3, 3)
-
-
-def _euler_batch(I):
-    A, B, C = I
-
-    def f(t, y):
-        p, q, r = y.reshape(3, -1)
-        return np.concatenate([(B - C) * q * r / A, (C - A) * r * p / B, (A - B) * p * q / C])
-
-    return f
+    return t, sol.y_eval[:, :3], sol.y_eval[:, 3:].reshape(-1, 3, 3)
 
 
 def polhode_period(I, omega0):
@@ -185,10 +160,14 @@ def _polhode_side(results, I, samples, seed):
     least = A**2 * p**2 + C**2 * r**2 < B * (A * p**2 + C * r**2)  # Lamb (10): round the least axis A
     span = 1.05 * max(polhode_period(I, wi)[0] for wi in w)
     t = np.linspace(0.0, span, 4001)
-    sol = solve_ivp(
-        _euler_batch(I), (0.0, span), w.T.ravel(), method="DOP853", rtol=1e-11, atol=1e-13, t_eval=t
+    sol = solve(
+        Problem(rigid_body.euler_free_many, w.T.ravel(), (0.0, span), np.asarray(I, float)),
+        INDEPENDENT,
+        rtol=1e-11,
+        atol=1e-13,
+        t_eval=t,
     )
-    pp, _, rr = sol.y.reshape(3, samples, -1)
+    pp, _, rr = sol.y_eval.T.reshape(3, samples, -1)
     keeps_p = np.all(pp * p[:, None] > 0, axis=1)  # the least axis' component keeps its sign
     keeps_r = np.all(rr * r[:, None] > 0, axis=1)
     agree = (least & keeps_p & ~keeps_r) | (~least & keeps_r & ~keeps_p)
@@ -440,24 +419,18 @@ def _plate(results, a, b):
     half, k2 = polhode_period(I, w0)
     half /= 2.0
 
-    def crossing(t, y):
-        return y[2]
-
-    crossing.direction = 0.0
     y0 = np.concatenate([w0, np.eye(3).ravel()])
-    sol = solve_ivp(
-        _rhs(I),
-        (0.0, 1.5 * half),
-        y0,
-        method="DOP853",
+    sol = solve(
+        Problem(rigid_body.free_attitude_matrix, y0, (0.0, 1.5 * half), I),
+        INDEPENDENT,
         rtol=1e-13,
         atol=1e-16,
-        events=crossing,
-        dense_output=True,
+        events=Events(rigid_body.axis_component, 1),
     )
-    times = [tc for tc in sol.t_events[0] if tc > 1e-9 * half]
+    after = sol.event_t > 1e-9 * half
+    times = sol.event_t[after]
     t_star = times[0]
-    w_star = sol.sol(t_star)[:3]
+    w_star = sol.event_y[after][0][:3]
     other = np.array([a, -b, 0.0]) / np.hypot(a, b)
     angle = np.arcsin(min(1.0, np.linalg.norm(np.cross(w_star, other)) / np.linalg.norm(w_star)))
     results.number(

@@ -23,6 +23,7 @@ import numpy as np
 from ...models import earth
 from ...models import precession as prec
 from ...models import rigid_body as rb
+from ...solvers.ode import Problem, solve
 
 CM_PER_FT = 30.48  # exact (international foot)
 
@@ -207,10 +208,9 @@ def couple_of_distant_mass(results, spec) -> None:
 
 def least_axis_stable(results, spec) -> None:
     """Lamb Ex. VI.4: the potential (3 gamma M/2 rho^3) s.Is + const on the sphere of directions s of OP in
-    the body; sympy's Hessian at the six axis equilibria, and a libration integrated about each (scipy
-    DOP853)."""
+    the body; sympy's Hessian at the six axis equilibria, and a libration integrated about each
+    (dop853)."""
     import sympy as sp
-    from scipy.integrate import solve_ivp
 
     I = [sp.Rational(str(x)) for x in spec["moments"]]
     u, v = sp.symbols("u v", real=True)
@@ -238,23 +238,10 @@ def least_axis_stable(results, spec) -> None:
         "1",
         note="1 if both lie on the axis of least moment",
     )
-    # librations: I w' = Iw x w + k s x Is, s' = s x w (OP fixed in space, seen from the body); k = 1, from
-    # rest
-    Iv = np.asarray(spec["moments"], float)
-
-    I1, I2, I3 = Iv
-
-    def f(t, y):
-        w1, w2, w3, s1, s2, s3 = y
-        return [
-            ((I2 - I3) * (w2 * w3 - s2 * s3)) / I1,
-            ((I3 - I1) * (w3 * w1 - s3 * s1)) / I2,
-            ((I1 - I2) * (w1 * w2 - s1 * s2)) / I3,
-            s2 * w3 - s3 * w2,
-            s3 * w1 - s1 * w3,
-            s1 * w2 - s2 * w1,
-        ]
-
+    # librations about each axis from rest (models.rigid_body.distant_attraction), sampled every 0.25 time
+    # units: the angle of OP from the axis it started near
+    moments = np.asarray(spec["moments"], float)
+    t = np.linspace(0.0, spec["span"], int(np.ceil(spec["span"] / 0.25)) + 1)
     growth = []
     kick = spec["start_offset_rad"]
     for i in range(3):
@@ -262,17 +249,14 @@ def least_axis_stable(results, spec) -> None:
         s0[i] = 1.0
         s0[(i + 1) % 3] = s0[(i + 2) % 3] = kick
         s0 /= np.linalg.norm(s0)
-        sol = solve_ivp(
-            f,
-            (0.0, spec["span"]),
-            np.concatenate([np.zeros(3), s0]),
-            method="DOP853",
+        sol = solve(
+            Problem(rb.distant_attraction, np.concatenate([np.zeros(3), s0]), (0.0, spec["span"]), moments),
+            "dop853",
             rtol=1e-10,
             atol=1e-13,
-            dense_output=False,
-            max_step=0.5,
+            t_eval=t,
         )
-        off = np.sqrt(np.maximum(1.0 - sol.y[3 + i] ** 2, 0.0))
+        off = np.sqrt(np.maximum(1.0 - sol.y_eval[:, 3 + i] ** 2, 0.0))
         growth.append(float(np.max(off) / np.sqrt(1.0 - s0[i] ** 2)))
     results.number(
         "libration_growth_least",

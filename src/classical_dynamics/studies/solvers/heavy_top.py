@@ -12,6 +12,7 @@ import numpy as np
 import pandas as pd
 
 from ...figure_style import PAIR_WIDTH_IN
+from ...models import rigid_body
 from ...provenance import software_stamp
 from ...results import new_figure
 from ...solvers.ode import Events, Problem, solve
@@ -65,30 +66,18 @@ def _reciprocal(results, top, n, alpha, tau=3.0, impulse=1e-6):
     """Lamb's reciprocal theorem (Art. 107, Ex. 3): an impulsive couple about the vertical (p_phi += J)
     changes the inclination after tau by d theta; in the reversed motion (every velocity, the spin too,
     reversed) an equal couple in the plane of theta (p_theta += J) changes the azimuth after tau by d phi = d
-    theta. Canonical equations in Euler angles (theta, azimuth phi, spin angle psi), DOP853 (scipy), central
-    differences of two runs each: independent of the body-frame model."""
-    from scipy.integrate import solve_ivp
-
+    theta. Canonical equations in Euler angles (theta, azimuth phi, spin angle psi), scipy's DOP853, central
+    differences of two runs each: independent of the body-frame model and of the compiled integrators."""
+    params = np.array([top.A, top.C, top.Mgh])
     A, C, Mgh = top.A, top.C, top.Mgh
 
-    def rhs(_, z):
-        th, p_th, p_ph, p_ps = z[0], z[3], z[4], z[5]
-        s, c = np.sin(th), np.cos(th)
-        u = p_ph - p_ps * c
-        dphi = u / (A * s * s)
-        return np.array(
-            [
-                p_th / A,
-                dphi,
-                p_ps / C - c * dphi,
-                -(u * p_ps / (A * s) - u * u * c / (A * s**3)) + Mgh * s,
-                0.0,
-                0.0,
-            ]
-        )
-
     def flow(z):
-        return solve_ivp(rhs, (0.0, tau), z, method="DOP853", rtol=1e-13, atol=1e-15).y[:, -1]
+        return solve(
+            Problem(rigid_body.heavy_top_euler_angles, z, (0.0, tau), params),
+            "scipy:DOP853",
+            rtol=1e-13,
+            atol=1e-15,
+        ).y
 
     p_ps = C * n
     z0 = np.array([alpha, 0.0, 0.0, A * 0.3, A * np.sin(alpha) ** 2 * 0.5 + p_ps * np.cos(alpha), p_ps])

@@ -1,5 +1,5 @@
-"""The linear systems' right-hand side and the revolving pair, against closed forms and the equations
-written out with numpy (not the compiled code under test)."""
+"""The right-hand sides in models/ that the studies integrate through solve(), against closed forms, first
+integrals and the equations written out with numpy (not the compiled code under test)."""
 
 import numpy as np
 import pytest
@@ -94,3 +94,78 @@ def test_the_pair_s_crossings_are_found_going_up_only():
     ours, theirs = run.event_t[run.event_t > 1e-9], ref.t_events[0][ref.t_events[0] > 1e-9]
     assert len(ours) == len(theirs) >= 3
     assert np.max(np.abs(ours - theirs)) < 1e-7
+
+
+def test_the_free_body_with_its_attitude_matrix_keeps_r_orthogonal_and_omega_as_eulers_equations():
+    from classical_dynamics.models import rigid_body
+
+    I = np.array([1.0, 2.0, 3.5])
+    w0 = np.array([0.3, 1.0, -0.4])
+    run = solve(
+        Problem(rigid_body.free_attitude_matrix, np.concatenate([w0, np.eye(3).ravel()]), (0.0, 20.0), I),
+        "dop853",
+        t_eval=np.linspace(0.0, 20.0, 11),
+        rtol=1e-12,
+        atol=1e-14,
+    )
+    alone = solve(
+        Problem(rigid_body.euler_free, w0, (0.0, 20.0), rigid_body.euler_coefficients(I)),
+        "dop853",
+        t_eval=np.linspace(0.0, 20.0, 11),
+        rtol=1e-12,
+        atol=1e-14,
+    )
+    assert np.max(np.abs(run.y_eval[:, :3] - alone.y_eval)) < 1e-9
+    for w, R in zip(run.y_eval[:, :3], run.y_eval[:, 3:].reshape(-1, 3, 3)):
+        assert np.max(np.abs(R @ R.T - np.eye(3))) < 1e-9
+        # the angular momentum is fixed in space: R (I w) stays what it was
+        assert np.allclose(R @ (I * w), I * w0, rtol=0, atol=1e-9)
+
+
+def test_many_free_bodies_are_each_eulers_equations():
+    from classical_dynamics.models import rigid_body
+
+    I = np.array([1.0, 2.0, 3.5])
+    w = np.random.default_rng(4).standard_normal((5, 3))
+    out, one = np.empty(15), np.empty(3)
+    rigid_body.euler_free_many(0.0, w.T.ravel(), I, out)
+    for i in range(5):
+        rigid_body.euler_free(0.0, w[i], rigid_body.euler_coefficients(I), one)
+        assert out.reshape(3, 5)[:, i] == pytest.approx(one, rel=1e-14, abs=1e-15)
+
+
+def test_a_body_under_a_distant_mass_keeps_its_energy_and_the_direction_unit():
+    """I w' = Iw x w + s x Is, s' = s x w: T + s.Is/2 is constant and |s| = 1 (both follow from the
+    equations by hand: d/dt(s.Is/2) = w.(Is x s) cancels dT/dt = w.(s x Is))."""
+    from classical_dynamics.models import rigid_body
+
+    I = np.array([1.0, 1.6, 2.3])
+    s0 = np.array([0.6, 0.0, 0.8])
+    run = solve(
+        Problem(rigid_body.distant_attraction, np.concatenate([[0.1, -0.2, 0.05], s0]), (0.0, 50.0), I),
+        "dop853",
+        t_eval=np.linspace(0.0, 50.0, 51),
+        rtol=1e-12,
+        atol=1e-14,
+    )
+    w, s = run.y_eval[:, :3], run.y_eval[:, 3:]
+    energy = 0.5 * np.sum(I * w * w, axis=1) + 0.5 * np.sum(I * s * s, axis=1)
+    assert np.ptp(energy) < 1e-10 and np.max(np.abs(np.linalg.norm(s, axis=1) - 1)) < 1e-10
+
+
+def test_the_heavy_top_in_euler_angles_keeps_its_hamiltonian():
+    from classical_dynamics.models import rigid_body
+
+    A, C, Mgh = 1.0, 0.6, 0.4
+    z0 = np.array([0.7, 0.0, 0.0, 0.2, 0.9, 3.0])
+    run = solve(
+        Problem(rigid_body.heavy_top_euler_angles, z0, (0.0, 30.0), [A, C, Mgh]),
+        "dop853",
+        t_eval=np.linspace(0.0, 30.0, 31),
+        rtol=1e-12,
+        atol=1e-14,
+    )
+    th, pth, pph, pps = run.y_eval[:, 0], run.y_eval[:, 3], run.y_eval[:, 4], run.y_eval[:, 5]
+    H = pth**2 / (2 * A) + (pph - pps * np.cos(th)) ** 2 / (2 * A * np.sin(th) ** 2) + pps**2 / (2 * C)
+    H += Mgh * np.cos(th)
+    assert np.ptp(H) < 1e-10
