@@ -235,7 +235,8 @@ GROUPS = (
             (
                 "middle_plane_one",
                 "Plane I (Lee's Figure 3.12): a center; periodic motions inside Lee's "
-                "separatrix $F$ ($C = 0$); outside it $\\boldsymbol{\\omega}$ runs to the $-y$ axis.",
+                "separatrix $F$ ($c_1 = 0$ in Lee (3.60)); outside it $\\boldsymbol{\\omega}$ runs to the "
+                "$-y$ axis.",
             ),
             (
                 "middle_critical",
@@ -367,9 +368,8 @@ GROUPS = (
             (
                 "middle_rare",
                 "$m > 0$: above the line $q_1 = -\\sqrt{m/\\nu}$ the motion tends to "
-                "$q_1 = \\sqrt{m/\\nu}$ (black: the lines $C = 0$); below it $\\boldsymbol{\\omega}$ leaves "
-                "every "
-                "bound.",
+                "$q_1 = \\sqrt{m/\\nu}$ (black: the lines $c_1 = 0$ of Lee (3.66)); below it "
+                "$\\boldsymbol{\\omega}$ leaves every bound.",
             ),
             (
                 "middle_rare_no_torque",

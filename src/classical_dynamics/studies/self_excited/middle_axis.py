@@ -90,7 +90,7 @@ def run(scene, results, quick):
     drawing.save(
         results,
         "What the portrait draws, point by point: each element (trajectory, separatrix or the "
-        "curve $C = 0$, line of rest points, Euler's equations mapped into the plane, singular point by "
+        "curve $c_1 = 0$, line of rest points, Euler's equations mapped into the plane, singular point by "
         "type, "
         "the window's corners) and its curve number, in $(\\varphi_2, q_1)$.",
     )
@@ -265,7 +265,7 @@ def _caption(M, drawing, points, m1, nu, plane_one, n_overlay):
     black = (
         "; black: the separatrix from the closed form"
         if "separatrix" in drawn
-        else "; black: the curve $C = 0$ of the closed form"
+        else "; black: the curve $c_1 = 0$ of the closed form"
         if "curve_C0" in drawn
         else ""
     )
@@ -412,7 +412,7 @@ def _singular_points(m, form, eps):
 
 
 def _separatrix(drawing, M, saddles, centers, lo, hi):
-    """Through the saddle or degenerate point; without one, Lee's F (C = 0) about the center of the
+    """Through the saddle or degenerate point; without one, Lee's F (c1 = 0 of (3.60)) about the center of the
     exponential form, or the lines q1 = +-sqrt(m/nu) of the rare case."""
     bounding = M.form == "exp" and centers or M.form == "rare" and M.m1 > 0
     if M.mu1 == 0.0 or not (saddles or bounding):
@@ -441,7 +441,7 @@ def _escaping_start(M, centers, saddles):
     if saddles:
         return [saddles[0] - 0.3, 0.0]
     if M.form == "exp" and centers:
-        turn = np.log(M.m1 * (1 - 2 * M.mu1) / (-2 * M.mu1))  # C = 0 at q1 = 0
+        turn = np.log(M.m1 * (1 - 2 * M.mu1) / (-2 * M.mu1))  # c1 = 0 (Lee (3.60)) at q1 = 0
         return [turn + 0.3, 0.0]
     return [0.0, 0.0] if _turns_nowhere(M) else None
 
