@@ -262,6 +262,21 @@ def test_euler_angle_figure_draws_the_line_of_nodes_normal_to_both_z_axes():
     plt.close(fig)
 
 
+def test_the_magnified_momentum_sits_beside_the_sphere_not_on_it():
+    u = np.linspace(0.0, 2.0, 50)
+    xs = np.c_[np.cos(u), np.sin(u), 0 * u]
+    ls = np.c_[0.01 * np.cos(5 * u), 0.01 * np.sin(5 * u), np.ones_like(u)]
+    ls /= np.linalg.norm(ls, axis=1)[:, None]
+    fig = space.figure(xs, ls)
+    fig.canvas.draw()
+    frames, inset, sphere = fig.axes
+    assert inset.name == "rectilinear" and sphere.name == "3d"
+    box, renderer = inset.get_tightbbox(), fig.canvas.get_renderer()
+    for other in (frames, sphere):  # with its tick labels and title, clear of both 3-D panels
+        assert not box.overlaps(other.get_window_extent(renderer)), other
+    plt.close(fig)
+
+
 # --- largest_axis.py: the degenerate point, the bifurcations, the cylinder ----------------------------------
 
 
