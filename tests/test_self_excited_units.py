@@ -496,3 +496,26 @@ def test_middle_axis_planes_runaway_escape_and_the_rare_case():
         assert all(case["holds"] for case in results.stability), results.stability
         for fig, _ in results.figures.values():
             plt.close(fig)
+
+
+# --- middle_axis.py: the closed-form curves drawn ---------------------------------------------------------
+
+
+def test_lees_f_in_plane_one_closes_on_the_axis_at_its_turning_point():
+    """Plane I with drag, Lee (3.60): F (c1 = 0) turns at q1 = 0 where phi2 = ln(m3 (1 + 2 nu)/(2 nu)); both
+    halves are drawn to that point, not a grid step short of the axis."""
+    from classical_dynamics.models import self_excited as se
+    from classical_dynamics.studies.self_excited import middle_axis, portrait
+
+    m3, nu = 0.5, 0.2
+    M = se.MiddleAxis.with_plane_parameters(se.Body.from_moments([3.0, 2.2, 1.2]), m3, -nu, 0.6, 0.6)
+    assert M.form == "exp"
+    drawing = portrait.Drawing("q1", (-4.4, 4.4, 3.3))
+    middle_axis._separatrix(drawing, M, [], [{"phi2": np.log(m3), "type": "center"}], -4.0, 4.0)
+    frame = drawing.frame()
+    curves = frame[frame.element == "curve_C0"]
+    assert curves.curve.nunique() == 2
+    turn = np.log(m3 * (1 + 2 * nu) / (2 * nu))
+    for _, half in curves.groupby("curve"):
+        tip = half.loc[half.phi2.idxmax()]
+        assert tip.q1 == 0.0 and tip.phi2 == pytest.approx(turn, abs=1e-5)

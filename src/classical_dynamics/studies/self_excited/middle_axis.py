@@ -15,6 +15,7 @@ the plane has it.
 from __future__ import annotations
 
 import numpy as np
+from scipy.optimize import brentq
 
 from ...figure_style import TEXT_WIDTH_IN
 from ...models import self_excited as se
@@ -422,8 +423,20 @@ def _separatrix(drawing, M, saddles, centers, lo, hi):
         if saddles
         else 0.0
     )
+
+    def square(x):
+        return C * np.exp(2 * M.mu1 * x) + se.middle_g(x, M.m1, M.mu1, M.eps1, M.form)
+
     phi = np.linspace(lo, hi, 3001)
-    sq = C * np.exp(2 * M.mu1 * phi) + se.middle_g(phi, M.m1, M.mu1, M.eps1, M.form)
+    sq = square(phi)
+    # where q1^2 changes sign the curve turns at q1 = 0: that point is added, so the two halves meet there
+    # rather than a grid step short of the axis
+    turns = np.nonzero(np.sign(sq[:-1]) * np.sign(sq[1:]) < 0)[0]
+    roots = [brentq(square, phi[i], phi[i + 1], xtol=1e-14) for i in turns]
+    phi = np.r_[phi, roots]
+    sq = np.r_[sq, np.zeros(len(roots))]
+    order = np.argsort(phi, kind="stable")
+    phi, sq = phi[order], sq[order]
     for sign in (1, -1):
         drawing.curve(
             "separatrix" if saddles else "curve_C0",
