@@ -7,6 +7,7 @@ import numpy as np
 import pandas as pd
 from scipy import special
 
+from ...figure_style import legend_below
 from ...formatting import format_number, power_of_ten, shortest
 from ...models import rigid_body as rhs
 from ...results import new_figure
@@ -347,7 +348,7 @@ def _numerical_damping(results):
     ax.set_xlim(-0.5, len(methods) - 0.5)
     ax.set_ylabel("$|\\Delta E/E|$ after 100 periods")
     ax.grid(False, axis="x", which="both")
-    ax.legend(loc="upper left")
+    legend_below(fig, ncol=2)  # below the axes: clear of the points and of the grey line
     results.figure(
         "numerical_damping",
         fig,
