@@ -135,3 +135,37 @@ def test_provenance_names_the_input_scenes(built):
     assert record["input_scenes"] == sorted(SCENES) and record["scene"] == "gallery"
     for key in ("commit", "scene_sha256", "wall_seconds", "cpu_seconds", "finished", "effects_simulated"):
         assert key in record
+
+
+def _panel(letter, lo, hi, y_max):
+    """A panel of the middle axis whose table holds only its window and one trajectory."""
+    frame = pd.DataFrame(
+        {
+            "element": ["trajectory", "trajectory", "window", "window"],
+            "curve": [0, 0, 1, 1],
+            "phi2": [lo, hi, lo, hi],
+            "q1": [-1.0, 1.0, -y_max, y_max],
+        }
+    )
+    return gallery.Panel(letter, f"scene_{letter}", "portrait", f"({letter})", "", frame, {})
+
+
+def test_a_taller_window_keeps_the_others_tick_step_and_the_caption_says_so():
+    import matplotlib.pyplot as plt
+
+    group = next(g for g in gallery.GROUPS if g.name == "middle_below_critical")
+    found = [_panel("a", -4.0, 4.0, 3.0), _panel("b", -4.0, 4.0, 3.0), _panel("c", -6.0, 6.0, 6.0)]
+    fig = gallery.grid_figure(group, found)
+    fig.canvas.draw()
+    portraits = [ax for ax in fig.axes if ax.get_title(loc="left")]
+    for which in ("y", "x"):
+        steps = set()
+        for ax in portraits:
+            low, high = sorted(ax.get_ylim() if which == "y" else ax.get_xlim())
+            ticks = [t for t in (ax.get_yticks() if which == "y" else ax.get_xticks()) if low <= t <= high]
+            steps.add(round(ticks[1] - ticks[0], 9))
+        assert steps == {2.0}, (which, steps)  # without the common step the taller panel would tick by 5
+    plt.close(fig)
+    text = gallery.caption(group, found)
+    assert "The window of (c) reaches $|q_1|$ = 6, that of the others 3" in text
+    assert "reaches" not in gallery.caption(group, found[:2])  # windows alike: shared, nothing to say

@@ -262,6 +262,21 @@ def test_euler_angle_figure_draws_the_line_of_nodes_normal_to_both_z_axes():
     plt.close(fig)
 
 
+def test_the_magnified_momentum_sits_beside_the_sphere_not_on_it():
+    u = np.linspace(0.0, 2.0, 50)
+    xs = np.c_[np.cos(u), np.sin(u), 0 * u]
+    ls = np.c_[0.01 * np.cos(5 * u), 0.01 * np.sin(5 * u), np.ones_like(u)]
+    ls /= np.linalg.norm(ls, axis=1)[:, None]
+    fig = space.figure(xs, ls)
+    fig.canvas.draw()
+    frames, inset, sphere = fig.axes
+    assert inset.name == "rectilinear" and sphere.name == "3d"
+    box, renderer = inset.get_tightbbox(), fig.canvas.get_renderer()
+    for other in (frames, sphere):  # with its tick labels and title, clear of both 3-D panels
+        assert not box.overlaps(other.get_window_extent(renderer)), other
+    plt.close(fig)
+
+
 # --- largest_axis.py: the degenerate point, the bifurcations, the cylinder ----------------------------------
 
 
@@ -481,3 +496,26 @@ def test_middle_axis_planes_runaway_escape_and_the_rare_case():
         assert all(case["holds"] for case in results.stability), results.stability
         for fig, _ in results.figures.values():
             plt.close(fig)
+
+
+# --- middle_axis.py: the closed-form curves drawn ---------------------------------------------------------
+
+
+def test_lees_f_in_plane_one_closes_on_the_axis_at_its_turning_point():
+    """Plane I with drag, Lee (3.60): F (c1 = 0) turns at q1 = 0 where phi2 = ln(m3 (1 + 2 nu)/(2 nu)); both
+    halves are drawn to that point, not a grid step short of the axis."""
+    from classical_dynamics.models import self_excited as se
+    from classical_dynamics.studies.self_excited import middle_axis, portrait
+
+    m3, nu = 0.5, 0.2
+    M = se.MiddleAxis.with_plane_parameters(se.Body.from_moments([3.0, 2.2, 1.2]), m3, -nu, 0.6, 0.6)
+    assert M.form == "exp"
+    drawing = portrait.Drawing("q1", (-4.4, 4.4, 3.3))
+    middle_axis._separatrix(drawing, M, [], [{"phi2": np.log(m3), "type": "center"}], -4.0, 4.0)
+    frame = drawing.frame()
+    curves = frame[frame.element == "curve_C0"]
+    assert curves.curve.nunique() == 2
+    turn = np.log(m3 * (1 + 2 * nu) / (2 * nu))
+    for _, half in curves.groupby("curve"):
+        tip = half.loc[half.phi2.idxmax()]
+        assert tip.q1 == 0.0 and tip.phi2 == pytest.approx(turn, abs=1e-5)

@@ -237,6 +237,24 @@ def test_tenth_power_writes_a_tolerance_as_a_power_of_ten():
     assert hard_cases.tenth_power(1e-12) == "10⁻¹²"
 
 
+def test_numerical_damping_figure_names_each_method_as_its_table_does():
+    """scipy's DOP853 and this library's dop853 are different methods: the figure keeps the table's names."""
+    import matplotlib.pyplot as plt
+
+    results = Results("solvers", "hard_cases", "t")
+    hard_cases._numerical_damping(results)
+    frame = results.tables["numerical_damping"][0]
+    fig, _ = results.figures["numerical_damping"]
+    ax = fig.axes[0]
+    names = [t.get_text().replace("\n", "") for t in ax.get_xticklabels()]
+    assert names == [m for m in dict.fromkeys(frame.method) if m != "Störmer–Verlet"]
+    assert "dop853" in names and "scipy:DOP853" in names
+    # the grey line stands between this library's pairs and SciPy's integrators
+    (line,) = [v for v in ax.lines if v.get_xdata()[0] == v.get_xdata()[-1]]
+    assert line.get_xdata()[0] == names.index("scipy:RK45") - 0.5
+    plt.close(fig)
+
+
 def test_intermediate_axis_grows_at_the_linearised_rate():
     results = Results("solvers", "hard_cases", "t")
     hard_cases._intermediate_axis(results)

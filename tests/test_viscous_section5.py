@@ -129,3 +129,17 @@ def test_gauss_rule_of_xi_against_quad(s):
     assert (
         abs(s5._gauss(f, s) - integrate.quad(f, 0.0, s, epsabs=1e-15, epsrel=1e-14, limit=200)[0]) < 1e-13 * s
     )
+
+
+def test_every_added_panel_labels_both_axes_with_units():
+    """The panels Cases I and IV add beside the solution: each axis named, in Lee's scaled units."""
+    import matplotlib.pyplot as plt
+
+    r = Numbers()
+    drawers = s5.case_one(r, V2)[0] + s5.singular_curve(r, FREE2)[0]
+    fig, axes = plt.subplots(1, len(drawers))
+    for draw, ax in zip(drawers, axes):
+        draw(ax)
+        for label in (ax.get_xlabel(), ax.get_ylabel()):
+            assert label.endswith("(rad per time unit)"), label
+    plt.close(fig)

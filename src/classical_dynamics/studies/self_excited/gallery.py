@@ -235,7 +235,8 @@ GROUPS = (
             (
                 "middle_plane_one",
                 "Plane I (Lee's Figure 3.12): a center; periodic motions inside Lee's "
-                "separatrix $F$ ($C = 0$); outside it $\\boldsymbol{\\omega}$ runs to the $-y$ axis.",
+                "separatrix $F$ ($c_1 = 0$ in Lee (3.60)); outside it $\\boldsymbol{\\omega}$ runs to the "
+                "$-y$ axis.",
             ),
             (
                 "middle_critical",
@@ -367,9 +368,8 @@ GROUPS = (
             (
                 "middle_rare",
                 "$m > 0$: above the line $q_1 = -\\sqrt{m/\\nu}$ the motion tends to "
-                "$q_1 = \\sqrt{m/\\nu}$ (black: the lines $C = 0$); below it $\\boldsymbol{\\omega}$ leaves "
-                "every "
-                "bound.",
+                "$q_1 = \\sqrt{m/\\nu}$ (black: the lines $c_1 = 0$ of Lee (3.66)); below it "
+                "$\\boldsymbol{\\omega}$ leaves every bound.",
             ),
             (
                 "middle_rare_no_torque",
@@ -452,6 +452,72 @@ def _same(spans, slack=0.25):
     return all(span >= (1 - slack) * max(spans) for span in spans)
 
 
+def _y_axis(group, found):
+    """The plane's velocity (p1 or q1) and its label, the portraits' windows and whether they share y."""
+    from . import portrait
+
+    angle = group.axis == "largest"
+    y_name, y_label = ("p1", "$p_1$") if angle else ("q1", "$q_1$")
+    windows = [portrait.window_of(p.frame, y_name) for p in found if p.kind == "portrait"]
+    share_y = _same([y for _, _, y in windows]) and not any(p.kind == "body_view" for p in found)
+    return y_name, y_label, windows, share_y
+
+
+MOST_TICKS = 7  # a common tick step is kept only where it leaves a panel this many labels or fewer
+
+
+def _common_ticks(axes, which="y"):
+    """Panels of one quantity whose windows differ (one needs more room): one tick step in every panel, so
+    the ticks of all read alike (2 apart, not 2 in one and 2.5 in the next): the smallest window's own step,
+    or the next of 1, 2, 5 times a power of ten that leaves every panel at most MOST_TICKS labels."""
+    import math
+
+    from matplotlib.ticker import MultipleLocator
+
+    def limits(ax):
+        return sorted(ax.get_ylim() if which == "y" else ax.get_xlim())
+
+    smallest = min(axes, key=lambda ax: limits(ax)[1] - limits(ax)[0])
+    low, high = limits(smallest)
+    ticks = [
+        t for t in (smallest.get_yticks() if which == "y" else smallest.get_xticks()) if low <= t <= high
+    ]
+    if len(ticks) < 2:
+        return
+    widest = max(limits(ax)[1] - limits(ax)[0] for ax in axes)
+    power = 10.0 ** math.floor(math.log10(ticks[1] - ticks[0]))
+    nice = [m * power * 10**k for k in range(3) for m in (1, 2, 5)]
+    step = next(s for s in nice if s >= (ticks[1] - ticks[0]) * (1 - 1e-9) and widest / s < MOST_TICKS)
+    for ax in axes:
+        (ax.yaxis if which == "y" else ax.xaxis).set_major_locator(MultipleLocator(step))
+
+
+def _taller(group, found):
+    """The caption's note of the panels whose window is taller than the rest (their orbits need the room),
+    or "" when the panels share their y axis."""
+    from .portrait import param_text
+
+    _, y_label, windows, share_y = _y_axis(group, found)
+    if share_y:
+        return ""
+    planes = [p for p in found if p.kind == "portrait"]
+    low = min(y for _, _, y in windows)
+    taller = [(p, y) for p, (_, _, y) in zip(planes, windows) if y > low * (1 + 1e-9)]
+    if not taller:
+        return ""
+
+    def listed(words):
+        return ", ".join(words[:-1]) + " and " + words[-1] if len(words) > 1 else words[0]
+
+    letters = listed([f"({p.letter})" for p, _ in taller])
+    values = listed([param_text(round(y, 1)) for _, y in taller])
+    windows_reach = "The windows of {} reach" if len(taller) > 1 else "The window of {} reaches"
+    return (
+        f" {windows_reach.format(letters)} $|{y_label.strip('$')}|$ = {values}, that of the others "
+        f"{param_text(round(low, 1))}, to hold their orbits; the ticks are spaced alike."
+    )
+
+
 def layout(n):
     """Columns and rows of a grid of n panels: at most three columns (a panel keeps its aspect and its
     text)."""
@@ -474,12 +540,9 @@ def grid_figure(group, found):
     from .largest_axis import draw_seen_along_z
 
     angle = group.axis == "largest"
-    y_name, y_label = ("p1", "$p_1$") if angle else ("q1", "$q_1$")
-    planes = [p for p in found if p.kind == "portrait"]
-    windows = [portrait.window_of(p.frame, y_name) for p in planes]
+    y_name, y_label, windows, share_y = _y_axis(group, found)
     body = any(p.kind == "body_view" for p in found)
     share_x = _same([hi - lo for lo, hi, _ in windows]) and not body
-    share_y = _same([y for _, _, y in windows]) and not body
     columns, rows = layout(len(found))
     spare = columns * rows > len(found)
     height = min(
@@ -532,6 +595,11 @@ def grid_figure(group, found):
             ax.tick_params(labelbottom=bottom or not share_x, labelleft=left or not share_y)
             elements |= set(panel.frame.element.unique())
         ax.set_title(panel.title, loc="left")
+    portraits = [ax for ax, p in zip(axes.flat, found) if p.kind == "portrait"]
+    if not share_y and not body:
+        _common_ticks(portraits, "y")
+    if not share_x and not body and not angle:  # an angle keeps its ticks in multiples of pi
+        _common_ticks(portraits, "x")
     for ax in list(axes.flat)[len(found) :]:
         ax.axis("off")
     handles, labels = portrait.legend_entries(elements, small=True)
@@ -574,7 +642,7 @@ TABLE_HEADERS = {
 
 def caption(group, found):
     lead = group.lead.replace(EULER, EULER + EDGE) if group.axis == "middle" else group.lead
-    return lead + " " + " ".join(f"({p.letter}) {p.text}" for p in found)
+    return lead + _taller(group, found) + " " + " ".join(f"({p.letter}) {p.text}" for p in found)
 
 
 # Lee's closed-form figures (no integration): the potential of the unperturbed plane (2.20), Figures 2.1 and

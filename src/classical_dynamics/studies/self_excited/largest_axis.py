@@ -471,12 +471,9 @@ def _series(results, m1, nu, phi_c, amplitudes, sphere=None):
     if sphere is not None:  # Lee §1.2: the frames and angles of (1.2), and this body's motion in space
         from . import space
 
-        fig = bare_figure(figsize=(TEXT_WIDTH_IN, 2.6), layout="constrained")
-        space.draw_frames(fig.add_subplot(1, 2, 1, projection="3d"))
-        space.draw_sphere(fig.add_subplot(1, 2, 2, projection="3d"), *sphere)
         results.figure(
             "space",
-            fig,
+            space.figure(*sphere),
             (
                 "Left: the frames and angles of Lee's Figures 1.1 and 1.2: space axes $X$, $Y$, $Z$ (grey), "
                 "body axes "
@@ -491,7 +488,8 @@ def _series(results, m1, nu, phi_c, amplitudes, sphere=None):
                 "integrated as a quaternion: the body's $x$-axis (blue) and $\\mathbf{L}/|\\mathbf{L}|$ "
                 "(green; starts marked) on the unit sphere; $\\mathbf{L}/|\\mathbf{L}|$ stays within "
                 f"{format_number(space.wander(sphere[1])[1], 2)}° of its mean direction, drawn magnified in "
-                "the inset (degrees in the plane tangent there). $\\boldsymbol{\\omega}$ is periodic in the "
+                "the small middle panel (degrees in the plane tangent there). $\\boldsymbol{\\omega}$ is "
+                "periodic in the "
                 "body, the motion in space is not."
             ),
         )

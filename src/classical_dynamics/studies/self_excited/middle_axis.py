@@ -15,6 +15,7 @@ the plane has it.
 from __future__ import annotations
 
 import numpy as np
+from scipy.optimize import brentq
 
 from ...figure_style import TEXT_WIDTH_IN
 from ...models import self_excited as se
@@ -90,7 +91,7 @@ def run(scene, results, quick):
     drawing.save(
         results,
         "What the portrait draws, point by point: each element (trajectory, separatrix or the "
-        "curve $C = 0$, line of rest points, Euler's equations mapped into the plane, singular point by "
+        "curve $c_1 = 0$, line of rest points, Euler's equations mapped into the plane, singular point by "
         "type, "
         "the window's corners) and its curve number, in $(\\varphi_2, q_1)$.",
     )
@@ -265,7 +266,7 @@ def _caption(M, drawing, points, m1, nu, plane_one, n_overlay):
     black = (
         "; black: the separatrix from the closed form"
         if "separatrix" in drawn
-        else "; black: the curve $C = 0$ of the closed form"
+        else "; black: the curve $c_1 = 0$ of the closed form"
         if "curve_C0" in drawn
         else ""
     )
@@ -412,7 +413,7 @@ def _singular_points(m, form, eps):
 
 
 def _separatrix(drawing, M, saddles, centers, lo, hi):
-    """Through the saddle or degenerate point; without one, Lee's F (C = 0) about the center of the
+    """Through the saddle or degenerate point; without one, Lee's F (c1 = 0 of (3.60)) about the center of the
     exponential form, or the lines q1 = +-sqrt(m/nu) of the rare case."""
     bounding = M.form == "exp" and centers or M.form == "rare" and M.m1 > 0
     if M.mu1 == 0.0 or not (saddles or bounding):
@@ -422,8 +423,20 @@ def _separatrix(drawing, M, saddles, centers, lo, hi):
         if saddles
         else 0.0
     )
+
+    def square(x):
+        return C * np.exp(2 * M.mu1 * x) + se.middle_g(x, M.m1, M.mu1, M.eps1, M.form)
+
     phi = np.linspace(lo, hi, 3001)
-    sq = C * np.exp(2 * M.mu1 * phi) + se.middle_g(phi, M.m1, M.mu1, M.eps1, M.form)
+    sq = square(phi)
+    # where q1^2 changes sign the curve turns at q1 = 0: that point is added, so the two halves meet there
+    # rather than a grid step short of the axis
+    turns = np.nonzero(np.sign(sq[:-1]) * np.sign(sq[1:]) < 0)[0]
+    roots = [brentq(square, phi[i], phi[i + 1], xtol=1e-14) for i in turns]
+    phi = np.r_[phi, roots]
+    sq = np.r_[sq, np.zeros(len(roots))]
+    order = np.argsort(phi, kind="stable")
+    phi, sq = phi[order], sq[order]
     for sign in (1, -1):
         drawing.curve(
             "separatrix" if saddles else "curve_C0",
@@ -441,7 +454,7 @@ def _escaping_start(M, centers, saddles):
     if saddles:
         return [saddles[0] - 0.3, 0.0]
     if M.form == "exp" and centers:
-        turn = np.log(M.m1 * (1 - 2 * M.mu1) / (-2 * M.mu1))  # C = 0 at q1 = 0
+        turn = np.log(M.m1 * (1 - 2 * M.mu1) / (-2 * M.mu1))  # c1 = 0 (Lee (3.60)) at q1 = 0
         return [turn + 0.3, 0.0]
     return [0.0, 0.0] if _turns_nowhere(M) else None
 

@@ -156,7 +156,7 @@ def middle_axis_unstable(results, M):
 
 
 def large_q0(results, M, m3s=(5.0, 50.0), factors=(1.01, 0.99)):
-    """Plane I with drag (Lee §3.4, Case 2): at the center phi2 = ln m3 the separatrix F (C = 0 of (3.60),
+    """Plane I with drag (Lee §3.4, Case 2): at the center phi2 = ln m3 the separatrix F (c1 = 0 of (3.60),
     q1^2 = m3/nu - 2 e^phi2/(1 + 2 nu)) has q1^2 = m3/(nu(1 + 2 nu)). Euler's equations from the center with
     q1 just above F (either sign) must leave every bound, just below must return (q crosses 0 twice):
     exceptions counted."""

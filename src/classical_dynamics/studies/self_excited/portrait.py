@@ -202,7 +202,7 @@ def axes_labels(ax, y_label, angle, phi2_range, x=True, y=True, most_ticks=9):
 ELEMENTS = {  # element: (plot keywords, legend label); the singular points are drawn by mark_points
     "trajectory": ({"color": "0.6", "lw": 0.55}, "trajectories of the plane"),
     "separatrix": ({"color": "k", "lw": 1.1}, "separatrices (closed form)"),
-    "curve_C0": ({"color": "k", "lw": 1.1}, "$C = 0$ (closed form)"),
+    "curve_C0": ({"color": "k", "lw": 1.1}, "$c_1 = 0$ (closed form)"),
     "limit_cycle_F": ({"color": LIMIT_CYCLE_COLOUR, "lw": 1.4}, "$F$ (stable limit cycle)"),
     "limit_cycle_F1": ({"color": LIMIT_CYCLE_COLOUR, "lw": 1.4, "ls": "--"}, "$F_1$ (unstable limit cycle)"),
     "rest_line": ({"color": LIMIT_CYCLE_COLOUR, "lw": 1.6}, "line of rest points"),

@@ -292,7 +292,8 @@ def case_one(results, V: ViscousMedium):
             ax.plot(y[0, 0], y[0, 1], ".", color="0.35", ms=3)
         ax.plot(limit[0], limit[1], "+", color="#D55E00", ms=9, mew=1.5)
         ax.set_title("Case I, friction", fontsize=8)
-        ax.set_xlabel("$p$")
+        ax.set_xlabel("$p$ (rad per time unit)")
+        ax.set_ylabel("$q$ (rad per time unit)")
         ax.set_aspect("equal", adjustable="datalim")
 
     def without(ax):
@@ -300,7 +301,8 @@ def case_one(results, V: ViscousMedium):
             ax.plot(y[:, 0], y[:, 1], color="0.35", lw=0.8)
             ax.plot(y[0, 0], y[0, 1], ".", color="0.35", ms=3)
         ax.set_title("Case I, no friction", fontsize=8)
-        ax.set_xlabel("$p$")
+        ax.set_xlabel("$p$ (rad per time unit)")
+        ax.set_ylabel("$q$ (rad per time unit)")
         ax.set_aspect("equal", adjustable="datalim")
 
     caption = (
@@ -422,7 +424,7 @@ def singular_curve(results, V: ViscousMedium):
         ax.plot(q_rot, points[:, 2], ".", color="0.35", ms=4)
         ax.plot(center_q, r0, "+", color="#D55E00", ms=9, mew=1.5)
         ax.set_xlabel("$q'$ (rad per time unit)")
-        ax.set_ylabel("$r'$")
+        ax.set_ylabel("$r'$ (rad per time unit)")
         ax.set_xlim(-3.0, 3.0)
 
     caption = (

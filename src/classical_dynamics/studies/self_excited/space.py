@@ -205,8 +205,10 @@ def wander(ls):
     return plane, float(np.degrees(np.arccos(np.clip(ls @ centre, -1.0, 1.0))).max())
 
 
-def draw_sphere(ax, xs, ls):
-    """The unit sphere (faint meridians), the body's x-axis and L/|L| in space, their starts marked."""
+def draw_sphere(ax, xs, ls, inset=None):
+    """The unit sphere (faint meridians), the body's x-axis and L/|L| in space, their starts marked; L/|L|
+    magnified in `inset`, axes of their own beside the sphere (without one, an inset left of the sphere's
+    axes, off the sphere)."""
     u = np.linspace(0.0, 2 * np.pi, 73)
     for lat in np.linspace(-60, 60, 5) * np.pi / 180:
         ax.plot(
@@ -224,10 +226,12 @@ def draw_sphere(ax, xs, ls):
     ax.scatter(*ls[0], color="#009E73", s=12, marker="s")
     # L/|L| wanders less than a marker's width on the sphere: an inset draws it magnified, in degrees
     plane, _ = wander(ls)
-    inset = ax.inset_axes([-0.12, 0.0, 0.36, 0.36])
+    if inset is None:
+        inset = ax.inset_axes([-0.5, 0.05, 0.36, 0.36])
     inset.plot(*plane.T, color="#009E73", lw=0.9)
     inset.plot(*plane[0], color="#009E73", marker="s", ms=3, ls="none")
-    inset.set_aspect("equal", adjustable="datalim")
+    inset.set_aspect("equal", adjustable="box")
+    inset.set_anchor("S")  # level with the sphere's lower half, where the frames' panel has no text
     inset.tick_params(labelsize=7.5, length=2, pad=1)
     inset.set_title("$\\mathbf{L}/|\\mathbf{L}|$ (°)", fontsize=7.5, pad=2)
     for k, name in enumerate("XYZ"):
@@ -242,6 +246,20 @@ def draw_sphere(ax, xs, ls):
         set_lim(-1.0, 1.0)
     ax.set_axis_off()
     ax.view_init(elev=15, azim=-35)
+
+
+def figure(xs, ls):
+    """Lee's frames and angles (left), the motion in space on the unit sphere (right) and, in a column of its
+    own between them, L/|L| magnified: beside the sphere, never on it."""
+    from ...figure_style import TEXT_WIDTH_IN
+    from ...results import bare_figure
+
+    fig = bare_figure(figsize=(TEXT_WIDTH_IN, 2.6), layout="constrained")
+    columns = fig.add_gridspec(1, 3, width_ratios=(1.0, 0.4, 1.0))
+    draw_frames(fig.add_subplot(columns[0], projection="3d"))
+    inset = fig.add_subplot(columns[1])
+    draw_sphere(fig.add_subplot(columns[2], projection="3d"), xs, ls, inset=inset)
+    return fig
 
 
 # (psi, theta, phi), chosen to show each
