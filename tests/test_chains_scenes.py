@@ -1,0 +1,98 @@
+"""The chains study's discrete analyses run directly on the report's own scenes (quick), in seconds, each
+checked against a closed form the module does not compute: Laguerre's zeros for the hanging particles,
+Lagrange's sine law for the loaded string and the spring chain, the determinant of two masses on three springs
+written out by hand, and the carbon dioxide molecule's textbook modes."""
+
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+import yaml
+from scipy.special import roots_laguerre
+
+from classical_dynamics.results import Results
+from classical_dynamics.studies.chains import discrete
+
+SCENES = Path(__file__).resolve().parents[1] / "workflow" / "scenes" / "chains"
+DISCRETE = sorted(
+    path.stem
+    for path in SCENES.glob("*.yaml")
+    if yaml.safe_load(path.read_text())["chain"]["model"] in ("particles", "links")
+)
+
+
+def run(name):
+    data = yaml.safe_load((SCENES / f"{name}.yaml").read_text())
+    results = Results("chains", name, name)
+    discrete.run(SimpleNamespace(name=name, title=name, data=data), results, True)
+    return (
+        data,
+        results,
+        {
+            k: np.asarray(v["value"]) if isinstance(v["value"], list) else v["value"]
+            for k, v in results.numbers.items()
+        },
+    )
+
+
+@pytest.mark.parametrize("name", DISCRETE)
+def test_every_discrete_scene_runs_and_its_hard_cases_hold(name):
+    """Every scene's frequencies are finite, non-negative and ascending, and its named hard cases hold."""
+    _, results, got = run(name)
+    w = np.asarray(got["frequencies_rad_per_s"])
+    assert w.size >= 2 and np.all(np.isfinite(w)) and np.all(w >= -1e-9) and np.all(np.diff(w) >= -1e-9)
+    assert all(case["holds"] for case in results.stability), [c for c in results.stability if not c["holds"]]
+
+
+def test_hanging_particles_are_laguerres_zeros():
+    """n equal particles hanging on a light string: sigma² a/g are the zeros of L_n (Lamb Art. 100)."""
+    data, _, got = run("hanging_particles")
+    n = data["chain"]["n"]
+    zeros = roots_laguerre(n)[0]
+    k = len(got["frequencies_sqrt_g_over_l"])
+    np.testing.assert_allclose(got["frequencies_sqrt_g_over_l"], np.sqrt(n * zeros[:k]), rtol=1e-10)
+
+
+def test_the_loaded_string_is_lagranges_sine_law():
+    """n particles of M/n at intervals a = l/(n + 1) under tension P: 2 sqrt(P/(m a)) sin(s pi/(2(n + 1)))."""
+    data, _, got = run("loaded_string")
+    n, M, l = data["chain"]["n"], data["chain"]["mass_kg"], data["chain"]["length_m"]
+    P = data["effects"]["tension"]["newton"]
+    s = np.arange(1, len(got["frequencies_rad_per_s"]) + 1)
+    exact = 2 * np.sqrt(P / ((M / n) * l / (n + 1))) * np.sin(s * np.pi / (2 * (n + 1)))
+    np.testing.assert_allclose(got["frequencies_rad_per_s"], exact, rtol=1e-10)
+
+
+def test_the_spring_chain_is_the_sine_law_too():
+    data, _, got = run("spring_chain")
+    n, m, k = (
+        data["chain"]["n"],
+        data["chain"]["mass_kg"] / data["chain"]["n"],
+        data["effects"]["springs"]["k_n_per_m"],
+    )
+    s = np.arange(1, len(got["frequencies_rad_per_s"]) + 1)
+    np.testing.assert_allclose(
+        got["frequencies_rad_per_s"], 2 * np.sqrt(k / m) * np.sin(s * np.pi / (2 * (n + 1))), rtol=1e-10
+    )
+
+
+def test_two_masses_on_three_springs_and_two_unequal_masses_by_their_determinants():
+    # equal masses 1, springs 1, 3, 1: in phase sqrt(k/m), out of phase sqrt(7k/m)
+    _, _, got = run("two_masses_three_springs")
+    np.testing.assert_allclose(got["frequencies_rad_per_s"][:2], [1.0, np.sqrt(7.0)], rtol=1e-12)
+    # masses 1 and 2, three unit springs: (2 - w²)(2 - 2w²) = 1, so w² = (3 -+ sqrt 3)/2
+    _, _, got = run("two_unequal_masses")
+    np.testing.assert_allclose(
+        got["frequencies_rad_per_s"][:2], np.sqrt([(3 - np.sqrt(3)) / 2, (3 + np.sqrt(3)) / 2]), rtol=1e-12
+    )
+
+
+def test_the_triatomic_molecule_has_a_translation_and_the_textbook_stretches():
+    """O-C-O on two springs k, free: 0, sqrt(k/m_O) (symmetric), sqrt(k/m_O (1 + 2 m_O/m_C)) (asymmetric)."""
+    data, _, got = run("triatomic_molecule")
+    mO, mC, _ = data["chain"]["masses_kg"]
+    k = data["effects"]["springs"]["k_n_per_m"]
+    w = got["frequencies_rad_per_s"][:3]
+    assert abs(w[0]) < 1e-6
+    np.testing.assert_allclose(w[1:], [np.sqrt(k / mO), np.sqrt(k / mO * (1 + 2 * mO / mC))], rtol=1e-10)
