@@ -20,7 +20,14 @@ from jinja2.ext import Extension
 from markupsafe import Markup
 
 from .. import io, scene_results
-from ..formatting import format_column, format_decimals, format_number, measured_and_bound, shortest
+from ..formatting import (
+    exact_figures,
+    format_column,
+    format_decimals,
+    format_number,
+    measured_and_bound,
+    shortest,
+)
 from ..inline_math import plain_text, render_markup, render_text
 from ..provenance import git_state, machine, package_versions, sha256_file
 from ..studies import STUDIES
@@ -188,6 +195,12 @@ class Report:
         # a column of deviations in one notation: 2.4 × 10⁻³ beside 3.0 × 10⁻⁴, never 0.0024 beside it
         self.env.filters["fmt_power"] = lambda v, sig=2: format_number(v, sig, fixed_range=(0, 1))
         self.env.filters["math"] = lambda text: Markup(render_text(str(text)))
+        # a check's bound as printed, but below 10⁻² as a power of ten (≤ 1 × 10⁻³ beside ≤ 1 × 10⁻¹³)
+        self.env.filters["bound"] = lambda v: (
+            format_number(v, exact_figures(float(v)), fixed_range=(-2, 5))
+            if isinstance(v, float) and 0 < abs(v) < 1e-2
+            else shortest(v)
+        )
         self.env.globals.update(
             num=self.num,
             value=self.value,

@@ -88,11 +88,11 @@ class ClaimResult:
 
     @property
     def expected_size(self) -> float | None:
-        """What the omitted effect is expected to change, relative to the source's value: (source - the
-        reference that omits it) / source. None unless the limit names such a reference."""
+        """The deviation a model that omits the effect is expected to show, in the deviation column's sense:
+        (the reference that omits it - source) / source. None unless the limit names such a reference."""
         if not self.expected or not self.source.get("value"):
             return None
-        return (self.source["value"] - self.expected["value"]) / self.source["value"]
+        return (self.expected["value"] - self.source["value"]) / self.source["value"]
 
     @property
     def anchor(self) -> str:
@@ -140,6 +140,10 @@ def shown_digits(claim: ClaimResult) -> int:
         digits = 3
     value = claim.computed
     if isinstance(value, float) and math.isfinite(value) and value != 0:
+        supported = digits
+        shown = float(f"{value:.{digits - 1}e}")
+        while digits > 1 and float(f"{value:.{digits - 2}e}") == shown:  # −1, not −1.0000000
+            digits -= 1
         deviation = claim.deviation
         if (
             isinstance(deviation, float)
@@ -147,14 +151,15 @@ def shown_digits(claim: ClaimResult) -> int:
             and reference
             and abs(deviation / reference) >= 1e-6
         ):
-            # a real difference: the figures the check supports (0.20, not 0.2, against 0.2276), and where
-            # they would read as the source's value rounded alike, one more (2.179 against 2.18)
-            if float(f"{value:.{digits - 1}e}") == float(f"{reference:.{digits - 1}e}"):
-                digits += 1
+            # a real difference shows: from the figure where ours and the source part, one more where they
+            # share the leading ones, so that the deviation reads back (0.00346 against 1/300, 0.204 against
+            # 0.2276, −1 against 1), but no more than one beyond what the check supports (2.179 at ±0.01)
+            part = next(
+                (d for d in range(1, 9) if float(f"{value:.{d - 1}e}") != float(f"{reference:.{d - 1}e}")), 8
+            )
+            digits = max(digits, min(part + 1 if part > 1 else part, supported + 1, 8))
         else:
-            shown = float(f"{value:.{digits - 1}e}")
-            while digits > 1 and float(f"{value:.{digits - 2}e}") == shown:
-                digits -= 1
+            digits = min(digits, 6)  # met to round-off: the deviation column says how closely
         if not value.is_integer():
             digits = max(digits, math.floor(math.log10(abs(value))) + 1)  # 305, not 310: no whole figure lost
         # ... and a bound is visibly met: 0.49999993 under ½, not 0.5 (no deviation column says it)
