@@ -6,7 +6,8 @@ and a check: {absolute: tol}, {relative: tol} or {factor: f} (within a factor f)
 {at_most: x} / {at_least: x} / {equals: x} on the computed value. A failing claim with must_hold: true fails
 the build. Optional: headline: true puts a claim in the report's key results; explanation says why a claim
 that may fail does (a failing claim without one fails the build: the report explains every failure it shows);
-ours_is: input (or reference) says that "ours" is a model input (or the reference's value), not a result.
+ours_is: input (or reference) says that "ours" is a model input (or the reference's value), not a result;
+source: derived: true, that the source's own value or form is lost or never printed and was derived here.
 A limit of the model says what the model omits (omits:) and may name a reference that omits the same
 (expected: {value, cite, what, text}, a rigid-Earth series beside the non-rigid one): the source's distance
 from it is the omitted effect's expected size.
@@ -49,6 +50,12 @@ def count_by_kind(claims) -> str:
         n = sum(1 for claim in claims if claim.kind == kind)
         if n:
             parts.append(f"{n} {one if n == 1 else many}")
+        derived = sum(1 for claim in claims if claim.kind == kind and claim.source.get("derived"))
+        if derived:  # the source's own value or form is lost or was never printed: we derived what it implies
+            parts[-1] += (
+                f" ({derived} of them against a value or form derived here, the source's own being lost or "
+                "never printed)"
+            )
         # a source's value set beside today's (ours_is: input or reference) checks no result of ours: say so
         beside = sum(1 for claim in claims if claim.kind == kind and claim.ours_is)
         if beside:
