@@ -163,6 +163,9 @@ def a_claim(computed, source: dict, check: dict, deviation=0.0) -> claims.ClaimR
         ({"absolute": 1.7}, 433.1, 432.61, "432.6"),  # not "433", which reads as 433.1 rounded
         ({"relative": 0.003}, 50.385, 50.4001, "50.40"),  # not "50.4", which would read as 50.385 rounded
         ({"relative": 0.02}, 300.0, 305.47, "305"),  # no whole figure rounded away (not 310)
+        ({"relative": 0.005}, 0.5518, 0.54963, "0.550"),  # the figures its check supports, zeros and all
+        ({"relative": 1e-8}, 1.0, -1.0, "−1"),  # a sign against the source's: −1, not −1.0000000
+        ({"relative": 0.05}, 1 / 300, 0.0034609, "0.00346"),  # 0.0035 would read back as +5 %, not +3.8 %
         ({"relative": 1e-8}, 0.288675134594813, 0.28867513459485, "0.288675"),  # 1e-13: the column says it
         ({"at_most": 0.5}, 0.5, 0.49999992538819, "0.49999993"),  # under ½, not "0.5"
         ({"at_least": 10}, None, 9730.91, "9731"),  # far from its bound: the figures its check supports

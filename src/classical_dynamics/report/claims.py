@@ -149,15 +149,14 @@ def shown_digits(claim: ClaimResult) -> int:
     if isinstance(value, float) and math.isfinite(value) and value != 0:
         supported = digits
         shown = float(f"{value:.{digits - 1}e}")
-        while digits > 1 and float(f"{value:.{digits - 2}e}") == shown:  # −1, not −1.0000000
-            digits -= 1
-        deviation = claim.deviation
-        if (
-            isinstance(deviation, float)
-            and isinstance(reference, (int, float))
-            and reference
-            and abs(deviation / reference) >= 1e-6
-        ):
+        trimmed = digits
+        while trimmed > 1 and float(f"{value:.{trimmed - 2}e}") == shown:  # −1, not −1.0000000
+            trimmed -= 1
+        # a real difference keeps the figures its check supports (0.550, 0.20), save a whole number's zeros
+        real = isinstance(claim.deviation, float) and isinstance(reference, (int, float)) and bool(reference)
+        real = real and abs(claim.deviation / reference) >= 1e-6
+        digits = supported if real and not shown.is_integer() else trimmed
+        if real:
             # a real difference shows: from the figure where ours and the source part, one more where they
             # share the leading ones, so that the deviation reads back (0.00346 against 1/300, 0.204 against
             # 0.2276, −1 against 1), but no more than one beyond what the check supports (2.179 at ±0.01)
