@@ -158,7 +158,7 @@ def a_claim(computed, source: dict, check: dict, deviation=0.0) -> claims.ClaimR
         # the figures the check supports, one more only where they would read as the source's value rounded
         # alike: the deviation column, not a string of digits, says by how much
         ({"absolute": 0.3}, 4.0, 3.968, "3.97"),  # Lee's slope: not "4.0" beside a deviation of −3.2 × 10⁻²
-        ({"absolute": 0.3}, 4.0, 4.0027, "4.00"),  # nor 4.0027 for a check of ±0.3
+        ({"absolute": 0.3}, 4.0, 4.0027, "4.003"),  # its +0.0027 reads back; not 4.0027 at ±0.3
         ({"absolute": 0.01}, 2.18, 2.17924, "2.179"),  # Lamb's ratio: not 2.17924
         ({"absolute": 1.7}, 433.1, 432.61, "432.6"),  # not "433", which reads as 433.1 rounded
         ({"relative": 0.003}, 50.385, 50.4001, "50.40"),  # not "50.4", which would read as 50.385 rounded
@@ -166,6 +166,8 @@ def a_claim(computed, source: dict, check: dict, deviation=0.0) -> claims.ClaimR
         ({"relative": 0.005}, 0.5518, 0.54963, "0.550"),  # the figures its check supports, zeros and all
         ({"relative": 1e-8}, 1.0, -1.0, "−1"),  # a sign against the source's: −1, not −1.0000000
         ({"relative": 0.05}, 1 / 300, 0.0034609, "0.00346"),  # 0.0035 would read back as +5 %, not +3.8 %
+        ({"absolute": 0.01}, 5.15, 5.14496, "5.145"),  # 5.14 would read back as −0.01, not −0.005
+        ({"absolute": 0.1}, 6.3832, 6.3866, "6.387"),  # 6.39 would read back as +0.007, not +0.0034
         ({"relative": 1e-8}, 0.288675134594813, 0.28867513459485, "0.288675"),  # 1e-13: the column says it
         ({"at_most": 0.5}, 0.5, 0.49999992538819, "0.49999993"),  # under ½, not "0.5"
         ({"at_least": 10}, None, 9730.91, "9731"),  # far from its bound: the figures its check supports

@@ -164,6 +164,12 @@ def shown_digits(claim: ClaimResult) -> int:
                 (d for d in range(1, 9) if float(f"{value:.{d - 1}e}") != float(f"{reference:.{d - 1}e}")), 8
             )
             digits = max(digits, min(part + 1 if part > 1 else part, supported + 1, 8))
+            # ... and until the deviation reads back from the figures shown to within half (5.145 against
+            # 5.15 beside −0.0050, not 5.14), at most two beyond the check's
+            while digits < min(supported + 2, 8) and abs(
+                float(f"{value:.{digits - 1}e}") - reference - claim.deviation
+            ) > 0.5 * abs(claim.deviation):
+                digits += 1
         else:
             digits = min(digits, 6)  # met to round-off: the deviation column says how closely
         if not value.is_integer():

@@ -138,6 +138,12 @@ def _first_kind(results, L, params, m1):
         "time units",
         note="the same start along Euler's equations: when φ2 = 2√(bc) ∫p dt reaches 10π",
     )
+    results.number(
+        "euler_quadrature_time_relative_difference",
+        abs(t_euler / t_quad - 1.0),
+        "1",
+        note="|the time along Euler's equations over the quadrature's, less one| (full doubles)",
+    )
     p_half, p_end = sol.y_eval[:, 0]
     rate = (p_end - p_half) / (t[1] - t[0])
     results.number(
@@ -236,6 +242,12 @@ def _closed_orbit_period(results, L, params, m1, phi_c):
         period_euler,
         "time units",
         note="ω's return time along Euler's equations (two upward crossings of p = 0)",
+    )
+    results.number(
+        "closed_orbit_period_relative_difference",
+        abs(period_euler / period_quad - 1.0),
+        "1",
+        note="|the return time along Euler's equations over the line integral's, less one| (full doubles)",
     )
     results.number(
         "closed_orbit_return",
