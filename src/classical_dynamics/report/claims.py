@@ -9,8 +9,8 @@ that may fail does (a failing claim without one fails the build: the report expl
 ours_is: input (or reference) says that "ours" is a model input (or the reference's value), not a result;
 source: derived: true, that the source's own value or form is lost or never printed and was derived here.
 A limit of the model says what the model omits (omits:) and may name a reference that omits the same
-(expected: {value, cite, what, text}, a rigid-Earth series beside the non-rigid one): the source's distance
-from it is the omitted effect's expected size.
+(expected: {value, cite, what, text}, a rigid-Earth series beside the non-rigid one): its distance from the
+source's value is the deviation a model without the effect is expected to show.
 """
 
 from __future__ import annotations
@@ -129,9 +129,10 @@ class ClaimResult:
 
 
 def shown_digits(claim: ClaimResult) -> int:
-    """The figures a claim's computed value is shown to: what its check supports, less trailing zeros
-    (−1.0000000 for a sign, 60.000000 for an angle met to round-off say nothing that the deviation column
-    does not say better), but never so few that ours reads as the source's value when it is not."""
+    """The figures a claim's computed value is shown to. Met to round-off: what its check supports, less
+    trailing zeros, six at most (the deviation column says how closely). A real difference: what its check
+    supports (a whole number without its zeros: −1, not −1.0000000), and enough more that the deviation reads
+    back from the figures shown, at most two beyond the check's."""
     check = claim.check
     reference = claim.source.get("value")
     # At most 8: a tighter agreement than that is read from the deviation column, not from digits.
@@ -148,9 +149,9 @@ def shown_digits(claim: ClaimResult) -> int:
     value = claim.computed
     if isinstance(value, float) and math.isfinite(value) and value != 0:
         supported = digits
-        shown = float(f"{value:.{digits - 1}e}")
+        shown = _rounded(value, digits)
         trimmed = digits
-        while trimmed > 1 and float(f"{value:.{trimmed - 2}e}") == shown:  # −1, not −1.0000000
+        while trimmed > 1 and _rounded(value, trimmed - 1) == shown:  # −1, not −1.0000000
             trimmed -= 1
         # a real difference keeps the figures its check supports (0.550, 0.20), save a whole number's zeros
         real = isinstance(claim.deviation, float) and isinstance(reference, (int, float)) and bool(reference)
@@ -160,14 +161,12 @@ def shown_digits(claim: ClaimResult) -> int:
             # a real difference shows: from the figure where ours and the source part, one more where they
             # share the leading ones, so that the deviation reads back (0.00346 against 1/300, 0.204 against
             # 0.2276, −1 against 1), but no more than one beyond what the check supports (2.179 at ±0.01)
-            part = next(
-                (d for d in range(1, 9) if float(f"{value:.{d - 1}e}") != float(f"{reference:.{d - 1}e}")), 8
-            )
+            part = next((d for d in range(1, 9) if _rounded(value, d) != _rounded(reference, d)), 8)
             digits = max(digits, min(part + 1 if part > 1 else part, supported + 1, 8))
             # ... and until the deviation reads back from the figures shown to within half (5.145 against
             # 5.15 beside −0.0050, not 5.14), at most two beyond the check's
             while digits < min(supported + 2, 8) and abs(
-                float(f"{value:.{digits - 1}e}") - reference - claim.deviation
+                _rounded(value, digits) - reference - claim.deviation
             ) > 0.5 * abs(claim.deviation):
                 digits += 1
         else:
@@ -180,6 +179,11 @@ def shown_digits(claim: ClaimResult) -> int:
             needed = math.floor(math.log10(abs(value))) - math.floor(math.log10(abs(value - bound))) + 1
             digits = max(digits, min(needed, 8))
     return digits
+
+
+def _rounded(value: float, figures: int) -> float:
+    """The value rounded to `figures` significant figures, as it would be shown."""
+    return float(f"{value:.{figures - 1}e}")
 
 
 _NUMBER = re.compile(r"\d+(?:[ \u2009\u202f]\d{3})*(?:\.\d+)?|\.\d+")  # 25 722, 50.385, Lamb's .00327
