@@ -281,6 +281,20 @@ def test_inline_math_typesets_and_flattens():
     assert "</span>(" in inline_math.render_text("$\\operatorname{arcoth}(x)$")
 
 
+def test_prose_quotes_turn_and_references_hold_together():
+    html = inline_math.render_text('about $e$ "with angular velocity $\\Omega$" $= 1$ (Ex. XI.1, Arts. 96)')
+    assert "“with angular velocity" in html and "</span>” " in html and '"' not in html
+    assert "<span class=nw>Ex.\u00a0XI.1</span>" in html and "<span class=nw>Arts.\u00a096</span>" in html
+
+
+def test_plain_text_keeps_scripts_readable():
+    # a CSV or an alt text reads ω₃², not ω32; a script with no Unicode form is marked, a radicand bracketed
+    flat = inline_math.plain_text(
+        "$\\omega_3^2$, $e^{-\\nu t}$, $\\sqrt{g/a}$, $\\Omega_\\mathrm{b}$, $10^{-6}$"
+    )
+    assert flat == "ω₃², e^(−ν t), √(g/a), Ω_b, 10⁻⁶"
+
+
 # ---- verify.py in-process: diff of two tiny builds, an archive checked whole and refused once tampered
 
 

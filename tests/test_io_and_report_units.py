@@ -139,6 +139,11 @@ def test_claim_digits_follow_the_check(check, value, figures):
         ({"absolute": 1e-6}, 60.0, 1),  # an angle met to round-off: 60 (one figure), not 60.000000
         ({"relative": 1e-8}, 1.2345678901, 6),  # met to round-off: six figures, the deviation says the rest
         ({"relative": 0.01}, 306.04, 3),
+        (
+            {"absolute": 1e-6},
+            1.0e-7,
+            2,
+        ),  # a residual: 1.0 × 10⁻⁷, which an order of magnitude 1 × 10⁻⁷ is not
     ],
 )
 def test_a_claims_value_shows_no_string_of_zeros(check, value, figures):
@@ -176,6 +181,25 @@ def a_claim(computed, source: dict, check: dict, deviation=0.0) -> claims.ClaimR
 def test_ours_never_reads_as_the_sources_value_when_it_differs(check, source, value, shown):
     bound = "at_most" in check or "at_least" in check  # a bound has no deviation
     claim = a_claim(value, {"value": source}, check, None if bound else value - source)
+    assert format_number(value, claims.shown_digits(claim)) == shown
+
+
+@pytest.mark.parametrize(
+    "text,check,value,shown",
+    [
+        # ours agrees with every figure the source prints: one figure past the source's, no more (the
+        # deviation column says the rest), not 1.757095, which read as a claim of seven figures
+        ("1.7571", {"absolute": 5e-5}, 1.7570954, "1.75710"),
+        (".7655", {"absolute": 5e-5}, 0.76547979, "0.76548"),
+        # ... and a source's figure that ours does not meet still shows where they part
+        ("2.18", {"absolute": 0.01}, 2.17924, "2.179"),
+        # ... or where one more is needed for the deviation to read back (not 5.2251 beside 5.5 × 10⁻⁵)
+        ("5.225", {"absolute": 5e-4}, 5.2250551, "5.22506"),
+    ],
+)
+def test_ours_met_in_every_printed_figure_stops_one_past_them(text, check, value, shown):
+    source = float(text)
+    claim = a_claim(value, {"value": source, "text": text}, check, value - source)
     assert format_number(value, claims.shown_digits(claim)) == shown
 
 

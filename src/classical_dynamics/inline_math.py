@@ -346,14 +346,30 @@ def math_html(source: str) -> str:
 
 
 def render_text(text: str) -> str:
-    """Plain text with $...$ as HTML: the text escaped, the math converted."""
+    """Plain text with $...$ as HTML: the text escaped, the math converted, straight double quotes turned
+    (“…”), and a reference (Ex. XI.1, Art. 29) kept on one line."""
     out, last = [], 0
     for match in _INLINE.finditer(text):
-        out.append(html.escape(text[last : match.start()], quote=False))
+        out.append(_prose(text[last : match.start()], text[last - 1 : last]))
         out.append(math_html(match.group(1)))
         last = match.end()
-    out.append(html.escape(text[last:], quote=False))
+    out.append(_prose(text[last:], text[last - 1 : last]))
     return _GLUE.sub("\\1\u00a0\\2\u00a0", "".join(out)).replace("\\$", "$")
+
+
+_REFERENCE = re.compile(r"\b((?:Exs?|Arts?|eqs?|Fig|Figs)\.) ([IVXL]+\.\d+|\d+)")
+
+
+def _prose(text: str, before: str) -> str:
+    """Text between formulas: escaped; a quote opens after a space, a bracket or the start, else closes."""
+    chars = []
+    for i, char in enumerate(text):
+        if char == '"':
+            previous = text[i - 1] if i else before
+            char = "\u201c" if previous in ("", " ", "(", "[", "\n", "\u00a0") else "\u201d"
+        chars.append(char)
+    escaped = html.escape("".join(chars), quote=False)
+    return _REFERENCE.sub("<span class=nw>\\1\u00a0\\2</span>", escaped)
 
 
 def render_markup(markup: str) -> str:
@@ -361,6 +377,30 @@ def render_markup(markup: str) -> str:
     return _INLINE.sub(lambda m: math_html(m.group(1)), markup)
 
 
+_SCRIPTS = {
+    "sub": str.maketrans("0123456789+−=()aeoxhklmnpst", "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₒₓₕₖₗₘₙₚₛₜ"),
+    "sup": str.maketrans("0123456789+−=()in", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼⁽⁾ⁱⁿ"),
+}
+_SCRIPT_CHARS = {kind: {chr(code) for code in table.values()} for kind, table in _SCRIPTS.items()}
+
+
+def _script(match: re.Match) -> str:
+    """A sub- or superscript as its Unicode characters (ω₃², not ω32), or _x / ^(x y) where one has none."""
+    kind, body = match.group(1), html.unescape(re.sub(r"<[^>]+>", "", match.group(2)))
+    scripted = body.translate(_SCRIPTS[kind])
+    if set(scripted) <= _SCRIPT_CHARS[kind]:
+        return scripted
+    return ("_" if kind == "sub" else "^") + (body if len(body) == 1 else f"({body})")
+
+
+def _radicand(match: re.Match) -> str:
+    body = html.unescape(re.sub(r"<[^>]+>", "", match.group(1)))
+    return body if len(body) == 1 else f"({body})"  # √(g/a), not √g/a
+
+
 def plain_text(text: str) -> str:
-    """$...$ as readable plain text (alt attributes, PDF bookmarks): tags dropped, math kept."""
-    return html.unescape(re.sub(r"<[^>]+>", "", render_text(text)))
+    """$...$ as readable plain text (alt attributes, PDF bookmarks, CSV): tags dropped, math kept, scripts
+    as Unicode scripts where they exist."""
+    text = re.sub(r"<(sub|sup)>((?:(?!</?\1>).)*)</\1>", _script, render_text(text))
+    text = re.sub(r"<span class=radicand>((?:(?!</?span).)*)</span>", _radicand, text)
+    return html.unescape(re.sub(r"<[^>]+>", "", text))

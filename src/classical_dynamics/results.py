@@ -187,7 +187,11 @@ class Results:
         if self.stability:  # the hard cases as a table too: the report links it
             import pandas as pd
 
-            files["hard_cases.csv"] = io.csv_text(pd.DataFrame(self.stability)).encode()
+            from .inline_math import plain_text
+
+            # the CSV is read as it is: its descriptions as readable text (κ(1/A − 1/C)), not LaTeX source
+            rows = [{**case, "description": plain_text(case["description"])} for case in self.stability]
+            files["hard_cases.csv"] = io.csv_text(pd.DataFrame(rows)).encode()
         files.update(
             {
                 f"{k}.csv": io.csv_text(data).encode()

@@ -22,7 +22,7 @@ from pathlib import Path
 
 import yaml
 
-from ..formatting import exact_figures, format_number, sig_for_tolerance
+from ..formatting import exact_figures, format_number, needs_power_of_ten, sig_for_tolerance
 
 
 class ClaimFailure(RuntimeError):
@@ -144,30 +144,43 @@ def shown_digits(claim: ClaimResult) -> int:
         )
     elif "factor" in check:
         digits = 2
-    else:
-        digits = 3
+    else:  # a bound: three figures, two of a residual (6.0 × 10⁻¹³ under 10⁻¹⁰)
+        digits = 2 if needs_power_of_ten(claim.computed, 2) else 3
     value = claim.computed
     if isinstance(value, float) and math.isfinite(value) and value != 0:
         supported = digits
         shown = _rounded(value, digits)
         trimmed = digits
-        while trimmed > 1 and _rounded(value, trimmed - 1) == shown:  # −1, not −1.0000000
+        # −1, not −1.0000000; but a residual keeps two (1.0 × 10⁻⁷, not an order of magnitude 1 × 10⁻⁷)
+        least = 2 if needs_power_of_ten(value, digits) else 1
+        while trimmed > least and _rounded(value, trimmed - 1) == shown:
             trimmed -= 1
         # a real difference keeps the figures its check supports (0.550, 0.20), save a whole number's zeros
         real = isinstance(claim.deviation, float) and isinstance(reference, (int, float)) and bool(reference)
         real = real and abs(claim.deviation / reference) >= 1e-6
         digits = supported if real and not shown.is_integer() else trimmed
-        if real:
+        printed = _printed_figures(claim)
+        agrees = real and printed and _rounded(value, printed) == _rounded(reference, printed)
+        if agrees:
+            # ours agrees with every figure the source prints (1.757095 against Lamb's 1.7571): one figure
+            # past the source's, at most one beyond what the check supports (the deviation says the rest)
+            digits = max(min(printed + 1, supported + 1), trimmed if shown.is_integer() else 1)
+        elif real:
             # a real difference shows: from the figure where ours and the source part, one more where they
             # share the leading ones, so that the deviation reads back (0.00346 against 1/300, 0.204 against
             # 0.2276, −1 against 1), but no more than one beyond what the check supports (2.179 at ±0.01)
             part = next((d for d in range(1, 9) if _rounded(value, d) != _rounded(reference, d)), 8)
             digits = max(digits, min(part + 1 if part > 1 else part, supported + 1, 8))
+        if real:
             # ... and until the deviation reads back from the figures shown to within half (5.145 against
-            # 5.15 beside −0.0050, not 5.14), at most two beyond the check's
-            while digits < min(supported + 2, 8) and abs(
-                _rounded(value, digits) - reference - claim.deviation
-            ) > 0.5 * abs(claim.deviation):
+            # 5.15 beside −0.0050, not 5.14; 5.22506 against 5.225, not 5.2251), or the figures shown are
+            # the source's (1.75710: the deviation, under the last of them, says they agree in all), at most
+            # two beyond the check's
+            while (
+                digits < min(supported + 2, 8)
+                and not (agrees and _rounded(value, digits) == _rounded(reference, digits))
+                and abs(_rounded(value, digits) - reference - claim.deviation) > 0.5 * abs(claim.deviation)
+            ):
                 digits += 1
         else:
             digits = min(digits, 6)  # met to round-off: the deviation column says how closely
@@ -179,6 +192,15 @@ def shown_digits(claim: ClaimResult) -> int:
             needed = math.floor(math.log10(abs(value))) - math.floor(math.log10(abs(value - bound))) + 1
             digits = max(digits, min(needed, 8))
     return digits
+
+
+def _printed_figures(claim: ClaimResult) -> int:
+    """The significant figures of the number the source prints alone ("1.7571": 5, ".7655": 4); 0 when its
+    text is no bare number (a symbol, a formula, words)."""
+    text = str(claim.source.get("text", "")).strip()
+    if not _NUMBER.fullmatch(text):
+        return 0
+    return len(re.sub(r"\D", "", text).lstrip("0")) or 1
 
 
 def _rounded(value: float, figures: int) -> float:
