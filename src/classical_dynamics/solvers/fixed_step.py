@@ -150,13 +150,13 @@ def _rattle_run(problem, h, n_steps, every):
 
 
 def _rigid_check(name, n_params, exact=False):
-    def check(problem):
-        _need(problem.y0.size == 7, name, f"the state is (m, q): 7 numbers, got {problem.y0.size}")
-        size = problem.params.size
+    def check(problem):  # in plain Python on lists: a few numbers, checked at every call
+        y, size = problem.y0.tolist(), problem.params.size
+        _need(len(y) == 7, name, "the state is (m, q): 7 numbers")
         _need(size == n_params if exact else size >= n_params, name, f"params: {n_params} moments of inertia")
-        _need(np.all(problem.params[:n_params] > 0), name, "the moments of inertia must be positive")
+        _need(min(problem.params[:n_params].tolist()) > 0, name, "the moments of inertia must be positive")
         _need(
-            abs(np.linalg.norm(problem.y0[3:]) - 1) < 1e-12,
+            abs(math.sqrt(sum(c * c for c in y[3:])) - 1) < 1e-12,
             name,
             "the attitude quaternion must be a unit one",
         )
@@ -243,7 +243,11 @@ def solve_fixed(
     if save.final:
         t_eval, rows = _NO_TIMES, rows[:0]
     else:
-        t_eval = t0 + h * (every * np.arange(rows.shape[0]))  # the kernels' clock: step index times h
+        # the kernels' clock: the step's index (exact in a double) times h, one rounding
+        t_eval = np.arange(0, every * rows.shape[0], every, dtype=float)
+        t_eval *= h
+        if t0:
+            t_eval += t0
     empty = rows[:0]
     return Solution(
         "success",
