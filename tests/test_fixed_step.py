@@ -320,3 +320,50 @@ def test_bad_inputs_are_refused():
         "symmetric-torqued2",
         "symmetric-torqued4",
     }
+
+
+# --- one door: no study calls a kernel ----------------------------------------------------------------------
+
+KERNELS = {
+    "symplectic": {"integrate"},
+    "rattle": {"integrate", "rattle_step"},
+    "rigid_body": {
+        "integrate_free",
+        "integrate_torqued",
+        "integrate_symmetric_torqued",
+        "free_composed",
+        "step",
+    },
+}
+
+
+def kernel_calls(source):
+    """(module, name) of every use of a fixed-step kernel in `source`, as an attribute or imported by name."""
+    import ast
+
+    found = []
+    for node in ast.walk(ast.parse(source)):
+        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
+            if node.attr in KERNELS.get(node.value.id, ()):
+                found.append((node.value.id, node.attr))
+        elif isinstance(node, ast.ImportFrom) and node.module:
+            module = node.module.rsplit(".", 1)[-1]
+            found += [(module, a.name) for a in node.names if a.name in KERNELS.get(module, ())]
+    return found
+
+
+def test_no_study_calls_a_fixed_step_kernel():
+    from pathlib import Path
+
+    import classical_dynamics.studies as studies
+
+    assert kernel_calls("from ...solvers import rattle\nrattle.integrate(q, p)") == [("rattle", "integrate")]
+    assert kernel_calls("from ...solvers.rigid_body import integrate_free") == [
+        ("rigid_body", "integrate_free")
+    ]
+    assert kernel_calls("rigid_body.rotate_to_space(q, m)\nrattle.crossing_frequency(x, h)") == []
+    root = Path(studies.__file__).parent
+    files = sorted(root.rglob("*.py"))
+    assert len(files) > 20
+    calls = {str(f.relative_to(root)): kernel_calls(f.read_text()) for f in files}
+    assert {f: c for f, c in calls.items() if c} == {}
