@@ -275,8 +275,12 @@ def test_bad_inputs_are_refused():
             Save(every=every)
     with pytest.raises(ValueError, match="final state only"):
         Save(every=3, final=True)
-    with pytest.raises(ValueError, match="not finite"):
+    with pytest.raises(ValueError, match="initial state is not finite"):
         FixedProblem(rigid_body.packed([np.nan, 0.0, 1.0]), I3)
+    with pytest.raises(ValueError, match="parameters are not finite"):
+        FixedProblem(rigid_body.packed(M0), [1.0, np.inf, 3.0])
+    with pytest.raises(ValueError, match="start time is not finite"):
+        FixedProblem(rigid_body.packed(M0), I3, t0=np.nan)
     with pytest.raises(ValueError, match="7 numbers"):
         solve_fixed(FixedProblem(M0, I3), "rigid-splitting2", h=0.1, n_steps=10)
     with pytest.raises(ValueError, match="unit"):

@@ -79,6 +79,8 @@ class FixedProblem:
             raise ValueError(f"the state must be one non-empty vector, got shape {self.y0.shape}")
         if not np.isfinite(self.y0).all():
             raise ValueError(f"initial state is not finite: {self.y0}")
+        if not np.isfinite(self.params).all():
+            raise ValueError(f"parameters are not finite: {self.params}")
         if not np.isfinite(self.t0):
             raise ValueError(f"start time is not finite: {self.t0}")
 
