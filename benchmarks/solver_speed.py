@@ -10,15 +10,19 @@ specialize=True compiles that loop for the one right-hand side (a second or so, 
    the limit for an adaptive DOP853, which pays for its error estimate and its rejected steps.
 2. A batch of 1000 trajectories in one compiled call against 1000 calls one at a time (ours, and
    solve_ivp's).
+3. The fixed-step door (fixed_step.solve_fixed) against its kernels called directly, the same steps: what the
+   door's checks and packing cost, long runs and short ones.
 Times are minima over repeated runs after a warm-up.
 
     python benchmarks/solver_speed.py
+    python benchmarks/solver_speed.py --door           # part 3 only
     python benchmarks/solver_speed.py --against REV    # the compiled paths here and at commit REV
 
 With --against, the same calls through the public interface (solve, solve_batch) are timed in this tree and in
 a git worktree of REV, each in processes of its own, alternating three times (the minimum of each is kept, so
 that a change in the machine's load falls on both): the final-state loop (plain and specialized), the full
-loop (dense output, events), and the batches.
+loop (dense output, events), and the batches; and geometric fixed-step methods through the fixed-step door
+(through the functions it replaced where a tree has no door).
 """
 
 from __future__ import annotations
@@ -210,6 +214,64 @@ def batch(count=1000):
     return out
 
 
+def door_against_kernels():
+    """(label, seconds through the door, seconds of its kernel called directly), side by side, one process."""
+    from classical_dynamics.models import linear
+    from classical_dynamics.solvers import rattle, rigid_body, symplectic
+    from classical_dynamics.solvers.fixed_step import FixedProblem, Save, solve_fixed
+
+    I, m0, q0 = ref.HNW_I, ref.HNW_I * ref.HNW_Y0, np.array([1.0, 0.0, 0.0, 0.0])
+    body = FixedProblem(rigid_body.packed(m0, q0), I)
+    oscillator = FixedProblem([1.0, 0.0], [1.0], linear.harmonic_force)
+    n = 4
+    a = 1.0 / n
+    chain_q = rattle.positions_from_angles(np.full(n, 0.3), a)
+    chain = FixedProblem(np.concatenate([chain_q.ravel(), np.zeros(2 * n)]), np.r_[a, 9.81, np.full(n, a)])
+    one, v0, p0, masses = np.array([1.0]), np.array([0.0]), np.zeros((n, 2)), np.full(n, a)
+    cases = []
+    for steps, label in ((100_000, "100000 steps"), (100, "100 steps")):
+        cases += [
+            (
+                f"rigid-splitting4, {label}, final state",
+                lambda k=steps: solve_fixed(
+                    body, "rigid-splitting4", h=0.01, n_steps=k, save=Save(final=True)
+                ),
+                lambda k=steps: rigid_body.integrate_free(I, m0, q0, 0.01, k, 4, k),
+            ),
+            (
+                f"rigid-splitting2, {label}, every 10th saved",
+                lambda k=steps: solve_fixed(body, "rigid-splitting2", h=0.01, n_steps=k, save=Save(every=10)),
+                lambda k=steps: rigid_body.integrate_free(I, m0, q0, 0.01, k, 2, 10),
+            ),
+            (
+                f"stormer-verlet, {label}, every step saved",
+                lambda k=steps: solve_fixed(oscillator, "stormer-verlet", h=0.01, n_steps=k),
+                lambda k=steps: symplectic.integrate(linear.harmonic_force, one, one, v0, 0.01, k, 2, 1),
+            ),
+            (
+                f"rattle (4 particles), {label}, every 10th",
+                lambda k=steps: solve_fixed(chain, "rattle", h=1e-3, n_steps=k, save=Save(every=10)),
+                lambda k=steps: rattle.integrate(chain_q, p0, masses, a, 9.81, 1e-3, k, 10),
+            ),
+        ]
+    out = []
+    for label, door, kernel in cases:
+        door(), kernel()  # compiled (or loaded) first
+        best = {"door": np.inf, "kernel": np.inf}
+        for _ in range(3):  # alternating, so that a change in the machine's load falls on both
+            best["door"] = min(best["door"], min_time(door, repeats=20, budget_s=0.5)[0])
+            best["kernel"] = min(best["kernel"], min_time(kernel, repeats=20, budget_s=0.5)[0])
+        out.append((label, best["door"], best["kernel"]))
+    return out
+
+
+def print_door():
+    print("The fixed-step door against its kernels called directly (the same steps; minima, alternating):")
+    print(f"  {'method and run':50s} {'door':>11s} {'kernel':>11s} {'ratio':>7s}")
+    for label, door, kernel in door_against_kernels():
+        print(f"  {label:50s} {door * 1e6:8.1f} us {kernel * 1e6:8.1f} us {door / kernel:7.3f}")
+
+
 def main():
     start = time.perf_counter()
     solve(HNW, "dop853", rtol=1e-8, atol=1e-11)
@@ -270,6 +332,8 @@ def main():
         "  batch (specialized) vs ours one at a time (spec.): "
         f"{per['ours, one call each, specialized'] / best_batch:6.1f}x"
     )
+    print()
+    print_door()
 
 
 # The compiled paths, through the public interface only (the same in every commit since it was written).
@@ -309,17 +373,77 @@ print(json.dumps(out))
 """
 
 
+# Geometric fixed-step methods: through the door where the tree has one, else through the functions it
+# replaced (same kernels, same steps): the door's cost and the kernels' speed against a tree from before it.
+FIXED_PATHS = """
+import json
+import numpy as np
+from classical_dynamics.models import earth
+from classical_dynamics.models import precession as prec
+from classical_dynamics.solvers import rattle, rigid_body, symplectic
+from classical_dynamics.solvers import references as ref
+from classical_dynamics.solvers.timing import min_time
+
+I, m0, q0 = ref.HNW_I, ref.HNW_I * ref.HNW_Y0, np.array([1.0, 0.0, 0.0, 0.0])
+model = prec.assemble(earth.H_P03, 84381.406 * earth.ARCSEC, prec.modern(),
+                      {e: {} for e in ("solar_torque", "lunar_torque", "orbit_eccentricity")})
+pm0, pq0 = prec.initial_state(model, True)
+n = 4
+chain_q = rattle.positions_from_angles(np.full(n, 0.3), 1.0 / n)
+try:
+    from classical_dynamics.models import linear
+    from classical_dynamics.solvers.fixed_step import FixedProblem, Save, solve_fixed
+    body = FixedProblem(rigid_body.packed(m0, q0), I)
+    earth_body = FixedProblem(rigid_body.packed(pm0, pq0), np.r_[1.0 - model.H, 1.0, model.parameters()],
+                              prec.torque_body)
+    oscillator = FixedProblem([1.0, 0.0], [1.0], linear.harmonic_force)
+    chain = FixedProblem(np.r_[chain_q.ravel(), np.zeros(2 * n)], np.r_[1.0 / n, 9.81, np.full(n, 1.0 / n)])
+    calls = {
+        "rigid-splitting4, 1e5 steps, final": lambda: solve_fixed(
+            body, "rigid-splitting4", h=0.01, n_steps=100000, save=Save(final=True)),
+        "rigid-splitting2, 1e5 steps, every 10th": lambda: solve_fixed(
+            body, "rigid-splitting2", h=0.01, n_steps=100000, save=Save(every=10)),
+        "symmetric-torqued2, 1 yr at 3 h, daily": lambda: solve_fixed(
+            earth_body, "symmetric-torqued2", h=0.125, n_steps=2922, save=Save(every=8)),
+        "stormer-verlet, 1e5 steps, every step": lambda: solve_fixed(
+            oscillator, "stormer-verlet", h=0.01, n_steps=100000),
+        "rattle 4 particles, 1e4 steps, every 10th": lambda: solve_fixed(
+            chain, "rattle", h=1e-3, n_steps=10000, save=Save(every=10)),
+    }
+except ImportError:  # a tree from before the door
+    one = np.array([1.0])
+    calls = {
+        "rigid-splitting4, 1e5 steps, final": lambda: rigid_body.free_body(I, m0, 0.01, 100000, 4, 100000),
+        "rigid-splitting2, 1e5 steps, every 10th": lambda: rigid_body.free_body(I, m0, 0.01, 100000, 2, 10),
+        "symmetric-torqued2, 1 yr at 3 h, daily": lambda: rigid_body.integrate_symmetric_torqued(
+            1.0 - model.H, 1.0, pm0, pq0, 0.125, 2922, 2, 8, prec.torque_body, model.parameters()),
+        "stormer-verlet, 1e5 steps, every step": lambda: symplectic.integrate(
+            symplectic.harmonic, one, one, np.array([0.0]), 0.01, 100000, 2, 1),
+        "rattle 4 particles, 1e4 steps, every 10th": lambda: rattle.integrate(
+            chain_q, np.zeros((n, 2)), np.full(n, 1.0 / n), 1.0 / n, 9.81, 1e-3, 10000, 10),
+    }
+out = {}
+for name, call in calls.items():
+    call()
+    out[name] = min_time(call, repeats=20, budget_s=1.0)[0]
+print(json.dumps(out))
+"""
+
+
 def paths_in(tree: Path) -> dict:
     env = dict(os.environ, PYTHONPATH=str(tree / "src"))
+    out = {}
     with tempfile.TemporaryDirectory() as tmp:  # a file: numba caches the event function beside it
-        script = Path(tmp) / "solver_paths.py"
-        script.write_text(PATHS)
-        done = subprocess.run(
-            [sys.executable, str(script)], cwd=tree, env=env, capture_output=True, text=True
-        )
-    if done.returncode != 0:
-        raise SystemExit(done.stderr)
-    return json.loads(done.stdout.splitlines()[-1])
+        for name, text in (("solver_paths.py", PATHS), ("fixed_paths.py", FIXED_PATHS)):
+            script = Path(tmp) / name
+            script.write_text(text)
+            done = subprocess.run(
+                [sys.executable, str(script)], cwd=tree, env=env, capture_output=True, text=True
+            )
+            if done.returncode != 0:
+                raise SystemExit(done.stderr)
+            out.update(json.loads(done.stdout.splitlines()[-1]))
+    return out
 
 
 def against(rev: str) -> None:
@@ -339,7 +463,10 @@ def against(rev: str) -> None:
             subprocess.run(["git", "worktree", "remove", "--force", str(base)], cwd=root, capture_output=True)
     best = {k: {name: min(r[name] for r in v) for name in v[0]} for k, v in runs.items()}
     print(f"machine: {software_stamp()}")
-    print("HNW rigid body to t = 20, rtol 1e-10: minimum of three alternating runs, each its own process\n")
+    print("HNW rigid body to t = 20, rtol 1e-10: minimum of three alternating runs, each its own process;")
+    print(
+        "the fixed-step methods (FIXED_PATHS) through the door, or in a tree without one what it replaced\n"
+    )
     print(f"{'compiled path':40s} {rev[:10]:>12s} {'this tree':>12s} {'ratio':>7s}")
     for name in best["base"]:
         b, h = best["base"][name], best["here"][name]
@@ -349,5 +476,6 @@ def against(rev: str) -> None:
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--against", metavar="REV", help="time the compiled paths here and at this commit")
+    parser.add_argument("--door", action="store_true", help="the fixed-step door against its kernels only")
     args = parser.parse_args()
-    against(args.against) if args.against else main()
+    against(args.against) if args.against else print_door() if args.door else main()

@@ -159,7 +159,7 @@ def small_accuracy(monkeypatch):
 
     monkeypatch.setattr(accuracy, "ADAPTIVE", ("dop853", "scipy:DOP853"))
     monkeypatch.setattr(accuracy, "TOLERANCES", (1e-6, 1e-10))
-    # no fixed-step splitting: numba compiles symplectic.integrate anew for each force function (3 s); the
+    # no fixed-step splitting: numba compiles the Verlet kernel anew for each force function (3 s); the
     # splitting's order is tested on the oscillator in test_solvers.py
     monkeypatch.setattr(accuracy, "STEPS", ())
     monkeypatch.setattr(accuracy, "PERIODS", 2)

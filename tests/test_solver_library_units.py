@@ -10,6 +10,7 @@ from scipy.integrate import solve_ivp
 
 from classical_dynamics.solvers import rigid_body
 from classical_dynamics.solvers import runge_kutta as rk
+from classical_dynamics.solvers.fixed_step import FixedProblem, Save, solve_fixed
 from classical_dynamics.solvers.ode import Events, Problem, check_inputs, compile_time, solve
 
 
@@ -207,11 +208,13 @@ def test_free_body_keeps_energy_and_momentum_and_refuses_bad_input():
     # Euler's free body: |m| is kept exactly by the splitting and the energy to O(h^2); the invariants are
     # written out here, sum m_i^2 / I_i / 2 and sum m_i^2
     I, m0 = np.array([1.0, 2.0, 3.0]), np.array([0.3, 1.0, 0.2])
-    m, q = rigid_body.free_body(I, m0, 0.01, 200, order=2, sample_every=50)
-    assert m.shape[1] == 3 and np.allclose(np.linalg.norm(q, axis=1), 1.0)
+    body = FixedProblem(rigid_body.packed(m0), I)
+    rows = solve_fixed(body, "rigid-splitting2", h=0.01, n_steps=200, save=Save(every=50)).y_eval
+    m, q = rows[:, :3], rows[:, 3:]
+    assert rows.shape == (5, 7) and np.allclose(np.linalg.norm(q, axis=1), 1.0)
     assert np.allclose(rigid_body.casimir(m), m0 @ m0, rtol=1e-12)
     assert np.allclose(rigid_body.energy(I, m), 0.5 * np.sum(m0**2 / I), rtol=1e-4)
     with pytest.raises(ValueError, match="step size"):
-        rigid_body.free_body(I, m0, 0.0, 10)
+        solve_fixed(body, "rigid-splitting2", h=0.0, n_steps=10)
     with pytest.raises(ValueError, match="not finite"):
-        rigid_body.free_body(I, [np.nan, 0.0, 0.0], 0.1, 10)
+        FixedProblem(rigid_body.packed([np.nan, 0.0, 0.0]), I)

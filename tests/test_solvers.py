@@ -5,9 +5,11 @@ import numpy as np
 import pytest
 from scipy import special
 
+from classical_dynamics.models import linear
 from classical_dynamics.models import rigid_body as rhs
 from classical_dynamics.solvers import references as ref
-from classical_dynamics.solvers import rigid_body, symplectic
+from classical_dynamics.solvers import rigid_body
+from classical_dynamics.solvers.fixed_step import FixedProblem, Save, solve_fixed
 from classical_dynamics.solvers.ode import Events, Problem, solve, solve_batch
 from classical_dynamics.solvers.runge_kutta import rhs_function
 
@@ -110,7 +112,8 @@ def test_integrators_stay_on_the_energy_surface_near_the_separatrix():
         record_steps=True,
     )
     assert np.max(np.abs(0.5 * np.sum(I * sol.y_steps**2, axis=1) / H0 - 1)) < 1e-10
-    ms, _ = rigid_body.free_body(I, I * w0, 0.01, 15000, 2, 10)
+    body = FixedProblem(rigid_body.packed(I * w0), I)
+    ms = solve_fixed(body, "rigid-splitting2", h=0.01, n_steps=15000, save=Save(every=10)).y_eval[:, :3]
     assert np.max(np.abs(np.sum(ms * ms, axis=1) / C0 - 1)) < 1e-12
     assert np.max(np.abs(0.5 * np.sum(ms * ms / I, axis=1) / H0 - 1)) < 1e-3  # bounded O(h^2)
 
@@ -214,23 +217,34 @@ def test_bad_initial_state_and_span_are_refused():
     with pytest.raises(ValueError, match="not after"):
         solve(Problem(rhs.euler_free, [1.0, 0, 1], (1.0, 0.0), rhs.euler_coefficients(ref.HNW_I)), "dop853")
     with pytest.raises(ValueError, match="positive"):
-        rigid_body.free_body(ref.HNW_I, [1, 0, 1], -0.1, 10)
+        solve_fixed(
+            FixedProblem(rigid_body.packed([1, 0, 1]), ref.HNW_I), "rigid-splitting2", h=-0.1, n_steps=10
+        )
 
 
 def test_splitting_orders_and_quaternion():
     I, m0 = ref.HNW_I, ref.HNW_I * ref.HNW_Y0
+    body = FixedProblem(rigid_body.packed(m0), I)
     for order, expected in ((2, 2.0), (4, 4.0)):
         errors = [
             np.max(
                 np.abs(
-                    rigid_body.free_body(I, m0, h, int(round(20 / h)), order, int(round(20 / h)))[0][-1] / I
+                    solve_fixed(
+                        body,
+                        f"rigid-splitting{order}",
+                        h=h,
+                        n_steps=int(round(20 / h)),
+                        save=Save(final=True),
+                    ).y[:3]
+                    / I
                     - ref.hnw_rigid_body(20.0)
                 )
             )
             for h in (0.05, 0.025)
         ]
         assert np.log2(errors[0] / errors[1]) == pytest.approx(expected, abs=0.15)
-    ms, qs = rigid_body.free_body(I, m0, 0.05, 100000, 2, 1000)
+    rows = solve_fixed(body, "rigid-splitting2", h=0.05, n_steps=100000, save=Save(every=1000)).y_eval
+    ms, qs = rows[:, :3], rows[:, 3:]
     assert np.max(np.abs(np.linalg.norm(qs, axis=1) - 1)) < 1e-12  # Lie-group update
     L = rigid_body.rotate_to_space(qs, ms)
     assert np.max(np.abs(L - L[0])) < 1e-11  # space angular momentum
@@ -247,20 +261,11 @@ def test_splitting_with_a_body_fixed_torque_converges_to_bodewadt():
     m0 = I * np.array([0.1, 0.0, 2.0])
     exact = ref.bodewadt(1.0, 1.8, (0.0, 0.0, 0.03), np.array([0.1, 0.0, 2.0]), 50.0)
     errors = []
+    body = FixedProblem(rigid_body.packed(m0), np.append(I, 0.03), axial)
     for h in (0.002, 0.001):
-        ms, qs = rigid_body.integrate_torqued(
-            I,
-            m0,
-            np.array([1.0, 0, 0, 0]),
-            h,
-            int(round(50 / h)),
-            2,
-            int(round(50 / h)),
-            axial,
-            np.array([0.03]),
-        )
-        errors.append(np.max(np.abs(ms[-1] / I - exact)))
-        assert abs(np.linalg.norm(qs[-1]) - 1) < 1e-12
+        y = solve_fixed(body, "rigid-torqued2", h=h, n_steps=int(round(50 / h)), save=Save(final=True)).y
+        errors.append(np.max(np.abs(y[:3] / I - exact)))
+        assert abs(np.linalg.norm(y[3:]) - 1) < 1e-12
     assert errors[0] / errors[1] == pytest.approx(4.0, rel=0.05)
 
 
@@ -272,10 +277,9 @@ def test_numerical_damping_of_an_undamped_oscillator():
         change[method] = y[0] ** 2 + y[1] ** 2 - 1
     assert change["scipy:BDF"] < -1e-4  # BDF damps: not a physical Q
     assert abs(change["dop853"]) < abs(change["scipy:BDF"]) / 10
-    qs, vs = symplectic.integrate(
-        symplectic.harmonic, np.array([1.0]), np.array([1.0]), np.array([0.0]), 2 * np.pi / 50, 5000, 2, 1
-    )
-    energy = qs[:, 0] ** 2 + vs[:, 0] ** 2
+    oscillator = FixedProblem([1.0, 0.0], [1.0], linear.harmonic_force)
+    rows = solve_fixed(oscillator, "stormer-verlet", h=2 * np.pi / 50, n_steps=5000).y_eval
+    energy = rows[:, 0] ** 2 + rows[:, 1] ** 2
     assert np.max(np.abs(energy - 1)) < 5e-3 and abs(energy[-1000:].mean() - energy[:1000].mean()) < 1e-4
 
 

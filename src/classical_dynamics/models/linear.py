@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numba import njit
 
 from ..solvers.runge_kutta import rhs_function
 
@@ -43,6 +44,12 @@ def linear_system(t, y, p, out):
             for j in range(m):
                 quadratic += y[i] * p[w + i * m + j] * y[j]
         out[m] = quadratic
+
+
+@njit(cache=True)
+def harmonic_force(q, p, out):
+    """q'' = -omega^2 q, p = (omega,): the oscillator as an acceleration, for the Stormer-Verlet methods."""
+    out[0] = -p[0] * p[0] * q[0]
 
 
 def state_matrix(K, M, B=None, G=None) -> np.ndarray:

@@ -367,7 +367,7 @@ def _body_position(t, p, k):
     return cv * x - sv * y, sv * x + cv * y, 0.0, a_over_r**3
 
 
-@rhs_function  # torque(t, q, p, out) has a right-hand side's signature: integrate_symmetric_torqued's
+@rhs_function  # torque(t, q, p, out) has a right-hand side's signature: the symmetric-torqued methods'
 def torque_body(t, q, p, out):
     """N/C in the body frame: sum_b 3 GM_b/r_b^3 H s3 (s2, -s1, 0), s the body-frame unit vector to b."""
     out[0] = 0.0

@@ -5,8 +5,9 @@
     sol = solve(problem, "scipy:DOP853", rtol=..., atol=...)   # the peers, through the same door
 
 Methods: dopri5, dop853 (compiled, adaptive, dense output, events, blow-up detection) and
-scipy:RK45, scipy:DOP853, scipy:Radau, scipy:BDF, scipy:LSODA, scipy:RK23. Geometric fixed-step
-methods for rigid bodies and chains live in rigid_body.py and rattle.py (they need the structure).
+scipy:RK45, scipy:DOP853, scipy:Radau, scipy:BDF, scipy:LSODA, scipy:RK23. The geometric fixed-step
+methods (Stormer-Verlet, RATTLE, the rigid body's splittings) need the problem's structure: their door is
+fixed_step.solve_fixed, which returns the same Solution.
 """
 
 from __future__ import annotations
@@ -86,6 +87,8 @@ class Solution:
     event_y: np.ndarray
     event_index: np.ndarray
     method: str
+    # what a method measures beside the state, by name (fixed_step.py lists them per method); empty here
+    extra: dict = field(default_factory=dict)
 
     @property
     def success(self) -> bool:

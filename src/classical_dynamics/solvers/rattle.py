@@ -129,8 +129,23 @@ def energy(q, p, m, g):
 
 
 @njit(cache=True)
+def _save(rows, k, q, p):
+    """rows[k] <- (q, p) flattened particle by particle: (x_0, y_0, x_1, ...; px_0, py_0, ...)."""
+    n = q.shape[0]
+    for i in range(n):
+        rows[k, 2 * i] = q[i, 0]
+        rows[k, 2 * i + 1] = q[i, 1]
+        rows[k, 2 * n + 2 * i] = p[i, 0]
+        rows[k, 2 * n + 2 * i + 1] = p[i, 1]
+
+
+@njit(cache=True)
 def integrate(q0, p0, m, a, g, h, n_steps, sample_every):
-    """Integrate n_steps; return the bottom particle's x at every step, and energy samples."""
+    """The kernel of the method "rattle" (call it through fixed_step.solve_fixed): n_steps from (q0, p0).
+
+    Returns the rows of the state (q, p) at steps 0, sample_every, 2 sample_every, ..., the final state, the
+    bottom particle's x at every step, the energy at the rows, and the largest link-length error over the
+    rows after the start."""
     q, p = q0.copy(), p0.copy()
     q_new, p_new = np.empty_like(q), np.empty_like(p)
     n = q.shape[0]
@@ -139,6 +154,8 @@ def integrate(q0, p0, m, a, g, h, n_steps, sample_every):
     tip_x = np.empty(n_steps + 1)
     tip_x[0] = q[n - 1, 0]
     n_samples = n_steps // sample_every + 1
+    rows = np.empty((n_samples, 4 * n))
+    _save(rows, 0, q, p)
     energies = np.empty(n_samples)
     energies[0] = energy(q, p, m, g)
     constraint = 0.0
@@ -150,12 +167,15 @@ def integrate(q0, p0, m, a, g, h, n_steps, sample_every):
         p, p_new = p_new, p
         tip_x[step] = q[n - 1, 0]
         if step % sample_every == 0:
+            _save(rows, k, q, p)
             energies[k] = energy(q, p, m, g)
             _links(q, d)
             for j in range(n):
                 constraint = max(constraint, abs(np.sqrt(d[j, 0] ** 2 + d[j, 1] ** 2) - a))
             k += 1
-    return tip_x, energies[:k], constraint
+    final = np.empty((1, 4 * n))
+    _save(final, 0, q, p)
+    return rows[:k], final[0], tip_x, energies[:k], constraint
 
 
 def positions_from_angles(angles, a):

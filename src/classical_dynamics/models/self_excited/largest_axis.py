@@ -162,7 +162,7 @@ def plane_largest(t, y, p, out):
 
 @njit(cache=True)
 def plane_largest_force(q, p, out):
-    """The unperturbed (2.10) as phi2'' = a(phi2) = m1 + sin(phi2), p = (m1,), for symplectic.integrate."""
+    """The unperturbed (2.10) as phi2'' = a(phi2) = m1 + sin(phi2), p = (m1,), for stormer-verlet."""
     out[0] = p[0] + np.sin(q[0])
 
 

@@ -8,6 +8,7 @@ import pandas as pd
 from ...formatting import format_number, shortest
 from ...results import new_figure
 from ...solvers import rattle
+from ...solvers.fixed_step import FixedProblem, Save, solve_fixed
 from ...solvers.special import laguerre_zeros
 
 
@@ -31,8 +32,11 @@ def simulate(n, length, g, mode, amplitude_rad, periods, steps_per_fastest):
     q0 = rattle.positions_from_angles(_mode_angles(n, mode, amplitude_rad), a)
     p0 = np.zeros_like(q0)
     sample = max(1, int(round(2 * np.pi / omega[0] / h / 4)))  # four energy samples per period
-    tip, energies, constraint = rattle.integrate(q0, p0, np.full(n, 1.0 / n), a, g, h, n_steps, sample)
-    return omega, h, tip, energies, constraint, sample
+    chain = FixedProblem(
+        np.concatenate([q0.ravel(), p0.ravel()]), np.concatenate([[a, g], np.full(n, 1.0 / n)])
+    )
+    sol = solve_fixed(chain, "rattle", h=h, n_steps=n_steps, save=Save(every=sample))
+    return omega, h, sol.extra["tip_x"], sol.extra["energy"], sol.extra["constraint"], sample
 
 
 def run(scene, results, quick):

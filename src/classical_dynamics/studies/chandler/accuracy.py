@@ -17,6 +17,7 @@ from ...results import new_figure
 from ...solvers import references as ref
 from ...solvers import rigid_body
 from ...solvers import workprecision as wp
+from ...solvers.fixed_step import FixedProblem, Save, solve_fixed
 from ...solvers.timing import min_time
 from . import model as wobble_model
 from .model import arcsec_text
@@ -68,10 +69,12 @@ def run(scene, results, quick):
             order = int(method[-1])
             for h in spec["steps"]:
                 n = int(round(T / h))
-                m0 = I * model.n * np.array([amplitude, 0.0, 1.0])
-                run = lambda: rigid_body.free_body(I, m0, T / n, n, order, n)
-                seconds, (ms, _), _ = min_time(run, repeats=min(repeats, 3), budget_s=2.0)
-                y = ms[-1] / I / model.n
+                problem = FixedProblem(rigid_body.packed(I * model.n * np.array([amplitude, 0.0, 1.0])), I)
+                run = lambda: solve_fixed(
+                    problem, f"rigid-splitting{order}", h=T / n, n_steps=n, save=Save(final=True)
+                )
+                seconds, sol, _ = min_time(run, repeats=min(repeats, 3), budget_s=2.0)
+                y = sol.y[:3] / I / model.n
                 record(f"splitting, order {order}", h, "step", seconds, y[0] + 1j * y[1], n)
             continue
         for rtol in spec["tolerances"]:

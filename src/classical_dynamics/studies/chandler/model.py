@@ -12,6 +12,7 @@ from ...models import earth, wobble
 from ...results import new_figure, subplots
 from ...solvers import references as ref
 from ...solvers import rigid_body
+from ...solvers.fixed_step import FixedProblem, Save, solve_fixed
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
 from . import polar_motion
@@ -544,7 +545,9 @@ def _cones(results, model, amplitude):
     # two days of attitude by the splitting (fourth order, exact rotations), the herpolhode in space
     h, days = 1e-3, 2.0
     steps = int(round(days / h))
-    ms, qs = rigid_body.free_body(I, m0, h, steps, order=4, sample_every=10)
+    problem = FixedProblem(rigid_body.packed(m0), I)
+    rows = solve_fixed(problem, "rigid-splitting4", h=h, n_steps=steps, save=Save(every=10)).y_eval
+    ms, qs = rows[:, :3], rows[:, 3:]
     omega_space = rigid_body.rotate_to_space(qs, ms / I)
     L_hat = rigid_body.rotate_to_space(qs[:1], ms[:1])[0]
     L_hat /= np.linalg.norm(L_hat)

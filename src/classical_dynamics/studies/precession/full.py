@@ -1,8 +1,9 @@
 """Rung 3: the full torqued rigid Earth, spin resolved: precession, nutations, and their hard cases.
 
 The integrator is the Strang splitting of the symmetric body's exact free flow with the torque kick
-(solvers.rigid_body.integrate_symmetric_torqued). The precession is read off the angular momentum L in
-space (the figure axis differs from it by the forced diurnal wobble, the Oppolzer terms, reported).
+(the methods "symmetric-torqued2" and "4" of solvers.fixed_step). The precession is read off the angular
+momentum L in space (the figure axis differs from it by the forced diurnal wobble, the Oppolzer terms,
+reported).
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from ...models import earth
 from ...models import precession as prec
 from ...results import subplots
 from ...solvers import rigid_body
+from ...solvers.fixed_step import FixedProblem, Save, solve_fixed
 from ...solvers.timing import min_time
 from . import averaged, fitting
 from .secular import ARCSEC_PER_TURN
@@ -46,10 +48,10 @@ def integrate(model, span_days, step_days, order=2, sample_days=1.0, forced=True
     h = span_days / n
     every = max(1, int(round(sample_days / h)))
     m0, q0 = prec.initial_state(model, forced)
-    ms, qs = rigid_body.integrate_symmetric_torqued(
-        1.0 - model.H, 1.0, m0, q0, h, n, order, every, prec.torque_body, model.parameters()
-    )
-    return h * every * np.arange(len(ms)), ms, qs
+    params = np.concatenate([[1.0 - model.H, 1.0], model.parameters()])  # A, C (units of C), the torque's
+    problem = FixedProblem(rigid_body.packed(m0, q0), params, prec.torque_body)
+    sol = solve_fixed(problem, f"symmetric-torqued{order}", h=h, n_steps=n, save=Save(every=every))
+    return sol.t_eval, sol.y_eval[:, :3], sol.y_eval[:, 3:]
 
 
 def angular_momentum_axis(ms, qs):

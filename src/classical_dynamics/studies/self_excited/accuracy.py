@@ -21,8 +21,8 @@ import pandas as pd
 from ...formatting import format_number, power_of_ten, shortest
 from ...models import self_excited as se
 from ...results import new_figure
-from ...solvers import symplectic
 from ...solvers import workprecision as wp
+from ...solvers.fixed_step import FixedProblem, Save, solve_fixed
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
 from .bounds import EXCURSION_PERIODS
@@ -74,20 +74,18 @@ def separatrix(results, m1, quick):
         return {"energy_error": abs(dE), "energy_change": dE, "wrong_side": bool(side * (y[0] - phi_s) < 0)}
 
     rows = _adaptive_rows(Problem(se.plane_largest, y0, (0.0, span), [m1, 0.0, 1.0]), error_of, quick)
-    force = np.array([m1])
-    for order in (2, 4):
+    plane = FixedProblem(y0, [m1], se.plane_largest_force)
+    for order, method in ((2, "stormer-verlet"), (4, "yoshida4")):
         for h in STEPS[:3] if quick else STEPS:
             n = int(round(span / h))
-            run = lambda: symplectic.integrate(
-                se.plane_largest_force, force, y0[:1], y0[1:], span / n, n, order, n
-            )
-            seconds, (qs, vs), _ = min_time(run, repeats=3, budget_s=0.5)
+            run = lambda: solve_fixed(plane, method, h=span / n, n_steps=n, save=Save(final=True))
+            seconds, sol, _ = min_time(run, repeats=3, budget_s=0.5)
             rows.append(
                 {
                     "method": f"splitting, order {order}",
                     "kind": "step",
                     "setting": h,
-                    **error_of([qs[-1, 0], vs[-1, 0]]),
+                    **error_of(sol.y),
                     "steps": n,
                     "seconds": seconds,
                 }

@@ -9,10 +9,12 @@ from scipy import special
 
 from ...figure_style import legend_below
 from ...formatting import format_number, power_of_ten, shortest
+from ...models import linear
 from ...models import rigid_body as rhs
 from ...results import new_figure
 from ...solvers import references as ref
-from ...solvers import rigid_body, symplectic
+from ...solvers import rigid_body
+from ...solvers.fixed_step import FixedProblem, Save, solve_fixed
 from ...solvers.ode import Problem, solve
 
 
@@ -79,7 +81,10 @@ def _separatrix(results, one_minus_m, quick):
         record_steps=True,
     )
     dH = np.max(np.abs(0.5 * np.sum(I * sol.y_steps**2, axis=1) - H0)) / H0
-    ms, _ = rigid_body.free_body(I, I * w0, 0.005, int(T / 0.005), 4, 10)
+    problem = FixedProblem(rigid_body.packed(I * w0), I)
+    ms = solve_fixed(
+        problem, "rigid-splitting4", h=0.005, n_steps=int(T / 0.005), save=Save(every=10)
+    ).y_eval[:, :3]
     dC = np.max(np.abs(np.sum(ms * ms, axis=1) - C0)) / C0
     dHs = np.max(np.abs(0.5 * np.sum(ms * ms / I, axis=1) - H0)) / H0
     results.number("separatrix_period", period, "time units")
@@ -297,10 +302,9 @@ def _numerical_damping(results):
             )
     for h in (2 * np.pi / 20, 2 * np.pi / 100):
         n = int(round(T / h))
-        qs, vs = symplectic.integrate(
-            symplectic.harmonic, np.array([1.0]), np.array([1.0]), np.array([0.0]), h, n, 2, n
-        )
-        change = 0.5 * (qs[-1, 0] ** 2 + vs[-1, 0] ** 2) / 0.5 - 1
+        oscillator = FixedProblem([1.0, 0.0], [1.0], linear.harmonic_force)
+        q, v = solve_fixed(oscillator, "stormer-verlet", h=h, n_steps=n, save=Save(final=True)).y
+        change = 0.5 * (q**2 + v**2) / 0.5 - 1
         rows.append(
             {
                 "method": "Störmer–Verlet",
