@@ -256,8 +256,7 @@ def test_formatting_rounds_first_then_chooses_the_notation():
     assert formatting.measured_and_bound(0.5, 1e-6) == (f"5.0{x}10⁻¹", f"1{x}10⁻⁶")
     assert [formatting.exact_figures(v) for v in (0.5, 100.0, 2.0**-0.5, 0.125)] == [1, 1, 16, 3]
     assert (
-        formatting.format_decimals(-0.0004, 2) == "0.00"
-        and formatting.format_decimals(-3.14159, 2) == "−3.14"
+        formatting.format_decimals(-0.0004, 2) == "0" and formatting.format_decimals(-3.14159, 2) == "−3.14"
     )
     assert formatting.shortest(50.5) == "50.5" and formatting.shortest(1e-10) == f"1{x}10⁻¹⁰"
     assert formatting.shortest(306.0) == "306" and formatting.shortest(None) == "—"

@@ -98,7 +98,9 @@ def test_a_comment_or_docstring_edit_changes_no_digest_and_a_code_edit_does(tmp_
     path = modules[f"{PACKAGE}.formatting"]  # reached by every study
     source = path.read_text(encoding="utf-8")
 
-    cache = tmp_path / "parses.json"  # the others are parsed once, not seven times (as the workflow keeps them)
+    cache = (
+        tmp_path / "parses.json"
+    )  # the others are parsed once, not seven times (as the workflow keeps them)
 
     def digest_with(text):
         path.write_text(text, encoding="utf-8")

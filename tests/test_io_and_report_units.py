@@ -164,11 +164,17 @@ def a_claim(computed, source: dict, check: dict, deviation=0.0) -> claims.ClaimR
         # alike: the deviation column, not a string of digits, says by how much
         ({"absolute": 0.3}, 4.0, 3.968, "3.97"),  # Lee's slope: not "4.0" beside a deviation of −3.2 × 10⁻²
         ({"absolute": 0.3}, 4.0, 4.0027, "4.003"),  # its +0.0027 reads back; not 4.0027 at ±0.3
-        ({"absolute": 0.01}, 2.18, 2.17924, "2.179"),  # Lamb's ratio: not 2.17924
+        (
+            {"absolute": 0.01},
+            2.18,
+            2.17924,
+            "2.1792",
+        ),  # Lamb's ratio: −7.6 × 10⁻⁴ reads back, not −1.0 × 10⁻³
         ({"absolute": 1.7}, 433.1, 432.61, "432.6"),  # not "433", which reads as 433.1 rounded
         ({"relative": 0.003}, 50.385, 50.4001, "50.40"),  # not "50.4", which would read as 50.385 rounded
         ({"relative": 0.02}, 300.0, 305.47, "305"),  # no whole figure rounded away (not 310)
-        ({"relative": 0.005}, 0.5518, 0.54963, "0.550"),  # the figures its check supports, zeros and all
+        ({"relative": 0.005}, 0.5518, 0.54963, "0.5496"),  # −3.9 × 10⁻³ rel. reads back (0.550 reads −3.3)
+        ({"relative": 0.005}, 0.5518, 0.55004, "0.550"),  # the figures its check supports, zeros and all
         ({"relative": 1e-8}, 1.0, -1.0, "−1"),  # a sign against the source's: −1, not −1.0000000
         ({"relative": 0.05}, 1 / 300, 0.0034609, "0.00346"),  # 0.0035 would read back as +5 %, not +3.8 %
         ({"absolute": 0.01}, 5.15, 5.14496, "5.145"),  # 5.14 would read back as −0.01, not −0.005
@@ -192,7 +198,7 @@ def test_ours_never_reads_as_the_sources_value_when_it_differs(check, source, va
         ("1.7571", {"absolute": 5e-5}, 1.7570954, "1.75710"),
         (".7655", {"absolute": 5e-5}, 0.76547979, "0.76548"),
         # ... and a source's figure that ours does not meet still shows where they part
-        ("2.18", {"absolute": 0.01}, 2.17924, "2.179"),
+        ("2.18", {"absolute": 0.01}, 2.17924, "2.1792"),
         # ... or where one more is needed for the deviation to read back (not 5.2251 beside 5.5 × 10⁻⁵)
         ("5.225", {"absolute": 5e-4}, 5.2250551, "5.22506"),
     ],
@@ -315,6 +321,7 @@ def test_bibliography_has_the_required_sources():
         ("1/300", 1 / 300, {"relative": 0.02}, "0.003333"),  # four figures at least, not 0.0033
         ("a constant area", 0.0, {"absolute": 1e-9}, ""),  # words mean no number
         ("$Ma^2/2$", 0.5, {"relative": 1e-12}, "0.5"),  # a short exact decimal as it is, not 0.5000
+        ("$\\Omega_\\mathrm{s} = J/I_1$", 1.0, {"relative": 1e-8}, "1"),  # the 1 of I₁ is no print of 1
     ],
 )
 def test_a_symbolic_source_value_shows_the_number_it_means(text, value, check, means):

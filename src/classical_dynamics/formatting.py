@@ -126,13 +126,12 @@ def format_column(values, sig: int = 4) -> list[str]:
 
 
 def format_decimals(value, decimals: int) -> str:
-    """A fixed number of decimals (a tolerance's place), with the same minus and grouping; −0 is 0, and an
-    exact zero (Lamb's speed of a wave at rest) is 0, not 0.00000."""
-    if float(value) == 0:
-        return "0"
+    """A fixed number of decimals (a tolerance's place), with the same minus and grouping; a zero, exact
+    (Lamb's speed of a wave at rest) or below half the last place (a change the resolution cannot see), is 0,
+    not a string of zeros 0.000 nor −0.000."""
     text = f"{float(value):.{max(decimals, 0)}f}"
     if float(text) == 0:
-        text = text.lstrip("-")
+        return "0"
     return (MINUS if text.startswith("-") else "") + _group(text.lstrip("-"))
 
 

@@ -399,7 +399,7 @@ class Report:
         the columns of each group in `together` (ours beside a reference's) share one notation.
         keep = {column: [values]} shows the rows whose values are listed (by value, not position, so a
         reduced build that has fewer rows shows fewer). decimals = {column: n} prints that column as plain
-        decimals to n places (a quantity known to an absolute resolution: a change below it reads 0.000).
+        decimals to n places (a quantity known to an absolute resolution: a change below it reads 0).
         split = {column: by} shows a column that holds different quantities by row (a tolerance in one, a step
         in days in the next, told apart by the column `by`) as one column per value of `by`, "—" elsewhere,
         headed by rename["column:value"]; `by` itself is then not shown. powers = columns always written as

@@ -166,20 +166,19 @@ def shown_digits(claim: ClaimResult) -> int:
             # past the source's, at most one beyond what the check supports (the deviation says the rest)
             digits = max(min(printed + 1, supported + 1), trimmed if shown.is_integer() else 1)
         elif real:
-            # a real difference shows: from the figure where ours and the source part, one more where they
-            # share the leading ones, so that the deviation reads back (0.00346 against 1/300, 0.204 against
-            # 0.2276, −1 against 1), but no more than one beyond what the check supports (2.179 at ±0.01)
+            # a real difference shows: at least to the figure where ours and the source part (−1 against 1,
+            # 0.0035 against 1/300), no more than one beyond what the check supports
             part = next((d for d in range(1, 9) if _rounded(value, d) != _rounded(reference, d)), 8)
-            digits = max(digits, min(part + 1 if part > 1 else part, supported + 1, 8))
+            digits = max(digits, min(part, supported + 1, 8))
         if real:
-            # ... and until the deviation reads back from the figures shown to within half (5.145 against
-            # 5.15 beside −0.0050, not 5.14; 5.22506 against 5.225, not 5.2251), or the figures shown are
-            # the source's (1.75710: the deviation, under the last of them, says they agree in all), at most
-            # two beyond the check's
+            # ... and until the deviation reads back from the figures shown to its first figure (5.145
+            # against 5.15 beside −0.0050, not 5.14; 2.1792 against 2.18 beside −7.6 × 10⁻⁴, not 2.179), or
+            # the figures shown are the source's (1.75710: the deviation, under the last of them, says they
+            # agree in all), at most three beyond the check's
             while (
-                digits < min(supported + 2, 8)
+                digits < min(supported + 3, 8)
                 and not (agrees and _rounded(value, digits) == _rounded(reference, digits))
-                and abs(_rounded(value, digits) - reference - claim.deviation) > 0.5 * abs(claim.deviation)
+                and not _reads_back(claim, _rounded(value, digits))
             ):
                 digits += 1
         else:
@@ -192,6 +191,17 @@ def shown_digits(claim: ClaimResult) -> int:
             needed = math.floor(math.log10(abs(value))) - math.floor(math.log10(abs(value - bound))) + 1
             digits = max(digits, min(needed, 8))
     return digits
+
+
+def _reads_back(claim: ClaimResult, shown: float) -> bool:
+    """The deviation a reader computes from ours as shown and the source's value is the deviation column's
+    to its first figure (within half a unit there), in the column's sense: relative or absolute."""
+    reference, deviation = claim.source["value"], claim.deviation
+    if "relative" in claim.check:
+        deviation, read = deviation / reference, shown / reference - 1.0
+    else:
+        read = shown - reference
+    return deviation == 0 or abs(read - deviation) <= 0.5 * 10.0 ** math.floor(math.log10(abs(deviation)))
 
 
 def _printed_figures(claim: ClaimResult) -> int:
@@ -224,7 +234,8 @@ def source_means(claim: ClaimResult) -> str:
         return ""  # a verdict ("stable", "no inflexion") checked by a bound on ours means no number
     if value == 0 or not re.search(r"[\d$\\√π/]", text):
         return ""  # words ("stable", "a constant area"), or a formula met to round-off: no number they mean
-    for match in _NUMBER.findall(text):
+    # a subscript is no printed value (the 1 of J/I₁; an exponent may be: J₃⁻² for −2)
+    for match in _NUMBER.findall(re.sub(r"_(\{[^}]*\}|\\[A-Za-z]+(\{[^}]*\})?|\w)", "", text)):
         printed = match.replace(" ", "").replace("\u2009", "").replace("\u202f", "")
         decimals = len(printed.partition(".")[2])
         figures = len(printed.replace(".", "").lstrip("0"))
