@@ -626,6 +626,9 @@ def test_lee_section_2_motions_on_eulers_equations():
     r = _Numbers()
     motions.run(r, L, m1, se.singular_points(m1, 0.0, -3 * np.pi, 3 * np.pi))
     n = r.numbers
+    # each pair is Euler's equations integrated against a closed form or quadrature that calls no integrator
+    # (Lee's (2.x) solution, the time as a quadrature in phi, the period as a line integral, the saddle's rate
+    # (1 - m1^2)^(1/4) sqrt(2d)); a rate with exponent 0.3 for 1/4 fails it
     assert n["general_solution_difference"] < 1e-10
     assert n["euler_time_10pi"] == pytest.approx(n["quadrature_time_10pi"], rel=1e-9)
     assert n["closed_orbit_period_euler"] == pytest.approx(n["closed_orbit_period_line_integral"], rel=1e-9)
