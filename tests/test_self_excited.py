@@ -639,6 +639,17 @@ def test_lee_section_2_motions_on_eulers_equations():
     assert n["permanent_rotation_residual"] < 1e-14 and n["center_kick_largest"] < 1e-5
     assert n["permanent_rotation_groebner_remainders"] == 0
     assert "x_axis_angle_ratio_t100" not in n  # |m1| < 1: no such claim here
+    # the saddle's rate once more, from the linearisation of Lee (2.2) written here (mu = 0): at omega* =
+    # (0, q, r) the Jacobian of (a q r + m, -b r p, c p q); its one positive eigenvalue is the growth rate
+    a, b, c = BODY.a, BODY.b, BODY.c
+    saddle = [
+        pt["phi2"] for pt in se.singular_points(m1, 0.0, -3 * np.pi, 3 * np.pi) if pt["type"] == "saddle"
+    ]
+    _, q, r_ = L.from_plane(saddle[0], 0.0)
+    jacobian = np.array([[0.0, a * r_, a * q], [-b * r_, 0.0, 0.0], [c * q, 0.0, 0.0]])
+    rate = float(np.max(np.linalg.eigvals(jacobian).real))
+    assert n["saddle_growth_rate"] == pytest.approx(rate, rel=1e-3)
+    assert n["saddle_growth_rate_lee"] == pytest.approx(rate, rel=1e-12)
 
 
 def test_beyond_one_the_x_axis_attracts_and_the_threshold_gives_m1_one():
