@@ -46,6 +46,8 @@ def value(results, name):
 
 
 def held(results):
+    """The run's own verdicts on its hard cases (a figure it measured under a bound it states): what the
+    report prints as holding, not a reference; each test's reference checks are its other assertions."""
     return {case["name"]: case["holds"] for case in results.stability}
 
 
