@@ -80,11 +80,43 @@ def test_rayleigh_is_an_upper_bound_and_its_stationary_value():
     assert np.all(rayleigh_quotient(beta) > exact)
     assert rayleigh_quotient(0.0) == pytest.approx(1.5, rel=1e-15)  # rigid bar
     best = (-2 + np.sqrt(34)) / 6
-    assert rayleigh_quotient(best) == pytest.approx(1.446032, abs=1e-6)
+    assert rayleigh_quotient(best) == pytest.approx(1.446032, abs=1e-6)  # the minimum, derived below by sympy
     assert rayleigh_quotient(best) <= rayleigh_quotient(beta).min() + 1e-15
     ritz = rayleigh_ritz_2x2()
     assert ritz[0] == pytest.approx(rayleigh_quotient(best), rel=1e-12)  # the same minimum
     assert ritz[1] > (J0_MP[1] / 2) ** 2  # Poincare: 2nd Ritz value bounds 2nd
+
+
+def test_rayleigh_quotient_and_ritz_values_against_sympys_energies():
+    """The two energies of the hanging chain (l = 1, s from the top, tension (1 - s) g per unit mass) for the
+    trial y = s + beta s^2, integrated by sympy here: T = int y^2 ds, V = int (1 - s) y'^2 ds. The module's
+    quotient and Ritz matrices are typed integrals; this derives them (the test above compared the module's
+    quotient with the module's Ritz value, both from the same hand integration)."""
+    import sympy as sp
+
+    s, b = sp.symbols("s beta", real=True)
+    y = s + b * s**2
+    T = sp.integrate(y**2, (s, 0, 1))
+    V = sp.integrate((1 - s) * sp.diff(y, s) ** 2, (s, 0, 1))
+    quotient = sp.lambdify(b, V / T)
+    for beta in (-3.0, -0.4, 0.0, 0.5, 2.0, 40.0):
+        assert rayleigh_quotient(beta) == pytest.approx(quotient(beta), rel=1e-14)
+    stationary = [r for r in sp.solve(sp.diff(V / T, b), b) if r.is_real]
+    best = min(stationary, key=lambda r: float((V / T).subs(b, r)))
+    least = float((V / T).subs(b, best))
+    assert rayleigh_quotient(float(best)) == pytest.approx(least, rel=1e-14)
+    # Ritz in the basis {s, s^2}: the pencil (V, T) with sympy's integrals, its eigenvalues by scipy
+    basis = (s, s**2)
+    Tm = np.array([[float(sp.integrate(f * g, (s, 0, 1))) for g in basis] for f in basis])
+    Vm = np.array(
+        [
+            [float(sp.integrate((1 - s) * sp.diff(f, s) * sp.diff(g, s), (s, 0, 1))) for g in basis]
+            for f in basis
+        ]
+    )
+    ritz = sla.eigh(Vm, Tm, eigvals_only=True)
+    assert rayleigh_ritz_2x2() == pytest.approx(ritz, rel=1e-13)
+    assert ritz[0] == pytest.approx(least, rel=1e-12)  # the span's least quotient is the trial's minimum
 
 
 def test_random_trial_functions_never_beat_the_gravest_mode():

@@ -95,6 +95,8 @@ def test_state_matrix_has_the_characteristic_roots():
 def test_hamilton_chain_converges_at_order_two_to_the_j0_zeros():
     r = Recorder()
     stability.hamilton_chain(r, [250, 500, 1000, 2000])
+    # the errors are against (j_0k/2)^2 from scipy's jn_zeros (a library's Bessel zeros, not the module's
+    # finite elements); a wrong reference (j_0k/2.02) stops the convergence and fails the order
     assert abs(r.values["galerkin_order"] - 2.0) < 0.02
     assert r.values["galerkin_richardson_error"] < r.values["galerkin_finest_error"] / 100
 

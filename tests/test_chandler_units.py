@@ -46,6 +46,8 @@ def value(results, name):
 
 
 def held(results):
+    """The run's own verdicts on its hard cases (a figure it measured under a bound it states): what the
+    report prints as holding, not a reference; each test's reference checks are its other assertions."""
     return {case["name"]: case["holds"] for case in results.stability}
 
 
@@ -190,6 +192,9 @@ def test_triaxial_run_against_the_small_amplitude_frequency_and_the_ellipse(tmp_
     ratio = np.sqrt(A * (1 - A) / (B * (1 - B)))
     assert value(r, "polhode_axis_ratio") == pytest.approx(ratio, rel=1e-12)
     assert value(r, "polhode_axis_ratio_measured") == pytest.approx(ratio, rel=1e-3)
+    # independent: the run's integration of Euler's equations against the Jacobi elliptic-function solution of
+    # solvers.references (a moment off by 1e-4 in the reference fails it); the period is checked above
+    # against Lamb Art. 48 written here
     assert value(r, "exact_solution_error") < 1e-6
     assert all(held(r).values())
 

@@ -106,6 +106,13 @@ def test_cone_rates_signs_and_forms():
     n = r.numbers
     assert n["psi_dot_measured"] > 0 > n["chi_dot_measured"]
     assert n["cone_rates_error"] < 1e-10
+    # the forms above are evaluated on the run's own angles; Lamb Art. 47 for the symmetric body, closed form
+    # from H alone (A/C = 1 - H, C = 1, omega0 = n (0.1", 0, 1), n one turn a sidereal day):
+    # psi' = |L|/A, chi' = -(C - A) r/A
+    a, spin = 1.0 - earth.H_MHB2000, 2 * np.pi / earth.sidereal_to_solar_days(1.0)
+    L = spin * np.hypot(a * 0.1 * earth.ARCSEC, 1.0)
+    assert n["psi_dot_measured"] == pytest.approx(L / a, rel=1e-10)
+    assert n["chi_dot_measured"] == pytest.approx(-(1.0 - a) * spin / a, rel=1e-10)
     assert n["no_slip_cones_ratio"] == pytest.approx(1.0, rel=1e-10)
 
 

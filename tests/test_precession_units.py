@@ -55,6 +55,8 @@ def value(results, name):
 
 
 def held(results):
+    """The run's own verdicts on its hard cases (a figure it measured under a bound it states): what the
+    report prints as holding, not a reference; each test's reference checks are its other assertions."""
     return {case["name"]: case["holds"] for case in results.stability}
 
 
@@ -312,7 +314,9 @@ def test_examples_polhode_circle_moon_line_in_feet_and_maccullagh(tmp_path):
     # sin(beta) = psi' sin(eps)/n: the angle in mas from the radius over R, formed here
     beta = np.arcsin(value(r, "polhode_circle_radius_cm") / 6.37e8)
     assert value(r, "polhode_cone_angle_mas") == pytest.approx(beta / earth.MAS, rel=1e-9)
-    # MacCullagh's couple is the leading term; the next (J4-like) falls by (a/rho)^2 more
+    # MacCullagh's couple is the leading term; the next (J4-like) falls by (a/rho)^2 more. Independent: the
+    # couple is a quadrature of Newton's attraction over the body's volume, which uses no moment of inertia;
+    # the formula uses the moments only (C = 2a^2/4.5 for 2a^2/5 in the formula fails this)
     assert value(r, "maccullagh_difference_slope") == pytest.approx(2.0, abs=0.05)
     assert value(r, "maccullagh_relative_difference_far") < 1e-5
     # B = A: no component about the symmetry axis (only quadrature round-off)

@@ -626,6 +626,9 @@ def test_lee_section_2_motions_on_eulers_equations():
     r = _Numbers()
     motions.run(r, L, m1, se.singular_points(m1, 0.0, -3 * np.pi, 3 * np.pi))
     n = r.numbers
+    # each pair is Euler's equations integrated against a closed form or quadrature that calls no integrator
+    # (Lee's (2.x) solution, the time as a quadrature in phi, the period as a line integral, the saddle's rate
+    # (1 - m1^2)^(1/4) sqrt(2d)); a rate with exponent 0.3 for 1/4 fails it
     assert n["general_solution_difference"] < 1e-10
     assert n["euler_time_10pi"] == pytest.approx(n["quadrature_time_10pi"], rel=1e-9)
     assert n["closed_orbit_period_euler"] == pytest.approx(n["closed_orbit_period_line_integral"], rel=1e-9)
@@ -636,6 +639,17 @@ def test_lee_section_2_motions_on_eulers_equations():
     assert n["permanent_rotation_residual"] < 1e-14 and n["center_kick_largest"] < 1e-5
     assert n["permanent_rotation_groebner_remainders"] == 0
     assert "x_axis_angle_ratio_t100" not in n  # |m1| < 1: no such claim here
+    # the saddle's rate once more, from the linearisation of Lee (2.2) written here (mu = 0): at omega* =
+    # (0, q, r) the Jacobian of (a q r + m, -b r p, c p q); its one positive eigenvalue is the growth rate
+    a, b, c = BODY.a, BODY.b, BODY.c
+    saddle = [
+        pt["phi2"] for pt in se.singular_points(m1, 0.0, -3 * np.pi, 3 * np.pi) if pt["type"] == "saddle"
+    ]
+    _, q, r_ = L.from_plane(saddle[0], 0.0)
+    jacobian = np.array([[0.0, a * r_, a * q], [-b * r_, 0.0, 0.0], [c * q, 0.0, 0.0]])
+    rate = float(np.max(np.linalg.eigvals(jacobian).real))
+    assert n["saddle_growth_rate"] == pytest.approx(rate, rel=1e-3)
+    assert n["saddle_growth_rate_lee"] == pytest.approx(rate, rel=1e-12)
 
 
 def test_beyond_one_the_x_axis_attracts_and_the_threshold_gives_m1_one():
