@@ -209,6 +209,25 @@ def test_a_number_opens_its_provenance(browser, built_repo, how):
 
 
 @pytest.mark.slow
+def test_a_tap_shows_a_figure_at_its_print_size_on_a_phone(browser, built_repo):
+    """Fitted to 390 px a full-width figure's text falls to about 5 px; a tap shows it at its intrinsic
+    (print) width, its text as on paper, scrolling inside its own box while the page stays 390 px wide."""
+    page = _open(browser, built_repo, 390, touch=True)
+    link = page.locator("figure.figure a.full-size").first
+    link.scroll_into_view_if_needed()
+    fitted = link.locator("img").bounding_box()["width"]
+    natural = link.locator("img").evaluate("img => img.naturalWidth")
+    assert fitted < 390 < natural  # a full-width figure is wider than a phone at print size
+    link.tap()
+    assert link.get_attribute("aria-expanded") == "true"
+    assert link.locator("img").bounding_box()["width"] == pytest.approx(natural, abs=1)
+    assert page.evaluate("document.documentElement.scrollWidth") <= 390  # the figure scrolls, not the page
+    link.tap()
+    assert link.locator("img").bounding_box()["width"] == pytest.approx(fitted, abs=1)
+    page.context.close()
+
+
+@pytest.mark.slow
 def test_every_figure_links_its_svg_data_and_scene(built_repo):
     page = (built_repo / "results/report.html").read_text()
     figures = re.findall(r'<figure id="fig:[^"]+" class="figure">.*?</figure>', page, re.S)

@@ -1,5 +1,6 @@
-// The report's only script: the contents menu on small screens, and the provenance panel that a
-// number opens on click, tap or keyboard. Without it every number still links to its appendix row.
+// The report's only script: the contents menu on small screens, a figure shown at print size on a phone's tap,
+// and the provenance panel that a number opens on click, tap or keyboard. Without it every number still links
+// to its appendix row.
 (function () {
   "use strict";
   var data = JSON.parse(document.getElementById("provenance-data").textContent);
@@ -68,6 +69,14 @@
   }
 
   document.addEventListener("click", function (event) {
+    // On a phone a tap on a figure shows it in place at its print size, scrolling sideways (its text as in
+    // print); a second tap fits it again. Without the script the tap opens the figure's SVG.
+    var figure = event.target.closest("a.full-size");
+    if (figure && window.matchMedia("(max-width: 700px)").matches) {
+      event.preventDefault();
+      figure.setAttribute("aria-expanded", figure.classList.toggle("zoomed") ? "true" : "false");
+      return;
+    }
     var link = event.target.closest("a.num");
     if (link) {
       event.preventDefault();
