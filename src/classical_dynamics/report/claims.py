@@ -132,7 +132,8 @@ def shown_digits(claim: ClaimResult) -> int:
     """The figures a claim's computed value is shown to. Met to round-off: what its check supports, less
     trailing zeros, six at most (the deviation column says how closely). A real difference: what its check
     supports (a whole number without its zeros: −1, not −1.0000000), and enough more that the deviation reads
-    back from the figures shown, at most two beyond the check's."""
+    back from the figures shown to its first figure, at most three beyond the check's; where ours meets every
+    figure the source prints, one past them unless more are needed to read the deviation back."""
     check = claim.check
     reference = claim.source.get("value")
     # At most 8: a tighter agreement than that is read from the deviation column, not from digits.
