@@ -44,6 +44,24 @@ def test_the_work_channel_integrates_the_quadratic_form_along_the_motion():
     assert np.max(np.abs(0.5 * (v**2 + x**2) - (0.5 - lost))) < 1e-10
 
 
+def test_the_packed_system_is_a_z_plus_f_cos_st_and_a_work_channel_only_when_asked():
+    """One evaluation against numpy: z' = A z + F cos(s t), and z^T W z in one more component only with W
+    (without it the state has m components: a work flag set by mistake would write past its end)."""
+    rng = np.random.default_rng(7)
+    A, F, W, z = rng.normal(size=(3, 3)), rng.normal(size=3), rng.normal(size=(3, 3)), rng.normal(size=3)
+    t, s = 0.7, 1.9
+    plain = linear.pack(A, F)  # no frequency given: a constant force
+    assert list(plain[:3]) == [3.0, 0.0, 0.0]
+    out = np.empty(3)
+    linear.linear_system(t, z, plain, out)
+    assert np.allclose(out, A @ z + F, rtol=1e-15, atol=1e-15)
+    with_work = linear.pack(A, F, s, W)
+    assert list(with_work[:3]) == [3.0, s, 1.0]
+    out = np.empty(4)
+    linear.linear_system(t, np.append(z, 0.0), with_work, out)
+    assert np.allclose(out, np.append(A @ z + F * np.cos(s * t), z @ W @ z), rtol=1e-14, atol=1e-15)
+
+
 def test_the_state_matrix_holds_friction_and_gyroscopic_terms():
     K, M = np.array([[2.0, -1.0], [-1.0, 2.0]]), np.diag([1.0, 2.0])
     B, G = np.diag([0.1, 0.2]), np.array([[0.0, 0.5], [-0.5, 0.0]])
