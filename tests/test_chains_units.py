@@ -91,6 +91,7 @@ def test_continuum_run_records_bernoullis_frequencies_node_and_rayleigh_bound():
         got["rayleigh_best_sigma2_l_over_g"] / (j[0] / 2) ** 2 - 1, rel=1e-12
     )
     assert got["tau_substitution_exact"] == got["rayleigh_formula_exact"] == 1
+    # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
     assert all(case["holds"] for case in results.stability)
     assert {"mode_shapes", "rayleigh"} <= set(results.figures)
 
@@ -159,6 +160,7 @@ def test_forced_response_by_normal_coordinates_matches_a_direct_solve_and_the_st
     assert got["forced_static_limit"] < 1e-12
     assert got["resonance_residue_slope"] == pytest.approx(1.0, abs=0.01)  # the deviation is O(delta)
     assert got["transient_integrator_vs_closed_form"] < 1e-8
+    # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
     assert all(case["holds"] for case in results.stability), results.stability
     # the table's amplitudes against numpy's solve on the matrices written out here, at delta = 1e-2
     K, M = _string_matrices(3.0, 1.0)
@@ -364,4 +366,5 @@ def test_ring_run_records_lambs_tension_and_wave_speeds_for_a_small_ring(monkeyp
     frame = results.tables["waves"][0]
     s = frame.s.to_numpy()
     np.testing.assert_allclose(frame.lamb_space_2, 2 * (s**2 - 1) / (s**2 + 1))
+    # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
     assert all(case["holds"] for case in results.stability), results.stability

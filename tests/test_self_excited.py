@@ -498,6 +498,7 @@ def test_rare_case_without_torque_line_of_rest_points():
         "rare_blow_up_time",
         "rare_escape_direction",
     } <= set(cases)
+    # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
     assert all(h["holds"] for h in cases.values()), cases
     assert results.numbers["rest_decay_exponent"]["value"] == pytest.approx(
         body.b / (body.a + body.c), abs=1e-9
@@ -591,6 +592,7 @@ def test_huge_excursion_below_the_critical_drag_closes():
     results = Results("self_excited", "t", "t")
     excursions.excursion(results, M, excursions.excursion_start(M, 10.0))
     assert results.numbers["excursion_growth"]["value"] > 100
+    # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
     assert all(h["holds"] for h in results.stability)
     assert {h["name"] for h in results.stability} == {
         "excursion_turning_points",

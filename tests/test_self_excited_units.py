@@ -63,6 +63,7 @@ def test_viscous_run_with_friction_tends_to_theorem_3s_rotation():
     # w = 1 + (nu + i g1)/mu, g1 = h m3/mu, xi's final rate (5.27)
     g1 = h * r
     assert complex(got["w_real"], got["w_imag"]) == pytest.approx(1 + (0.3 + 1j * g1) / 0.5, rel=1e-14)
+    # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
     assert all(case["holds"] for case in results.stability)
     assert "solution" in results.figures
 
@@ -149,6 +150,7 @@ def test_special_function_costs_keep_their_bounds():
     viscous.special_function_costs(results, True)
     got = _values(results)
     assert got["si_ci_error_over_bound"] <= 1.0
+    # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
     assert all(case["holds"] for case in results.stability)
     # the series serves small x, the expansion large x (Lee (5.38)-(5.48))
     assert got["si_ci_reaches_1e-12_x2_series"] == 1
@@ -298,6 +300,7 @@ def test_degenerate_point_is_reached_algebraically_at_lees_rate(m1):
     assert got["degenerate_approach_coefficient"] == pytest.approx(12.0, rel=1e-4)
     # from x = 0.5 at tau = 0: c = sqrt(12/0.5) to leading order, so x(100) is near 12/(100 + 4.9)^2
     assert got["degenerate_distance_tau100"] == pytest.approx(12 / (100 + np.sqrt(24)) ** 2, rel=0.05)
+    # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
     assert all(case["holds"] for case in results.stability)
 
 
@@ -499,6 +502,7 @@ def test_middle_axis_planes_runaway_escape_and_the_rare_case():
     assert got["limit_q1"] == pytest.approx(np.sqrt(0.5 / nu), rel=1e-9)
     assert got["escape_exponent"] == pytest.approx(2 * nu, rel=1e-6)
     for results in (runaway, beyond, rare):
+        # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
         assert all(case["holds"] for case in results.stability), results.stability
         for fig, _ in results.figures.values():
             plt.close(fig)
