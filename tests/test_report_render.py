@@ -1,5 +1,6 @@
 """The report as a reader meets it: the HTML in headless Chromium, the PDF rendered to page images."""
 
+import json
 import re
 import subprocess
 
@@ -106,3 +107,29 @@ def test_pdf_pages(built_repo, tmp_path):
     # figures are drawn: a figure page has much more ink than a text page
     heavy = [np.mean(np.asarray(Image.open(p).convert("L")) < 200) for p in pages]
     assert max(heavy) > 0.04
+
+
+@pytest.mark.slow
+def test_each_studys_effects_table_is_its_registry(built_repo):
+    """The appendix's table of a study's effects is generated from its registry (through each scene's
+    provenance): every effect a built scene lists, with the registry's kind."""
+    import importlib
+
+    page = (built_repo / "results/report.html").read_text(encoding="utf-8")
+    checked = 0
+    for provenance_file in sorted((built_repo / "results").glob("*/*/provenance.json")):
+        record = json.loads(provenance_file.read_text())
+        if "effects_simulated" not in record or not record["effects_simulated"]:
+            continue
+        study = record["study"]
+        registry = importlib.import_module(f"classical_dynamics.studies.{study}").EFFECTS
+        label = f"tab:{study}-effect-registry"
+        table = re.search(rf'<figure class="table" id="{label}">(.*?)</figure>', page, re.S)
+        assert table, study
+        cells = re.findall(r"<tr><td><code>(.*?)</code></td><td>(\w+)</td>", table[1])
+        # a long name carries break points (<wbr>, soft hyphens) for narrow columns
+        rows = {re.sub(r"<[^>]+>|\u00ad|\u200b", "", name): kind for name, kind in cells}
+        for name in record["effects_simulated"]:
+            assert rows.get(name) == registry[name].kind, (study, name)
+            checked += 1
+    assert checked > 20

@@ -116,6 +116,11 @@ def _run(args) -> int:
         "scene_file": str(args.scene),
         "scene_sha256": scene.sha256,
         "effects_simulated": sorted(scene.effects),
+        # what each listed effect is, from the study's registry (the report's table of effects reads it here)
+        "effects_registry": {
+            name: {"kind": module.EFFECTS[name].kind, "summary": module.EFFECTS[name].summary}
+            for name in sorted(scene.effects)
+        },
         "quick": bool(args.quick),
         **provenance.git_state(),
         "packages": provenance.package_versions(),

@@ -51,7 +51,9 @@ def _require_fixed_free(name: str, geometry: ChainGeometry):
         raise ValueError(f"effect {name} acts on a chain fixed at one end and free at the other")
 
 
-@EFFECTS.register("gravity", "tension", "weight of the chain below each link: tension g x (mass below)")
+@EFFECTS.register(
+    "gravity", "tension", "the weight of the chain below each link: a tension $g$ × (the mass below)"
+)
 def _gravity(params, geometry: ChainGeometry) -> Contribution:
     _require_fixed_free("gravity", geometry)
     tension = params["g_m_per_s2"] * geometry.mass_beyond
@@ -61,7 +63,7 @@ def _gravity(params, geometry: ChainGeometry) -> Contribution:
 @EFFECTS.register(
     "rotation",
     "tension",
-    "steady rotation about the fixed end: centrifugal tension; in-plane motion also feels -m omega^2",
+    "a steady rotation about the fixed end: a centrifugal tension; in-plane motion also feels $-m\\omega^2$",
 )
 def _rotation(params, geometry: ChainGeometry) -> Contribution:
     _require_fixed_free("rotation", geometry)
@@ -72,7 +74,7 @@ def _rotation(params, geometry: ChainGeometry) -> Contribution:
     return Contribution(segment_stiffness=tension / geometry.spacing_m, diagonal=diagonal, tension_n=tension)
 
 
-@EFFECTS.register("tension", "tension", "a uniform tension P along a string (loaded string)")
+@EFFECTS.register("tension", "tension", "a uniform tension $P$ along a string (the loaded string)")
 def _tension(params, geometry: ChainGeometry) -> Contribution:
     tension = np.full(geometry.n_segments, float(params["newton"]))
     return Contribution(segment_stiffness=tension / geometry.spacing_m, tension_n=tension)
@@ -87,13 +89,13 @@ def _springs(params, geometry: ChainGeometry) -> Contribution:
 @EFFECTS.register(
     "friction",
     "dissipation",
-    "dashpots from particles to the frame: Rayleigh's dissipation function F = 1/2 sum b y'^2",
+    "dashpots from the particles to the frame: Rayleigh's dissipation function $F = \\sum b\\dot y^2/2$",
 )
 def _friction(params, geometry: ChainGeometry) -> Contribution:
     return Contribution(damping=_per_particle(params["b_kg_per_s"], geometry, "friction"))
 
 
-@EFFECTS.register("forcing", "excitation", "a simple-harmonic force F cos(sigma t) on chosen particles")
+@EFFECTS.register("forcing", "excitation", "a simple-harmonic force $F\\cos\\sigma t$ on chosen particles")
 def _forcing(params, geometry: ChainGeometry) -> Contribution:
     return Contribution(force=_per_particle(params["newton"], geometry, "forcing"))
 

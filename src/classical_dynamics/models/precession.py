@@ -273,10 +273,14 @@ class PrecessionModel:
 SWITCHES = {
     "solar_torque": ("sun", "torque", "the Sun's couple on the equatorial bulge (a point mass on its orbit)"),
     "lunar_torque": ("moon", "torque", "the Moon's couple on the equatorial bulge"),
-    "orbit_eccentricity": ("eccentric", "orbit", "Keplerian ellipses: e' = 0.0167 (Sun), 0.0549 (Moon)"),
-    "lunar_inclination": ("inclined", "orbit", "the lunar orbit tilted by i = 5.145° to the ecliptic"),
-    "node_regression": ("regressing", "orbit", "the lunar node regresses once in 18.6 years"),
-    "lunar_perigee_advance": ("advancing", "orbit", "the lunar perigee advances once in 8.85 years"),
+    "orbit_eccentricity": (
+        "eccentric",
+        "orbit",
+        "Keplerian ellipses for the Sun's and the Moon's orbits, with the scene's eccentricities",
+    ),
+    "lunar_inclination": ("inclined", "orbit", "the lunar orbit tilted to the ecliptic by the scene's $i$"),
+    "node_regression": ("regressing", "orbit", "the lunar node regresses along the ecliptic"),
+    "lunar_perigee_advance": ("advancing", "orbit", "the lunar perigee advances"),
 }
 for _name, (_flag, _kind, _summary) in SWITCHES.items():
     EFFECTS.register(_name, _kind, _summary)(lambda params, model, flag=_flag: setattr(model, flag, True))

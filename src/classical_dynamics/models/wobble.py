@@ -70,7 +70,7 @@ class WobbleModel:
         return 2.0 * np.pi / (self.n * self.wobble_frequency())
 
 
-@EFFECTS.register("triaxiality", "inertia", "B ≠ A: the equatorial ellipticity (B − A)/C")
+@EFFECTS.register("triaxiality", "inertia", "$B \\ne A$: the equatorial ellipticity $(B - A)/C$")
 def _triaxiality(params, model: WobbleModel):
     model.b_minus_a_over_c = b_minus_a_over_c(params, model.H)
 
@@ -84,7 +84,8 @@ def b_minus_a_over_c(params, H: float) -> float:
 @EFFECTS.register(
     "elastic_yielding",
     "deformation",
-    "Lamb Art. 71: the centrifugal bulge follows the spin axis, products of inertia −βnq, −βnp",
+    "Lamb Art. 71: the centrifugal bulge follows the spin axis, "
+    "products of inertia $-\\beta nq$, $-\\beta np$",
 )
 def _elastic(params, model: WobbleModel):
     if "k2" in params:
@@ -96,7 +97,8 @@ def _elastic(params, model: WobbleModel):
 @EFFECTS.register(
     "dissipation",
     "dissipation",
-    "internal friction with quality factor Q (double bracket: |L| kept, energy falls)",
+    "internal friction with quality factor $Q$ "
+    "(a double bracket: $|\\boldsymbol{L}|$ kept, the energy falls)",
 )
 def _dissipation(params, model: WobbleModel):
     model.Q = float(params["Q"])

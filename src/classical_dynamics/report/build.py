@@ -226,6 +226,7 @@ class Report:
             long_tables=lambda study: Markup("".join(self.long_tables.get(study, []))),
             stability=self.stability,
             scenes=self.scenes_table,
+            effects=self.effects_table,
             summary=self.index.summary,
             rebuild=self.rebuild,
             study_scenes=self.index.scenes,
@@ -558,6 +559,15 @@ class Report:
                 }
             )
         return rows
+
+    def effects_table(self, study):
+        """The effects the study's scenes list, as its registry describes them (each scene's job records them
+        in its provenance): name, kind, what it adds, and the scenes that simulate it."""
+        effects = {}
+        for scene in self.index.scenes(study):
+            for name, entry in self.index.provenance[(study, scene)].get("effects_registry", {}).items():
+                effects.setdefault(name, {"name": name, **entry, "scenes": []})["scenes"].append(scene)
+        return sorted(effects.values(), key=lambda effect: (effect["kind"], effect["name"]))
 
     # --- the whole --------------------------------------------------------------------------
     def context(self):

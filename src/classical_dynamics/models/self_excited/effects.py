@@ -8,7 +8,7 @@ from ...scenes import EffectRegistry
 EFFECTS = EffectRegistry("self_excited")
 
 
-@EFFECTS.register("body_torque", "torque", "a constant torque M along a principal axis, fixed in the body")
+@EFFECTS.register("body_torque", "torque", "a constant torque $M$ along a principal axis, fixed in the body")
 def _body_torque(params, context):
     return params
 
@@ -16,8 +16,8 @@ def _body_torque(params, context):
 @EFFECTS.register(
     "quadratic_torque",
     "torque",
-    "the torque's part mu0 |omega|^2 along the same axis (Lee's "
-    "perturbation: negative mu0 is a drag-like self-regulation)",
+    "the torque's part $\\mu_0|\\boldsymbol\\omega|^2$ along the same axis (Lee's "
+    "perturbation: a negative $\\mu_0$ is a drag-like self-regulation)",
 )
 def _quadratic_torque(params, context):
     return params
@@ -26,7 +26,8 @@ def _quadratic_torque(params, context):
 @EFFECTS.register(
     "drag",
     "medium",
-    "a viscous medium's resisting torque, -mu1 (p, q) equatorial and -mu0 r axial (Lee §5; both or neither)",
+    "a viscous medium's resisting torque, $-\\mu_1(p, q)$ equatorial and $-\\mu_0 r$ axial "
+    "(Lee §5; both or neither)",
 )
 def _drag(params, context):
     return params

@@ -1095,6 +1095,7 @@ def main(argv=None) -> int:
         "input_scenes": sorted(inputs),
         "input_sha256": inputs,
         "effects_simulated": [],
+        "effects_registry": {},
         "quick": bool(args.quick),
         **provenance.git_state(),
         "packages": provenance.package_versions(),

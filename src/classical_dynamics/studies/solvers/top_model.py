@@ -40,8 +40,8 @@ def register(effects: EffectRegistry) -> None:
     @effects.register(
         "gravity",
         "torque",
-        "the weight Mg at a height h on the figure axis: the couple "
-        "Mgh gamma x e3 about the fixed point (heavy top)",
+        "the weight $Mg$ at a height $h$ on the figure axis: the couple "
+        "$Mgh\\,\\boldsymbol\\gamma \\times \\hat e_3$ about the fixed point (the heavy top)",
     )
     def _gravity(params, context):
         return float(params["Mgh"])
