@@ -39,6 +39,15 @@ def chain(n=3, amplitude=0.4):
     )
 
 
+def observed_order(problem, method, span, n, error):
+    """The order read off the largest final-state error at n and 2n steps over `span` (log2 of the ratio)."""
+    errors = [
+        np.max(np.abs(error(solve_fixed(problem, method, h=span / k, n_steps=k, save=Save(final=True)).y)))
+        for k in (n, 2 * n)
+    ]
+    return np.log2(errors[0] / errors[1])
+
+
 def bits(x):
     x = np.asarray(x)
     return x.shape, x.tobytes()
@@ -167,11 +176,8 @@ def test_stormer_verlet_energy_stays_bounded_against_the_closed_form():
 @pytest.mark.parametrize("method, order", [("stormer-verlet", 2), ("yoshida4", 4)])
 def test_verlet_methods_converge_at_their_order_to_the_closed_form(method, order):
     problem = FixedProblem([1.0, 0.0], [1.0], linear.harmonic_force)
-    errors = []
-    for n in (100, 200):
-        y = solve_fixed(problem, method, h=10.0 / n, n_steps=n, save=Save(final=True)).y
-        errors.append(np.max(np.abs(y - [np.cos(10.0), -np.sin(10.0)])))
-    assert np.log2(errors[0] / errors[1]) == pytest.approx(order, abs=0.1)
+    exact = [np.cos(10.0), -np.sin(10.0)]
+    assert observed_order(problem, method, 10.0, 100, lambda y: y - exact) == pytest.approx(order, abs=0.1)
 
 
 def test_rattle_keeps_the_links_to_round_off_and_the_energy_bounded():
@@ -196,20 +202,10 @@ def test_rigid_splitting_keeps_the_casimir_to_round_off_and_converges_at_its_ord
     C0 = m0 @ m0
     assert np.max(np.abs(rigid_body.casimir(rows[:, :3]) / C0 - 1)) < 10 * np.sqrt(n) * EPS
     assert np.max(np.abs(np.linalg.norm(rows[:, 3:], axis=1) - 1)) < 1e-12
+    exact = ref.hnw_rigid_body(20.0)
     for order in (2, 4):
-        errors = [
-            np.max(
-                np.abs(
-                    solve_fixed(
-                        body, f"rigid-splitting{order}", h=20.0 / k, n_steps=k, save=Save(final=True)
-                    ).y[:3]
-                    / I
-                    - ref.hnw_rigid_body(20.0)
-                )
-            )
-            for k in (400, 800)
-        ]
-        assert np.log2(errors[0] / errors[1]) == pytest.approx(order, abs=0.15)
+        measured = observed_order(body, f"rigid-splitting{order}", 20.0, 400, lambda y: y[:3] / I - exact)
+        assert measured == pytest.approx(order, abs=0.15)
 
 
 def test_invariant_errors_measures_the_doors_steps():
@@ -239,20 +235,11 @@ def test_symmetric_torqued_free_flow_is_exact_and_the_torque_converges_at_its_or
     tau = (0.02, -0.01, 0.03)
     torqued = FixedProblem(rigid_body.packed(m0), [A, C, *tau], constant_torque)
     exact = ref.bodewadt(A, C, tau, w0, 50.0)
-    for order, steps in ((2, (2000, 4000)), (4, (250, 500))):
-        errors = [
-            np.max(
-                np.abs(
-                    solve_fixed(
-                        torqued, f"symmetric-torqued{order}", h=50.0 / k, n_steps=k, save=Save(final=True)
-                    ).y[:3]
-                    / [A, A, C]
-                    - exact
-                )
-            )
-            for k in steps
-        ]
-        assert np.log2(errors[0] / errors[1]) == pytest.approx(order, abs=0.15)
+    for order, n in ((2, 2000), (4, 250)):
+        measured = observed_order(
+            torqued, f"symmetric-torqued{order}", 50.0, n, lambda y: y[:3] / [A, A, C] - exact
+        )
+        assert measured == pytest.approx(order, abs=0.15)
 
 
 # --- bad inputs ---------------------------------------------------------------------------------------------

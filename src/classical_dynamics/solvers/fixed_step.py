@@ -51,12 +51,7 @@ from typing import Callable
 import numpy as np
 
 from . import rattle, rigid_body, symplectic
-from .ode import Solution, require_signature
-
-_NO_TIMES = np.zeros(0)
-_NO_TIMES.flags.writeable = False
-_NO_EVENTS = np.zeros(0, dtype=np.int64)
-_NO_EVENTS.flags.writeable = False
+from .ode import _NO_EVENTS, _NO_TIMES, Solution, require_signature
 
 
 @dataclass(frozen=True)

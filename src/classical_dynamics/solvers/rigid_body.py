@@ -27,7 +27,7 @@ YOSHIDA = (1.0 / (2.0 - 2.0 ** (1.0 / 3.0)), -(2.0 ** (1.0 / 3.0)) / (2.0 - 2.0 
 @njit(cache=True)
 def _rotate_axis(m, q, axis, I, h):
     """Exact flow of m_axis^2 / (2 I_axis) for time h, on m (body) and the attitude quaternion q. With q None
-    (the invariants need no attitude) numba compiles the attitude away: 1.7 times as fast."""
+    (the invariants need no attitude) numba compiles the attitude away."""
     theta = m[axis] / I[axis] * h
     c, s = np.cos(theta), np.sin(theta)
     j, k = (axis + 1) % 3, (axis + 2) % 3
@@ -150,8 +150,10 @@ def invariant_errors(I, m0, h, n_steps, order, block):
 
     A named measurement, not a method behind fixed_step.solve_fixed: the steps of m are those of
     "rigid-splitting2/4" (the attitude does not enter them), but it stores no state, only the running maxima
-    of this one method's two invariants, over a loop with the attitude compiled away (1.7 times as fast). As a
-    save option of the door it would put one method's invariants into the generic output and run a loop other
+    of this one method's two invariants, over a loop with the attitude compiled away (117 against 140 ns a
+    step at order 2, 289 against 370 at order 4, beside the door's final-state run of the same steps; the
+    minimum of 5 runs on the HNW body). As a save option of the door it would put one method's invariants
+    into the generic output and run a loop other
     than the method's own; tests/test_fixed_step.py checks that its maxima are those of the door's steps.
     """
     m = m0.copy()
