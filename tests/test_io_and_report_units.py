@@ -351,19 +351,20 @@ def test_a_value_no_source_prints_is_marked_evaluated():
     assert not unmarked, unmarked
 
 
-def test_the_rigid_series_values_are_woolards_coefficients_at_mid_run():
-    """The rigid-Earth reference (Woolard's series, epoch 1900) is set at T = 1.5, the middle of the
-    2000-2100 run, to the series' four decimals; the limit rows name the same value for their expected size.
-    His 18.6-year amplitudes rest on the observed constant of nutation: no row takes them as a rigid Earth."""
+def test_the_rigid_series_values_are_the_explanatory_supplements():
+    """The rigid-Earth reference is Woolard's series as the Explanatory Supplement (1961) prints it, read from
+    its transcription in Plan 9's astro (nutt.c: the coefficients to 0.0001 arcsec, without secular rates); the
+    limit rows name the same value for their expected size. His 18.6-year amplitudes rest on the observed
+    constant of nutation: no row takes them as a rigid Earth."""
     from pathlib import Path
 
     import yaml
 
-    printed = {  # a + b T, as the almanacs' series prints them (the 18.6-year terms are no rigid reference)
-        "semiannual_longitude": (1.2729, 0.00013),
-        "semiannual_obliquity": (0.5522, -0.00029),
-        "fortnightly_longitude": (0.2037, 0.0),
-        "fortnightly_obliquity": (0.0884, 0.0),
+    printed = {  # nutt.c's nutfp: 1.2730 (2L, longitude), .5519 (obliquity), .2037 and .0884 (2L')
+        "semiannual_longitude": 1.2730,
+        "semiannual_obliquity": 0.5519,
+        "fortnightly_longitude": 0.2037,
+        "fortnightly_obliquity": 0.0884,
     }
     rows = {
         c["id"]: c
@@ -371,10 +372,11 @@ def test_the_rigid_series_values_are_woolards_coefficients_at_mid_run():
             (Path(claims.__file__).parents[1] / "studies/precession/claims.yaml").read_text(encoding="utf-8")
         )
     }
-    for cid, (a, b) in printed.items():
-        at_mid_run = round(a + b * 1.5, 4)
-        assert rows[cid]["expected"]["value"] == at_mid_run, cid
-        assert rows["woolard_" + cid]["source"]["value"] == at_mid_run, cid
+    for cid, value in printed.items():
+        for row, field in ((rows[cid], "expected"), (rows["woolard_" + cid], "source")):
+            assert row[field]["value"] == value, cid
+            assert row[field]["cite"] == "explsupp1961", cid
+            assert not row[field].get("evaluated"), cid
         assert rows["woolard_" + cid]["computed"] == rows[cid]["computed"], cid
     assert not any(c.get("expected") for c in rows.values() if c["id"].startswith("nutation_18p6"))
     assert not any(c["id"].startswith("woolard_nutation_18p6") for c in rows.values())
