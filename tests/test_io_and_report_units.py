@@ -353,7 +353,7 @@ def test_a_value_no_source_prints_is_marked_evaluated():
 
 def test_the_rigid_series_values_are_the_explanatory_supplements():
     """The rigid-Earth reference is Woolard's series as the Explanatory Supplement (1961) prints it, read from
-    its transcription in Plan 9's astro (nutt.c: the coefficients to 0.0001 arcsec, without secular rates); the
+    its transcription in Plan 9's astro (nutt.c: the coefficients to 0.0001 arcsec, no secular rates); the
     limit rows name the same value for their expected size. His 18.6-year amplitudes rest on the observed
     constant of nutation: no row takes them as a rigid Earth."""
     from pathlib import Path

@@ -331,9 +331,8 @@ def test_a_new_study_is_one_package_one_scenes_folder_and_one_registry_line(scra
             "analysis.step_hours",
         ),
         (
-            "title: x\nbody: {moments: [4.0, 2.5, 1.0]}\ntorque_axis: largest\nplane: {m1: 0.5, nu: 0, "
-            "delta: 1}\n"
-            "effects: {body_torque: }\n",
+            "title: x\nbody: {moments: [4.0, 2.5, 1.0]}\ntorque_axis: largest\nplane: {delta: 1}\n"
+            "effects: {body_torque: {m1: 0.5}}\n",
             "body.moments",
         ),
     ],

@@ -169,8 +169,8 @@ GOOD = {
     "title": "x",
     "body": {"moments": [3.0, 2.2, 1.2]},
     "torque_axis": "largest",
-    "plane": {"m1": 0.5, "nu": 0.1, "delta": 1.0},
-    "effects": {"body_torque": None, "quadratic_torque": None},
+    "plane": {"delta": 1.0},
+    "effects": {"body_torque": {"m1": 0.5}, "quadratic_torque": {"nu": 0.1}},
 }
 
 
@@ -199,11 +199,19 @@ GOOD = {
             "excursion.q0",
         ),
         (lambda d: d.update(excursion={"q0": 10.0}), "excursion"),  # the largest axis has none
-        (lambda d: (d.update(torque_axis="middle"), d["plane"].update(alpha=[0.8, 0.3], nu=0.0)), "effects"),
-        (lambda d: d["plane"].update(nu="nu_c"), "plane.nu"),
-        (lambda d: d["plane"].update(m1=float("nan")), "plane.m1"),
+        (
+            lambda d: (
+                d.update(torque_axis="middle"),
+                d["plane"].update(alpha=[0.8, 0.3]),
+                d["effects"]["quadratic_torque"].update(nu=0.0),
+            ),
+            "effects.quadratic_torque.nu",
+        ),
+        (lambda d: d["effects"]["quadratic_torque"].update(nu="nu_c"), "effects.quadratic_torque.nu"),
+        (lambda d: d["effects"]["body_torque"].update(m1=float("nan")), "effects.body_torque.m1"),
         (lambda d: d["plane"].update(delta=float("inf")), "plane.delta"),
-        (lambda d: d["effects"].pop("quadratic_torque"), "effects"),
+        (lambda d: d["effects"]["quadratic_torque"].update(nu=0.0), "effects.quadratic_torque.nu"),
+        (lambda d: d["plane"].update(m1=0.5), "plane.m1"),  # moved to effects.body_torque.m1
         (lambda d: d["effects"].update(magic=None), "effects.magic"),
     ],
 )

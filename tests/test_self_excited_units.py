@@ -27,9 +27,14 @@ def _values(results):
 # --- viscous.py: Lee §5 ----------------------------------------------------------------------------------
 
 
-def _viscous_scene(viscous_block, drag=True, moments=(2.5, 2.5, 1.0), analysis=None):
-    effects = {"body_torque": None, **({"drag": None} if drag else {})}
-    data = {"body": {"moments": list(moments)}, "viscous": viscous_block, "effects": effects}
+def _viscous_scene(block, drag=True, moments=(2.5, 2.5, 1.0), analysis=None):
+    """A Lee §5 scene from one block of numbers: the torque and drags go into the effects they belong to."""
+    block = dict(block)
+    m, nu, mu = block.pop("torque"), block.pop("nu", 0.0), block.pop("mu", 0.0)
+    effects = {"body_torque": {"m": m}} if any(m) else {}
+    if drag and nu:
+        effects["drag"] = {"nu": nu, "mu": mu}
+    data = {"body": {"moments": list(moments)}, "viscous": block, "effects": effects}
     return SimpleNamespace(name="v", title="v", data={**data, "analysis": analysis or {}})
 
 

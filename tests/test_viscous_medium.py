@@ -204,9 +204,10 @@ def _scene():
     "change,field",
     [
         (lambda d: d["body"].update(moments=[3.0, 2.2, 1.2]), "body.moments"),
-        (lambda d: d["viscous"].update(nu=1.0), "viscous.nu"),  # nu/mu = 2: w' = 0
-        (lambda d: d["viscous"].update(mu=0.0), "viscous.mu"),
-        (lambda d: d["effects"].pop("drag"), "effects"),
+        (lambda d: d["effects"]["drag"].update(nu=1.0), "effects.drag.nu"),  # nu/mu = 2: w' = 0
+        (lambda d: d["effects"]["drag"].update(mu=0.0), "effects.drag.mu"),
+        (lambda d: d["effects"]["body_torque"].update(m=[0.0, 0.0, 0.0]), "effects.body_torque.m"),
+        (lambda d: d["viscous"].update(nu=0.3), "viscous.nu"),  # now effects.drag.nu
         (lambda d: d.update(torque_axis="largest"), "torque_axis"),
         (lambda d: d["viscous"].update(omega0=[0.5, float("nan"), 2.0]), "viscous.omega0"),
     ],

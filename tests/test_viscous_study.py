@@ -56,14 +56,17 @@ def test_the_bound_count_is_the_tables(table):
 
 
 def test_medium_reads_moments_and_drag_from_the_scene():
-    # h = (A - C)/A with A the repeated moment, in any order; no 'drag' effect means no friction
+    # h = (A - C)/A with A the repeated moment, in any order; the torque and drags are the effects' alone:
+    # without 'drag' no friction, without 'body_torque' no torque
     data = {
         "body": {"moments": [0.5, 2.0, 2.0]},
-        "viscous": {"nu": 0.3, "mu": 0.2, "torque": [0.1, 0.0, 0.4], "omega0": [1.0, 0.5, 2.0]},
-        "effects": {"drag": None},
+        "viscous": {"omega0": [1.0, 0.5, 2.0]},
+        "effects": {"body_torque": {"m": [0.1, 0.0, 0.4]}, "drag": {"nu": 0.3, "mu": 0.2}},
     }
     V = viscous.medium(data)
     assert (V.h, V.nu, V.mu) == pytest.approx(((2.0 - 0.5) / 2.0, 0.3, 0.2), rel=1e-15)
     assert V.m == (0.1, 0.0, 0.4) and V.omega0 == (1.0, 0.5, 2.0)
-    V = viscous.medium({**data, "effects": {}})
+    V = viscous.medium({**data, "effects": {"body_torque": {"m": [0.1, 0.0, 0.4]}}})
     assert V.nu == 0.0 and V.mu == 0.0 and not V.friction
+    V = viscous.medium({**data, "effects": {"drag": {"nu": 0.3, "mu": 0.2}}})
+    assert V.m == (0.0, 0.0, 0.0) and V.nu == 0.3

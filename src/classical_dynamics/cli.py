@@ -63,7 +63,7 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="classical_dynamics")
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("validate", help="validate scene files; one line per problem")
-    p.add_argument("study")
+    scene_job.study_argument(p)
     p.add_argument("scenes", nargs="+")
     scene_job.budget_arguments(p)
     p.set_defaults(func=cmd_validate)

@@ -35,8 +35,14 @@ def budget_arguments(parser) -> None:
     parser.add_argument("--budget-memory-mb", type=float)
 
 
+def study_argument(parser) -> None:
+    from .studies.registry import STUDIES  # data only: no study's code is imported
+
+    parser.add_argument("study", choices=sorted(STUDIES), help="the study the scenes belong to")
+
+
 def add_arguments(parser) -> None:
-    parser.add_argument("study")
+    study_argument(parser)
     parser.add_argument("scene")
     parser.add_argument("out_dir")
     parser.add_argument("timings_dir")

@@ -27,9 +27,15 @@ CASES = [
     ),
     _case("alpha-1e308", "range", "plane.alpha.1", MIDDLE, plane__alpha=[1e308, 1e308]),
     _case("delta-1e300", "range", "plane.delta", LARGEST, plane__delta=1e300),
-    _case("m1-1e300", "range", "plane.m1", LARGEST, plane__m1=1e300),
+    _case("m1-1e300", "range", "effects.body_torque.m1", LARGEST, effects__body_torque__m1=1e300),
     _case("omega0-1e300", "range", "viscous.omega0.2", VISCOUS, viscous__omega0=[0.5, 0.8, 1e300]),
-    _case("torque-minus-1e300", "range", "viscous.torque.0", VISCOUS, viscous__torque=[-1e300, 0.0, 0.5]),
+    _case(
+        "torque-minus-1e300",
+        "range",
+        "effects.body_torque.m.0",
+        VISCOUS,
+        effects__body_torque__m=[-1e300, 0.0, 0.5],
+    ),
     _case("moments-1e300", "range", "body.moments.0", LARGEST, body__moments=[1e300, 2.2, 1.2]),
     _case("q0-1e300", "range", "excursion.q0", MIDDLE, excursion={"q0": 1e300}),
     # over the budget
@@ -59,7 +65,33 @@ CASES = [
     # the schema's shape
     _case("two-moments", "schema", "body.moments", LARGEST, body__moments=[3.0, 2.2]),
     _case("axis-unknown", "schema", "torque_axis", LARGEST, torque_axis="diagonal"),
-    _case("nu-text", "schema", "plane.nu", LARGEST, plane__nu="strong"),
+    _case(
+        "nu-text", "schema", "effects.quadratic_torque.nu", LARGEST, effects__quadratic_torque__nu="strong"
+    ),
+    # the model is its effects: a parameter in its old place is refused, naming where it moved
+    _case("m1-in-plane", "schema", "plane.m1", LARGEST, plane__m1=0.5),
+    _case("drag-in-viscous", "schema", "viscous.nu", VISCOUS, viscous__nu=0.3),
+    _case(
+        "zero-medium-torque",
+        "physics",
+        "effects.body_torque.m",
+        VISCOUS,
+        effects__body_torque__m=[0.0, 0.0, 0.0],
+    ),
+    _case(
+        "zero-quadratic-torque",
+        "physics",
+        "effects.quadratic_torque.nu",
+        LARGEST,
+        effects__quadratic_torque__nu=0.0,
+    ),
+    _case(
+        "plane-torque-in-medium",
+        "physics",
+        "effects.body_torque.m1",
+        VISCOUS,
+        effects__body_torque={"m1": 0.5},
+    ),
     _case("no-moments", "schema", "body.moments", LARGEST, body__moments=DELETE),
     _case("negative-moment", "schema", "body.moments.2", LARGEST, body__moments=[3.0, 2.2, -1.2]),
     # physics

@@ -131,11 +131,10 @@ def _excitation(params, model: WobbleModel):
 
 
 def assemble(H: float, effects: dict) -> WobbleModel:
-    """The model from the listed effects only, in a fixed order (elastic after triaxiality)."""
+    """The model from the listed effects only, through the registry (each sets its own fields of the model,
+    none reads another's, so the scene's order does not matter)."""
     model = WobbleModel(H=H)
-    for name in ("triaxiality", "elastic_yielding", "dissipation", "excitation"):
-        if name in effects:
-            EFFECTS[name].build(effects[name] or {}, model)
+    EFFECTS.assemble(effects, model)
     return model
 
 

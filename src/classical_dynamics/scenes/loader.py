@@ -134,6 +134,9 @@ def _expected_from(error: jsonschema.ValidationError) -> tuple[str, str, object,
         allowed = sorted(error.schema.get("properties", {}))
         extra = sorted(set(error.instance) - set(allowed))
         where = f"{path}.{extra[0]}" if error.absolute_path else extra[0]
+        moved = error.schema.get("x-moved", {})  # a field an older scene format had here
+        if extra[0] in moved:
+            return where, f"no such key here: it moved to {moved[extra[0]]}", extra[0], False
         return where, "no such key; known keys: " + ", ".join(allowed), extra[0], False
     words = {
         "type": lambda: _type_words(value),
@@ -146,7 +149,8 @@ def _expected_from(error: jsonschema.ValidationError) -> tuple[str, str, object,
         "minItems": lambda: f"a list of at least {value} items",
         "maxItems": lambda: f"a list of at most {value} items",
         "uniqueItems": lambda: "a list without repeated items",
-        "minProperties": lambda: f"at least {value} entries",
+        "minProperties": lambda: f"at least {value} " + ("entry" if value == 1 else "entries"),
+        "maxProperties": lambda: f"at most {value} " + ("entry" if value == 1 else "entries"),
         "pattern": lambda: f"text matching {value}",
     }
     expected = words[v]() if v in words else error.message

@@ -13,7 +13,7 @@ The studies use them through this package (`from ...models import self_excited a
 """
 
 from .body import Body, InertiaNumbers
-from .effects import EFFECTS
+from .effects import EFFECTS, medium_torque, plane_torque
 from .largest_axis import (
     LargestAxis,
     cylinder,

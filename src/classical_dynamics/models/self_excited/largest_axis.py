@@ -49,6 +49,14 @@ class LargestAxis:
         m = 0.5 * (m1 * delta**2 * R - mu * delta**2 * (b + c))
         return cls(body, m, mu, delta)
 
+    @classmethod
+    def for_scene(cls, body: Body, m1: float | None, mu1: float, delta: float) -> "LargestAxis":
+        """A scene's reduction: the plane's m1 when it lists body_torque, else no constant torque (m = 0), and
+        m1 follows from mu1 and the cylinder."""
+        if m1 is None:
+            return cls(body, 0.0, 2.0 * np.sqrt(body.b * body.c) * mu1, delta)
+        return cls.with_plane_parameters(body, m1, mu1, delta)
+
     @property
     def R(self) -> float:
         b, c = self.body.b, self.body.c

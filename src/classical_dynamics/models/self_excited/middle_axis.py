@@ -125,7 +125,7 @@ class MiddleAxis:
 
     @staticmethod
     def plane_nu(nu, body: Body) -> float:
-        """A scene's plane.nu: a number, or 'nu_c', the critical drag mu_c/(2 sqrt(ac)) = b/(2(a + c))."""
+        """quadratic_torque.nu: a number, or 'nu_c', the critical drag mu_c/(2 sqrt(ac)) = b/(2(a + c))."""
         return body.b / (2.0 * (body.a + body.c)) if nu == "nu_c" else float(nu)
 
     @classmethod
@@ -138,6 +138,16 @@ class MiddleAxis:
         m0 = m1 * trial.d1
         m = m0 - 0.5 * mu * (body.a - body.c) * (alpha1**2 - alpha2**2)
         return cls(body, m, mu, alpha1, alpha2)
+
+    @classmethod
+    def for_scene(
+        cls, body: Body, m1: float | None, mu1: float, alpha1: float, alpha2: float
+    ) -> "MiddleAxis":
+        """A scene's reduction: the plane's m1 when it lists body_torque, else no constant torque (m = 0), and
+        m1 follows from mu1 and the cylinder."""
+        if m1 is None:
+            return cls(body, 0.0, 2.0 * np.sqrt(body.a * body.c) * mu1, alpha1, alpha2)
+        return cls.with_plane_parameters(body, m1, mu1, alpha1, alpha2)
 
     def euler_parameters(self) -> np.ndarray:
         return np.array([self.body.a, self.body.b, self.body.c, self.m, self.mu])

@@ -1,12 +1,13 @@
 """Study: the self-excited rigid body and its phase planes (Lee 1964).
 
 A scene names a body (three principal moments, in any order), the axis of the body-fixed torque
-(largest, middle or smallest) and the point of the reduced plane to draw: m1, the drag nu (mu1 = -nu)
-and the cylinder delta; the physical torque (M and mu0, per unit of the axis' moment) follows and is
-reported. The effects it lists must be those the plane needs: body_torque when M != 0, quadratic_torque
-when nu != 0. This build covers the torque along the largest or the smallest axis (Lee §2, §4.2) and
-along the middle axis (§3, (4.13), (4.14)). A scene with a `viscous` block instead of a plane is Lee §5:
-a symmetric body in a viscous medium under a constant body-fixed torque (effects body_torque and drag).
+(largest, middle or smallest), the cylinder of the reduced plane to draw (delta, or alpha for the middle
+axis), and the effects its torque is made of, with their parameters: body_torque {m1} and
+quadratic_torque {nu} (mu1 = -nu), the point of Lee's plane; an effect not listed is zero, and one listed
+is not zero. The physical torque (M and mu0, per unit of the axis' moment) follows and is reported. This
+build covers the torque along the largest or the smallest axis (Lee §2, §4.2) and along the middle axis
+(§3, (4.13), (4.14)). A scene with a `viscous` block instead of a plane is Lee §5: a symmetric body in a
+viscous medium under a constant body-fixed torque (effects body_torque {m} and drag {nu, mu}).
 """
 
 from __future__ import annotations
@@ -44,7 +45,7 @@ def _numbers(data, prefix=""):
 
 def check(path: Path, data: dict) -> None:
     """Physical consistency the schema cannot express. Raises SceneError (one line)."""
-    from ...models.self_excited import Body, LargestAxis, limit_cycle_p1
+    from ...models.self_excited import Body, LargestAxis, limit_cycle_p1, plane_torque
 
     for field, value in _numbers(data):
         if not math.isfinite(value):
@@ -83,6 +84,7 @@ def check(path: Path, data: dict) -> None:
         )
     plane = data["plane"]
     effects = data.get("effects") or {}
+    _check_listed_terms(path, effects, viscous=False)
     shape = "alpha" if axis == "middle" else "delta"
     if shape not in plane:
         raise SceneError(
@@ -96,43 +98,63 @@ def check(path: Path, data: dict) -> None:
     if axis == "middle":
         _check_middle(path, Body(A, B, C), data, effects)
         return
-    if isinstance(plane["nu"], str):
-        raise SceneError(path, "plane.nu", "a number (nu_c is the middle axis' critical drag)", plane["nu"])
-    if plane["nu"] != 0.0 and "quadratic_torque" not in effects:
+    m1, nu = plane_torque(effects)
+    if isinstance(nu, str):
         raise SceneError(
-            path,
-            "effects",
-            "quadratic_torque listed (nu != 0 is the mu0 |omega|^2 part of the torque)",
-            sorted(effects),
-        )
-    if plane["nu"] == 0.0 and "quadratic_torque" in effects:
-        raise SceneError(
-            path, "effects.quadratic_torque", "nu != 0 in plane (an unused effect is not listed)", plane["nu"]
+            path, "effects.quadratic_torque.nu", "a number (nu_c is the middle axis' critical drag)", nu
         )
     numbers = Body(A, B, C).swapped() if axis == "smallest" else Body(A, B, C)
-    L = LargestAxis.with_plane_parameters(numbers, plane["m1"], -plane["nu"], plane["delta"])
-    if abs(L.m) > 0.0 and "body_torque" not in effects:
-        raise SceneError(
-            path,
-            "effects",
-            f"body_torque listed (this plane needs a torque of {L.m:.4g} per unit moment)",
-            sorted(effects),
-        )
-    if L.m == 0.0 and "body_torque" in effects:
-        raise SceneError(path, "effects.body_torque", "a plane that needs a constant torque (none here)", 0.0)
-    on_F = plane["nu"] > 0.0 and limit_cycle_p1([0.0], plane["m1"], plane["nu"]) is not None
+    L = LargestAxis.for_scene(numbers, m1, -nu, plane["delta"])
+    _check_constant_torque(path, L.m, m1)
+    m1 = L.m1 if m1 is None else m1
+    on_F = nu > 0.0 and limit_cycle_p1([0.0], m1, nu) is not None
     if data.get("analysis", {}).get("motion_in_space") and (axis != "largest" or not on_F):
         raise SceneError(
             path,
             "analysis.motion_in_space",
             "torque_axis: largest and a plane with the limit cycle F (the attitude starts on it)",
-            [axis, plane["m1"], plane["nu"]],
+            [axis, m1, nu],
         )
-    if data.get("analysis", {}).get("motions") and (axis != "largest" or plane["nu"] != 0.0):
+    if data.get("analysis", {}).get("motions") and (axis != "largest" or nu != 0.0):
         raise SceneError(
-            path, "analysis.motions", "torque_axis: largest and nu = 0 (Lee §2.2-§2.4)", [axis, plane["nu"]]
+            path,
+            "analysis.motions",
+            "torque_axis: largest and no quadratic_torque (Lee §2.2-§2.4)",
+            [axis, nu],
         )
     _check_range(path, data)
+
+
+def _check_listed_terms(path, effects, viscous: bool):
+    """Each listed effect has the parameters of the scene's kind and a term that is not zero: an effect whose
+    term is zero is left out, so that the model is what the scene lists."""
+    torque = effects.get("body_torque") or {}
+    want, other = ("m", "m1") if viscous else ("m1", "m")
+    if other in torque:
+        kind = "a viscous-medium scene (Lee §5)" if viscous else "a phase-plane scene"
+        raise SceneError(path, f"effects.body_torque.{other}", f"{want} in {kind}", torque[other])
+    if viscous and "m" in torque and not any(torque["m"]):
+        raise SceneError(
+            path, "effects.body_torque.m", "a torque that is not zero (leave body_torque out)", 0.0
+        )
+    if not viscous and (effects.get("quadratic_torque") or {}).get("nu") == 0.0:
+        raise SceneError(
+            path, "effects.quadratic_torque.nu", "nu != 0 (leave quadratic_torque out for none)", 0.0
+        )
+    if viscous and "quadratic_torque" in effects:
+        raise SceneError(path, "effects.quadratic_torque", "body_torque and drag only (Lee §5)", None)
+
+
+def _check_constant_torque(path, m, m1):
+    """The plane's m1 fixes the constant torque M on the scene's cylinder; body_torque is listed when M != 0
+    (m1 = 0 may still need one: the quadratic torque's mean shifts the plane)."""
+    if m1 is not None and m == 0.0:
+        raise SceneError(
+            path,
+            "effects.body_torque.m1",
+            "a plane that needs a constant torque (M = 0 here: leave it out)",
+            m1,
+        )
 
 
 def _check_range(path, data):
@@ -142,7 +164,7 @@ def _check_range(path, data):
 
 
 def _check_middle(path, body, data, effects):
-    from ...models.self_excited import MiddleAxis
+    from ...models.self_excited import MiddleAxis, plane_torque
 
     plane = data["plane"]
     alpha1, alpha2 = plane["alpha"]
@@ -162,17 +184,9 @@ def _check_middle(path, body, data, effects):
             "alpha1 + alpha2 > 0 (orient the axes so; the map takes its log)",
             plane["alpha"],
         )
-    nu = MiddleAxis.plane_nu(plane["nu"], body)
-    M = MiddleAxis.with_plane_parameters(body, plane["m1"], -nu, alpha1, alpha2)
-    if (nu != 0.0) != ("quadratic_torque" in effects):
-        raise SceneError(path, "effects", "quadratic_torque listed exactly when nu != 0", sorted(effects))
-    if (M.m != 0.0) != ("body_torque" in effects):
-        raise SceneError(
-            path,
-            "effects",
-            f"body_torque listed exactly when the plane needs a torque (here M/B = {M.m:.4g})",
-            sorted(effects),
-        )
+    m1, nu = plane_torque(effects)
+    M = MiddleAxis.for_scene(body, m1, -MiddleAxis.plane_nu(nu, body), alpha1, alpha2)
+    _check_constant_torque(path, M.m, m1)
     if "excursion" in data:
         if M.form != "sinh":
             raise SceneError(
@@ -187,6 +201,7 @@ def _check_middle(path, body, data, effects):
 
 
 def _check_viscous(path, data):
+    from ...models.self_excited import medium_torque
     from ...models.viscous_medium import ViscousMedium, symmetric_axis
 
     for field in ("torque_axis", "plane"):
@@ -198,28 +213,21 @@ def _check_viscous(path, data):
     if symmetric_axis(moments) is None:
         raise SceneError(path, "body.moments", "a symmetric body, two moments equal (Lee §5: A = B)", moments)
     v, effects = data["viscous"], data.get("effects") or {}
-    nu, mu = v.get("nu", 0.0), v.get("mu", 0.0)
-    if (nu > 0.0) != (mu > 0.0):
+    _check_listed_terms(path, effects, viscous=True)
+    m, nu, mu = medium_torque(effects)
+    if "drag" in effects and not (nu > 0.0 and mu > 0.0):
         raise SceneError(
             path,
-            "viscous.mu" if nu > 0.0 else "viscous.nu",
-            "both drags positive or both zero (the medium resists equatorial and axial turning alike)",
+            "effects.drag.mu" if nu > 0.0 else "effects.drag.nu",
+            "both drags positive (the medium resists equatorial and axial turning alike)",
             [nu, mu],
         )
-    if (nu > 0.0) != ("drag" in effects):
-        raise SceneError(path, "effects", "drag listed exactly when nu and mu are positive", sorted(effects))
-    if any(v["torque"]) != ("body_torque" in effects):
-        raise SceneError(
-            path, "effects", "body_torque listed exactly when the torque is not zero", sorted(effects)
-        )
-    if "quadratic_torque" in effects:
-        raise SceneError(path, "effects.quadratic_torque", "body_torque and drag only (Lee §5)", None)
     A, C = symmetric_axis(moments)
-    V = ViscousMedium.from_moments(A, C, nu, mu, v["torque"], v["omega0"])
+    V = ViscousMedium.from_moments(A, C, nu, mu, m, v["omega0"])
     if V.generalized and float(nu / mu).is_integer():
         raise SceneError(
             path,
-            "viscous.nu",
+            "effects.drag.nu",
             "nu/mu not an integer (Lee's reduction (5.32)/(5.33) needs 0 < Re w' < 1)",
             nu / mu,
         )

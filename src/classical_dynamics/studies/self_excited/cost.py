@@ -25,23 +25,26 @@ def cost(data: dict) -> list[Work]:
     analyses = [name for name, value in data.get("analysis", {}).items() if value]
     if analyses:
         works.append(Work("analysis", ANALYSIS_S * len(analyses), 0.0, count(len(analyses), "analyses")))
+    effects = data.get("effects") or {}
     if "viscous" in data:
         v = data["viscous"]
+        drag = effects.get("drag") or {}
         rate = (
             1.0
             + max(abs(x) for x in v["omega0"])
-            + math.sqrt(max(abs(x) for x in v["torque"]))
-            + v.get("nu", 0.0)
-            + v.get("mu", 0.0)
+            + math.sqrt(max(abs(x) for x in (effects.get("body_torque") or {}).get("m", [0.0])))
+            + drag.get("nu", 0.0)
+            + drag.get("mu", 0.0)
         )
         steps = 2 * v["t_max"] * rate * STEPS_PER_TAU * 4  # the run, and the analyses' reruns of it
         works.append(Work("viscous.t_max", steps * S_PER_STEP, 0.0, count(steps, "integration steps")))
         return works
-    plane, view = data.get("plane", {}), data.get("portrait", {})
+    view = data.get("portrait", {})
     lo, hi = view.get("phi2_range", [-3 * math.pi, 3 * math.pi])
     p1_max, tau_max = view.get("p1_max", 3.0), view.get("tau_max", 12.0)
-    nu = plane.get("nu", 0.0)
-    rate = 1.0 + math.sqrt(abs(plane.get("m1", 0.0))) + (nu if isinstance(nu, (int, float)) else 1.0) + p1_max
+    m1 = (effects.get("body_torque") or {}).get("m1", 0.0)
+    nu = (effects.get("quadratic_torque") or {}).get("nu", 0.0)
+    rate = 1.0 + math.sqrt(abs(m1)) + (nu if isinstance(nu, (int, float)) else 1.0) + p1_max
     starts = STARTS_PER_PI * ((hi - lo) / math.pi + 1)
     steps = starts * 2 * tau_max * rate * STEPS_PER_TAU
     field = "portrait.tau_max" if tau_max > 12.0 else "portrait.phi2_range"

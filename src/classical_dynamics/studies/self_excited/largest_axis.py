@@ -27,16 +27,25 @@ BLOW_UP_BOUND = portrait.BLOW_UP_BOUND
 DEFAULT_AMPLITUDES = (0.4, 0.2, 0.1, 0.05)
 
 
-def _plane(plane):
-    """(m1, nu, delta): the point of the reduced plane and the cylinder a scene draws."""
-    return float(plane["m1"]), float(plane["nu"]), float(plane["delta"])
+def _plane(data):
+    """(m1, nu, delta): the plane's point, from the scene's effects, and the cylinder it draws."""
+    m1, nu = se.plane_torque(data.get("effects"))
+    delta = float(data["plane"]["delta"])
+    if m1 is None:  # no body_torque: m1 is where the quadratic torque alone puts the plane
+        m1 = se.LargestAxis.for_scene(_numbers(data), None, -float(nu), delta).m1
+    return float(m1), float(nu), delta
+
+
+def _numbers(data):
+    """The body's inertia numbers in the order of the reduction (swapped for the smallest axis)."""
+    body = se.Body.from_moments(data["body"]["moments"])
+    return body.swapped() if data["torque_axis"] == "smallest" else body
 
 
 def run(scene, results, quick):
     data = scene.data
     body = se.Body.from_moments(data["body"]["moments"])
-    plane = data["plane"]
-    m1, nu, delta = _plane(plane)
+    m1, nu, delta = _plane(data)
     smallest = data["torque_axis"] == "smallest"
     L = se.LargestAxis.with_plane_parameters(body.swapped() if smallest else body, m1, -nu, delta)
     view = data.get("portrait", {})
@@ -44,7 +53,7 @@ def run(scene, results, quick):
     p1_max = view.get("p1_max", 3.0)
     tau_max = view.get("tau_max", 12.0)
 
-    cycles = _record_reduction(results, body, L, plane, smallest)
+    cycles = _record_reduction(results, body, L, data, smallest)
 
     points = se.singular_points(m1, -nu, lo, hi)
     results.number("singular_points", points, "1", note="p1 = 0, sin φ2 = −m1, typed by the linearization")
@@ -110,9 +119,10 @@ def run(scene, results, quick):
     _analyses(results, data, L, body, points, cycles, quick)
 
 
-def _record_reduction(results, body, L, plane, smallest):
+def _record_reduction(results, body, L, data, smallest):
     """The body, the plane's parameters and the physical torque that gives them; whether F and F1 exist."""
-    m1, nu, delta = _plane(plane)
+    m1, nu, delta = _plane(data)
+    plane = data["plane"]
     for name, value in (
         ("A", body.A),
         ("B", body.B),
@@ -197,8 +207,8 @@ def _analyses(results, data, L, body, points, cycles, quick):
     """What a scene asks beyond the portrait (its `analysis`), and what the plane's regime calls for: the
     motion in space, the period series about the center, the separatrix's sides, the degenerate approach,
     blow-up and the limit cycle's period, the motions of §2.5, accuracy and cost, the bifurcations."""
-    plane, smallest = data["plane"], data["torque_axis"] == "smallest"
-    m1, nu, delta = _plane(plane)
+    smallest = data["torque_axis"] == "smallest"
+    m1, nu, delta = _plane(data)
     centers = [pt for pt in points if pt["type"] == "center"]
     sphere = None
     if data.get("analysis", {}).get("motion_in_space"):  # Lee §1.2, started on F

@@ -62,9 +62,11 @@ def run(scene, results, quick):
     data = scene.data
     body = se.Body.from_moments(data["body"]["moments"])
     plane = data["plane"]
-    m1, nu = float(plane["m1"]), se.MiddleAxis.plane_nu(plane["nu"], body)
+    m1, nu = se.plane_torque(data.get("effects"))
+    nu = se.MiddleAxis.plane_nu(nu, body)
     alpha1, alpha2 = (float(x) for x in plane["alpha"])
-    M = se.MiddleAxis.with_plane_parameters(body, m1, -nu, alpha1, alpha2)
+    M = se.MiddleAxis.for_scene(body, m1, -nu, alpha1, alpha2)
+    m1 = float(M.m1) if m1 is None else float(m1)
     lo, hi = data.get("portrait", {}).get("phi2_range", [-4.0, 4.0])
     q1_max = data.get("portrait", {}).get("p1_max", 3.0)
     points = _record_reduction(results, M, plane, m1, nu)

@@ -16,6 +16,7 @@ import pandas as pd
 
 from ...figure_style import legend_below
 from ...formatting import format_number, shortest
+from ...models.self_excited.effects import medium_torque
 from ...models.viscous_medium import ViscousMedium, symmetric_axis, viscous_symmetric
 from ...results import new_figures
 from ...solvers import sine_cosine_integrals as sc
@@ -40,12 +41,9 @@ LIMIT_BOUND = 1e-6  # hard case: the state at t_max against Theorem 3's rotation
 
 
 def medium(data) -> ViscousMedium:
-    v = data["viscous"]
     A, C = symmetric_axis(data["body"]["moments"])
-    drag = "drag" in (data.get("effects") or {})
-    return ViscousMedium.from_moments(
-        A, C, v.get("nu", 0.0) if drag else 0.0, v.get("mu", 0.0) if drag else 0.0, v["torque"], v["omega0"]
-    )
+    m, nu, mu = medium_torque(data.get("effects"))
+    return ViscousMedium.from_moments(A, C, nu, mu, m, data["viscous"]["omega0"])
 
 
 def run(scene, results, quick):

@@ -11,15 +11,13 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ...scenes import EffectRegistry, Scene, SceneError
+from ...scenes import Scene, SceneError
 from ...scenes.cost import check_step
 from ...solvers.references import HNW_PERIOD
-from . import top_model
 from .cost import SWEEP_SPAN, cost
+from .top_model import EFFECTS  # the test problems have no effects; the heavy top has gravity
 
 __all__ = ["EFFECTS", "check", "cost", "run"]
-EFFECTS = EffectRegistry("solvers")  # the test problems have none; the heavy top has gravity
-top_model.register(EFFECTS)
 
 
 def check(path: Path, data: dict) -> None:

@@ -45,7 +45,8 @@ def _half_period(times):
 def run(scene, results, quick):
     body = scene.data["top"]
     numerics = scene.data.get("numerics", {})
-    top = tm.Top(float(body["A"]), float(body["C"]), float(scene.data["effects"]["gravity"]["Mgh"]))
+    couple = tm.EFFECTS.assemble(scene.data.get("effects") or {}, None)  # the model is the listed effects
+    top = tm.Top(float(body["A"]), float(body["C"]), couple.get("gravity", 0.0))
     rtol = float(numerics.get("rtol", 1e-12))
     nutations = int(body.get("nutations", 200)) // (10 if quick else 1)
     results.number("A", top.A, "1")

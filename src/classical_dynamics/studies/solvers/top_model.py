@@ -35,16 +35,17 @@ from scipy import integrate, optimize, special
 from ...scenes import EffectRegistry
 from ...solvers.runge_kutta import rhs_function
 
+EFFECTS = EffectRegistry("solvers")
 
-def register(effects: EffectRegistry) -> None:
-    @effects.register(
-        "gravity",
-        "torque",
-        "the weight $Mg$ at a height $h$ on the figure axis: the couple "
-        "$Mgh\\,\\boldsymbol\\gamma \\times \\hat e_3$ about the fixed point (the heavy top)",
-    )
-    def _gravity(params, context):
-        return float(params["Mgh"])
+
+@EFFECTS.register(
+    "gravity",
+    "torque",
+    "the weight $Mg$ at a height $h$ on the figure axis: the couple "
+    "$Mgh\\,\\boldsymbol\\gamma \\times \\hat e_3$ about the fixed point (the heavy top)",
+)
+def _gravity(params, context):
+    return float(params["Mgh"])
 
 
 @rhs_function
