@@ -86,6 +86,7 @@ bench: venv-test
 	$(BIN)/python benchmarks/chandler_wobble.py
 	$(BIN)/python benchmarks/precession_cycle.py
 	$(BIN)/python benchmarks/sine_cosine_integrals.py
+	$(BIN)/python benchmarks/effect_cost.py
 	$(BIN)/python benchmarks/pipeline_build.py
 	$(BIN)/python benchmarks/pipeline_scaling.py
 	$(BIN)/python benchmarks/bad_input.py
