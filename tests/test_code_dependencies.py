@@ -69,10 +69,11 @@ def test_the_digest_changes_with_exactly_the_modules_reached(tmp_path):
     cache = tmp_path / "parses.json"
 
     def digest():
-        return code_graph.digest_of(code_graph.import_graph(copy, cache), modules, entries, copy)
+        graph, meanings = code_graph.parse(copy, cache)
+        return code_graph.digest_of(graph, modules, entries, copy, meanings)
 
     reached = code_graph.reached(code_graph.import_graph(copy, cache), entries)
-    assert code_graph.import_graph(copy, cache) == code_graph.import_graph(copy)  # the cache as the parse
+    assert code_graph.parse(copy, cache) == code_graph.parse(copy)  # the cache as the parse
     before = digest()
     for name in (
         f"{PACKAGE}.lazy",
@@ -104,7 +105,8 @@ def test_a_comment_or_docstring_edit_changes_no_digest_and_a_code_edit_does(tmp_
 
     def digest_with(text):
         path.write_text(text, encoding="utf-8")
-        return code_graph.digest_of(code_graph.import_graph(copy, cache), modules, entries, copy)
+        graph, meanings = code_graph.parse(copy, cache)
+        return code_graph.digest_of(graph, modules, entries, copy, meanings)
 
     before = digest_with(source)
     assert source.startswith('"""') and "def format_number(" in source
