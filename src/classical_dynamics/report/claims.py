@@ -9,8 +9,8 @@ that may fail does (a failing claim without one fails the build: the report expl
 ours_is: input (or reference) says that "ours" is a model input (or the reference's value), not a result;
 source: derived: true, that the source's own value or form is lost or never printed and was derived here.
 A limit of the model says what the model omits (omits:) and may name a reference that omits the same
-(expected: {value, cite, what, text}, a rigid-Earth series beside the non-rigid one): its distance from the
-source's value is the deviation a model without the effect is expected to show.
+(expected: {value, cite, what, text}, a rigid-Earth series beside the non-rigid one, text as printed):
+its distance from the source's value is the deviation a model without the effect is expected to show.
 """
 
 from __future__ import annotations
