@@ -345,7 +345,7 @@ def _iau_nutation(results, model, t, psi, eps, fp, fe, args):
         (axes[1], ours_eps, d_eps, r"$\Delta\varepsilon$ (″)"),
     ):
         ax.plot(years, iau[show] / earth.ARCSEC, color="0.65", lw=1.8, label="IAU 2000B")
-        ax.plot(years, ours[show] / earth.ARCSEC, lw=0.5, color="C5", label="full model")
+        ax.plot(years, ours[show] / earth.ARCSEC, lw=0.5, color="C0", label="full model")
         ax.set_ylabel(name)
         ax.margins(y=0.22)
         ax.grid(True, alpha=0.25)

@@ -255,7 +255,7 @@ def figure(xs, ls):
     from ...results import bare_figure
 
     fig = bare_figure(figsize=(TEXT_WIDTH_IN, 2.6), layout="constrained")
-    columns = fig.add_gridspec(1, 3, width_ratios=(1.0, 0.4, 1.0))
+    columns = fig.add_gridspec(1, 3, width_ratios=(1.0, 0.6, 1.0))
     draw_frames(fig.add_subplot(columns[0], projection="3d"))
     inset = fig.add_subplot(columns[1])
     draw_sphere(fig.add_subplot(columns[2], projection="3d"), xs, ls, inset=inset)
