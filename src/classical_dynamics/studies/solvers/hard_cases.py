@@ -273,9 +273,8 @@ def _apparent_q(change, periods):
     return -2 * np.pi * periods / change if change else np.inf
 
 
-def _numerical_damping(results):
-    """An undamped oscillator over 100 periods: the energy each method loses, as a spurious Q."""
-    periods = 100
+def _numerical_damping(results, periods: int = 100):
+    """An undamped oscillator over `periods` periods: the energy each method loses, as a spurious Q."""
     T = periods * 2 * np.pi
     problem = Problem(rhs.oscillator, [1.0, 0.0], (0.0, T), [1.0])
     rows = []
@@ -318,7 +317,7 @@ def _numerical_damping(results):
     results.table(
         "numerical_damping",
         frame,
-        "An undamped oscillator over 100 periods: the relative change of its "
+        f"An undamped oscillator over {periods} periods: the relative change of its "
         "energy, and the quality factor it would be mistaken for, $Q = -2\\pi n/(\\Delta E/E)$ after $n$ "
         "periods (negative change: energy lost; negative $Q$: the method pumps energy in, as in the Chandler "
         "wobble's table). The adaptive methods at two relative tolerances, Störmer–Verlet at two steps "
