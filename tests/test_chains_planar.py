@@ -78,3 +78,24 @@ def test_ring_patterns_turn_at_lambs_speeds(s):
         assert np.all(gap < 2 * (s / n) ** 2), (n, speeds)
         gaps.append(gap)
     assert np.all(gaps[0] / gaps[1] > 3.0)
+
+
+def test_the_ozone_scene_runs_to_the_notes_modes():
+    # through the study's dispatch (chains.run on the shipped scene, validated): the frequencies are the
+    # notes' 0, 0, 0, 3/2, 3/2, 3 (k/m), exactly; the mode shapes' angles to the rigid motions, the radial
+    # breathing and the plane left over are at rounding (a spring missing or of the wrong sign leaves a
+    # zero mode that is no rigid motion, and no degenerate pair)
+    from classical_dynamics.studies import chains, validate
+
+    from .bad_scenes import ROOT
+
+    results = chains.run(validate("chains", ROOT / "workflow/scenes/chains/ozone_molecule.yaml"))
+    n = {k: v["value"] for k, v in results.numbers.items()}
+    notes = [0.0, 0.0, 0.0, 1.5, 1.5, 3.0]
+    assert np.asarray(n["omega_squared_over_k_per_m"]) == pytest.approx(notes, abs=1e-12)
+    assert n["sympy_roots_over_k_per_m"] == notes
+    assert n["solver_vs_sympy"] < 1e-12
+    assert n["zero_modes_vs_rigid"] < 1e-12 and n["breathing_mode_vs_radial"] < 1e-12
+    assert n["degenerate_pair_subspace"] < 1e-12
+    (case,) = results.stability
+    assert case["name"] == "degenerate_pair" and case["measured"] == n["degenerate_pair_subspace"]

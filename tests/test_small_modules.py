@@ -116,3 +116,50 @@ def test_figure_data_of_an_empty_figure():
     data, axes = figure_data(fig)
     plt.close(fig)
     assert list(data.columns) == ["panel", "series", "x", "y"] and data.empty and len(axes) == 1
+
+
+def test_figure_data_of_line_collections_path_by_path():
+    # a collection of several paths (not a contour set): one series per path, its points as drawn; an empty
+    # scatter adds no rows and takes no place in the numbering
+    from matplotlib.collections import LineCollection
+
+    first, second = np.array([[0.0, 1.0], [1.0, 2.0], [2.0, 0.5]]), np.array([[3.0, 3.0], [4.0, 1.0]])
+    fig, ax = plt.subplots()
+    ax.scatter([], [])
+    ax.add_collection(LineCollection([first, second], label="pair"))
+    ax.add_collection(LineCollection([second]))
+    data, _ = figure_data(fig)
+    plt.close(fig)
+    assert list(dict.fromkeys(data.series)) == ["pair, path 1", "pair, path 2", "curve 2"]
+    for series, xy in (("pair, path 1", first), ("pair, path 2", second), ("curve 2", second)):
+        rows = data[data.series == series]
+        np.testing.assert_array_equal(np.column_stack([rows.x, rows.y]), xy)
+
+
+def test_provenance_outside_git_and_without_proc(monkeypatch, tmp_path):
+    # a checkout-less install says so ("unknown", dirty not known); a machine without /proc/cpuinfo falls back
+    # to what platform reports
+    monkeypatch.setattr(provenance, "git", lambda root, *args: None)
+    provenance.git_state.cache_clear()
+    try:
+        assert provenance.git_state() == {"commit": "unknown", "dirty": None}
+    finally:
+        provenance.git_state.cache_clear()
+    import platform
+    from pathlib import Path
+
+    def unreadable(self, *args, **kwargs):
+        raise PermissionError(f"{self}: denied")
+
+    monkeypatch.setattr(Path, "read_text", unreadable)
+    monkeypatch.setattr(platform, "processor", lambda: "a test processor")
+    provenance.cpu_model.cache_clear()
+    try:
+        assert provenance.cpu_model() == "a test processor"
+        monkeypatch.setattr(platform, "processor", lambda: "")
+        provenance.cpu_model.cache_clear()
+        assert provenance.cpu_model() == "unknown"
+    finally:
+        monkeypatch.undo()
+        provenance.cpu_model.cache_clear()
+    assert provenance.cpu_model() in open("/proc/cpuinfo").read()

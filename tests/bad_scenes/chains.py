@@ -17,6 +17,8 @@ STR3, FORCED, FRICTION = (
 )
 
 
+OZONE, CONTINUUM = "ozone_molecule.yaml", "hanging_continuum.yaml"
+
 _case = partial(case, "chains")
 
 CASES = [
@@ -150,4 +152,126 @@ CASES = [
         analysis__membrane__points=40,
     ),
     _case("forced-without-force", "physics", "analysis.forced", FORCED, effects__forcing=DELETE),
+    # each of check()'s remaining refusals (studies/chains/__init__.py), one scene apiece
+    _case("triangle-with-gravity", "physics", "effects", OZONE, effects__gravity={"g_m_per_s2": 9.81}),
+    _case("triangle-springs-list", "physics", "effects", OZONE, effects__springs__k_n_per_m=[1.0, 1.0, 1.0]),
+    _case("triangle-with-n", "physics", "chain", OZONE, chain__n=3),
+    _case("triangle-with-analysis", "physics", "chain", OZONE, analysis={"modes": 3}),
+    _case("particles-without-n", "physics", "chain.n", HP, chain__n=DELETE),
+    _case("continuum-with-n", "physics", "chain.n", CONTINUUM, chain__n=10),
+    _case(
+        "gravity-and-rotation",
+        "physics",
+        "effects",
+        "rotating_chain_in_plane.yaml",
+        effects__gravity={"g_m_per_s2": 9.81},
+    ),
+    _case("links-on-springs", "physics", "effects", LINKS, effects={"springs": {"k_n_per_m": 1.0}}),
+    _case(
+        "continuum-on-springs",
+        "physics",
+        "effects.springs",
+        CONTINUUM,
+        effects={"springs": {"k_n_per_m": 1.0}},
+        analysis={"modes": 5},
+    ),
+    _case(
+        "free-free-one-particle",
+        "physics",
+        "chain.n",
+        "spring_chain.yaml",
+        chain__ends="free-free",
+        chain__n=1,
+        analysis={"modes": 1},
+    ),
+    _case(
+        "masses-on-links",
+        "physics",
+        "chain.masses_kg",
+        LINKS,
+        chain__mass_kg=DELETE,
+        chain__masses_kg=[0.1] * 10,
+    ),
+    _case("no-mass", "physics", "chain.mass_kg", HP, chain__mass_kg=DELETE),
+    _case(
+        "springs-list-short",
+        "physics",
+        "effects.springs.k_n_per_m",
+        "spring_chain.yaml",
+        effects__springs__k_n_per_m=[1.0] * 32,
+    ),
+    _case("friction-alone", "physics", "effects", FRICTION, effects__tension=DELETE, analysis={"modes": 3}),
+    _case(
+        "friction-on-continuum",
+        "physics",
+        "effects.friction",
+        CONTINUUM,
+        effects__friction={"b_kg_per_s": 0.5},
+        analysis={"modes": 5},
+    ),
+    _case(
+        "friction-values-short",
+        "physics",
+        "effects.friction.b_kg_per_s",
+        FRICTION,
+        effects__friction__b_kg_per_s=[0.5, 0.0],
+    ),
+    _case(
+        "stability-unequal-masses",
+        "physics",
+        "analysis.stability",
+        "two_masses_equal_springs.yaml",
+        chain__mass_kg=DELETE,
+        chain__masses_kg=[1.0, 2.0],
+    ),
+    _case(
+        "separation-three", "physics", "analysis.separation", STR3, analysis={"modes": 3, "separation": True}
+    ),
+    _case("rayleigh-symmetric-four", "physics", "analysis.rayleigh_symmetric", STR3, chain__n=4),
+    _case("dispersion-on-links", "physics", "analysis.dispersion", LINKS, analysis__dispersion=True),
+    _case(
+        "rayleigh-on-particles",
+        "physics",
+        "analysis.rayleigh",
+        HP,
+        analysis={"modes": 5, "rayleigh": {"beta_min": -3.0, "beta_max": 3.0}},
+    ),
+    _case(
+        "accuracy-cost-on-springs",
+        "physics",
+        "analysis",
+        HP,
+        effects={"springs": {"k_n_per_m": 1.0}},
+        analysis={"modes": 5, "large_n": {"n": 1000}},
+    ),
+    _case(
+        "galerkin-too-many",
+        "physics",
+        "analysis.galerkin.elements",
+        CONTINUUM,
+        analysis__galerkin__elements=[1000, 200_000],
+    ),
+    _case(
+        "beta-min-over-max",
+        "physics",
+        "analysis.rayleigh.beta_max",
+        CONTINUUM,
+        analysis__rayleigh__beta_min=3.0,
+    ),
+    _case("ring-with-gravity", "physics", "effects", RING, effects__gravity={"g_m_per_s2": 9.81}),
+    _case("ring-with-ends", "physics", "chain", RING, chain__ends="fixed-free"),
+    _case(
+        "ring-springs-list",
+        "physics",
+        "effects.springs.k_n_per_m",
+        RING,
+        effects__springs__k_n_per_m=[1.0] * 400,
+    ),
+    _case(
+        "ring-without-waves",
+        "physics",
+        "analysis",
+        RING,
+        analysis={"gyroscopic": {"beta": 3.0, "epsilon": 1.0e-4, "bowl_friction": 0.1}},
+    ),
 ]
