@@ -28,6 +28,12 @@ def refuse(case, folder: Path) -> str:
     return str(error.value)
 
 
+def _field(case) -> str:
+    """The field as the message must name it: whole (its closing quote too, so that 'chain' is not taken for
+    'chain.n'), except a YAML error's place, whose line and column depend on the scene it was written into."""
+    return case.field if case.field.startswith("(YAML at") else case.field + "'"
+
+
 def test_the_suite_covers_every_study_and_kind():
     assert len(CASES) >= 120
     by_study, by_kind = Counter(c.study for c in CASES), Counter(c.kind for c in CASES)
@@ -43,7 +49,7 @@ def test_a_bad_scene_is_refused_in_one_line_naming_its_field(tmp_path, case):
     validate(case.study, next((ROOT / "workflow/scenes" / case.study).glob("*.yaml")), BUDGET)
     message = refuse(case, tmp_path)
     assert "\n" not in message
-    assert message.startswith(f"{tmp_path / case.name}: field '{case.field}"), message
+    assert message.startswith(f"{tmp_path / case.name}: field '{_field(case)}"), message
 
 
 def _digest(folder: Path) -> str:
@@ -82,7 +88,7 @@ def test_snakemake_refuses_one_of_each_kind_and_touches_nothing(built_repo, tmp_
         ]
         assert (
             lines == [lines[-1]]
-            and f"workflow/scenes/{case.study}/{case.name}: field '{case.field}" in lines[-1]
+            and f"workflow/scenes/{case.study}/{case.name}: field '{_field(case)}" in lines[-1]
         ), (case.id, result.stderr[-2000:])
         assert _digest(repo / "results") == before, case.id
 

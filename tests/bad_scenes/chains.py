@@ -115,7 +115,11 @@ CASES = [
         effects__tension__newton=-1e300,
     ),
     _case(
-        "forcing-1e300", "range", "effects.forcing.newton", FORCED, effects__forcing__newton=[1e300, 0.0, 0.0]
+        "forcing-1e300",
+        "range",
+        "effects.forcing.newton.0",
+        FORCED,
+        effects__forcing__newton=[1e300, 0.0, 0.0],
     ),
     _case(
         "beta-1e300",
