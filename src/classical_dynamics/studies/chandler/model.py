@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 import pandas as pd
 from matplotlib.ticker import LogLocator, NullFormatter, ScalarFormatter
@@ -126,8 +128,8 @@ def run(scene, results, quick):
             measured / closed - 1.0,
             PERIOD_BOUND,
         )
-        _sense(results, rate, y)
-        _invariants(results, y, model)
+        _record_sense(results, is_prograde(rate, y))
+        _record_invariants(results, invariants(y, model))
         _polhode(results, t, m, measured, "dissipation" in effects, "triaxiality" in effects)
     results.number(
         "wobble_period_solar_days",
@@ -157,11 +159,11 @@ def run(scene, results, quick):
         _elastic(results, model, H, effects["elastic_yielding"])
     if "dissipation" in effects and "excitation" not in effects:
         _damped(results, t, m, model, measured)
-        _dissipation_structure(results, model)
+        _record_dissipation_structure(results, dissipation_structure(model))
     if analysis.get("cones"):
         _cones(results, model, amplitude)
         if not effects:
-            _symmetric_integrals(results, model)
+            _record_symmetric_integrals(results, symmetric_integrals(model))
     if analysis.get("lamb_symmetric"):
         from . import lamb_free
 
@@ -172,9 +174,12 @@ def run(scene, results, quick):
         lamb_free.free_body(results, analysis["lamb_free_body"])
 
 
-def _sense(results, rate, y):
+def is_prograde(rate, y):
     """Prograde: the pole turns about the figure axis in the sense of the spin (sign of omega_3)."""
-    prograde = np.sign(rate) == np.sign(np.mean(y[:, 2]))
+    return np.sign(rate) == np.sign(np.mean(y[:, 2]))
+
+
+def _record_sense(results, prograde):
     results.number(
         "wobble_sense",
         1 if prograde else -1,
@@ -189,11 +194,29 @@ def _sense(results, rate, y):
     )
 
 
-def _invariants(results, y, model):
+class Invariants(NamedTuple):
+    angular_momentum_drift: float  # largest relative change of |L|
+    wobble_invariant_drift: float | None  # of 2CT - H^2; None on an elastic Earth
+
+
+def invariants(y, model) -> Invariants:
     """|L| along the run. (At 0.1″ the wobble's share of |L| and of the energy is ~1e-15, below what a
-    double can resolve, so the dissipation's structure is shown on a large wobble: _dissipation_structure.)"""
+    double can resolve, so the dissipation's structure is shown on a large wobble: dissipation_structure.)"""
     L, _ = wobble.invariants(y, model.parameters())
     drift = float(np.max(np.abs(L / L[0] - 1.0)))
+    params = model.parameters()
+    wobble_drift = None
+    if not params[wobble.ELASTIC]:
+        # the wobble's own invariant, resolvable where T and |L| are not: 2CT - H^2 = A(C - A)p^2 + B(C -
+        # B)q^2 (Lamb Art. 48 (6), units C = 1, y = omega/n), formed from p and q so that nothing cancels
+        a, b = params[wobble.A_C], params[wobble.B_C]
+        D = a * (1.0 - a) * y[:, 0] ** 2 + b * (1.0 - b) * y[:, 1] ** 2
+        wobble_drift = float(np.max(np.abs(D / D[0] - 1.0)))
+    return Invariants(drift, wobble_drift)
+
+
+def _record_invariants(results, values: Invariants):
+    drift = values.angular_momentum_drift
     results.number(
         "angular_momentum_drift",
         drift,
@@ -201,21 +224,24 @@ def _invariants(results, y, model):
         note="largest $|\\Delta|\\mathbf{L}||/|\\mathbf{L}|$ over the run",
     )
     results.hard_case("angular_momentum_kept", "$|\\mathbf{L}|$ kept over the run (relative)", drift, 1e-12)
-    params = model.parameters()
-    if not params[wobble.ELASTIC]:
-        # the wobble's own invariant, resolvable where T and |L| are not: 2CT - H^2 = A(C - A)p^2 + B(C -
-        # B)q^2 (Lamb Art. 48 (6), units C = 1, y = omega/n), formed from p and q so that nothing cancels
-        a, b = params[wobble.A_C], params[wobble.B_C]
-        D = a * (1.0 - a) * y[:, 0] ** 2 + b * (1.0 - b) * y[:, 1] ** 2
+    if values.wobble_invariant_drift is not None:
         results.number(
             "wobble_invariant_drift",
-            float(np.max(np.abs(D / D[0] - 1.0))),
+            values.wobble_invariant_drift,
             "1",
             note="largest relative change of $2CT - H^2 = A(C - A)p^2 + B(C - B)q^2$ over the run",
         )
 
 
-def _dissipation_structure(results, model, tilt_deg=10.0, periods=20):
+class DissipationStructure(NamedTuple):
+    tilt_deg: float
+    periods: int
+    L_drift: float  # largest relative change of |L|
+    energy_fall: float  # relative fall of the energy
+    energy_largest_rise: float  # largest rise between samples over the total fall
+
+
+def dissipation_structure(model, tilt_deg=10.0, periods=20) -> DissipationStructure:
     """On a 10° wobble, where the wobble's energy is resolvable: |L| kept, the energy only falls."""
     y0 = np.array([np.sin(np.radians(tilt_deg)), 0.0, np.cos(np.radians(tilt_deg))])
     span = periods * model.wobble_period_solar_days()
@@ -230,17 +256,21 @@ def _dissipation_structure(results, model, tilt_deg=10.0, periods=20):
     L, E = wobble.invariants(sol.y_eval, model.parameters())
     fall = E[0] - E[-1]
     rise = float(max(np.max(np.diff(E)), 0.0))
+    return DissipationStructure(
+        tilt_deg, periods, float(np.max(np.abs(L / L[0] - 1.0))), float(fall / E[0]), rise / fall
+    )
+
+
+def _record_dissipation_structure(results, values: DissipationStructure):
+    tilt_deg, periods = values.tilt_deg, values.periods
     results.number("large_wobble_tilt_deg", tilt_deg, "°")
     results.number(
-        "large_wobble_L_drift",
-        float(np.max(np.abs(L / L[0] - 1.0))),
-        "1",
-        note=f"{shortest(tilt_deg)}° wobble, {periods} periods",
+        "large_wobble_L_drift", values.L_drift, "1", note=f"{shortest(tilt_deg)}° wobble, {periods} periods"
     )
-    results.number("large_wobble_energy_fall", float(fall / E[0]), "1", note="relative fall of the energy")
+    results.number("large_wobble_energy_fall", values.energy_fall, "1", note="relative fall of the energy")
     results.number(
         "large_wobble_energy_largest_rise",
-        rise / fall,
+        values.energy_largest_rise,
         "1",
         note="largest rise between samples / total fall (0: the energy only falls)",
     )
@@ -248,18 +278,24 @@ def _dissipation_structure(results, model, tilt_deg=10.0, periods=20):
         "dissipation_keeps_L",
         f"Internal dissipation on a {shortest(tilt_deg)}° wobble: "
         "$|\\mathbf{L}|$ kept (relative) while the energy falls",
-        float(np.max(np.abs(L / L[0] - 1.0))),
+        values.L_drift,
         1e-12,
     )
     results.hard_case(
         "dissipation_energy_falls",
         "… and the energy never rises (largest rise / total fall)",
-        rise / fall,
+        values.energy_largest_rise,
         1e-6,
     )
 
 
-def _symmetric_integrals(results, model, tilt_deg=10.0, periods=20):
+class SymmetricIntegrals(NamedTuple):
+    tilt_deg: float
+    periods: int
+    deviation: float  # largest relative difference of A and w3 from T and L^2 against the run
+
+
+def symmetric_integrals(model, tilt_deg=10.0, periods=20) -> SymmetricIntegrals:
     """Handbook (2.162)-(2.163): for the free symmetric body T = I1 A^2/2 + I3 w3^2/2 and L^2 = I1^2 A^2 +
     I3^2 w3^2, so the wobble's angular speed A and the spin w3 follow from T and L^2. On a 10 degree wobble
     (at 0.1 arcsec A^2 is below what T and L^2 resolve), against A = |(w1, w2)| and w3 along a DOP853 run."""
@@ -283,9 +319,14 @@ def _symmetric_integrals(results, model, tilt_deg=10.0, periods=20):
     w3 = np.sqrt((L2 - 2 * T * I1) / (I3 * (I3 - I1)))
     wobble_speed = np.hypot(y[:, 0], y[:, 1])
     deviation = max(float(np.max(np.abs(wobble_speed / A - 1))), float(np.max(np.abs(y[:, 2] / w3 - 1))))
+    return SymmetricIntegrals(tilt_deg, periods, deviation)
+
+
+def _record_symmetric_integrals(results, values: SymmetricIntegrals):
+    tilt_deg, periods = values.tilt_deg, values.periods
     results.number(
         "symmetric_T_L2_recovery",
-        deviation,
+        values.deviation,
         "1",
         note=f"$A$ and $\\omega_3$ from $T$ and $L^2$ by (2.162)-(2.163) against $|(\\omega_1, "
         f"\\omega_2)|$ and $\\omega_3$ along a {shortest(tilt_deg)}° wobble, {periods} periods "
