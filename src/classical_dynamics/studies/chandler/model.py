@@ -116,7 +116,9 @@ def run(scene, results, quick):
     m = (y[:, 0] + 1j * y[:, 1]) / earth.MAS  # the pole about the figure axis, mas
 
     if "excitation" in effects:
-        measured = _excited(results, t, m, model, closed)
+        excited = excited_fit(t, m, model, closed)
+        _record_excited(results, excited, t, m)
+        measured = excited.chandler_period_days
     else:
         rate = phase_rate(t, y)
         measured = 2.0 * np.pi / rate
@@ -154,11 +156,11 @@ def run(scene, results, quick):
     )
 
     if "triaxiality" in effects:
-        _triaxial(results, model, amplitude, sol, t, rigid_solar)
+        _record_triaxial(results, model, triaxial(model, amplitude, sol, t, rigid_solar))
     if "elastic_yielding" in effects:
-        _elastic(results, model, H, effects["elastic_yielding"])
+        _record_elastic(results, model, elastic(model, H, effects["elastic_yielding"]))
     if "dissipation" in effects and "excitation" not in effects:
-        _damped(results, t, m, model, measured)
+        _record_damped(results, t, model, damped(t, m, model, measured))
         _record_dissipation_structure(results, dissipation_structure(model))
     if analysis.get("cones"):
         _cones(results, model, amplitude)
@@ -376,7 +378,16 @@ def _polhode(results, t, m, period, damped, triaxial=False):
     results.figure("polhode", fig, caption)
 
 
-def _triaxial(results, model, amplitude, sol, t, rigid_solar):
+class Triaxial(NamedTuple):
+    elliptic_period_solar_days: float  # 4K(k)/lambda of the exact motion
+    elliptic_modulus_squared: float
+    triaxial_period_change_days: float  # against the symmetric Earth with the same (C - (A + B)/2)/C
+    polhode_axis_ratio: float  # closed form sqrt(A(C - A)/(B(C - B)))
+    polhode_axis_ratio_measured: float
+    exact_solution_error: float  # relative to the wobble
+
+
+def triaxial(model, amplitude, sol, t, rigid_solar) -> Triaxial:
     """Against the exact elliptic-function motion: the period 4K/rate, the polhode's ellipse."""
     a, b = earth.moments_over_c(model.H, model.b_minus_a_over_c)
     I = np.array([a, b, 1.0])
@@ -384,31 +395,38 @@ def _triaxial(results, model, amplitude, sol, t, rigid_solar):
     exact = ref.free_rigid_body(I, I * w0, t) / model.n
     err = float(np.max(np.abs(sol.y_eval - exact)[:, :2])) / amplitude
     period = ref.free_rigid_body_period(I, I * w0)
+    y = sol.y_eval
+    return Triaxial(
+        elliptic_period_solar_days=period,
+        elliptic_modulus_squared=float(ref.free_rigid_body_rate_and_parameter(I, I * w0)[1]),
+        triaxial_period_change_days=period - rigid_solar,
+        polhode_axis_ratio=np.sqrt(a * (1.0 - a) / (b * (1.0 - b))),
+        polhode_axis_ratio_measured=float(np.max(np.abs(y[:, 1])) / np.max(np.abs(y[:, 0]))),
+        exact_solution_error=err,
+    )
+
+
+def _record_triaxial(results, model, values: Triaxial):
+    period, err = values.elliptic_period_solar_days, values.exact_solution_error
     results.number(
         "B_minus_A_over_C", model.b_minus_a_over_c, "1", note="$4C_{22}H/J_2$ (EGM2008, IERS 2010)"
     )
     results.number("elliptic_period_solar_days", period, "d", note="$4K(k)/\\lambda$ of the exact motion")
-    results.number(
-        "elliptic_modulus_squared", float(ref.free_rigid_body_rate_and_parameter(I, I * w0)[1]), "1"
-    )
+    results.number("elliptic_modulus_squared", values.elliptic_modulus_squared, "1")
     results.number(
         "triaxial_period_change_days",
-        period - rigid_solar,
+        values.triaxial_period_change_days,
         "d",
         note="against the symmetric Earth with the same $(C - (A + B)/2)/C$",
     )
-    results.number("triaxial_period_change_hours", 24.0 * (period - rigid_solar), "h")
-    axis_ratio = np.sqrt(a * (1.0 - a) / (b * (1.0 - b)))
+    results.number("triaxial_period_change_hours", 24.0 * values.triaxial_period_change_days, "h")
     results.number(
         "polhode_axis_ratio",
-        axis_ratio,
+        values.polhode_axis_ratio,
         "1",
         note="$q_\\mathrm{max}/p_\\mathrm{max} = \\sqrt{A(C - A)/(B(C - B))}$: the polhode is an ellipse",
     )
-    y = sol.y_eval
-    results.number(
-        "polhode_axis_ratio_measured", float(np.max(np.abs(y[:, 1])) / np.max(np.abs(y[:, 0]))), "1"
-    )
+    results.number("polhode_axis_ratio_measured", values.polhode_axis_ratio_measured, "1")
     results.number(
         "exact_solution_error",
         err,
@@ -423,37 +441,79 @@ def _triaxial(results, model, amplitude, sol, t, rigid_solar):
     )
 
 
-def _elastic(results, model, H, params):
+ELASTIC_TARGETS = ((433.1, "433"), (427.0, "427"))  # wobble periods (d) and their names
+
+
+class Elastic(NamedTuple):
+    secular_love_number: float  # k_s = 3 J2/q
+    beta_n2_over_A: float
+    beta_n2_over_C_minus_A: float  # = k2/k_s
+    excess_over_observed: float  # closed-form period / 433.1 d - 1
+    love_number_k2: float
+    love_number_source: str
+    k2_for_period_days: dict  # {"433": k2, "427": k2}: the Love number a 433.1-day, 427-day wobble needs
+
+
+def elastic(model, H, params) -> Elastic:
+    """Lamb's elastic Earth: its beta n^2 as Love numbers, and the k2 a given period needs."""
     k_s = earth.secular_love_number()
+    needed = {name: earth.beta_n2_for_period(H, target) / H * k_s for target, name in ELASTIC_TARGETS}
+    return Elastic(
+        secular_love_number=k_s,
+        beta_n2_over_A=model.beta_n2 / (1.0 - H),
+        beta_n2_over_C_minus_A=model.beta_n2 / H,
+        excess_over_observed=model.wobble_period_solar_days() / 433.1 - 1.0,
+        love_number_k2=params.get("k2", model.beta_n2 / H * k_s),
+        love_number_source=params["source"],
+        k2_for_period_days=needed,
+    )
+
+
+def _record_elastic(results, model, values: Elastic):
+    k_s = values.secular_love_number
     results.number("secular_love_number", k_s, "1", note="$k_\\mathrm{s} = 3J_2/q$ (IERS 2010 constants)")
     results.number("beta_n2_over_C", model.beta_n2, "1", note="Lamb's $\\beta n^2$ in units of $C$")
-    results.number("beta_n2_over_A", model.beta_n2 / (1.0 - H), "1")
-    results.number("beta_n2_over_C_minus_A", model.beta_n2 / H, "1", note="$= k_2/k_\\mathrm{s}$")
+    results.number("beta_n2_over_A", values.beta_n2_over_A, "1")
+    results.number("beta_n2_over_C_minus_A", values.beta_n2_over_C_minus_A, "1", note="$= k_2/k_\\mathrm{s}$")
     results.number(
         "excess_over_observed",
-        model.wobble_period_solar_days() / 433.1 - 1.0,
+        values.excess_over_observed,
         "1",
         note="closed-form period / 433.1 d (Vicente & Wilson 1997) − 1",
     )
-    k2 = params.get("k2", model.beta_n2 / H * k_s)
-    results.number("love_number_k2", k2, "1", note=params["source"])
-    for target, name in ((433.1, "433"), (427.0, "427")):
-        needed = earth.beta_n2_for_period(H, target)
+    results.number("love_number_k2", values.love_number_k2, "1", note=values.love_number_source)
+    for target, name in ELASTIC_TARGETS:
         results.number(
             f"k2_for_{name}_days",
-            needed / H * k_s,
+            values.k2_for_period_days[name],
             "1",
             note=f"the Love number Lamb's model needs for a {shortest(target)}-day wobble",
         )
 
 
-def _damped(results, t, m, model, period):
+class Damped(NamedTuple):
+    Q_recovered: float  # sigma/2 gamma, gamma the decay rate of the simulated amplitude
+    amplitude_e_folding_years: float  # measured
+    amplitude_e_folding_years_closed_form: float  # Q P/pi
+    amplitude: np.ndarray  # |m| along the run
+    sigma: float  # the wobble's angular frequency (rad/d)
+
+
+def damped(t, m, model, period) -> Damped:
     """Q from the decay of the amplitude (a straight-line fit of log |m|), against the scene's Q."""
     amp = np.abs(m)
     slope = np.polyfit(t, np.log(amp), 1)[0]  # per day
     sigma = 2.0 * np.pi / period
     Q_fit = -sigma / (2.0 * slope)
     e_fold_years = -1.0 / slope / earth.JULIAN_YEAR_DAYS
+    closed = model.Q * period / np.pi / earth.JULIAN_YEAR_DAYS
+    return Damped(Q_fit, e_fold_years, closed, amp, sigma)
+
+
+def _record_damped(results, t, model, values: Damped):
+    """The numbers, the hard case and the decay figure of a damped run."""
+    Q_fit, e_fold_years = values.Q_recovered, values.amplitude_e_folding_years
+    amp, sigma = values.amplitude, values.sigma
     results.number("Q", model.Q, "1")
     results.number(
         "Q_recovered",
@@ -465,7 +525,7 @@ def _damped(results, t, m, model, period):
     results.number("amplitude_e_folding_years", e_fold_years, "yr", note="measured")
     results.number(
         "amplitude_e_folding_years_closed_form",
-        model.Q * period / np.pi / earth.JULIAN_YEAR_DAYS,
+        values.amplitude_e_folding_years_closed_form,
         "yr",
         note="$QP/\\pi$",
     )
@@ -499,16 +559,40 @@ def _damped(results, t, m, model, period):
     )
 
 
-def _excited(results, t, m, model, closed):
+class Excited(NamedTuple):
+    fit: polar_motion.WobbleFit  # the simulated series fitted as the observations are
+    chandler_period_days: float  # fitted
+    beat_period_years: float  # 1/(f_annual - f_Chandler), fitted periods
+    beat_period_closed_form_years: float  # from the model's closed-form period
+    period_relative_error: float  # fitted against the closed form
+    bound: float  # the resonance's width 1/Q (relative)
+
+
+def excited_fit(t, m, model, closed) -> Excited:
     """Fit the simulated series the way the observations are fitted: the fitter checked on a known truth."""
     years = t / earth.JULIAN_YEAR_DAYS
     fit = polar_motion.fit(years, m)
+    annual_period = earth.TROPICAL_YEAR_DAYS
+    beat = 1.0 / abs(1.0 / annual_period - 1.0 / fit.chandler_period_days) / earth.JULIAN_YEAR_DAYS
+    # a finite, randomly excited record fixes the period only to within the resonance's width, 1/Q relative
+    return Excited(
+        fit=fit,
+        chandler_period_days=fit.chandler_period_days,
+        beat_period_years=beat,
+        beat_period_closed_form_years=1.0 / abs(1.0 / annual_period - 1.0 / closed) / earth.JULIAN_YEAR_DAYS,
+        period_relative_error=fit.chandler_period_days / closed - 1.0,
+        bound=1.0 / model.Q if model.Q else 1e-3,
+    )
+
+
+def _record_excited(results, values: Excited, t, m):
+    """The fit's numbers, the hard case and the polar path figure."""
+    fit, beat = values.fit, values.beat_period_years
+    years = t / earth.JULIAN_YEAR_DAYS
     results.number("fitted_chandler_period_days", fit.chandler_period_days, "d")
     results.number("fitted_chandler_amplitude_mas", fit.chandler_amplitude_mas, "mas")
     results.number("fitted_annual_prograde_mas", fit.annual_prograde_mas, "mas")
     results.number("fitted_annual_retrograde_mas", fit.annual_retrograde_mas, "mas")
-    annual_period = earth.TROPICAL_YEAR_DAYS
-    beat = 1.0 / abs(1.0 / annual_period - 1.0 / fit.chandler_period_days) / earth.JULIAN_YEAR_DAYS
     results.number(
         "beat_period_years",
         beat,
@@ -517,18 +601,16 @@ def _excited(results, t, m, model, closed):
     )
     results.number(
         "beat_period_closed_form_years",
-        1.0 / abs(1.0 / annual_period - 1.0 / closed) / earth.JULIAN_YEAR_DAYS,
+        values.beat_period_closed_form_years,
         "yr",
         note="from the model's closed-form period",
     )
-    # a finite, randomly excited record fixes the period only to within the resonance's width, 1/Q relative
-    bound = 1.0 / model.Q if model.Q else 1e-3
     results.hard_case(
         "fitter_on_known_truth",
         "Fitting the simulated series recovers the model's period "
         "(relative; within the resonance width $1/Q$)",
-        fit.chandler_period_days / closed - 1.0,
-        bound,
+        values.period_relative_error,
+        values.bound,
     )
     shown = min(PATH_YEARS, float(years[-1] - years[0]))
     figure_path(
@@ -546,7 +628,6 @@ def _excited(results, t, m, model, closed):
         last_years=PATH_YEARS,
         time_label="time from the start (yr)",
     )
-    return fit.chandler_period_days
 
 
 def figure_path(results, name, years, m, caption, last_years=13.0, time_label="year"):
