@@ -163,7 +163,7 @@ def run(scene, results, quick):
         _record_damped(results, t, model, damped(t, m, model, measured))
         _record_dissipation_structure(results, dissipation_structure(model))
     if analysis.get("cones"):
-        _cones(results, model, amplitude)
+        _record_cones(results, model, amplitude, cones(model, amplitude))
         if not effects:
             _record_symmetric_integrals(results, symmetric_integrals(model))
     if analysis.get("lamb_symmetric"):
@@ -654,7 +654,22 @@ def figure_path(results, name, years, m, caption, last_years=13.0, time_label="y
     results.figure(name, fig, caption)
 
 
-def _cones(results, model, amplitude):
+class Cones(NamedTuple):
+    """Lamb Art. 47 on the rigid symmetric Earth, over two days of attitude (angles in rad)."""
+
+    alpha: float  # figure axis to L
+    beta: float  # figure axis to omega
+    C_over_A: float
+    herpolhode_over_polhode: float  # measured
+    herpolhode_radius_mas: float
+    space_cone_period_sidereal_days: float
+    angular_momentum: np.ndarray  # body-frame L along the run (units C n)
+    omega_space: np.ndarray  # omega in space along the run
+    invariable_line: np.ndarray  # L/|L| in space
+    moments: np.ndarray  # A, B, C over C
+
+
+def cones(model, amplitude) -> Cones:
     """Body and space cones (Lamb Art. 47): tan β = (C/A) tan α; the herpolhode is H times the polhode."""
     a = model.parameters()[wobble.A_C]
     I = np.array([a, a, 1.0])
@@ -662,8 +677,6 @@ def _cones(results, model, amplitude):
     m0 = I * w0
     alpha = np.arctan2(np.hypot(m0[0], m0[1]), m0[2])  # figure axis to L
     beta = np.arctan2(np.hypot(w0[0], w0[1]), w0[2])  # figure axis to omega
-    results.number("tan_beta_over_tan_alpha", np.tan(beta) / np.tan(alpha), "1", note="Lamb: $C/A$")
-    results.number("C_over_A", 1.0 / a, "1")
     # two days of attitude by the splitting (fourth order, exact rotations), the herpolhode in space
     h, days = 1e-3, 2.0
     steps = int(round(days / h))
@@ -677,6 +690,32 @@ def _cones(results, model, amplitude):
     herpolhode = np.linalg.norm(off_L, axis=1) / np.linalg.norm(omega_space, axis=1)
     polhode = np.hypot(ms[:, 0], ms[:, 1]) / I[0] / np.linalg.norm(ms / I, axis=1)
     ratio = float(np.mean(herpolhode) / np.mean(polhode))
+    space_rate = np.linalg.norm(m0) / I[0]
+    return Cones(
+        alpha=alpha,
+        beta=beta,
+        C_over_A=1.0 / a,
+        herpolhode_over_polhode=ratio,
+        herpolhode_radius_mas=float(np.mean(herpolhode)) / earth.MAS,
+        space_cone_period_sidereal_days=2 * np.pi / space_rate * earth.SIDEREAL_PER_SOLAR_DAY,
+        angular_momentum=ms,
+        omega_space=omega_space,
+        invariable_line=L_hat,
+        moments=I,
+    )
+
+
+def _record_cones(results, model, amplitude, values: Cones):
+    """The cones' numbers and figure: the polhode in the body, the herpolhode in space."""
+    alpha, beta, ratio = values.alpha, values.beta, values.herpolhode_over_polhode
+    ms, omega_space, L_hat, I = (
+        values.angular_momentum,
+        values.omega_space,
+        values.invariable_line,
+        values.moments,
+    )
+    results.number("tan_beta_over_tan_alpha", np.tan(beta) / np.tan(alpha), "1", note="Lamb: $C/A$")
+    results.number("C_over_A", values.C_over_A, "1")
     results.number("herpolhode_over_polhode", ratio, "1", note="radii of the space and body cones, measured")
     results.number(
         "herpolhode_over_polhode_closed_form",
@@ -685,11 +724,10 @@ def _cones(results, model, amplitude):
         note="sin(β − α)/sin β",
     )
     results.number("one_over_herpolhode_ratio", 1.0 / ratio, "1")
-    results.number("herpolhode_radius_mas", float(np.mean(herpolhode)) / earth.MAS, "mas")
-    space_rate = np.linalg.norm(m0) / I[0]
+    results.number("herpolhode_radius_mas", values.herpolhode_radius_mas, "mas")
     results.number(
         "space_cone_period_sidereal_days",
-        2 * np.pi / space_rate * earth.SIDEREAL_PER_SOLAR_DAY,
+        values.space_cone_period_sidereal_days,
         "sidereal days",
         note="$\\dot\\psi = |\\mathbf{L}|/A$: the plane of $\\omega$ and the "
         "figure axis turns about $\\mathbf{L}$ once a day",
