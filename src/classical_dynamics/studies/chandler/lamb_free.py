@@ -14,6 +14,8 @@ symmetric_earth(results, model, amplitude)
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 import sympy as sp
 from scipy.special import ellipk
@@ -143,10 +145,10 @@ def free_body(results, spec) -> None:
             note="0: sympy reduces the statement to an identity (else the residual's number of terms)",
         )
     _polhode_side(results, I, spec["samples"], spec["seed"])
-    _stable_axes(results, I, np.radians(spec["tilt_deg"]))
+    _record_stable_axes(results, stable_axes(I, np.radians(spec["tilt_deg"])))
     _poinsot(results, I)
-    _separatrix(results, I)
-    _plate(results, *spec["plate_half_sides"])
+    _record_separatrix(results, separatrix(I))
+    _record_plate(results, plate(*spec["plate_half_sides"]))
     _constraining_couples(results, I, spec["spin_over_turn"])
 
 
@@ -195,8 +197,18 @@ def _moments(I):
     return "(" + ", ".join(f"{v:g}" for v in I) + ")"
 
 
-def _stable_axes(results, I, tilt):
+class StableAxes(NamedTuple):
+    tilt: float  # rad
+    conic_ratio: (
+        dict  # per axis ("greatest", "least"): largest |omega_2| over a period over the conic's value
+    )
+    largest_angle_deg: dict  # per axis: largest angle of omega from it over a period
+    middle_axis_largest_angle_deg: float  # over two periods from `tilt` off the middle axis
+
+
+def stable_axes(I, tilt) -> StableAxes:
     """The lecture notes' conic near an axis: tilted by `tilt`, the other transverse rate's largest value."""
+    conic_ratio, largest_angle = {}, {}
     I1, I2, I3 = I
     d = np.tan(tilt)
     cases = {  # start, measured index, conic's prediction of the largest |omega_j|
@@ -209,20 +221,28 @@ def _stable_axes(results, I, tilt):
         t, w, _ = integrate(I, w0, period, samples=20001)
         axis = 2 if name == "greatest" else 0
         angle = np.degrees(np.arccos(np.abs(w[:, axis]) / np.linalg.norm(w, axis=1)))
+        conic_ratio[name] = float(np.max(np.abs(w[:, j]))) / predicted
+        largest_angle[name] = float(np.max(angle))
+    w0 = np.array([d, 1.0, 0.0])
+    t, w, _ = integrate(I, w0, 2.0 * polhode_period(I, w0)[0], samples=20001)
+    angle = np.degrees(np.arccos(np.clip(w[:, 1] / np.linalg.norm(w, axis=1), -1, 1)))
+    return StableAxes(tilt, conic_ratio, largest_angle, float(np.max(angle)))
+
+
+def _record_stable_axes(results, values: StableAxes):
+    tilt = values.tilt
+    for name in values.conic_ratio:
         results.number(
             f"{name}_axis_conic_ratio",
-            float(np.max(np.abs(w[:, j]))) / predicted,
+            values.conic_ratio[name],
             "1",
             note=f"largest $|\\omega_2|$ over a period from {np.degrees(tilt):g}° off the {name} axis, "
             "over the conic's value",
         )
-        results.number(f"{name}_axis_largest_angle_deg", float(np.max(angle)), "°")
-    w0 = np.array([d, 1.0, 0.0])
-    t, w, _ = integrate(I, w0, 2.0 * polhode_period(I, w0)[0], samples=20001)
-    angle = np.degrees(np.arccos(np.clip(w[:, 1] / np.linalg.norm(w, axis=1), -1, 1)))
+        results.number(f"{name}_axis_largest_angle_deg", values.largest_angle_deg[name], "°")
     results.number(
         "middle_axis_largest_angle_deg",
-        float(np.max(angle)),
+        values.middle_axis_largest_angle_deg,
         "°",
         note=f"{np.degrees(tilt):g}° off the middle axis: ω swings over to the opposite side",
     )
@@ -341,7 +361,15 @@ def _poinsot(results, I):
     )
 
 
-def _separatrix(results, I):
+class Separatrix(NamedTuple):
+    largest_offset: float  # rad, of omega from the plane A(B - A)p^2 = C(C - B)r^2
+    y_range: float  # how far omega moves within the plane (relative)
+    cylinder_contact_vs_separatrix_angle: float  # rad
+    cylinder_shadow_radius_times_sqrt_B: float
+    cylinder_contact_curve_roundness: float
+
+
+def separatrix(I) -> Separatrix:
     """Ex. X.3: a start in the separatrix plane (2BT = H^2) stays in it (the cylinders' plane of contact)."""
     A, B, C = I
     p0 = 0.8
@@ -358,35 +386,47 @@ def _separatrix(results, I):
     contact /= np.linalg.norm(contact)
     mirror = normal * np.array([1.0, 1.0, -1.0])  # the other separatrix plane
     radius, roundness = _shadow_radius(I, np.array([np.sin(phi), 0.0, np.cos(phi)]))
+    return Separatrix(
+        largest_offset=float(np.max(off)),
+        y_range=float(np.ptp(w[:, 1]) / np.linalg.norm(w0)),
+        cylinder_contact_vs_separatrix_angle=float(
+            np.arccos(min(1.0, max(abs(contact @ normal), abs(contact @ mirror))))
+        ),
+        cylinder_shadow_radius_times_sqrt_B=radius * np.sqrt(B),
+        cylinder_contact_curve_roundness=roundness,
+    )
+
+
+def _record_separatrix(results, values: Separatrix):
     results.number(
         "separatrix_largest_offset",
-        float(np.max(off)),
+        values.largest_offset,
         "rad",
         note="Ex. X.3: largest angle of $\\boldsymbol\\omega$ from the plane $A(B - A)p^2 = C(C - B)r^2$ "
         "over the run, from a start in it",
     )
     results.number(
         "separatrix_y_range",
-        float(np.ptp(w[:, 1]) / np.linalg.norm(w0)),
+        values.y_range,
         "1",
         note="how far ω moves within the plane (relative): the test is not empty",
     )
     results.number(
         "cylinder_contact_vs_separatrix_angle",
-        float(np.arccos(min(1.0, max(abs(contact @ normal), abs(contact @ mirror))))),
+        values.cylinder_contact_vs_separatrix_angle,
         "rad",
         note="angle between the enveloping cylinder's plane of contact and a separatrix plane",
     )
     results.number(
         "cylinder_shadow_radius_times_sqrt_B",
-        radius * np.sqrt(B),
+        values.cylinder_shadow_radius_times_sqrt_B,
         "1",
         note="the enveloping cylinder's radius (largest distance of the ellipsoid from its axis, by "
         "sampling) × $\\sqrt B$: 1 for a circular cylinder through the middle axis' ends",
     )
     results.number(
         "cylinder_contact_curve_roundness",
-        roundness,
+        values.cylinder_contact_curve_roundness,
         "1",
         note="the spread of those distances over their mean: 0 for a circular cylinder",
     )
@@ -409,7 +449,16 @@ def _shadow_radius(I, d, n=2001):
     return float(np.mean(dist)), float(np.ptp(dist) / np.mean(dist))
 
 
-def _plate(results, a, b):
+class Plate(NamedTuple):
+    a: float  # half-sides
+    b: float
+    other_diagonal_time: float  # time units 1/|omega|
+    half_period_closed_form: float  # 2K(k)/lambda
+    modulus_squared: float
+    angle_from_other_diagonal_rad: float
+
+
+def plate(a, b) -> Plate:
     """Ex. X.15: a plate (edges 2a, 2b) spun about a diagonal spins about the other after half a period."""
     I = np.array([b * b, a * a, a * a + b * b]) / 3.0  # M = 1
     order = np.argsort(I)
@@ -433,6 +482,11 @@ def _plate(results, a, b):
     w_star = sol.event_y[after][0][:3]
     other = np.array([a, -b, 0.0]) / np.hypot(a, b)
     angle = np.arcsin(min(1.0, np.linalg.norm(np.cross(w_star, other)) / np.linalg.norm(w_star)))
+    return Plate(a, b, t_star, half, k2, float(angle))
+
+
+def _record_plate(results, values: Plate):
+    a, b, t_star, half = values.a, values.b, values.other_diagonal_time, values.half_period_closed_form
     results.number(
         "plate_other_diagonal_time",
         t_star,
@@ -446,10 +500,10 @@ def _plate(results, a, b):
         "plate_half_period_closed_form", half, "time units", note="$2K(k)/\\lambda$, Landau & Lifshitz §37"
     )
     results.number("plate_time_relative_error", t_star / half - 1.0, "1")
-    results.number("plate_modulus_squared", k2, "1")
+    results.number("plate_modulus_squared", values.modulus_squared, "1")
     results.number(
         "plate_angle_from_other_diagonal_rad",
-        float(angle),
+        values.angle_from_other_diagonal_rad,
         "rad",
         note="then the angle between ω and the other diagonal",
     )
