@@ -51,16 +51,13 @@ def test_polhode_period_against_the_integration_both_sides_of_the_separatrix():
 
 
 def test_criterion_10_agrees_with_the_integration_even_near_the_separatrix():
-    out = Numbers()
-    lf._polhode_side(out, I, 300, 7)
-    assert out.numbers["polhode_side_agreements"] == 300
-    assert 0 < out.numbers["polhode_side_round_least"] < 300
+    side = lf.polhode_side(I, 300, 7)
+    assert side.agreements == 300
+    assert 0 < side.round_least < 300
 
 
 def test_poinsot_geometry_holds_and_moves():
-    out = Numbers()
-    lf._poinsot(out, I)
-    n = out.numbers
+    n = lf.poinsot_examples(I)._asdict()
     # Each is measured on the attitude integrated from Euler's equations (which know nothing of sections,
     # gyration ellipsoids or planes) against Lamb's closed form of Exx. X.1, X.4, X.5, X.22 written from
     # A, B, C, T and H alone: a fault in the integration or in either formula breaks the agreement, and the

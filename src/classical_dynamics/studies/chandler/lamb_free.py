@@ -144,15 +144,23 @@ def free_body(results, spec) -> None:
             "1",
             note="0: sympy reduces the statement to an identity (else the residual's number of terms)",
         )
-    _polhode_side(results, I, spec["samples"], spec["seed"])
+    _record_polhode_side(results, polhode_side(I, spec["samples"], spec["seed"]))
     _record_stable_axes(results, stable_axes(I, np.radians(spec["tilt_deg"])))
-    _poinsot(results, I)
+    _record_poinsot(results, poinsot_examples(I))
     _record_separatrix(results, separatrix(I))
     _record_plate(results, plate(*spec["plate_half_sides"]))
     _constraining_couples(results, I, spec["spin_over_turn"])
 
 
-def _polhode_side(results, I, samples, seed):
+class PolhodeSide(NamedTuple):
+    moments: np.ndarray
+    samples: int  # random directions of omega
+    agreements: int  # where (10) and the integration agree
+    round_least: int  # predicted round the least axis
+    smallest_margin: float  # nearest start to the separatrix
+
+
+def polhode_side(I, samples, seed) -> PolhodeSide:
     """Art. 52 (10): which axis the polhode surrounds, predicted from the start, against 1000 integrations."""
     A, B, C = I
     rng = np.random.default_rng(seed)
@@ -174,20 +182,27 @@ def _polhode_side(results, I, samples, seed):
     keeps_r = np.all(rr * r[:, None] > 0, axis=1)
     agree = (least & keeps_p & ~keeps_r) | (~least & keeps_r & ~keeps_p)
     margin = np.abs(B * (A * p**2 + C * r**2) - A**2 * p**2 - C**2 * r**2)
+    return PolhodeSide(I, samples, int(np.sum(agree)), int(np.sum(least)), float(np.min(margin)))
+
+
+def _record_polhode_side(results, values: PolhodeSide):
     results.number(
-        "polhode_side_samples", samples, "1", note="random directions of ω, moments " + _moments(I)
+        "polhode_side_samples",
+        values.samples,
+        "1",
+        note="random directions of ω, moments " + _moments(values.moments),
     )
     results.number(
         "polhode_side_agreements",
-        int(np.sum(agree)),
+        values.agreements,
         "1",
         note="(10) predicts the axis the polhode surrounds, and the integration agrees (the component "
         "along that axis keeps its sign for 1.05 of the longest period, the other changes sign)",
     )
-    results.number("polhode_side_round_least", int(np.sum(least)), "1")
+    results.number("polhode_side_round_least", values.round_least, "1")
     results.number(
         "polhode_side_smallest_margin",
-        float(np.min(margin)),
+        values.smallest_margin,
         "1",
         note="nearest start to the separatrix: $|B(Ap_0^2 + Cr_0^2) - A^2p_0^2 - C^2r_0^2|$",
     )
@@ -248,7 +263,25 @@ def _record_stable_axes(results, values: StableAxes):
     )
 
 
-def _poinsot(results, I):
+class PoinsotExamples(NamedTuple):
+    """Exx. X.1, X.4, X.5, X.22 on one motion: largest deviations from the closed forms (relative unless
+    named)."""
+
+    moments: np.ndarray
+    modulus_squared: float  # k^2 of the motion
+    section_area_max_relative_deviation: float
+    poinsot_sum_max_relative_deviation: float
+    gyration_point_off_ellipsoid: float
+    gyration_normal_angle_rad: float
+    gyration_perpendicular_times_omega_drift: float
+    gyration_omega_range: float
+    plane_rate_max_relative_deviation: float
+    plane_rate_range: float
+    plane_rate_differences_max_relative_deviation: float
+    difference_step: float  # time step of the differenced azimuth
+
+
+def poinsot_examples(I) -> PoinsotExamples:
     """Exx. X.1, X.4, X.5, X.22 along one integrated motion, measured in space and against the closed
     forms."""
     A, B, C = I
@@ -260,7 +293,6 @@ def _poinsot(results, I):
     T2 = float(np.sum(I * w0**2))
     L_hat = L_space / H
     n = np.einsum("kji,j->ki", R, L_hat)  # the invariable line in the body, from the attitude
-    results.number("poinsot_modulus_squared", k2, "1", note="$k^2$ of the motion, moments " + _moments(I))
     # Ex. X.1: the section's area from the form on the plane (an orthonormal basis of the plane, by SVD)
     Q = np.diag(I)
     areas = []
@@ -269,23 +301,12 @@ def _poinsot(results, I):
         areas.append(np.pi / np.sqrt(np.linalg.det(P.T @ Q @ P)))
     areas = np.array(areas)
     closed = np.pi * H / np.sqrt(T2 * A * B * C)  # pi H / sqrt(2ABCT), 2T = T2
-    results.number(
-        "section_area_max_relative_deviation",
-        float(np.max(np.abs(areas / closed - 1.0))),
-        "1",
-        note="Ex. X.1: the central section by the plane normal to $\\mathbf{H}$, against "
-        "$\\pi H/\\sqrt{2ABCT}$, over three polhode periods",
-    )
+    section_area = float(np.max(np.abs(areas / closed - 1.0)))
     # Ex. X.4: the ends of the axes (1/sqrt I_i along e_i) from the invariable line
     ends = np.eye(3) / np.sqrt(I)[:, None]
     dist2 = sum(np.linalg.norm(np.cross(ends[i], n), axis=1) ** 2 for i in range(3))
     closed = 1 / A + 1 / B + 1 / C - T2 / H**2
-    results.number(
-        "poinsot_sum_max_relative_deviation",
-        float(np.max(np.abs(dist2 / closed - 1.0))),
-        "1",
-        note="Ex. X.4: sum of the squared distances against $1/A + 1/B + 1/C - 2T/H^2$",
-    )
+    poinsot_sum = float(np.max(np.abs(dist2 / closed - 1.0)))
     # Ex. X.5: the point s n, s fixed at the start, stays on x^2/A + y^2/B + z^2/C = 1; the normal there is
     # along omega; the distance from the centre to the tangent plane times |omega| is constant
     s = 1.0 / np.sqrt(np.sum(n[0] ** 2 / I))
@@ -297,30 +318,6 @@ def _poinsot(results, I):
     )
     perp = 1.0 / np.linalg.norm(normal, axis=1)
     product = perp * np.linalg.norm(w, axis=1)
-    results.number(
-        "gyration_point_off_ellipsoid",
-        float(np.max(on)),
-        "1",
-        note="Ex. X.5: largest $|x^2/A + y^2/B + z^2/C - 1|$ at the fixed point of the invariable line",
-    )
-    results.number(
-        "gyration_normal_angle_rad",
-        float(np.max(np.arcsin(np.minimum(sinang, 1.0)))),
-        "rad",
-        note="largest angle between the normal there and $\\boldsymbol\\omega$",
-    )
-    results.number(
-        "gyration_perpendicular_times_omega_drift",
-        float(np.max(np.abs(product / product[0] - 1))),
-        "1",
-        note="largest relative change of (perpendicular on the tangent plane) × $|\\boldsymbol\\omega|$",
-    )
-    results.number(
-        "gyration_omega_range",
-        float(np.ptp(np.linalg.norm(w, axis=1)) / np.linalg.norm(w0)),
-        "1",
-        note="how much $|\\boldsymbol\\omega|$ itself varies (relative): the test is not empty",
-    )
     # Ex. X.22: the rate at which the plane of OZ and the axis A turns about OZ, from the attitude (space
     # frame)
     eA = R[:, :, 0]
@@ -333,19 +330,6 @@ def _poinsot(results, I):
     )
     cos_a = eA @ L_hat
     formula = (T2 / H - H / A * cos_a**2) / (1.0 - cos_a**2)
-    results.number(
-        "plane_rate_max_relative_deviation",
-        float(np.max(np.abs(measured / formula - 1.0))),
-        "1",
-        note="Ex. X.22: $\\dot\\psi$ of the plane $ZOA$ about $OZ$ measured in space against "
-        "$(2T/H - (H/A)\\cos^2\\alpha)/\\sin^2\\alpha$ at the measured $\\alpha$",
-    )
-    results.number(
-        "plane_rate_range",
-        float(np.ptp(measured) / np.mean(measured)),
-        "1",
-        note="how much that rate varies along the motion (relative)",
-    )
     # ... and the same rate by differences of the plane's azimuth (no kinematics): 2nd-order central
     # differences
     e1 = np.cross(L_hat, [0.0, 1.0, 0.0])
@@ -353,11 +337,84 @@ def _poinsot(results, I):
     e2 = np.cross(L_hat, e1)
     azimuth = np.unwrap(np.arctan2(u @ e2, u @ e1))
     fd = np.gradient(azimuth, t, edge_order=2)
+    return PoinsotExamples(
+        moments=I,
+        modulus_squared=k2,
+        section_area_max_relative_deviation=section_area,
+        poinsot_sum_max_relative_deviation=poinsot_sum,
+        gyration_point_off_ellipsoid=float(np.max(on)),
+        gyration_normal_angle_rad=float(np.max(np.arcsin(np.minimum(sinang, 1.0)))),
+        gyration_perpendicular_times_omega_drift=float(np.max(np.abs(product / product[0] - 1))),
+        gyration_omega_range=float(np.ptp(np.linalg.norm(w, axis=1)) / np.linalg.norm(w0)),
+        plane_rate_max_relative_deviation=float(np.max(np.abs(measured / formula - 1.0))),
+        plane_rate_range=float(np.ptp(measured) / np.mean(measured)),
+        plane_rate_differences_max_relative_deviation=float(np.max(np.abs(fd[1:-1] / formula[1:-1] - 1.0))),
+        difference_step=t[1] - t[0],
+    )
+
+
+def _record_poinsot(results, values: PoinsotExamples):
+    results.number(
+        "poinsot_modulus_squared",
+        values.modulus_squared,
+        "1",
+        note="$k^2$ of the motion, moments " + _moments(values.moments),
+    )
+    results.number(
+        "section_area_max_relative_deviation",
+        values.section_area_max_relative_deviation,
+        "1",
+        note="Ex. X.1: the central section by the plane normal to $\\mathbf{H}$, against "
+        "$\\pi H/\\sqrt{2ABCT}$, over three polhode periods",
+    )
+    results.number(
+        "poinsot_sum_max_relative_deviation",
+        values.poinsot_sum_max_relative_deviation,
+        "1",
+        note="Ex. X.4: sum of the squared distances against $1/A + 1/B + 1/C - 2T/H^2$",
+    )
+    results.number(
+        "gyration_point_off_ellipsoid",
+        values.gyration_point_off_ellipsoid,
+        "1",
+        note="Ex. X.5: largest $|x^2/A + y^2/B + z^2/C - 1|$ at the fixed point of the invariable line",
+    )
+    results.number(
+        "gyration_normal_angle_rad",
+        values.gyration_normal_angle_rad,
+        "rad",
+        note="largest angle between the normal there and $\\boldsymbol\\omega$",
+    )
+    results.number(
+        "gyration_perpendicular_times_omega_drift",
+        values.gyration_perpendicular_times_omega_drift,
+        "1",
+        note="largest relative change of (perpendicular on the tangent plane) × $|\\boldsymbol\\omega|$",
+    )
+    results.number(
+        "gyration_omega_range",
+        values.gyration_omega_range,
+        "1",
+        note="how much $|\\boldsymbol\\omega|$ itself varies (relative): the test is not empty",
+    )
+    results.number(
+        "plane_rate_max_relative_deviation",
+        values.plane_rate_max_relative_deviation,
+        "1",
+        note="Ex. X.22: $\\dot\\psi$ of the plane $ZOA$ about $OZ$ measured in space against "
+        "$(2T/H - (H/A)\\cos^2\\alpha)/\\sin^2\\alpha$ at the measured $\\alpha$",
+    )
+    results.number(
+        "plane_rate_range",
+        values.plane_rate_range,
+        "1",
+        note="how much that rate varies along the motion (relative)",
+    )
     results.number(
         "plane_rate_differences_max_relative_deviation",
-        float(np.max(np.abs(fd[1:-1] / formula[1:-1] - 1.0))),
+        values.plane_rate_differences_max_relative_deviation,
         "1",
-        note=f"the azimuth differenced (central differences, step {t[1] - t[0]:.3g})",
+        note=f"the azimuth differenced (central differences, step {values.difference_step:.3g})",
     )
 
 
