@@ -104,17 +104,17 @@ def test_plate_turns_to_the_other_diagonal_after_half_a_period():
 
 
 def test_constraining_couples_are_lambs_on_the_phase_average_only():
-    out = Numbers()
-    lf._constraining_couples(out, I, 50.0)
-    n = out.numbers
-    assert n["constraining_in_plane_deviation"] < 1e-10 and n["constraining_perpendicular_deviation"] < 1e-12
+    couples = lf.constraining_couples(I, 50.0)
+    assert couples.in_plane_deviation < 1e-10 and couples.perpendicular_deviation < 1e-12
     # over one turn from a given phase: near 2B/(A + B) and 2A/(A + B), not 1
-    assert n["constraining_one_turn_ratio_chi0_0"] == pytest.approx(2 * I[1] / (I[0] + I[1]), rel=1e-2)
-    assert n["constraining_one_turn_ratio_chi0_90"] == pytest.approx(2 * I[0] / (I[0] + I[1]), rel=1e-2)
-    # a body symmetric about OC has no phase to average: one turn gives (A + B) v'/2 already
+    assert couples.one_turn_ratio["0"] == pytest.approx(2 * I[1] / (I[0] + I[1]), rel=1e-2)
+    assert couples.one_turn_ratio["90"] == pytest.approx(2 * I[0] / (I[0] + I[1]), rel=1e-2)
     out = Numbers()
-    lf._constraining_couples(out, np.array([2.0, 2.0, 2.5]), 50.0)
-    assert out.numbers["constraining_one_turn_ratio_chi0_0"] == pytest.approx(1.0, rel=1e-2)
+    lf._record_constraining_couples(out, couples)
+    assert out.numbers["constraining_one_turn_ratio_chi0_90"] == couples.one_turn_ratio["90"]
+    # a body symmetric about OC has no phase to average: one turn gives (A + B) v'/2 already
+    symmetric = lf.constraining_couples(np.array([2.0, 2.0, 2.5]), 50.0)
+    assert symmetric.one_turn_ratio["0"] == pytest.approx(1.0, rel=1e-2)
 
 
 @pytest.mark.parametrize("moments, prograde", [((0.9, 0.9, 1.0), True), ((1.0, 1.0, 0.5), False)])

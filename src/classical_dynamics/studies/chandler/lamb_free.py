@@ -6,8 +6,7 @@ the study's own integrators) measured against that closed form.
 
 free_body(results, spec)           a strongly triaxial body (the scene's moments A < B < C), a rectangular
                                    plate and a forced spin (scene: triaxial, analysis.lamb_free_body)
-symmetric_earth(results, model, amplitude)
-                                   the rigid symmetric Earth: the space frequency, the Eulerian nutation, the
+symmetric_earth(model, amplitude)  the rigid symmetric Earth: the space frequency, the Eulerian nutation, the
                                    sense of the body frequency, the oblateness (scene: rigid_modern,
                                    analysis.lamb_symmetric)
 """
@@ -149,7 +148,7 @@ def free_body(results, spec) -> None:
     _record_poinsot(results, poinsot_examples(I))
     _record_separatrix(results, separatrix(I))
     _record_plate(results, plate(*spec["plate_half_sides"]))
-    _constraining_couples(results, I, spec["spin_over_turn"])
+    _record_constraining_couples(results, constraining_couples(I, spec["spin_over_turn"]))
 
 
 class PolhodeSide(NamedTuple):
@@ -566,7 +565,21 @@ def _record_plate(results, values: Plate):
     )
 
 
-def _constraining_couples(results, I, spin_over_turn, phases=64):
+class ConstrainingCouples(NamedTuple):
+    """Ex. XIII.11: the couples against Lamb's (relative deviations)."""
+
+    moments: np.ndarray
+    spin_over_turn: float  # n/v0
+    one_turn_ratio: (
+        dict  # {"0": ..., "90": ...}: mean in-plane couple over one turn from chi, over (A + B)v'/2
+    )
+    in_plane_deviation: float
+    perpendicular_deviation: float
+    along_axis: float
+    in_plane_phase_spread: float
+
+
+def constraining_couples(I, spin_over_turn, phases=64) -> ConstrainingCouples:
     """Ex. XIII.11: the axis OC turned in one plane at v(t), spin n about OC held: the couple dH/dt.
 
     Space frame: the plane of the turning is xy, OC = (cos phi, sin phi, 0), phi' = v = v0 (1 + sin(w t)/2).
@@ -624,41 +637,69 @@ def _constraining_couples(results, I, spin_over_turn, phases=64):
     # turn starting at chi = 0 and A v' from chi = pi/2, not (A + B) v'/2, however fast the spin: only the
     # average over the phase gives Lamb's value
     period, t0 = 2 * np.pi / n, 3.0
+    one_turn = {}
     for label, c0 in (("0", 0.0), ("90", 0.5 * np.pi)):
         c0 -= n * t0  # the body's phase at t0 is chi = n t0 + chi0
         mean = (momentum(t0 + period, c0)[2] - momentum(t0, c0)[2]).real / period
+        one_turn[label] = mean / (0.5 * (A + B) * v_dot(t0 + period / 2))
+    return ConstrainingCouples(I, spin_over_turn, one_turn, worst_z, worst_perp, worst_along, spread)
+
+
+def _record_constraining_couples(results, values: ConstrainingCouples):
+    for label, ratio in values.one_turn_ratio.items():
         results.number(
             f"constraining_one_turn_ratio_chi0_{label}",
-            mean / (0.5 * (A + B) * v_dot(t0 + period / 2)),
+            ratio,
             "1",
             note=f"mean in-plane couple over one turn from $\\chi$ = {label}°, over "
             "$\\tfrac12(A + B)\\dot v$",
         )
-    results.number("constraining_spin_over_turn", spin_over_turn, "1", note="$n/v_0$, moments " + _moments(I))
+    results.number(
+        "constraining_spin_over_turn",
+        values.spin_over_turn,
+        "1",
+        note="$n/v_0$, moments " + _moments(values.moments),
+    )
     results.number(
         "constraining_in_plane_deviation",
-        worst_z,
+        values.in_plane_deviation,
         "1",
         note="Ex. XIII.11: the couple about the normal to the plane, averaged over the body's phase, "
         "against $\\tfrac12(A + B)\\dot v$ (largest over 41 times, relative to its largest value)",
     )
     results.number(
         "constraining_perpendicular_deviation",
-        worst_perp,
+        values.perpendicular_deviation,
         "1",
         note="the couple about $\\hat z\\times OC$ against $Cnv$ (relative)",
     )
-    results.number("constraining_along_axis", worst_along, "1", note="the mean couple about $OC$, over $Cnv$")
+    results.number(
+        "constraining_along_axis", values.along_axis, "1", note="the mean couple about $OC$, over $Cnv$"
+    )
     results.number(
         "constraining_in_plane_phase_spread",
-        spread,
+        values.in_plane_phase_spread,
         "1",
         note="how much the in-plane couple swings with the body's phase (over the largest "
         "$\\tfrac12(A + B)\\dot v$): why Lamb says 'on the average'",
     )
 
 
-def symmetric_earth(results, model, amplitude, days=20.0) -> None:
+class SymmetricEarth(NamedTuple):
+    """The rigid symmetric Earth over `days` (rates in rad/d unless named)."""
+
+    days: float
+    space_rate: float  # the plane of omega and the figure axis about L, fitted
+    space_rate_over_L_over_A: float
+    space_rate_over_eulerian_nutation: float
+    eulerian_nutation_spread: float
+    body_rate: float  # the pole about the figure axis, right-handed about e3
+    omega_b: float  # the notes' Omega_b = (I1 - I3) omega3 / I1
+    C_minus_A_over_A: float
+    omega2_R_over_g: float
+
+
+def symmetric_earth(model, amplitude, days=20.0) -> SymmetricEarth:
     """The rigid symmetric Earth (units C = 1, days): the plane of omega and the figure axis turns about L at
     |L|/A (the space frequency, Lamb's Eulerian nutation Cn/(A cos theta)); the pole turns about the figure
     axis in the spin's sense; the oblateness (C - A)/A and omega^2 R/g against the notes' 1/300."""
@@ -682,24 +723,42 @@ def symmetric_earth(results, model, amplitude, days=20.0) -> None:
     cos_theta = R[:, :, 2] @ L_hat  # the figure axis against L, from the attitude
     n_spin = w[:, 2]  # Lamb's n: the spin about the figure axis
     euler = n_spin / (a * cos_theta)  # Cn/(A cos theta), C = 1
+    phase = np.unwrap(np.arctan2(w[:, 1], w[:, 0]))
+    body_rate = float(np.polyfit(t, phase, 1)[0])  # right-handed about e3
+    omega_b = (a - 1.0) * model.n / a  # the notes' Omega_b = (I1 - I3) omega3 / I1
+    g = earth.GM_M3_PER_S2 / earth.EQUATORIAL_RADIUS_M**2
+    return SymmetricEarth(
+        days=days,
+        space_rate=space_rate,
+        space_rate_over_L_over_A=space_rate / (L / a),
+        space_rate_over_eulerian_nutation=space_rate / float(np.mean(euler)),
+        eulerian_nutation_spread=float(np.ptp(euler) / np.mean(euler)),
+        body_rate=body_rate,
+        omega_b=omega_b,
+        C_minus_A_over_A=1.0 / a - 1.0,
+        omega2_R_over_g=earth.OMEGA_RAD_PER_S**2 * earth.EQUATORIAL_RADIUS_M / g,
+    )
+
+
+def record_symmetric_earth(results, values: SymmetricEarth) -> None:
+    days, body_rate, omega_b = values.days, values.body_rate, values.omega_b
     results.number(
         "space_rate_measured_rad_per_s",
-        space_rate / earth.SECONDS_PER_DAY,
+        values.space_rate / earth.SECONDS_PER_DAY,
         "rad/s",
         note=f"the plane of $\\boldsymbol\\omega$ and the figure axis about $\\mathbf{{L}}$, fitted over "
         f"{days:g} days of the integrated attitude",
     )
-    results.number("space_rate_over_L_over_A", space_rate / (L / a), "1", note="over $|\\mathbf{L}|/A$")
+    results.number(
+        "space_rate_over_L_over_A", values.space_rate_over_L_over_A, "1", note="over $|\\mathbf{L}|/A$"
+    )
     results.number(
         "space_rate_over_eulerian_nutation",
-        space_rate / float(np.mean(euler)),
+        values.space_rate_over_eulerian_nutation,
         "1",
         note="over $Cn/(A\\cos\\theta)$ (Lamb Art. 55 (7)), $\\theta$ from the attitude",
     )
-    results.number("eulerian_nutation_spread", float(np.ptp(euler) / np.mean(euler)), "1")
-    phase = np.unwrap(np.arctan2(w[:, 1], w[:, 0]))
-    body_rate = float(np.polyfit(t, phase, 1)[0])  # right-handed about e3
-    omega_b = (a - 1.0) * model.n / a  # the notes' Omega_b = (I1 - I3) omega3 / I1
+    results.number("eulerian_nutation_spread", values.eulerian_nutation_spread, "1")
     results.number(
         "body_rate_measured_rad_per_s",
         body_rate / earth.SECONDS_PER_DAY,
@@ -719,11 +778,10 @@ def symmetric_earth(results, model, amplitude, days=20.0) -> None:
         "1",
         note="sign of $\\Omega_\\mathrm{b}$ for the oblate Earth (spin positive)",
     )
-    results.number("C_minus_A_over_A", 1.0 / a - 1.0, "1", note="$(I_3 - I_1)/I_1$ of this scene")
-    g = earth.GM_M3_PER_S2 / earth.EQUATORIAL_RADIUS_M**2
+    results.number("C_minus_A_over_A", values.C_minus_A_over_A, "1", note="$(I_3 - I_1)/I_1$ of this scene")
     results.number(
         "omega2_R_over_g",
-        earth.OMEGA_RAD_PER_S**2 * earth.EQUATORIAL_RADIUS_M / g,
+        values.omega2_R_over_g,
         "1",
         note="$\\omega^2R/g$, $g = GM/R^2$, IERS (2010) constants, $R$ the equatorial radius",
     )

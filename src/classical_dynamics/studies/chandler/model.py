@@ -169,7 +169,7 @@ def run(scene, results, quick):
     if analysis.get("lamb_symmetric"):
         from . import lamb_free
 
-        lamb_free.symmetric_earth(results, model, amplitude)
+        lamb_free.record_symmetric_earth(results, lamb_free.symmetric_earth(model, amplitude))
     if "lamb_free_body" in analysis:
         from . import lamb_free
 
