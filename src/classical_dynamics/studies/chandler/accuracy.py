@@ -40,6 +40,14 @@ def run(scene, results, quick):
     H, amplitude, model = wobble_model.setup(scene)
     spec = scene.data["analysis"]["accuracy_cost"]
     span_years = QUICK_SPAN_YEARS if quick else scene.data["analysis"].get("span_years", 100.0)
+    frame = work_precision(model, amplitude, span_years, spec)
+    _record_work_precision(results, frame, span_years, amplitude)
+
+
+def work_precision(model, amplitude, span_years, spec) -> pd.DataFrame:
+    """Each method of spec at each step (splittings) or tolerance, over span_years of a wobble of
+    `amplitude`: the table's rows (error at the end and amplitude change relative to the amplitude, the
+    spurious Q that change amounts to, steps, wall time as the minimum of repeats)."""
     T = span_years * earth.JULIAN_YEAR_DAYS
     exact = _exact(model, amplitude, T)
     sigma = model.n * model.wobble_frequency()
@@ -81,7 +89,11 @@ def run(scene, results, quick):
             run = lambda: wobble_model.integrate(model, amplitude, T, rtol, None, method)
             seconds, sol, _ = min_time(run, repeats=repeats, budget_s=1.0)
             record(method, rtol, "tolerance", seconds, sol.y[0] + 1j * sol.y[1], sol.n_steps)
-    frame = pd.DataFrame(rows)
+    return pd.DataFrame(rows)
+
+
+def _record_work_precision(results, frame, span_years, amplitude):
+    """The accuracy table, its timings, the work-precision figure, the best errors and the speed-up."""
     results.number("accuracy_span_years", span_years, "yr")
     span_text = f"{shortest(span_years)} {plural(span_years, 'year')}"
     results.table(
