@@ -22,9 +22,9 @@ def run(scene):
     return {name: entry["value"] for name, entry in results.numbers.items()}, results
 
 
-def test_a_series_of_known_terms_comes_back(monkeypatch):
-    t = np.arange(-6.0, 18.0, 1.0 / 365.25)  # daily, 1994 to 2018, years from J2000
-    period_days, chandler, annual = 433.0, 150.0, 90.0
+def _known_series(period_days=433.0, chandler=150.0, annual=90.0):
+    """Daily, 1994 to 2018 (years from J2000): trend, Chandler, annual pro- and retrograde, 1 mas noise."""
+    t = np.arange(-6.0, 18.0, 1.0 / 365.25)
     f_c = earth.JULIAN_YEAR_DAYS / period_days
     drift = 3.5 * np.exp(1j * np.radians(-80.0))  # mas/yr
     m = (
@@ -36,6 +36,23 @@ def test_a_series_of_known_terms_comes_back(monkeypatch):
     )
     rng = np.random.default_rng(0)
     m = m + rng.normal(0.0, 1.0, t.size) + 1j * rng.normal(0.0, 1.0, t.size)  # 1 mas noise each
+    return t, m
+
+
+def test_analyse_finds_the_known_terms_without_a_results_object():
+    period_days, chandler = 433.0, 150.0
+    t, m = _known_series(period_days, chandler)
+    wobble = observed.analyse(t, m, 6.0, 1.0)
+    assert wobble.fit.chandler_period_days == pytest.approx(period_days, abs=0.05)
+    assert wobble.chandler_peak_cpy == pytest.approx(earth.JULIAN_YEAR_DAYS / period_days, abs=0.05)
+    np.testing.assert_allclose(wobble.period_by_thirds_days, period_days, atol=0.5)
+    np.testing.assert_allclose(wobble.windows.chandler_mas, chandler, rtol=0.02)
+    assert wobble.low.chandler_mas <= wobble.high.chandler_mas
+
+
+def test_a_series_of_known_terms_comes_back(monkeypatch):
+    period_days, chandler, annual = 433.0, 150.0, 90.0
+    t, m = _known_series(period_days, chandler, annual)
     monkeypatch.setattr(pm, "read_eop", lambda path, start, end: (t, m))
     numbers, results = run(validate("chandler", SCENE))
     assert numbers["observed_chandler_period_days"] == pytest.approx(period_days, abs=0.05)

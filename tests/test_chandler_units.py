@@ -294,22 +294,21 @@ def test_lamb_free_stable_axes_against_the_conserved_quantities():
     from classical_dynamics.studies.chandler import lamb_free as lf
 
     I, tilt = np.array([1.0, 2.0, 2.5]), np.radians(1.0)
-    r = Results("chandler", "x", "x")
-    lf._stable_axes(r, I, tilt)
+    axes = lf.stable_axes(I, tilt)
     d = np.tan(tilt)
     # off the greatest axis the angle is largest where omega_1 = 0; off the least axis where omega_3 = 0
     w = _conserved_extreme(I, np.array([d, 0.0, 1.0]), keep=0)
-    assert value(r, "greatest_axis_largest_angle_deg") == pytest.approx(
-        np.degrees(np.arctan(w[1] / w[2])), rel=1e-5
-    )
+    assert axes.largest_angle_deg["greatest"] == pytest.approx(np.degrees(np.arctan(w[1] / w[2])), rel=1e-5)
     w = _conserved_extreme(I, np.array([1.0, 0.0, d]), keep=2)
-    assert value(r, "least_axis_largest_angle_deg") == pytest.approx(
-        np.degrees(np.arctan(w[1] / w[0])), rel=1e-5
-    )
+    assert axes.largest_angle_deg["least"] == pytest.approx(np.degrees(np.arctan(w[1] / w[0])), rel=1e-5)
     for name in ("greatest", "least"):
-        assert value(r, f"{name}_axis_conic_ratio") == pytest.approx(1.0, rel=1e-6)
+        assert axes.conic_ratio[name] == pytest.approx(1.0, rel=1e-6)
     # the middle axis is unstable: from 1 degree off, omega swings to the other side (Lamb Art. 50)
-    assert value(r, "middle_axis_largest_angle_deg") > 170.0
+    assert axes.middle_axis_largest_angle_deg > 170.0
+    r = Results("chandler", "x", "x")
+    lf._record_stable_axes(r, axes)
+    assert value(r, "middle_axis_largest_angle_deg") == axes.middle_axis_largest_angle_deg
+    assert value(r, "least_axis_conic_ratio") == axes.conic_ratio["least"]
 
 
 def test_lamb_free_separatrix_plane_and_the_enveloping_cylinder():
@@ -317,24 +316,23 @@ def test_lamb_free_separatrix_plane_and_the_enveloping_cylinder():
 
     I = np.array([1.0, 2.0, 2.5])
     A, B, C = I
-    r = Results("chandler", "x", "x")
-    lf._separatrix(r, I)
+    sep = lf.separatrix(I)
     # a start with A(B - A)p^2 = C(C - B)r^2 has 2BT = L^2, both conserved: it stays in that plane (Ex. X.3)
     p0 = 0.8
     w0 = np.array([p0, 0.2, p0 * np.sqrt(A * (B - A) / (C * (C - B)))])
     assert B * np.sum(I * w0**2) == pytest.approx(np.sum(I**2 * w0**2), rel=1e-14)
-    assert value(r, "separatrix_largest_offset") < 1e-9
-    assert value(r, "separatrix_y_range") > 0.1  # and moves in it
+    assert sep.largest_offset < 1e-9
+    assert sep.y_range > 0.1  # and moves in it
     # the circular cylinder round the ellipsoid x.Ix = 1 has the middle semi-axis 1/sqrt(B) as radius
-    assert value(r, "cylinder_contact_vs_separatrix_angle") < 1e-9
-    assert value(r, "cylinder_shadow_radius_times_sqrt_B") == pytest.approx(1.0, rel=1e-9)
-    assert value(r, "cylinder_contact_curve_roundness") < 1e-9
+    assert sep.cylinder_contact_vs_separatrix_angle < 1e-9
+    assert sep.cylinder_shadow_radius_times_sqrt_B == pytest.approx(1.0, rel=1e-9)
+    assert sep.cylinder_contact_curve_roundness < 1e-9
     # a sphere's silhouette from any direction is its great circle: radius 1, round
     radius, roundness = lf._shadow_radius(np.ones(3), np.array([0.6, 0.0, 0.8]))
     assert radius == pytest.approx(1.0, rel=1e-12) and roundness < 1e-12
     # a plate with a < b has its moments out of Lamb's order: refused
     with pytest.raises(ValueError, match="a > b"):
-        lf._plate(r, 1.0, 2.0)
+        lf.plate(1.0, 2.0)
 
 
 # --- scenes the study refuses -------------------------------------------------------------------------------

@@ -51,16 +51,13 @@ def test_polhode_period_against_the_integration_both_sides_of_the_separatrix():
 
 
 def test_criterion_10_agrees_with_the_integration_even_near_the_separatrix():
-    out = Numbers()
-    lf._polhode_side(out, I, 300, 7)
-    assert out.numbers["polhode_side_agreements"] == 300
-    assert 0 < out.numbers["polhode_side_round_least"] < 300
+    side = lf.polhode_side(I, 300, 7)
+    assert side.agreements == 300
+    assert 0 < side.round_least < 300
 
 
 def test_poinsot_geometry_holds_and_moves():
-    out = Numbers()
-    lf._poinsot(out, I)
-    n = out.numbers
+    n = lf.poinsot_examples(I)._asdict()
     # Each is measured on the attitude integrated from Euler's equations (which know nothing of sections,
     # gyration ellipsoids or planes) against Lamb's closed form of Exx. X.1, X.4, X.5, X.22 written from
     # A, B, C, T and H alone: a fault in the integration or in either formula breaks the agreement, and the
@@ -79,11 +76,10 @@ def test_poinsot_geometry_holds_and_moves():
 
 
 def test_plate_turns_to_the_other_diagonal_after_half_a_period():
-    out = Numbers()
     a, b = 3.0, 1.0
-    lf._plate(out, a, b)
-    assert abs(out.numbers["plate_time_relative_error"]) < 1e-10
-    assert out.numbers["plate_angle_from_other_diagonal_rad"] < 1e-10
+    plate = lf.plate(a, b)
+    assert abs(plate.other_diagonal_time / plate.half_period_closed_form - 1.0) < 1e-10
+    assert plate.angle_from_other_diagonal_rad < 1e-10
     # The two numbers above compare the module's integration with the module's closed form, both from the
     # module's moments: a wrong plate would pass. So the half period again, from the rectangle's moments
     # M(2b)^2/12, M(2a)^2/12 and their sum (perpendicular axes), and Landau & Lifshitz §37 (L^2 < 2E I2):
@@ -95,22 +91,30 @@ def test_plate_turns_to_the_other_diagonal_after_half_a_period():
     E2, L2 = I1 * w[0] ** 2 + I2 * w[1] ** 2, (I1 * w[0]) ** 2 + (I2 * w[1]) ** 2
     lam = np.sqrt((I2 - I1) * (E2 * I3 - L2) / (I1 * I2 * I3))
     k2 = (I3 - I2) * (L2 - E2 * I1) / ((I2 - I1) * (E2 * I3 - L2))
-    assert out.numbers["plate_modulus_squared"] == pytest.approx(k2, rel=1e-12)
-    assert out.numbers["plate_other_diagonal_time"] == pytest.approx(2 * ellipk(k2) / lam, rel=1e-10)
+    assert plate.modulus_squared == pytest.approx(k2, rel=1e-12)
+    assert plate.other_diagonal_time == pytest.approx(2 * ellipk(k2) / lam, rel=1e-10)
+    # and the record writes those values under the names the report reads
+    out = Numbers()
+    lf._record_plate(out, plate)
+    assert (
+        out.numbers["plate_time_relative_error"]
+        == plate.other_diagonal_time / plate.half_period_closed_form - 1
+    )
+    assert out.numbers["plate_other_diagonal_time"] == plate.other_diagonal_time
 
 
 def test_constraining_couples_are_lambs_on_the_phase_average_only():
-    out = Numbers()
-    lf._constraining_couples(out, I, 50.0)
-    n = out.numbers
-    assert n["constraining_in_plane_deviation"] < 1e-10 and n["constraining_perpendicular_deviation"] < 1e-12
+    couples = lf.constraining_couples(I, 50.0)
+    assert couples.in_plane_deviation < 1e-10 and couples.perpendicular_deviation < 1e-12
     # over one turn from a given phase: near 2B/(A + B) and 2A/(A + B), not 1
-    assert n["constraining_one_turn_ratio_chi0_0"] == pytest.approx(2 * I[1] / (I[0] + I[1]), rel=1e-2)
-    assert n["constraining_one_turn_ratio_chi0_90"] == pytest.approx(2 * I[0] / (I[0] + I[1]), rel=1e-2)
-    # a body symmetric about OC has no phase to average: one turn gives (A + B) v'/2 already
+    assert couples.one_turn_ratio["0"] == pytest.approx(2 * I[1] / (I[0] + I[1]), rel=1e-2)
+    assert couples.one_turn_ratio["90"] == pytest.approx(2 * I[0] / (I[0] + I[1]), rel=1e-2)
     out = Numbers()
-    lf._constraining_couples(out, np.array([2.0, 2.0, 2.5]), 50.0)
-    assert out.numbers["constraining_one_turn_ratio_chi0_0"] == pytest.approx(1.0, rel=1e-2)
+    lf._record_constraining_couples(out, couples)
+    assert out.numbers["constraining_one_turn_ratio_chi0_90"] == couples.one_turn_ratio["90"]
+    # a body symmetric about OC has no phase to average: one turn gives (A + B) v'/2 already
+    symmetric = lf.constraining_couples(np.array([2.0, 2.0, 2.5]), 50.0)
+    assert symmetric.one_turn_ratio["0"] == pytest.approx(1.0, rel=1e-2)
 
 
 @pytest.mark.parametrize("moments, prograde", [((0.9, 0.9, 1.0), True), ((1.0, 1.0, 0.5), False)])

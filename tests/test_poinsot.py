@@ -68,32 +68,28 @@ def test_symmetric_body_herpolhode_is_a_circle():
 
 
 def test_poinsot_body_numbers():
-    r = Recorder()
-    poinsot.poinsot_body(
-        r,
-        {
-            "moments": [1.0, 2.0, 2.5],
-            "omega": [1.0, 0.3, 1.0],
-            "span": 40.0,
-            "samples": 40001,
-            "source": "test",
-        },
-    )
-    n = r.numbers
+    body = poinsot.poinsot_body([1.0, 2.0, 2.5], [1.0, 0.3, 1.0], 40.0, 40001)
+    plane = poinsot.conjugate_plane(body.moments)
+    triangle = poinsot.triangle_inequality()
+    cone = poinsot.invariable_cone(body.moments)
     # Why these are checks: the plane, the herpolhode's bounds and the rolling are measured on the motion
     # integrated from Euler's equations and quaternion kinematics, which compute none of them; the plane is
     # Lamb Art. 46's theorem, the bounds are herpolhode_radii (against scipy above), the arcs Art. 47's
     # rolling without slipping. The curvature ratio and half periods show the run is not trivial.
-    assert n["poinsot_half_periods"] >= 4
-    assert n["poinsot_plane_error"] < 1e-10
-    assert n["herpolhode_bounds_error"] < 1e-8
-    assert n["herpolhode_curvature_ratio"] > 0.1
-    assert n["rolling_arc_difference"] < 1e-5
-    assert n["conjugate_midplane_error"] < 1e-13
-    assert n["momentum_parallel_only_on_axes"] == 1 and n["invariable_cone_sympy"] == 1
-    assert 0 <= n["triangle_least_margin"] < 1e-3  # flat bodies come near the bound, none beyond it
-    assert n["hnw_triangle_margin"] < 0
-    assert n["invariable_planes_residual"] < 1e-9
+    assert body.half_periods >= 4
+    assert body.plane_error < 1e-10
+    assert body.herpolhode_bounds_error < 1e-8
+    assert body.herpolhode_curvature_ratio > 0.1
+    assert body.rolling_arc_difference < 1e-5
+    assert plane.midplane_error < 1e-13
+    assert plane.momentum_parallel_only_on_axes == 1 and cone.sympy_checks == 1
+    assert 0 <= triangle.least_margin < 1e-3  # flat bodies come near the bound, none beyond it
+    assert triangle.hnw_margin < 0
+    assert cone.planes_residual < 1e-9
+    r = Recorder()
+    poinsot.record_poinsot_body(r, body, "test")
+    assert r.numbers["poinsot_plane_error"] == body.plane_error
+    assert r.hard["poinsot_plane_fixed"] == (body.plane_error, 1e-11)
     assert "herpolhode" in r.figures and "$" in r.figures["herpolhode"]
 
 
@@ -101,19 +97,17 @@ def test_cone_rates_signs_and_forms():
     """On the oblate Earth the plane ZOC turns prograde once a day; Euler's chi' is negative (J runs prograde
     in the body); both agree with Lamb Art. 47 (3)."""
     model = wobble.assemble(earth.H_MHB2000, {})
-    r = Recorder()
-    poinsot.cone_rates(r, model, 0.1 * earth.ARCSEC)
-    n = r.numbers
-    assert n["psi_dot_measured"] > 0 > n["chi_dot_measured"]
-    assert n["cone_rates_error"] < 1e-10
+    rates = poinsot.cone_rates(model, 0.1 * earth.ARCSEC)
+    assert rates.psi_dot_measured > 0 > rates.chi_dot_measured
+    assert rates.cone_rates_error < 1e-10
     # the forms above are evaluated on the run's own angles; Lamb Art. 47 for the symmetric body, closed form
     # from H alone (A/C = 1 - H, C = 1, omega0 = n (0.1", 0, 1), n one turn a sidereal day):
     # psi' = |L|/A, chi' = -(C - A) r/A
     a, spin = 1.0 - earth.H_MHB2000, 2 * np.pi / earth.sidereal_to_solar_days(1.0)
     L = spin * np.hypot(a * 0.1 * earth.ARCSEC, 1.0)
-    assert n["psi_dot_measured"] == pytest.approx(L / a, rel=1e-10)
-    assert n["chi_dot_measured"] == pytest.approx(-(1.0 - a) * spin / a, rel=1e-10)
-    assert n["no_slip_cones_ratio"] == pytest.approx(1.0, rel=1e-10)
+    assert rates.psi_dot_measured == pytest.approx(L / a, rel=1e-10)
+    assert rates.chi_dot_measured == pytest.approx(-(1.0 - a) * spin / a, rel=1e-10)
+    assert rates.no_slip_cones_ratio == pytest.approx(1.0, rel=1e-10)
 
 
 def _scene(tmp_path, moments):

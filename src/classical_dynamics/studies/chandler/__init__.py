@@ -238,7 +238,12 @@ def _poinsot(scene, results):
     from . import model, poinsot
 
     if "poinsot" in analysis:
-        poinsot.poinsot_body(results, analysis["poinsot"])
+        spec = analysis["poinsot"]
+        body = poinsot.poinsot_body(spec["moments"], spec["omega"], spec["span"], spec["samples"])
+        poinsot.record_poinsot_body(results, body, spec["source"])
+        poinsot.record_conjugate_plane(results, poinsot.conjugate_plane(body.moments))
+        poinsot.record_triangle_inequality(results, poinsot.triangle_inequality())
+        poinsot.record_invariable_cone(results, poinsot.invariable_cone(body.moments))
     if analysis.get("cone_rates"):
         _, amplitude, earth_model = model.setup(scene)
-        poinsot.cone_rates(results, earth_model, amplitude)
+        poinsot.record_cone_rates(results, poinsot.cone_rates(earth_model, amplitude))

@@ -40,6 +40,14 @@ def run(scene, results, quick):
     H, amplitude, model = wobble_model.setup(scene)
     spec = scene.data["analysis"]["accuracy_cost"]
     span_years = QUICK_SPAN_YEARS if quick else scene.data["analysis"].get("span_years", 100.0)
+    frame = work_precision(model, amplitude, span_years, spec)
+    _record_work_precision(results, frame, span_years, amplitude)
+
+
+def work_precision(model, amplitude, span_years, spec) -> pd.DataFrame:
+    """Each method of spec at each step (splittings) or tolerance, over span_years of a wobble of
+    `amplitude`: the table's rows (error at the end and amplitude change relative to the amplitude, the
+    spurious Q that change amounts to, steps, wall time as the minimum of repeats)."""
     T = span_years * earth.JULIAN_YEAR_DAYS
     exact = _exact(model, amplitude, T)
     sigma = model.n * model.wobble_frequency()
@@ -81,7 +89,11 @@ def run(scene, results, quick):
             run = lambda: wobble_model.integrate(model, amplitude, T, rtol, None, method)
             seconds, sol, _ = min_time(run, repeats=repeats, budget_s=1.0)
             record(method, rtol, "tolerance", seconds, sol.y[0] + 1j * sol.y[1], sol.n_steps)
-    frame = pd.DataFrame(rows)
+    return pd.DataFrame(rows)
+
+
+def _record_work_precision(results, frame, span_years, amplitude):
+    """The accuracy table, its timings, the work-precision figure, the best errors and the speed-up."""
     results.number("accuracy_span_years", span_years, "yr")
     span_text = f"{shortest(span_years)} {plural(span_years, 'year')}"
     results.table(
@@ -123,11 +135,12 @@ def run(scene, results, quick):
             "1",
             note="smallest $|Q_\\mathrm{num}|$ over the settings",
         )
-    _speedup(results, frame)
+    _record_speedup(results, speedup_rows(frame))
 
 
-def _speedup(results, frame):
-    """Compiled DOP853 against scipy's DOP853 at the same tolerance: same steps, the ratio is overhead."""
+def speedup_rows(frame):
+    """Compiled DOP853 against scipy's DOP853 at the same tolerance: same steps, the ratio is overhead.
+    The table's rows (rtol, the two wall times in seconds, their ratio), one per common setting."""
     ours, peer = frame[frame.method == "dop853"], frame[frame.method == "scipy:DOP853"]
     common = sorted(set(ours.setting) & set(peer.setting))
     rows = [
@@ -140,6 +153,10 @@ def _speedup(results, frame):
     ]
     for row in rows:
         row["speedup"] = row["scipy_DOP853_seconds"] / row["dop853_seconds"]
+    return rows
+
+
+def _record_speedup(results, rows):
     if rows:
         results.timing_table(
             "speedup",

@@ -6,13 +6,14 @@ the study's own integrators) measured against that closed form.
 
 free_body(results, spec)           a strongly triaxial body (the scene's moments A < B < C), a rectangular
                                    plate and a forced spin (scene: triaxial, analysis.lamb_free_body)
-symmetric_earth(results, model, amplitude)
-                                   the rigid symmetric Earth: the space frequency, the Eulerian nutation, the
+symmetric_earth(model, amplitude)  the rigid symmetric Earth: the space frequency, the Eulerian nutation, the
                                    sense of the body frequency, the oblateness (scene: rigid_modern,
                                    analysis.lamb_symmetric)
 """
 
 from __future__ import annotations
+
+from typing import NamedTuple
 
 import numpy as np
 import sympy as sp
@@ -142,15 +143,23 @@ def free_body(results, spec) -> None:
             "1",
             note="0: sympy reduces the statement to an identity (else the residual's number of terms)",
         )
-    _polhode_side(results, I, spec["samples"], spec["seed"])
-    _stable_axes(results, I, np.radians(spec["tilt_deg"]))
-    _poinsot(results, I)
-    _separatrix(results, I)
-    _plate(results, *spec["plate_half_sides"])
-    _constraining_couples(results, I, spec["spin_over_turn"])
+    _record_polhode_side(results, polhode_side(I, spec["samples"], spec["seed"]))
+    _record_stable_axes(results, stable_axes(I, np.radians(spec["tilt_deg"])))
+    _record_poinsot(results, poinsot_examples(I))
+    _record_separatrix(results, separatrix(I))
+    _record_plate(results, plate(*spec["plate_half_sides"]))
+    _record_constraining_couples(results, constraining_couples(I, spec["spin_over_turn"]))
 
 
-def _polhode_side(results, I, samples, seed):
+class PolhodeSide(NamedTuple):
+    moments: np.ndarray
+    samples: int  # random directions of omega
+    agreements: int  # where (10) and the integration agree
+    round_least: int  # predicted round the least axis
+    smallest_margin: float  # nearest start to the separatrix
+
+
+def polhode_side(I, samples, seed) -> PolhodeSide:
     """Art. 52 (10): which axis the polhode surrounds, predicted from the start, against 1000 integrations."""
     A, B, C = I
     rng = np.random.default_rng(seed)
@@ -172,20 +181,27 @@ def _polhode_side(results, I, samples, seed):
     keeps_r = np.all(rr * r[:, None] > 0, axis=1)
     agree = (least & keeps_p & ~keeps_r) | (~least & keeps_r & ~keeps_p)
     margin = np.abs(B * (A * p**2 + C * r**2) - A**2 * p**2 - C**2 * r**2)
+    return PolhodeSide(I, samples, int(np.sum(agree)), int(np.sum(least)), float(np.min(margin)))
+
+
+def _record_polhode_side(results, values: PolhodeSide):
     results.number(
-        "polhode_side_samples", samples, "1", note="random directions of ω, moments " + _moments(I)
+        "polhode_side_samples",
+        values.samples,
+        "1",
+        note="random directions of ω, moments " + _moments(values.moments),
     )
     results.number(
         "polhode_side_agreements",
-        int(np.sum(agree)),
+        values.agreements,
         "1",
         note="(10) predicts the axis the polhode surrounds, and the integration agrees (the component "
         "along that axis keeps its sign for 1.05 of the longest period, the other changes sign)",
     )
-    results.number("polhode_side_round_least", int(np.sum(least)), "1")
+    results.number("polhode_side_round_least", values.round_least, "1")
     results.number(
         "polhode_side_smallest_margin",
-        float(np.min(margin)),
+        values.smallest_margin,
         "1",
         note="nearest start to the separatrix: $|B(Ap_0^2 + Cr_0^2) - A^2p_0^2 - C^2r_0^2|$",
     )
@@ -195,8 +211,18 @@ def _moments(I):
     return "(" + ", ".join(f"{v:g}" for v in I) + ")"
 
 
-def _stable_axes(results, I, tilt):
+class StableAxes(NamedTuple):
+    tilt: float  # rad
+    conic_ratio: (
+        dict  # per axis ("greatest", "least"): largest |omega_2| over a period over the conic's value
+    )
+    largest_angle_deg: dict  # per axis: largest angle of omega from it over a period
+    middle_axis_largest_angle_deg: float  # over two periods from `tilt` off the middle axis
+
+
+def stable_axes(I, tilt) -> StableAxes:
     """The lecture notes' conic near an axis: tilted by `tilt`, the other transverse rate's largest value."""
+    conic_ratio, largest_angle = {}, {}
     I1, I2, I3 = I
     d = np.tan(tilt)
     cases = {  # start, measured index, conic's prediction of the largest |omega_j|
@@ -209,26 +235,52 @@ def _stable_axes(results, I, tilt):
         t, w, _ = integrate(I, w0, period, samples=20001)
         axis = 2 if name == "greatest" else 0
         angle = np.degrees(np.arccos(np.abs(w[:, axis]) / np.linalg.norm(w, axis=1)))
+        conic_ratio[name] = float(np.max(np.abs(w[:, j]))) / predicted
+        largest_angle[name] = float(np.max(angle))
+    w0 = np.array([d, 1.0, 0.0])
+    t, w, _ = integrate(I, w0, 2.0 * polhode_period(I, w0)[0], samples=20001)
+    angle = np.degrees(np.arccos(np.clip(w[:, 1] / np.linalg.norm(w, axis=1), -1, 1)))
+    return StableAxes(tilt, conic_ratio, largest_angle, float(np.max(angle)))
+
+
+def _record_stable_axes(results, values: StableAxes):
+    tilt = values.tilt
+    for name in values.conic_ratio:
         results.number(
             f"{name}_axis_conic_ratio",
-            float(np.max(np.abs(w[:, j]))) / predicted,
+            values.conic_ratio[name],
             "1",
             note=f"largest $|\\omega_2|$ over a period from {np.degrees(tilt):g}° off the {name} axis, "
             "over the conic's value",
         )
-        results.number(f"{name}_axis_largest_angle_deg", float(np.max(angle)), "°")
-    w0 = np.array([d, 1.0, 0.0])
-    t, w, _ = integrate(I, w0, 2.0 * polhode_period(I, w0)[0], samples=20001)
-    angle = np.degrees(np.arccos(np.clip(w[:, 1] / np.linalg.norm(w, axis=1), -1, 1)))
+        results.number(f"{name}_axis_largest_angle_deg", values.largest_angle_deg[name], "°")
     results.number(
         "middle_axis_largest_angle_deg",
-        float(np.max(angle)),
+        values.middle_axis_largest_angle_deg,
         "°",
         note=f"{np.degrees(tilt):g}° off the middle axis: ω swings over to the opposite side",
     )
 
 
-def _poinsot(results, I):
+class PoinsotExamples(NamedTuple):
+    """Exx. X.1, X.4, X.5, X.22 on one motion: largest deviations from the closed forms (relative unless
+    named)."""
+
+    moments: np.ndarray
+    modulus_squared: float  # k^2 of the motion
+    section_area_max_relative_deviation: float
+    poinsot_sum_max_relative_deviation: float
+    gyration_point_off_ellipsoid: float
+    gyration_normal_angle_rad: float
+    gyration_perpendicular_times_omega_drift: float
+    gyration_omega_range: float
+    plane_rate_max_relative_deviation: float
+    plane_rate_range: float
+    plane_rate_differences_max_relative_deviation: float
+    difference_step: float  # time step of the differenced azimuth
+
+
+def poinsot_examples(I) -> PoinsotExamples:
     """Exx. X.1, X.4, X.5, X.22 along one integrated motion, measured in space and against the closed
     forms."""
     A, B, C = I
@@ -240,7 +292,6 @@ def _poinsot(results, I):
     T2 = float(np.sum(I * w0**2))
     L_hat = L_space / H
     n = np.einsum("kji,j->ki", R, L_hat)  # the invariable line in the body, from the attitude
-    results.number("poinsot_modulus_squared", k2, "1", note="$k^2$ of the motion, moments " + _moments(I))
     # Ex. X.1: the section's area from the form on the plane (an orthonormal basis of the plane, by SVD)
     Q = np.diag(I)
     areas = []
@@ -249,23 +300,12 @@ def _poinsot(results, I):
         areas.append(np.pi / np.sqrt(np.linalg.det(P.T @ Q @ P)))
     areas = np.array(areas)
     closed = np.pi * H / np.sqrt(T2 * A * B * C)  # pi H / sqrt(2ABCT), 2T = T2
-    results.number(
-        "section_area_max_relative_deviation",
-        float(np.max(np.abs(areas / closed - 1.0))),
-        "1",
-        note="Ex. X.1: the central section by the plane normal to $\\mathbf{H}$, against "
-        "$\\pi H/\\sqrt{2ABCT}$, over three polhode periods",
-    )
+    section_area = float(np.max(np.abs(areas / closed - 1.0)))
     # Ex. X.4: the ends of the axes (1/sqrt I_i along e_i) from the invariable line
     ends = np.eye(3) / np.sqrt(I)[:, None]
     dist2 = sum(np.linalg.norm(np.cross(ends[i], n), axis=1) ** 2 for i in range(3))
     closed = 1 / A + 1 / B + 1 / C - T2 / H**2
-    results.number(
-        "poinsot_sum_max_relative_deviation",
-        float(np.max(np.abs(dist2 / closed - 1.0))),
-        "1",
-        note="Ex. X.4: sum of the squared distances against $1/A + 1/B + 1/C - 2T/H^2$",
-    )
+    poinsot_sum = float(np.max(np.abs(dist2 / closed - 1.0)))
     # Ex. X.5: the point s n, s fixed at the start, stays on x^2/A + y^2/B + z^2/C = 1; the normal there is
     # along omega; the distance from the centre to the tangent plane times |omega| is constant
     s = 1.0 / np.sqrt(np.sum(n[0] ** 2 / I))
@@ -277,30 +317,6 @@ def _poinsot(results, I):
     )
     perp = 1.0 / np.linalg.norm(normal, axis=1)
     product = perp * np.linalg.norm(w, axis=1)
-    results.number(
-        "gyration_point_off_ellipsoid",
-        float(np.max(on)),
-        "1",
-        note="Ex. X.5: largest $|x^2/A + y^2/B + z^2/C - 1|$ at the fixed point of the invariable line",
-    )
-    results.number(
-        "gyration_normal_angle_rad",
-        float(np.max(np.arcsin(np.minimum(sinang, 1.0)))),
-        "rad",
-        note="largest angle between the normal there and $\\boldsymbol\\omega$",
-    )
-    results.number(
-        "gyration_perpendicular_times_omega_drift",
-        float(np.max(np.abs(product / product[0] - 1))),
-        "1",
-        note="largest relative change of (perpendicular on the tangent plane) × $|\\boldsymbol\\omega|$",
-    )
-    results.number(
-        "gyration_omega_range",
-        float(np.ptp(np.linalg.norm(w, axis=1)) / np.linalg.norm(w0)),
-        "1",
-        note="how much $|\\boldsymbol\\omega|$ itself varies (relative): the test is not empty",
-    )
     # Ex. X.22: the rate at which the plane of OZ and the axis A turns about OZ, from the attitude (space
     # frame)
     eA = R[:, :, 0]
@@ -313,19 +329,6 @@ def _poinsot(results, I):
     )
     cos_a = eA @ L_hat
     formula = (T2 / H - H / A * cos_a**2) / (1.0 - cos_a**2)
-    results.number(
-        "plane_rate_max_relative_deviation",
-        float(np.max(np.abs(measured / formula - 1.0))),
-        "1",
-        note="Ex. X.22: $\\dot\\psi$ of the plane $ZOA$ about $OZ$ measured in space against "
-        "$(2T/H - (H/A)\\cos^2\\alpha)/\\sin^2\\alpha$ at the measured $\\alpha$",
-    )
-    results.number(
-        "plane_rate_range",
-        float(np.ptp(measured) / np.mean(measured)),
-        "1",
-        note="how much that rate varies along the motion (relative)",
-    )
     # ... and the same rate by differences of the plane's azimuth (no kinematics): 2nd-order central
     # differences
     e1 = np.cross(L_hat, [0.0, 1.0, 0.0])
@@ -333,15 +336,96 @@ def _poinsot(results, I):
     e2 = np.cross(L_hat, e1)
     azimuth = np.unwrap(np.arctan2(u @ e2, u @ e1))
     fd = np.gradient(azimuth, t, edge_order=2)
-    results.number(
-        "plane_rate_differences_max_relative_deviation",
-        float(np.max(np.abs(fd[1:-1] / formula[1:-1] - 1.0))),
-        "1",
-        note=f"the azimuth differenced (central differences, step {t[1] - t[0]:.3g})",
+    return PoinsotExamples(
+        moments=I,
+        modulus_squared=k2,
+        section_area_max_relative_deviation=section_area,
+        poinsot_sum_max_relative_deviation=poinsot_sum,
+        gyration_point_off_ellipsoid=float(np.max(on)),
+        gyration_normal_angle_rad=float(np.max(np.arcsin(np.minimum(sinang, 1.0)))),
+        gyration_perpendicular_times_omega_drift=float(np.max(np.abs(product / product[0] - 1))),
+        gyration_omega_range=float(np.ptp(np.linalg.norm(w, axis=1)) / np.linalg.norm(w0)),
+        plane_rate_max_relative_deviation=float(np.max(np.abs(measured / formula - 1.0))),
+        plane_rate_range=float(np.ptp(measured) / np.mean(measured)),
+        plane_rate_differences_max_relative_deviation=float(np.max(np.abs(fd[1:-1] / formula[1:-1] - 1.0))),
+        difference_step=t[1] - t[0],
     )
 
 
-def _separatrix(results, I):
+def _record_poinsot(results, values: PoinsotExamples):
+    results.number(
+        "poinsot_modulus_squared",
+        values.modulus_squared,
+        "1",
+        note="$k^2$ of the motion, moments " + _moments(values.moments),
+    )
+    results.number(
+        "section_area_max_relative_deviation",
+        values.section_area_max_relative_deviation,
+        "1",
+        note="Ex. X.1: the central section by the plane normal to $\\mathbf{H}$, against "
+        "$\\pi H/\\sqrt{2ABCT}$, over three polhode periods",
+    )
+    results.number(
+        "poinsot_sum_max_relative_deviation",
+        values.poinsot_sum_max_relative_deviation,
+        "1",
+        note="Ex. X.4: sum of the squared distances against $1/A + 1/B + 1/C - 2T/H^2$",
+    )
+    results.number(
+        "gyration_point_off_ellipsoid",
+        values.gyration_point_off_ellipsoid,
+        "1",
+        note="Ex. X.5: largest $|x^2/A + y^2/B + z^2/C - 1|$ at the fixed point of the invariable line",
+    )
+    results.number(
+        "gyration_normal_angle_rad",
+        values.gyration_normal_angle_rad,
+        "rad",
+        note="largest angle between the normal there and $\\boldsymbol\\omega$",
+    )
+    results.number(
+        "gyration_perpendicular_times_omega_drift",
+        values.gyration_perpendicular_times_omega_drift,
+        "1",
+        note="largest relative change of (perpendicular on the tangent plane) × $|\\boldsymbol\\omega|$",
+    )
+    results.number(
+        "gyration_omega_range",
+        values.gyration_omega_range,
+        "1",
+        note="how much $|\\boldsymbol\\omega|$ itself varies (relative): the test is not empty",
+    )
+    results.number(
+        "plane_rate_max_relative_deviation",
+        values.plane_rate_max_relative_deviation,
+        "1",
+        note="Ex. X.22: $\\dot\\psi$ of the plane $ZOA$ about $OZ$ measured in space against "
+        "$(2T/H - (H/A)\\cos^2\\alpha)/\\sin^2\\alpha$ at the measured $\\alpha$",
+    )
+    results.number(
+        "plane_rate_range",
+        values.plane_rate_range,
+        "1",
+        note="how much that rate varies along the motion (relative)",
+    )
+    results.number(
+        "plane_rate_differences_max_relative_deviation",
+        values.plane_rate_differences_max_relative_deviation,
+        "1",
+        note=f"the azimuth differenced (central differences, step {values.difference_step:.3g})",
+    )
+
+
+class Separatrix(NamedTuple):
+    largest_offset: float  # rad, of omega from the plane A(B - A)p^2 = C(C - B)r^2
+    y_range: float  # how far omega moves within the plane (relative)
+    cylinder_contact_vs_separatrix_angle: float  # rad
+    cylinder_shadow_radius_times_sqrt_B: float
+    cylinder_contact_curve_roundness: float
+
+
+def separatrix(I) -> Separatrix:
     """Ex. X.3: a start in the separatrix plane (2BT = H^2) stays in it (the cylinders' plane of contact)."""
     A, B, C = I
     p0 = 0.8
@@ -358,35 +442,47 @@ def _separatrix(results, I):
     contact /= np.linalg.norm(contact)
     mirror = normal * np.array([1.0, 1.0, -1.0])  # the other separatrix plane
     radius, roundness = _shadow_radius(I, np.array([np.sin(phi), 0.0, np.cos(phi)]))
+    return Separatrix(
+        largest_offset=float(np.max(off)),
+        y_range=float(np.ptp(w[:, 1]) / np.linalg.norm(w0)),
+        cylinder_contact_vs_separatrix_angle=float(
+            np.arccos(min(1.0, max(abs(contact @ normal), abs(contact @ mirror))))
+        ),
+        cylinder_shadow_radius_times_sqrt_B=radius * np.sqrt(B),
+        cylinder_contact_curve_roundness=roundness,
+    )
+
+
+def _record_separatrix(results, values: Separatrix):
     results.number(
         "separatrix_largest_offset",
-        float(np.max(off)),
+        values.largest_offset,
         "rad",
         note="Ex. X.3: largest angle of $\\boldsymbol\\omega$ from the plane $A(B - A)p^2 = C(C - B)r^2$ "
         "over the run, from a start in it",
     )
     results.number(
         "separatrix_y_range",
-        float(np.ptp(w[:, 1]) / np.linalg.norm(w0)),
+        values.y_range,
         "1",
         note="how far ω moves within the plane (relative): the test is not empty",
     )
     results.number(
         "cylinder_contact_vs_separatrix_angle",
-        float(np.arccos(min(1.0, max(abs(contact @ normal), abs(contact @ mirror))))),
+        values.cylinder_contact_vs_separatrix_angle,
         "rad",
         note="angle between the enveloping cylinder's plane of contact and a separatrix plane",
     )
     results.number(
         "cylinder_shadow_radius_times_sqrt_B",
-        radius * np.sqrt(B),
+        values.cylinder_shadow_radius_times_sqrt_B,
         "1",
         note="the enveloping cylinder's radius (largest distance of the ellipsoid from its axis, by "
         "sampling) × $\\sqrt B$: 1 for a circular cylinder through the middle axis' ends",
     )
     results.number(
         "cylinder_contact_curve_roundness",
-        roundness,
+        values.cylinder_contact_curve_roundness,
         "1",
         note="the spread of those distances over their mean: 0 for a circular cylinder",
     )
@@ -409,7 +505,16 @@ def _shadow_radius(I, d, n=2001):
     return float(np.mean(dist)), float(np.ptp(dist) / np.mean(dist))
 
 
-def _plate(results, a, b):
+class Plate(NamedTuple):
+    a: float  # half-sides
+    b: float
+    other_diagonal_time: float  # time units 1/|omega|
+    half_period_closed_form: float  # 2K(k)/lambda
+    modulus_squared: float
+    angle_from_other_diagonal_rad: float
+
+
+def plate(a, b) -> Plate:
     """Ex. X.15: a plate (edges 2a, 2b) spun about a diagonal spins about the other after half a period."""
     I = np.array([b * b, a * a, a * a + b * b]) / 3.0  # M = 1
     order = np.argsort(I)
@@ -433,6 +538,11 @@ def _plate(results, a, b):
     w_star = sol.event_y[after][0][:3]
     other = np.array([a, -b, 0.0]) / np.hypot(a, b)
     angle = np.arcsin(min(1.0, np.linalg.norm(np.cross(w_star, other)) / np.linalg.norm(w_star)))
+    return Plate(a, b, t_star, half, k2, float(angle))
+
+
+def _record_plate(results, values: Plate):
+    a, b, t_star, half = values.a, values.b, values.other_diagonal_time, values.half_period_closed_form
     results.number(
         "plate_other_diagonal_time",
         t_star,
@@ -446,16 +556,30 @@ def _plate(results, a, b):
         "plate_half_period_closed_form", half, "time units", note="$2K(k)/\\lambda$, Landau & Lifshitz §37"
     )
     results.number("plate_time_relative_error", t_star / half - 1.0, "1")
-    results.number("plate_modulus_squared", k2, "1")
+    results.number("plate_modulus_squared", values.modulus_squared, "1")
     results.number(
         "plate_angle_from_other_diagonal_rad",
-        float(angle),
+        values.angle_from_other_diagonal_rad,
         "rad",
         note="then the angle between ω and the other diagonal",
     )
 
 
-def _constraining_couples(results, I, spin_over_turn, phases=64):
+class ConstrainingCouples(NamedTuple):
+    """Ex. XIII.11: the couples against Lamb's (relative deviations)."""
+
+    moments: np.ndarray
+    spin_over_turn: float  # n/v0
+    one_turn_ratio: (
+        dict  # {"0": ..., "90": ...}: mean in-plane couple over one turn from chi, over (A + B)v'/2
+    )
+    in_plane_deviation: float
+    perpendicular_deviation: float
+    along_axis: float
+    in_plane_phase_spread: float
+
+
+def constraining_couples(I, spin_over_turn, phases=64) -> ConstrainingCouples:
     """Ex. XIII.11: the axis OC turned in one plane at v(t), spin n about OC held: the couple dH/dt.
 
     Space frame: the plane of the turning is xy, OC = (cos phi, sin phi, 0), phi' = v = v0 (1 + sin(w t)/2).
@@ -513,41 +637,69 @@ def _constraining_couples(results, I, spin_over_turn, phases=64):
     # turn starting at chi = 0 and A v' from chi = pi/2, not (A + B) v'/2, however fast the spin: only the
     # average over the phase gives Lamb's value
     period, t0 = 2 * np.pi / n, 3.0
+    one_turn = {}
     for label, c0 in (("0", 0.0), ("90", 0.5 * np.pi)):
         c0 -= n * t0  # the body's phase at t0 is chi = n t0 + chi0
         mean = (momentum(t0 + period, c0)[2] - momentum(t0, c0)[2]).real / period
+        one_turn[label] = mean / (0.5 * (A + B) * v_dot(t0 + period / 2))
+    return ConstrainingCouples(I, spin_over_turn, one_turn, worst_z, worst_perp, worst_along, spread)
+
+
+def _record_constraining_couples(results, values: ConstrainingCouples):
+    for label, ratio in values.one_turn_ratio.items():
         results.number(
             f"constraining_one_turn_ratio_chi0_{label}",
-            mean / (0.5 * (A + B) * v_dot(t0 + period / 2)),
+            ratio,
             "1",
             note=f"mean in-plane couple over one turn from $\\chi$ = {label}°, over "
             "$\\tfrac12(A + B)\\dot v$",
         )
-    results.number("constraining_spin_over_turn", spin_over_turn, "1", note="$n/v_0$, moments " + _moments(I))
+    results.number(
+        "constraining_spin_over_turn",
+        values.spin_over_turn,
+        "1",
+        note="$n/v_0$, moments " + _moments(values.moments),
+    )
     results.number(
         "constraining_in_plane_deviation",
-        worst_z,
+        values.in_plane_deviation,
         "1",
         note="Ex. XIII.11: the couple about the normal to the plane, averaged over the body's phase, "
         "against $\\tfrac12(A + B)\\dot v$ (largest over 41 times, relative to its largest value)",
     )
     results.number(
         "constraining_perpendicular_deviation",
-        worst_perp,
+        values.perpendicular_deviation,
         "1",
         note="the couple about $\\hat z\\times OC$ against $Cnv$ (relative)",
     )
-    results.number("constraining_along_axis", worst_along, "1", note="the mean couple about $OC$, over $Cnv$")
+    results.number(
+        "constraining_along_axis", values.along_axis, "1", note="the mean couple about $OC$, over $Cnv$"
+    )
     results.number(
         "constraining_in_plane_phase_spread",
-        spread,
+        values.in_plane_phase_spread,
         "1",
         note="how much the in-plane couple swings with the body's phase (over the largest "
         "$\\tfrac12(A + B)\\dot v$): why Lamb says 'on the average'",
     )
 
 
-def symmetric_earth(results, model, amplitude, days=20.0) -> None:
+class SymmetricEarth(NamedTuple):
+    """The rigid symmetric Earth over `days` (rates in rad/d unless named)."""
+
+    days: float
+    space_rate: float  # the plane of omega and the figure axis about L, fitted
+    space_rate_over_L_over_A: float
+    space_rate_over_eulerian_nutation: float
+    eulerian_nutation_spread: float
+    body_rate: float  # the pole about the figure axis, right-handed about e3
+    omega_b: float  # the notes' Omega_b = (I1 - I3) omega3 / I1
+    C_minus_A_over_A: float
+    omega2_R_over_g: float
+
+
+def symmetric_earth(model, amplitude, days=20.0) -> SymmetricEarth:
     """The rigid symmetric Earth (units C = 1, days): the plane of omega and the figure axis turns about L at
     |L|/A (the space frequency, Lamb's Eulerian nutation Cn/(A cos theta)); the pole turns about the figure
     axis in the spin's sense; the oblateness (C - A)/A and omega^2 R/g against the notes' 1/300."""
@@ -571,24 +723,42 @@ def symmetric_earth(results, model, amplitude, days=20.0) -> None:
     cos_theta = R[:, :, 2] @ L_hat  # the figure axis against L, from the attitude
     n_spin = w[:, 2]  # Lamb's n: the spin about the figure axis
     euler = n_spin / (a * cos_theta)  # Cn/(A cos theta), C = 1
+    phase = np.unwrap(np.arctan2(w[:, 1], w[:, 0]))
+    body_rate = float(np.polyfit(t, phase, 1)[0])  # right-handed about e3
+    omega_b = (a - 1.0) * model.n / a  # the notes' Omega_b = (I1 - I3) omega3 / I1
+    g = earth.GM_M3_PER_S2 / earth.EQUATORIAL_RADIUS_M**2
+    return SymmetricEarth(
+        days=days,
+        space_rate=space_rate,
+        space_rate_over_L_over_A=space_rate / (L / a),
+        space_rate_over_eulerian_nutation=space_rate / float(np.mean(euler)),
+        eulerian_nutation_spread=float(np.ptp(euler) / np.mean(euler)),
+        body_rate=body_rate,
+        omega_b=omega_b,
+        C_minus_A_over_A=1.0 / a - 1.0,
+        omega2_R_over_g=earth.OMEGA_RAD_PER_S**2 * earth.EQUATORIAL_RADIUS_M / g,
+    )
+
+
+def record_symmetric_earth(results, values: SymmetricEarth) -> None:
+    days, body_rate, omega_b = values.days, values.body_rate, values.omega_b
     results.number(
         "space_rate_measured_rad_per_s",
-        space_rate / earth.SECONDS_PER_DAY,
+        values.space_rate / earth.SECONDS_PER_DAY,
         "rad/s",
         note=f"the plane of $\\boldsymbol\\omega$ and the figure axis about $\\mathbf{{L}}$, fitted over "
         f"{days:g} days of the integrated attitude",
     )
-    results.number("space_rate_over_L_over_A", space_rate / (L / a), "1", note="over $|\\mathbf{L}|/A$")
+    results.number(
+        "space_rate_over_L_over_A", values.space_rate_over_L_over_A, "1", note="over $|\\mathbf{L}|/A$"
+    )
     results.number(
         "space_rate_over_eulerian_nutation",
-        space_rate / float(np.mean(euler)),
+        values.space_rate_over_eulerian_nutation,
         "1",
         note="over $Cn/(A\\cos\\theta)$ (Lamb Art. 55 (7)), $\\theta$ from the attitude",
     )
-    results.number("eulerian_nutation_spread", float(np.ptp(euler) / np.mean(euler)), "1")
-    phase = np.unwrap(np.arctan2(w[:, 1], w[:, 0]))
-    body_rate = float(np.polyfit(t, phase, 1)[0])  # right-handed about e3
-    omega_b = (a - 1.0) * model.n / a  # the notes' Omega_b = (I1 - I3) omega3 / I1
+    results.number("eulerian_nutation_spread", values.eulerian_nutation_spread, "1")
     results.number(
         "body_rate_measured_rad_per_s",
         body_rate / earth.SECONDS_PER_DAY,
@@ -608,11 +778,10 @@ def symmetric_earth(results, model, amplitude, days=20.0) -> None:
         "1",
         note="sign of $\\Omega_\\mathrm{b}$ for the oblate Earth (spin positive)",
     )
-    results.number("C_minus_A_over_A", 1.0 / a - 1.0, "1", note="$(I_3 - I_1)/I_1$ of this scene")
-    g = earth.GM_M3_PER_S2 / earth.EQUATORIAL_RADIUS_M**2
+    results.number("C_minus_A_over_A", values.C_minus_A_over_A, "1", note="$(I_3 - I_1)/I_1$ of this scene")
     results.number(
         "omega2_R_over_g",
-        earth.OMEGA_RAD_PER_S**2 * earth.EQUATORIAL_RADIUS_M / g,
+        values.omega2_R_over_g,
         "1",
         note="$\\omega^2R/g$, $g = GM/R^2$, IERS (2010) constants, $R$ the equatorial radius",
     )

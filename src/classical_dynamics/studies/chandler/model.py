@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 import pandas as pd
 from matplotlib.ticker import LogLocator, NullFormatter, ScalarFormatter
@@ -114,7 +116,9 @@ def run(scene, results, quick):
     m = (y[:, 0] + 1j * y[:, 1]) / earth.MAS  # the pole about the figure axis, mas
 
     if "excitation" in effects:
-        measured = _excited(results, t, m, model, closed)
+        excited = excited_fit(t, m, model, closed)
+        _record_excited(results, excited, t, m)
+        measured = excited.chandler_period_days
     else:
         rate = phase_rate(t, y)
         measured = 2.0 * np.pi / rate
@@ -126,8 +130,8 @@ def run(scene, results, quick):
             measured / closed - 1.0,
             PERIOD_BOUND,
         )
-        _sense(results, rate, y)
-        _invariants(results, y, model)
+        _record_sense(results, is_prograde(rate, y))
+        _record_invariants(results, invariants(y, model))
         _polhode(results, t, m, measured, "dissipation" in effects, "triaxiality" in effects)
     results.number(
         "wobble_period_solar_days",
@@ -152,29 +156,32 @@ def run(scene, results, quick):
     )
 
     if "triaxiality" in effects:
-        _triaxial(results, model, amplitude, sol, t, rigid_solar)
+        _record_triaxial(results, model, triaxial(model, amplitude, sol, t, rigid_solar))
     if "elastic_yielding" in effects:
-        _elastic(results, model, H, effects["elastic_yielding"])
+        _record_elastic(results, model, elastic(model, H, effects["elastic_yielding"]))
     if "dissipation" in effects and "excitation" not in effects:
-        _damped(results, t, m, model, measured)
-        _dissipation_structure(results, model)
+        _record_damped(results, t, model, damped(t, m, model, measured))
+        _record_dissipation_structure(results, dissipation_structure(model))
     if analysis.get("cones"):
-        _cones(results, model, amplitude)
+        _record_cones(results, model, amplitude, cones(model, amplitude))
         if not effects:
-            _symmetric_integrals(results, model)
+            _record_symmetric_integrals(results, symmetric_integrals(model))
     if analysis.get("lamb_symmetric"):
         from . import lamb_free
 
-        lamb_free.symmetric_earth(results, model, amplitude)
+        lamb_free.record_symmetric_earth(results, lamb_free.symmetric_earth(model, amplitude))
     if "lamb_free_body" in analysis:
         from . import lamb_free
 
         lamb_free.free_body(results, analysis["lamb_free_body"])
 
 
-def _sense(results, rate, y):
+def is_prograde(rate, y):
     """Prograde: the pole turns about the figure axis in the sense of the spin (sign of omega_3)."""
-    prograde = np.sign(rate) == np.sign(np.mean(y[:, 2]))
+    return np.sign(rate) == np.sign(np.mean(y[:, 2]))
+
+
+def _record_sense(results, prograde):
     results.number(
         "wobble_sense",
         1 if prograde else -1,
@@ -189,11 +196,29 @@ def _sense(results, rate, y):
     )
 
 
-def _invariants(results, y, model):
+class Invariants(NamedTuple):
+    angular_momentum_drift: float  # largest relative change of |L|
+    wobble_invariant_drift: float | None  # of 2CT - H^2; None on an elastic Earth
+
+
+def invariants(y, model) -> Invariants:
     """|L| along the run. (At 0.1″ the wobble's share of |L| and of the energy is ~1e-15, below what a
-    double can resolve, so the dissipation's structure is shown on a large wobble: _dissipation_structure.)"""
+    double can resolve, so the dissipation's structure is shown on a large wobble: dissipation_structure.)"""
     L, _ = wobble.invariants(y, model.parameters())
     drift = float(np.max(np.abs(L / L[0] - 1.0)))
+    params = model.parameters()
+    wobble_drift = None
+    if not params[wobble.ELASTIC]:
+        # the wobble's own invariant, resolvable where T and |L| are not: 2CT - H^2 = A(C - A)p^2 + B(C -
+        # B)q^2 (Lamb Art. 48 (6), units C = 1, y = omega/n), formed from p and q so that nothing cancels
+        a, b = params[wobble.A_C], params[wobble.B_C]
+        D = a * (1.0 - a) * y[:, 0] ** 2 + b * (1.0 - b) * y[:, 1] ** 2
+        wobble_drift = float(np.max(np.abs(D / D[0] - 1.0)))
+    return Invariants(drift, wobble_drift)
+
+
+def _record_invariants(results, values: Invariants):
+    drift = values.angular_momentum_drift
     results.number(
         "angular_momentum_drift",
         drift,
@@ -201,21 +226,24 @@ def _invariants(results, y, model):
         note="largest $|\\Delta|\\mathbf{L}||/|\\mathbf{L}|$ over the run",
     )
     results.hard_case("angular_momentum_kept", "$|\\mathbf{L}|$ kept over the run (relative)", drift, 1e-12)
-    params = model.parameters()
-    if not params[wobble.ELASTIC]:
-        # the wobble's own invariant, resolvable where T and |L| are not: 2CT - H^2 = A(C - A)p^2 + B(C -
-        # B)q^2 (Lamb Art. 48 (6), units C = 1, y = omega/n), formed from p and q so that nothing cancels
-        a, b = params[wobble.A_C], params[wobble.B_C]
-        D = a * (1.0 - a) * y[:, 0] ** 2 + b * (1.0 - b) * y[:, 1] ** 2
+    if values.wobble_invariant_drift is not None:
         results.number(
             "wobble_invariant_drift",
-            float(np.max(np.abs(D / D[0] - 1.0))),
+            values.wobble_invariant_drift,
             "1",
             note="largest relative change of $2CT - H^2 = A(C - A)p^2 + B(C - B)q^2$ over the run",
         )
 
 
-def _dissipation_structure(results, model, tilt_deg=10.0, periods=20):
+class DissipationStructure(NamedTuple):
+    tilt_deg: float
+    periods: int
+    L_drift: float  # largest relative change of |L|
+    energy_fall: float  # relative fall of the energy
+    energy_largest_rise: float  # largest rise between samples over the total fall
+
+
+def dissipation_structure(model, tilt_deg=10.0, periods=20) -> DissipationStructure:
     """On a 10° wobble, where the wobble's energy is resolvable: |L| kept, the energy only falls."""
     y0 = np.array([np.sin(np.radians(tilt_deg)), 0.0, np.cos(np.radians(tilt_deg))])
     span = periods * model.wobble_period_solar_days()
@@ -230,17 +258,21 @@ def _dissipation_structure(results, model, tilt_deg=10.0, periods=20):
     L, E = wobble.invariants(sol.y_eval, model.parameters())
     fall = E[0] - E[-1]
     rise = float(max(np.max(np.diff(E)), 0.0))
+    return DissipationStructure(
+        tilt_deg, periods, float(np.max(np.abs(L / L[0] - 1.0))), float(fall / E[0]), rise / fall
+    )
+
+
+def _record_dissipation_structure(results, values: DissipationStructure):
+    tilt_deg, periods = values.tilt_deg, values.periods
     results.number("large_wobble_tilt_deg", tilt_deg, "°")
     results.number(
-        "large_wobble_L_drift",
-        float(np.max(np.abs(L / L[0] - 1.0))),
-        "1",
-        note=f"{shortest(tilt_deg)}° wobble, {periods} periods",
+        "large_wobble_L_drift", values.L_drift, "1", note=f"{shortest(tilt_deg)}° wobble, {periods} periods"
     )
-    results.number("large_wobble_energy_fall", float(fall / E[0]), "1", note="relative fall of the energy")
+    results.number("large_wobble_energy_fall", values.energy_fall, "1", note="relative fall of the energy")
     results.number(
         "large_wobble_energy_largest_rise",
-        rise / fall,
+        values.energy_largest_rise,
         "1",
         note="largest rise between samples / total fall (0: the energy only falls)",
     )
@@ -248,18 +280,24 @@ def _dissipation_structure(results, model, tilt_deg=10.0, periods=20):
         "dissipation_keeps_L",
         f"Internal dissipation on a {shortest(tilt_deg)}° wobble: "
         "$|\\mathbf{L}|$ kept (relative) while the energy falls",
-        float(np.max(np.abs(L / L[0] - 1.0))),
+        values.L_drift,
         1e-12,
     )
     results.hard_case(
         "dissipation_energy_falls",
         "… and the energy never rises (largest rise / total fall)",
-        rise / fall,
+        values.energy_largest_rise,
         1e-6,
     )
 
 
-def _symmetric_integrals(results, model, tilt_deg=10.0, periods=20):
+class SymmetricIntegrals(NamedTuple):
+    tilt_deg: float
+    periods: int
+    deviation: float  # largest relative difference of A and w3 from T and L^2 against the run
+
+
+def symmetric_integrals(model, tilt_deg=10.0, periods=20) -> SymmetricIntegrals:
     """Handbook (2.162)-(2.163): for the free symmetric body T = I1 A^2/2 + I3 w3^2/2 and L^2 = I1^2 A^2 +
     I3^2 w3^2, so the wobble's angular speed A and the spin w3 follow from T and L^2. On a 10 degree wobble
     (at 0.1 arcsec A^2 is below what T and L^2 resolve), against A = |(w1, w2)| and w3 along a DOP853 run."""
@@ -283,9 +321,14 @@ def _symmetric_integrals(results, model, tilt_deg=10.0, periods=20):
     w3 = np.sqrt((L2 - 2 * T * I1) / (I3 * (I3 - I1)))
     wobble_speed = np.hypot(y[:, 0], y[:, 1])
     deviation = max(float(np.max(np.abs(wobble_speed / A - 1))), float(np.max(np.abs(y[:, 2] / w3 - 1))))
+    return SymmetricIntegrals(tilt_deg, periods, deviation)
+
+
+def _record_symmetric_integrals(results, values: SymmetricIntegrals):
+    tilt_deg, periods = values.tilt_deg, values.periods
     results.number(
         "symmetric_T_L2_recovery",
-        deviation,
+        values.deviation,
         "1",
         note=f"$A$ and $\\omega_3$ from $T$ and $L^2$ by (2.162)-(2.163) against $|(\\omega_1, "
         f"\\omega_2)|$ and $\\omega_3$ along a {shortest(tilt_deg)}° wobble, {periods} periods "
@@ -335,7 +378,16 @@ def _polhode(results, t, m, period, damped, triaxial=False):
     results.figure("polhode", fig, caption)
 
 
-def _triaxial(results, model, amplitude, sol, t, rigid_solar):
+class Triaxial(NamedTuple):
+    elliptic_period_solar_days: float  # 4K(k)/lambda of the exact motion
+    elliptic_modulus_squared: float
+    triaxial_period_change_days: float  # against the symmetric Earth with the same (C - (A + B)/2)/C
+    polhode_axis_ratio: float  # closed form sqrt(A(C - A)/(B(C - B)))
+    polhode_axis_ratio_measured: float
+    exact_solution_error: float  # relative to the wobble
+
+
+def triaxial(model, amplitude, sol, t, rigid_solar) -> Triaxial:
     """Against the exact elliptic-function motion: the period 4K/rate, the polhode's ellipse."""
     a, b = earth.moments_over_c(model.H, model.b_minus_a_over_c)
     I = np.array([a, b, 1.0])
@@ -343,31 +395,38 @@ def _triaxial(results, model, amplitude, sol, t, rigid_solar):
     exact = ref.free_rigid_body(I, I * w0, t) / model.n
     err = float(np.max(np.abs(sol.y_eval - exact)[:, :2])) / amplitude
     period = ref.free_rigid_body_period(I, I * w0)
+    y = sol.y_eval
+    return Triaxial(
+        elliptic_period_solar_days=period,
+        elliptic_modulus_squared=float(ref.free_rigid_body_rate_and_parameter(I, I * w0)[1]),
+        triaxial_period_change_days=period - rigid_solar,
+        polhode_axis_ratio=np.sqrt(a * (1.0 - a) / (b * (1.0 - b))),
+        polhode_axis_ratio_measured=float(np.max(np.abs(y[:, 1])) / np.max(np.abs(y[:, 0]))),
+        exact_solution_error=err,
+    )
+
+
+def _record_triaxial(results, model, values: Triaxial):
+    period, err = values.elliptic_period_solar_days, values.exact_solution_error
     results.number(
         "B_minus_A_over_C", model.b_minus_a_over_c, "1", note="$4C_{22}H/J_2$ (EGM2008, IERS 2010)"
     )
     results.number("elliptic_period_solar_days", period, "d", note="$4K(k)/\\lambda$ of the exact motion")
-    results.number(
-        "elliptic_modulus_squared", float(ref.free_rigid_body_rate_and_parameter(I, I * w0)[1]), "1"
-    )
+    results.number("elliptic_modulus_squared", values.elliptic_modulus_squared, "1")
     results.number(
         "triaxial_period_change_days",
-        period - rigid_solar,
+        values.triaxial_period_change_days,
         "d",
         note="against the symmetric Earth with the same $(C - (A + B)/2)/C$",
     )
-    results.number("triaxial_period_change_hours", 24.0 * (period - rigid_solar), "h")
-    axis_ratio = np.sqrt(a * (1.0 - a) / (b * (1.0 - b)))
+    results.number("triaxial_period_change_hours", 24.0 * values.triaxial_period_change_days, "h")
     results.number(
         "polhode_axis_ratio",
-        axis_ratio,
+        values.polhode_axis_ratio,
         "1",
         note="$q_\\mathrm{max}/p_\\mathrm{max} = \\sqrt{A(C - A)/(B(C - B))}$: the polhode is an ellipse",
     )
-    y = sol.y_eval
-    results.number(
-        "polhode_axis_ratio_measured", float(np.max(np.abs(y[:, 1])) / np.max(np.abs(y[:, 0]))), "1"
-    )
+    results.number("polhode_axis_ratio_measured", values.polhode_axis_ratio_measured, "1")
     results.number(
         "exact_solution_error",
         err,
@@ -382,37 +441,79 @@ def _triaxial(results, model, amplitude, sol, t, rigid_solar):
     )
 
 
-def _elastic(results, model, H, params):
+ELASTIC_TARGETS = ((433.1, "433"), (427.0, "427"))  # wobble periods (d) and their names
+
+
+class Elastic(NamedTuple):
+    secular_love_number: float  # k_s = 3 J2/q
+    beta_n2_over_A: float
+    beta_n2_over_C_minus_A: float  # = k2/k_s
+    excess_over_observed: float  # closed-form period / 433.1 d - 1
+    love_number_k2: float
+    love_number_source: str
+    k2_for_period_days: dict  # {"433": k2, "427": k2}: the Love number a 433.1-day, 427-day wobble needs
+
+
+def elastic(model, H, params) -> Elastic:
+    """Lamb's elastic Earth: its beta n^2 as Love numbers, and the k2 a given period needs."""
     k_s = earth.secular_love_number()
+    needed = {name: earth.beta_n2_for_period(H, target) / H * k_s for target, name in ELASTIC_TARGETS}
+    return Elastic(
+        secular_love_number=k_s,
+        beta_n2_over_A=model.beta_n2 / (1.0 - H),
+        beta_n2_over_C_minus_A=model.beta_n2 / H,
+        excess_over_observed=model.wobble_period_solar_days() / 433.1 - 1.0,
+        love_number_k2=params.get("k2", model.beta_n2 / H * k_s),
+        love_number_source=params["source"],
+        k2_for_period_days=needed,
+    )
+
+
+def _record_elastic(results, model, values: Elastic):
+    k_s = values.secular_love_number
     results.number("secular_love_number", k_s, "1", note="$k_\\mathrm{s} = 3J_2/q$ (IERS 2010 constants)")
     results.number("beta_n2_over_C", model.beta_n2, "1", note="Lamb's $\\beta n^2$ in units of $C$")
-    results.number("beta_n2_over_A", model.beta_n2 / (1.0 - H), "1")
-    results.number("beta_n2_over_C_minus_A", model.beta_n2 / H, "1", note="$= k_2/k_\\mathrm{s}$")
+    results.number("beta_n2_over_A", values.beta_n2_over_A, "1")
+    results.number("beta_n2_over_C_minus_A", values.beta_n2_over_C_minus_A, "1", note="$= k_2/k_\\mathrm{s}$")
     results.number(
         "excess_over_observed",
-        model.wobble_period_solar_days() / 433.1 - 1.0,
+        values.excess_over_observed,
         "1",
         note="closed-form period / 433.1 d (Vicente & Wilson 1997) − 1",
     )
-    k2 = params.get("k2", model.beta_n2 / H * k_s)
-    results.number("love_number_k2", k2, "1", note=params["source"])
-    for target, name in ((433.1, "433"), (427.0, "427")):
-        needed = earth.beta_n2_for_period(H, target)
+    results.number("love_number_k2", values.love_number_k2, "1", note=values.love_number_source)
+    for target, name in ELASTIC_TARGETS:
         results.number(
             f"k2_for_{name}_days",
-            needed / H * k_s,
+            values.k2_for_period_days[name],
             "1",
             note=f"the Love number Lamb's model needs for a {shortest(target)}-day wobble",
         )
 
 
-def _damped(results, t, m, model, period):
+class Damped(NamedTuple):
+    Q_recovered: float  # sigma/2 gamma, gamma the decay rate of the simulated amplitude
+    amplitude_e_folding_years: float  # measured
+    amplitude_e_folding_years_closed_form: float  # Q P/pi
+    amplitude: np.ndarray  # |m| along the run
+    sigma: float  # the wobble's angular frequency (rad/d)
+
+
+def damped(t, m, model, period) -> Damped:
     """Q from the decay of the amplitude (a straight-line fit of log |m|), against the scene's Q."""
     amp = np.abs(m)
     slope = np.polyfit(t, np.log(amp), 1)[0]  # per day
     sigma = 2.0 * np.pi / period
     Q_fit = -sigma / (2.0 * slope)
     e_fold_years = -1.0 / slope / earth.JULIAN_YEAR_DAYS
+    closed = model.Q * period / np.pi / earth.JULIAN_YEAR_DAYS
+    return Damped(Q_fit, e_fold_years, closed, amp, sigma)
+
+
+def _record_damped(results, t, model, values: Damped):
+    """The numbers, the hard case and the decay figure of a damped run."""
+    Q_fit, e_fold_years = values.Q_recovered, values.amplitude_e_folding_years
+    amp, sigma = values.amplitude, values.sigma
     results.number("Q", model.Q, "1")
     results.number(
         "Q_recovered",
@@ -424,7 +525,7 @@ def _damped(results, t, m, model, period):
     results.number("amplitude_e_folding_years", e_fold_years, "yr", note="measured")
     results.number(
         "amplitude_e_folding_years_closed_form",
-        model.Q * period / np.pi / earth.JULIAN_YEAR_DAYS,
+        values.amplitude_e_folding_years_closed_form,
         "yr",
         note="$QP/\\pi$",
     )
@@ -458,16 +559,40 @@ def _damped(results, t, m, model, period):
     )
 
 
-def _excited(results, t, m, model, closed):
+class Excited(NamedTuple):
+    fit: polar_motion.WobbleFit  # the simulated series fitted as the observations are
+    chandler_period_days: float  # fitted
+    beat_period_years: float  # 1/(f_annual - f_Chandler), fitted periods
+    beat_period_closed_form_years: float  # from the model's closed-form period
+    period_relative_error: float  # fitted against the closed form
+    bound: float  # the resonance's width 1/Q (relative)
+
+
+def excited_fit(t, m, model, closed) -> Excited:
     """Fit the simulated series the way the observations are fitted: the fitter checked on a known truth."""
     years = t / earth.JULIAN_YEAR_DAYS
     fit = polar_motion.fit(years, m)
+    annual_period = earth.TROPICAL_YEAR_DAYS
+    beat = 1.0 / abs(1.0 / annual_period - 1.0 / fit.chandler_period_days) / earth.JULIAN_YEAR_DAYS
+    # a finite, randomly excited record fixes the period only to within the resonance's width, 1/Q relative
+    return Excited(
+        fit=fit,
+        chandler_period_days=fit.chandler_period_days,
+        beat_period_years=beat,
+        beat_period_closed_form_years=1.0 / abs(1.0 / annual_period - 1.0 / closed) / earth.JULIAN_YEAR_DAYS,
+        period_relative_error=fit.chandler_period_days / closed - 1.0,
+        bound=1.0 / model.Q if model.Q else 1e-3,
+    )
+
+
+def _record_excited(results, values: Excited, t, m):
+    """The fit's numbers, the hard case and the polar path figure."""
+    fit, beat = values.fit, values.beat_period_years
+    years = t / earth.JULIAN_YEAR_DAYS
     results.number("fitted_chandler_period_days", fit.chandler_period_days, "d")
     results.number("fitted_chandler_amplitude_mas", fit.chandler_amplitude_mas, "mas")
     results.number("fitted_annual_prograde_mas", fit.annual_prograde_mas, "mas")
     results.number("fitted_annual_retrograde_mas", fit.annual_retrograde_mas, "mas")
-    annual_period = earth.TROPICAL_YEAR_DAYS
-    beat = 1.0 / abs(1.0 / annual_period - 1.0 / fit.chandler_period_days) / earth.JULIAN_YEAR_DAYS
     results.number(
         "beat_period_years",
         beat,
@@ -476,18 +601,16 @@ def _excited(results, t, m, model, closed):
     )
     results.number(
         "beat_period_closed_form_years",
-        1.0 / abs(1.0 / annual_period - 1.0 / closed) / earth.JULIAN_YEAR_DAYS,
+        values.beat_period_closed_form_years,
         "yr",
         note="from the model's closed-form period",
     )
-    # a finite, randomly excited record fixes the period only to within the resonance's width, 1/Q relative
-    bound = 1.0 / model.Q if model.Q else 1e-3
     results.hard_case(
         "fitter_on_known_truth",
         "Fitting the simulated series recovers the model's period "
         "(relative; within the resonance width $1/Q$)",
-        fit.chandler_period_days / closed - 1.0,
-        bound,
+        values.period_relative_error,
+        values.bound,
     )
     shown = min(PATH_YEARS, float(years[-1] - years[0]))
     figure_path(
@@ -505,7 +628,6 @@ def _excited(results, t, m, model, closed):
         last_years=PATH_YEARS,
         time_label="time from the start (yr)",
     )
-    return fit.chandler_period_days
 
 
 def figure_path(results, name, years, m, caption, last_years=13.0, time_label="year"):
@@ -532,7 +654,22 @@ def figure_path(results, name, years, m, caption, last_years=13.0, time_label="y
     results.figure(name, fig, caption)
 
 
-def _cones(results, model, amplitude):
+class Cones(NamedTuple):
+    """Lamb Art. 47 on the rigid symmetric Earth, over two days of attitude (angles in rad)."""
+
+    alpha: float  # figure axis to L
+    beta: float  # figure axis to omega
+    C_over_A: float
+    herpolhode_over_polhode: float  # measured
+    herpolhode_radius_mas: float
+    space_cone_period_sidereal_days: float
+    angular_momentum: np.ndarray  # body-frame L along the run (units C n)
+    omega_space: np.ndarray  # omega in space along the run
+    invariable_line: np.ndarray  # L/|L| in space
+    moments: np.ndarray  # A, B, C over C
+
+
+def cones(model, amplitude) -> Cones:
     """Body and space cones (Lamb Art. 47): tan β = (C/A) tan α; the herpolhode is H times the polhode."""
     a = model.parameters()[wobble.A_C]
     I = np.array([a, a, 1.0])
@@ -540,8 +677,6 @@ def _cones(results, model, amplitude):
     m0 = I * w0
     alpha = np.arctan2(np.hypot(m0[0], m0[1]), m0[2])  # figure axis to L
     beta = np.arctan2(np.hypot(w0[0], w0[1]), w0[2])  # figure axis to omega
-    results.number("tan_beta_over_tan_alpha", np.tan(beta) / np.tan(alpha), "1", note="Lamb: $C/A$")
-    results.number("C_over_A", 1.0 / a, "1")
     # two days of attitude by the splitting (fourth order, exact rotations), the herpolhode in space
     h, days = 1e-3, 2.0
     steps = int(round(days / h))
@@ -555,6 +690,32 @@ def _cones(results, model, amplitude):
     herpolhode = np.linalg.norm(off_L, axis=1) / np.linalg.norm(omega_space, axis=1)
     polhode = np.hypot(ms[:, 0], ms[:, 1]) / I[0] / np.linalg.norm(ms / I, axis=1)
     ratio = float(np.mean(herpolhode) / np.mean(polhode))
+    space_rate = np.linalg.norm(m0) / I[0]
+    return Cones(
+        alpha=alpha,
+        beta=beta,
+        C_over_A=1.0 / a,
+        herpolhode_over_polhode=ratio,
+        herpolhode_radius_mas=float(np.mean(herpolhode)) / earth.MAS,
+        space_cone_period_sidereal_days=2 * np.pi / space_rate * earth.SIDEREAL_PER_SOLAR_DAY,
+        angular_momentum=ms,
+        omega_space=omega_space,
+        invariable_line=L_hat,
+        moments=I,
+    )
+
+
+def _record_cones(results, model, amplitude, values: Cones):
+    """The cones' numbers and figure: the polhode in the body, the herpolhode in space."""
+    alpha, beta, ratio = values.alpha, values.beta, values.herpolhode_over_polhode
+    ms, omega_space, L_hat, I = (
+        values.angular_momentum,
+        values.omega_space,
+        values.invariable_line,
+        values.moments,
+    )
+    results.number("tan_beta_over_tan_alpha", np.tan(beta) / np.tan(alpha), "1", note="Lamb: $C/A$")
+    results.number("C_over_A", values.C_over_A, "1")
     results.number("herpolhode_over_polhode", ratio, "1", note="radii of the space and body cones, measured")
     results.number(
         "herpolhode_over_polhode_closed_form",
@@ -563,11 +724,10 @@ def _cones(results, model, amplitude):
         note="sin(β − α)/sin β",
     )
     results.number("one_over_herpolhode_ratio", 1.0 / ratio, "1")
-    results.number("herpolhode_radius_mas", float(np.mean(herpolhode)) / earth.MAS, "mas")
-    space_rate = np.linalg.norm(m0) / I[0]
+    results.number("herpolhode_radius_mas", values.herpolhode_radius_mas, "mas")
     results.number(
         "space_cone_period_sidereal_days",
-        2 * np.pi / space_rate * earth.SIDEREAL_PER_SOLAR_DAY,
+        values.space_cone_period_sidereal_days,
         "sidereal days",
         note="$\\dot\\psi = |\\mathbf{L}|/A$: the plane of $\\omega$ and the "
         "figure axis turns about $\\mathbf{L}$ once a day",

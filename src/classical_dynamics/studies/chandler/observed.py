@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 import pandas as pd
 
@@ -13,6 +15,60 @@ from . import polar_motion as pm
 from .model import figure_path
 
 VICENTE_WILSON_DAYS = (433.1, 1.7)
+WINDOW_COLUMNS = [
+    "centre_year",
+    "chandler_mas",
+    "chandler_phase_deg",
+    "annual_prograde_mas",
+    "annual_retrograde_mas",
+]
+
+
+class ObservedWobble(NamedTuple):
+    """The C04 series (t in years from 2000, m in mas) fitted for the Chandler and annual wobbles."""
+
+    fit: pm.WobbleFit  # the whole series
+    thirds: list  # the samples' indices of each third
+    period_by_thirds_days: list  # the Chandler period fitted on each third
+    frequency_cpy: np.ndarray  # the periodogram
+    power: np.ndarray
+    chandler_peak_cpy: float  # the strongest peak between 0.7 and 1 cpy, either sign
+    windows: pd.DataFrame  # amplitudes by window: a table's rows (WINDOW_COLUMNS)
+    low: pd.Series  # the windows of least and greatest Chandler amplitude
+    high: pd.Series
+
+
+def analyse(t, m, window_years, step_years) -> ObservedWobble:
+    """Fit the whole series and its thirds, find the periodogram's Chandler peak, and fit windows of
+    window_years every step_years at the whole series' Chandler frequency."""
+    fit = pm.fit(t, m)
+    thirds = np.array_split(np.arange(t.size), 3)
+    periods = [pm.fit(t[i], m[i]).chandler_period_days for i in thirds]
+    # the sense of rotation, read from the data: the strongest peak near 0.85 cpy, either sign
+    f, power = pm.periodogram(t, m)
+    band = (np.abs(f) > 0.7) & (np.abs(f) < 1.0)
+    peak = f[band][np.argmax(power[band])]
+    windows = pm.windowed_amplitudes(t, m, fit.chandler_cpy, window_years, step_years)
+    frame = pd.DataFrame(windows, columns=WINDOW_COLUMNS)
+    low = frame.loc[frame.chandler_mas.idxmin()]
+    high = frame.loc[frame.chandler_mas.idxmax()]
+    return ObservedWobble(fit, thirds, periods, f, power, peak, frame, low, high)
+
+
+def marked_periods(compare) -> tuple[float, float]:
+    """The rigid Earth's and Lamb's elastic Earth's wobble periods (days) for the scene's H and k2."""
+    rigid = earth.sidereal_to_solar_days(earth.euler_period_sidereal_days(compare["H"]))
+    elastic = (
+        2
+        * np.pi
+        / (
+            earth.SPIN_RAD_PER_DAY
+            * earth.elastic_wobble_frequency(
+                compare["H"], earth.elastic_beta_n2_over_c(compare["k2"], compare["H"])
+            )
+        )
+    )
+    return rigid, elastic
 
 
 def run(scene, results, quick):
@@ -29,7 +85,8 @@ def run(scene, results, quick):
     results.number("last_year", float(t[-1] + 2000.0), "yr")
     results.number("samples", int(t.size), "1")
 
-    fit = pm.fit(t, m)
+    values = analyse(t, m, obs["window_years"], obs["step_years"])
+    fit = values.fit
     results.number(
         "observed_chandler_period_days",
         fit.chandler_period_days,
@@ -66,8 +123,7 @@ def run(scene, results, quick):
         note="(ours − 433.1 d) / 1.7 d",
     )
 
-    thirds = np.array_split(np.arange(t.size), 3)
-    periods = [pm.fit(t[i], m[i]).chandler_period_days for i in thirds]
+    thirds, periods = values.thirds, values.period_by_thirds_days
     results.table(
         "period_by_thirds",
         pd.DataFrame(
@@ -93,10 +149,7 @@ def run(scene, results, quick):
         note="standard deviation of the period over the three thirds: the wobble's own irregularity",
     )
 
-    # the sense of rotation, read from the data: the strongest peak near 0.85 cpy, either sign
-    f, power = pm.periodogram(t, m)
-    band = (np.abs(f) > 0.7) & (np.abs(f) < 1.0)
-    peak = f[band][np.argmax(power[band])]
+    f, power, peak = values.frequency_cpy, values.power, values.chandler_peak_cpy
     results.number(
         "chandler_peak_cpy",
         float(peak),
@@ -111,17 +164,7 @@ def run(scene, results, quick):
     )
     _periodogram_figure(results, f, power, fit, obs["compare"])
 
-    windows = pm.windowed_amplitudes(t, m, fit.chandler_cpy, obs["window_years"], obs["step_years"])
-    frame = pd.DataFrame(
-        windows,
-        columns=[
-            "centre_year",
-            "chandler_mas",
-            "chandler_phase_deg",
-            "annual_prograde_mas",
-            "annual_retrograde_mas",
-        ],
-    )
+    frame = values.windows
     window, step = obs["window_years"], obs["step_years"]
     results.table(
         "amplitude_by_window",
@@ -137,8 +180,7 @@ def run(scene, results, quick):
             "annual_retrograde_mas": "annual, retrograde (mas)",
         },
     )
-    low = frame.loc[frame.chandler_mas.idxmin()]
-    high = frame.loc[frame.chandler_mas.idxmax()]
+    low, high = values.low, values.high
     results.number(
         "window_amplitude_min_mas",
         float(low.chandler_mas),
@@ -187,17 +229,7 @@ def run(scene, results, quick):
 
 
 def _periodogram_figure(results, f, power, fit, compare):
-    rigid = earth.sidereal_to_solar_days(earth.euler_period_sidereal_days(compare["H"]))
-    elastic = (
-        2
-        * np.pi
-        / (
-            earth.SPIN_RAD_PER_DAY
-            * earth.elastic_wobble_frequency(
-                compare["H"], earth.elastic_beta_n2_over_c(compare["k2"], compare["H"])
-            )
-        )
-    )
+    rigid, elastic = marked_periods(compare)
     results.number("marked_rigid_period_days", rigid, "d", note=f"$H$ = {shortest(compare['H'])}")
     results.number(
         "marked_elastic_period_days", elastic, "d", note=f"Lamb's model, $k_2$ = {shortest(compare['k2'])}"

@@ -16,6 +16,8 @@ cone_rates    the symmetric Earth (Art. 47 (3)): the measured rate of the plane 
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
 from ...models import rigid_body as rb
@@ -98,12 +100,33 @@ def _curvature(I, w):
     return np.einsum("ij,ij->i", L_hat, np.cross(wd, acc)) / np.linalg.norm(wd, axis=1) ** 3
 
 
-def poinsot_body(results, spec) -> None:
-    I = np.asarray(spec["moments"], float)
-    w0 = np.asarray(spec["omega"], float)
-    span, samples = float(spec["span"]), int(spec["samples"])
-    for name, value in zip("ABC", I):
-        results.number(f"poinsot_{name}", float(value), "1", note=spec["source"])
+class PoinsotBody(NamedTuple):
+    """What poinsot_body measures on one free body (lengths in units of the momental ellipsoid)."""
+
+    moments: np.ndarray  # A, B, C
+    plane_distance_error: float
+    plane_normal_turn: float  # rad
+    plane_error: float
+    invariable_component_change: float
+    herpolhode_radius_min: float
+    herpolhode_radius_max: float
+    herpolhode_radius_min_closed_form: float
+    herpolhode_radius_max_closed_form: float
+    herpolhode_bounds_error: float
+    herpolhode_curvature_ratio: float
+    rolling_arc_difference: float
+    half_periods: int  # sign changes of p
+    herpolhode_shown: np.ndarray  # the contact point in space over the periods drawn
+    invariable_line: np.ndarray  # the starting normal H/H in space
+    periods_shown: int
+
+
+def poinsot_body(moments, omega, span, samples) -> PoinsotBody:
+    """Lamb Arts. 46-48 measured on a free body with moments A, B, C started at omega, integrated over span
+    with samples points."""
+    I = np.asarray(moments, float)
+    w0 = np.asarray(omega, float)
+    span, samples = float(span), int(samples)
     t, w, q = _integrate(I, w0, span, samples)
     L_body = w * I
     T2 = np.einsum("ij,ij->i", w, L_body)  # 2T
@@ -116,22 +139,64 @@ def poinsot_body(results, spec) -> None:
     distance_error = float(np.max(np.abs(distance / d0 - 1.0)))
     n_space = _to_space(q, normal)
     normal_turn = float(np.max(np.linalg.norm(np.cross(n_space, n_space[0]), axis=1)))
+    # Art. 48 (10): omega . n = 2T/H, with n the starting normal carried in space
+    w_space = _to_space(q, w)
+    along = w_space @ n_space[0]
+    component_change = float(np.max(np.abs(along / (T2[0] / H[0]) - 1.0)))
+    # the herpolhode: the point x in space, its distance from the invariable line
+    x_space = _to_space(q, x)
+    radial = x_space - np.outer(x_space @ n_space[0], n_space[0])
+    rho = np.linalg.norm(radial, axis=1)
+    lo, hi = herpolhode_radii(I, w0)
+    rho_min, rho_max = -_peak(-rho), _peak(rho)
+    kappa = _curvature(I, w)
+    # rolling without slipping: the paths of the contact point on the body and on the plane have equal length
+    body_arc = float(np.sum(np.linalg.norm(np.diff(x, axis=0), axis=1)))
+    space_arc = float(np.sum(np.linalg.norm(np.diff(x_space, axis=0), axis=1)))
+    crossings = int(np.sum(np.diff(np.sign(w[:, 0])) != 0))
+    shown = 2  # polhode periods drawn: more fill the ring
+    change = np.flatnonzero(np.diff(np.sign(w[:, 0])) != 0)
+    end = change[2 * shown] + 1 if len(change) > 2 * shown else len(w)
+    return PoinsotBody(
+        moments=I,
+        plane_distance_error=distance_error,
+        plane_normal_turn=normal_turn,
+        plane_error=max(distance_error, normal_turn),
+        invariable_component_change=component_change,
+        herpolhode_radius_min=rho_min,
+        herpolhode_radius_max=rho_max,
+        herpolhode_radius_min_closed_form=lo,
+        herpolhode_radius_max_closed_form=hi,
+        herpolhode_bounds_error=float(max(abs(rho_min / lo - 1), abs(rho_max / hi - 1))),
+        herpolhode_curvature_ratio=float(np.min(kappa) / np.max(kappa)),
+        rolling_arc_difference=abs(space_arc / body_arc - 1.0),
+        half_periods=crossings,
+        herpolhode_shown=x_space[:end],
+        invariable_line=n_space[0],
+        periods_shown=shown,
+    )
+
+
+def record_poinsot_body(results, body: PoinsotBody, source) -> None:
+    """poinsot_body's numbers, hard case and herpolhode figure; source notes the moments."""
+    for name, value in zip("ABC", body.moments):
+        results.number(f"poinsot_{name}", float(value), "1", note=source)
     results.number(
         "poinsot_plane_distance_error",
-        distance_error,
+        body.plane_distance_error,
         "1",
         note="largest relative change of the tangent plane's distance from $O$ against "
         "$\\sqrt{2T}/H$ at the start",
     )
     results.number(
         "poinsot_plane_normal_turn",
-        normal_turn,
+        body.plane_normal_turn,
         "rad",
         note="largest angle of the plane's normal $\\mathbf{H}/H$, carried to space, from its start",
     )
     results.number(
         "poinsot_plane_error",
-        max(distance_error, normal_turn),
+        body.plane_error,
         "1",
         note="the larger of the two: the plane is fixed in space",
     )
@@ -139,60 +204,55 @@ def poinsot_body(results, spec) -> None:
         "poinsot_plane_fixed",
         "The momental ellipsoid's tangent plane at the instantaneous axis "
         "stays fixed in space (Lamb Art. 46; distance and normal, relative)",
-        max(distance_error, normal_turn),
+        body.plane_error,
         1e-11,
     )
-    # Art. 48 (10): omega . n = 2T/H, with n the starting normal carried in space
-    w_space = _to_space(q, w)
-    along = w_space @ n_space[0]
     results.number(
         "invariable_component_change",
-        float(np.max(np.abs(along / (T2[0] / H[0]) - 1.0))),
+        body.invariable_component_change,
         "1",
         note="largest relative change of $\\boldsymbol\\omega\\cdot\\hat{\\mathbf{H}}$ against "
         "$2T/H$ (fixed $\\hat{\\mathbf{H}}$ in space)",
     )
-    # the herpolhode: the point x in space, its distance from the invariable line
-    x_space = _to_space(q, x)
-    radial = x_space - np.outer(x_space @ n_space[0], n_space[0])
-    rho = np.linalg.norm(radial, axis=1)
-    lo, hi = herpolhode_radii(I, w0)
-    rho_min, rho_max = -_peak(-rho), _peak(rho)
-    results.number("herpolhode_radius_min", rho_min, "1", note="least sample, refined by a parabola")
-    results.number("herpolhode_radius_max", rho_max, "1", note="greatest sample, refined by a parabola")
-    results.number("herpolhode_radius_min_closed_form", lo, "1")
-    results.number("herpolhode_radius_max_closed_form", hi, "1")
+    results.number(
+        "herpolhode_radius_min", body.herpolhode_radius_min, "1", note="least sample, refined by a parabola"
+    )
+    results.number(
+        "herpolhode_radius_max",
+        body.herpolhode_radius_max,
+        "1",
+        note="greatest sample, refined by a parabola",
+    )
+    results.number("herpolhode_radius_min_closed_form", body.herpolhode_radius_min_closed_form, "1")
+    results.number("herpolhode_radius_max_closed_form", body.herpolhode_radius_max_closed_form, "1")
     results.number(
         "herpolhode_bounds_error",
-        float(max(abs(rho_min / lo - 1), abs(rho_max / hi - 1))),
+        body.herpolhode_bounds_error,
         "1",
         note="measured extremes of the herpolhode's radius against the closed forms (relative)",
     )
-    kappa = _curvature(I, w)
     results.number(
         "herpolhode_curvature_ratio",
-        float(np.min(kappa) / np.max(kappa)),
+        body.herpolhode_curvature_ratio,
         "1",
         note="least over greatest signed curvature of the herpolhode along the run: positive, no inflexion",
     )
-    # rolling without slipping: the paths of the contact point on the body and on the plane have equal length
-    body_arc = float(np.sum(np.linalg.norm(np.diff(x, axis=0), axis=1)))
-    space_arc = float(np.sum(np.linalg.norm(np.diff(x_space, axis=0), axis=1)))
     results.number(
         "rolling_arc_difference",
-        abs(space_arc / body_arc - 1.0),
+        body.rolling_arc_difference,
         "1",
         note="herpolhode length over polhode length, less 1, over the run",
     )
-    crossings = int(np.sum(np.diff(np.sign(w[:, 0])) != 0))
-    results.number("poinsot_half_periods", crossings, "1", note="sign changes of $p$ over the run")
-    shown = 2  # polhode periods drawn: more fill the ring
-    change = np.flatnonzero(np.diff(np.sign(w[:, 0])) != 0)
-    end = change[2 * shown] + 1 if len(change) > 2 * shown else len(w)
-    _herpolhode_figure(results, x_space[:end], n_space[0], lo, hi, shown, I)
-    conjugate_plane(results, I)
-    triangle_inequality(results)
-    invariable_cone(results, I)
+    results.number("poinsot_half_periods", body.half_periods, "1", note="sign changes of $p$ over the run")
+    _herpolhode_figure(
+        results,
+        body.herpolhode_shown,
+        body.invariable_line,
+        body.herpolhode_radius_min_closed_form,
+        body.herpolhode_radius_max_closed_form,
+        body.periods_shown,
+        body.moments,
+    )
 
 
 def _herpolhode_figure(results, x_space, n0, lo, hi, periods, I):
@@ -225,7 +285,13 @@ def _herpolhode_figure(results, x_space, n0, lo, hi, periods, I):
     )
 
 
-def conjugate_plane(results, I, chords=2000, seed=20) -> None:
+class ConjugatePlane(NamedTuple):
+    midplane_error: float  # relative to the chord
+    momentum_parallel_only_on_axes: int  # 1 if the sympy checks hold
+    chords: int
+
+
+def conjugate_plane(I, chords=2000, seed=20) -> ConjugatePlane:
     """Art. 30: the plane of the couple (normal I omega) is the diametral plane of x.Ix = 1 conjugate to
     omega: it holds the midpoints of all chords parallel to omega. Chords found by solving each line's
     quadratic."""
@@ -242,13 +308,6 @@ def conjugate_plane(results, I, chords=2000, seed=20) -> None:
         mid = x0 + 0.5 * (s1 + s2) * d
         end = x0 + s1 * d
         worst = max(worst, abs(mid @ (I * d)) / (np.linalg.norm(I * d) * np.linalg.norm(end)))
-    results.number(
-        "conjugate_midplane_error",
-        float(worst),
-        "1",
-        note="largest distance of a chord's midpoint from the plane normal to $I\\boldsymbol\\omega$ "
-        f"({chords} random chords parallel to $\\boldsymbol\\omega$, relative to the chord)",
-    )
     import sympy as sp
 
     A_, B_, C_ = sp.symbols("A B C", positive=True)
@@ -260,9 +319,22 @@ def conjugate_plane(results, I, chords=2000, seed=20) -> None:
     solutions = sp.solve(list(cross.subs({A_: 1, B_: 2, C_: 3})), [p, q, r], dict=True)
     axes = all(sum(1 for v in (s.get(p, p), s.get(q, q), s.get(r, r)) if v != 0) <= 1 for s in solutions)
     sphere = cross.subs({B_: A_, C_: A_})
+    return ConjugatePlane(
+        float(worst), int(residual == sp.zeros(3, 1) and axes and sphere == sp.zeros(3, 1)), chords
+    )
+
+
+def record_conjugate_plane(results, plane: ConjugatePlane) -> None:
+    results.number(
+        "conjugate_midplane_error",
+        plane.midplane_error,
+        "1",
+        note="largest distance of a chord's midpoint from the plane normal to $I\\boldsymbol\\omega$ "
+        f"({plane.chords} random chords parallel to $\\boldsymbol\\omega$, relative to the chord)",
+    )
     results.number(
         "momentum_parallel_only_on_axes",
-        int(residual == sp.zeros(3, 1) and axes and sphere == sp.zeros(3, 1)),
+        plane.momentum_parallel_only_on_axes,
         "1",
         note="sympy: $\\boldsymbol\\omega\\times I\\boldsymbol\\omega = ((C - B)qr, (A - C)rp, "
         "(B - A)pq)$ vanishes for $A, B, C$ = 1, 2, 3 only on a principal axis, and "
@@ -270,7 +342,14 @@ def conjugate_plane(results, I, chords=2000, seed=20) -> None:
     )
 
 
-def triangle_inequality(results, bodies=2000, seed=25) -> None:
+class TriangleInequality(NamedTuple):
+    least_margin: float  # least (I_j + I_k - I_i)/I_i
+    identity_residual: float
+    hnw_margin: float  # the Hairer-Norsett-Wanner test problem's (I_1 + I_2 - I_3)/I_3
+    bodies: int
+
+
+def triangle_inequality(bodies=2000, seed=25) -> TriangleInequality:
     """Art. 25: any two principal moments exceed the third, since I1 + I2 - I3 = 2 sum m z^2 (principal axes).
     Random clouds of point masses: the least margin (I_j + I_k - I_i)/I_i, and the identity's residual."""
     rng = np.random.default_rng(seed)
@@ -289,30 +368,42 @@ def triangle_inequality(results, bodies=2000, seed=25) -> None:
             margin = moments[j] + moments[k] - moments[i]
             least = min(least, margin / moments[i])
             residual = max(residual, abs(margin - 2.0 * z2[i]) / moments.max())
+    hnw = np.array([0.5, 2.0, 3.0])
+    return TriangleInequality(
+        float(least), float(residual), float((hnw[0] + hnw[1] - hnw[2]) / hnw[2]), bodies
+    )
+
+
+def record_triangle_inequality(results, triangle: TriangleInequality) -> None:
     results.number(
         "triangle_least_margin",
-        float(least),
+        triangle.least_margin,
         "1",
-        note=f"least $(I_j + I_k - I_i)/I_i$ over {bodies} random bodies of point masses (flat "
+        note=f"least $(I_j + I_k - I_i)/I_i$ over {triangle.bodies} random bodies of point masses (flat "
         "bodies come near 0)",
     )
     results.number(
         "triangle_identity_residual",
-        float(residual),
+        triangle.identity_residual,
         "1",
         note="largest $|I_j + I_k - I_i - 2\\sum m x_i^2|/I_\\mathrm{max}$",
     )
-    hnw = np.array([0.5, 2.0, 3.0])
     results.number(
         "hnw_triangle_margin",
-        float((hnw[0] + hnw[1] - hnw[2]) / hnw[2]),
+        triangle.hnw_margin,
         "1",
         note="the Hairer–Nørsett–Wanner test problem's $(I_1 + I_2 - I_3)/I_3$, $I$ = (0.5, 2, 3): "
         "negative, no rigid body",
     )
 
 
-def invariable_cone(results, I, span=8.0) -> None:
+class InvariableCone(NamedTuple):
+    sympy_checks: int  # 1 if (6) and the signs hold
+    planes_residual: float
+    span: float  # time units
+
+
+def invariable_cone(I, span=8.0) -> InvariableCone:
     """Art. 48: 2CT - H^2 = A(C - A)p^2 + B(C - B)q^2 (6); the cone's coefficients H^2 - 2 I_i T keep their
     signs for A < B < C; on H^2 = 2BT the invariable line stays in the planes A(B - A)p^2 = C(C - B)r^2."""
     import sympy as sp
@@ -330,13 +421,6 @@ def invariable_cone(results, I, span=8.0) -> None:
     signs = all(t.could_extract_minus_sign() is False for t in sp.Add.make_args(first)) and all(
         t.could_extract_minus_sign() is False for t in sp.Add.make_args(third)
     )
-    results.number(
-        "invariable_cone_sympy",
-        int(identity == 0 and signs),
-        "1",
-        note="sympy: (6) holds identically, and with $A < B < C$ every term of $H^2 - 2AT$ and of "
-        "$2CT - H^2$ is positive (1 if both hold)",
-    )
     # the separatrix: start in the plane A(B - A)p^2 = C(C - B)r^2, off the mean axis
     A, B, C = I
     r0 = 0.6
@@ -344,16 +428,38 @@ def invariable_cone(results, I, span=8.0) -> None:
     t, w, _ = _integrate(I, [p0, 1e-3, r0], span, 2001)
     planes = A * (B - A) * w[:, 0] ** 2 - C * (C - B) * w[:, 2] ** 2
     scale = A * (B - A) * w[:, 0] ** 2 + C * (C - B) * w[:, 2] ** 2
+    return InvariableCone(int(identity == 0 and signs), float(np.max(np.abs(planes) / scale)), span)
+
+
+def record_invariable_cone(results, cone: InvariableCone) -> None:
+    results.number(
+        "invariable_cone_sympy",
+        cone.sympy_checks,
+        "1",
+        note="sympy: (6) holds identically, and with $A < B < C$ every term of $H^2 - 2AT$ and of "
+        "$2CT - H^2$ is positive (1 if both hold)",
+    )
     results.number(
         "invariable_planes_residual",
-        float(np.max(np.abs(planes) / scale)),
+        cone.planes_residual,
         "1",
         note="$H^2 = 2BT$: largest $|A(B - A)p^2 - C(C - B)r^2|$ relative to the sum of the two "
-        f"terms over {span:g} time units",
+        f"terms over {cone.span:g} time units",
     )
 
 
-def cone_rates(results, model, amplitude, days=2.0) -> None:
+class ConeRates(NamedTuple):
+    """Lamb Art. 47 (3) on the rigid symmetric Earth, rates in rad/d."""
+
+    psi_dot_measured: float
+    psi_dot_closed_form: float
+    chi_dot_measured: float
+    chi_dot_closed_form: float
+    cone_rates_error: float
+    no_slip_cones_ratio: float
+
+
+def cone_rates(model, amplitude, days=2.0) -> ConeRates:
     """Lamb Art. 47 (3) on the rigid symmetric Earth: psi' and chi' measured from an integration of the body
     with its attitude (DOP853), against the forms in the measured alpha = ZOC and beta = JOC."""
     from ...models import wobble
@@ -383,6 +489,20 @@ def cone_rates(results, model, amplitude, days=2.0) -> None:
     sin_alpha_minus_beta = -np.linalg.norm(cross) / (wn * Ln)  # C > A: beta > alpha
     psi_form = float(omega * sin_beta / sin_alpha)
     chi_form = float(omega * sin_alpha_minus_beta / sin_alpha)
+    return ConeRates(
+        psi_dot_measured=psi_dot,
+        psi_dot_closed_form=psi_form,
+        chi_dot_measured=chi_dot,
+        chi_dot_closed_form=chi_form,
+        cone_rates_error=float(max(abs(psi_dot / psi_form - 1.0), abs(chi_dot / chi_form - 1.0))),
+        # lecture notes: the body cone rolls on the space cone, Omega_b sin(theta_b) = Omega_s sin(theta_s)
+        no_slip_cones_ratio=float(abs(chi_dot) * sin_beta / (psi_dot * abs(sin_alpha_minus_beta))),
+    )
+
+
+def record_cone_rates(results, rates: ConeRates) -> None:
+    psi_dot, psi_form = rates.psi_dot_measured, rates.psi_dot_closed_form
+    chi_dot, chi_form = rates.chi_dot_measured, rates.chi_dot_closed_form
     results.number("psi_dot_measured", psi_dot, "rad/d", note="the plane $ZOC$ about the invariable line")
     results.number("psi_dot_closed_form", psi_form, "rad/d", note="$\\omega\\sin\\beta/\\sin\\alpha$")
     results.number("psi_dot_relative_error", psi_dot / psi_form - 1.0, "1")
@@ -399,14 +519,13 @@ def cone_rates(results, model, amplitude, days=2.0) -> None:
     results.number("chi_dot_relative_error", chi_dot / chi_form - 1.0, "1")
     results.number(
         "cone_rates_error",
-        float(max(abs(psi_dot / psi_form - 1.0), abs(chi_dot / chi_form - 1.0))),
+        rates.cone_rates_error,
         "1",
         note="the larger relative error of $\\dot\\psi$ and $\\dot\\chi$ against Lamb Art. 47 (3)",
     )
-    # lecture notes: the body cone rolls on the space cone, Omega_b sin(theta_b) = Omega_s sin(theta_s)
     results.number(
         "no_slip_cones_ratio",
-        float(abs(chi_dot) * sin_beta / (psi_dot * abs(sin_alpha_minus_beta))),
+        rates.no_slip_cones_ratio,
         "1",
         note="$\\Omega_\\mathrm{b}\\sin\\theta_\\mathrm{b}/(\\Omega_\\mathrm{s}\\sin\\theta_\\mathrm{s})$, "
         "measured rates, $\\theta_\\mathrm{b} = \\beta$, $\\theta_\\mathrm{s} = \\beta - \\alpha$",
