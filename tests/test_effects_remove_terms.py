@@ -79,7 +79,7 @@ def test_chandler_removing_elastic_yielding_gives_eulers_period_back():
 
 def test_chandler_removing_dissipation_stops_the_decay():
     """With Q the amplitude falls as exp(-sigma t / 2Q), sigma the wobble's rate; without it, it keeps."""
-    _, rate, kept = _wobble({})
+    _, _, kept = _wobble({})
     _, damped_rate, decay = _wobble({"dissipation": {"Q": 50.0}})
     assert abs(kept) < 1e-12
     assert decay == pytest.approx(-damped_rate / (2 * 50.0), rel=2e-3)

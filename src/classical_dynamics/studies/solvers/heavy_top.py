@@ -46,7 +46,7 @@ def run(scene, results, quick):
     body = scene.data["top"]
     numerics = scene.data.get("numerics", {})
     couple = tm.EFFECTS.assemble(scene.data.get("effects") or {}, None)  # the model is the listed effects
-    top = tm.Top(float(body["A"]), float(body["C"]), couple.get("gravity", 0.0))
+    top = tm.Top(float(body["A"]), float(body["C"]), couple["gravity"])  # check() requires it
     rtol = float(numerics.get("rtol", 1e-12))
     nutations = int(body.get("nutations", 200)) // (10 if quick else 1)
     results.number("A", top.A, "1")
