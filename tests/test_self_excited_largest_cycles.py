@@ -16,22 +16,6 @@ from classical_dynamics.studies.self_excited import portrait
 BODY = se.Body.from_moments([3.0, 2.2, 1.2])
 
 
-class Numbers:
-    """A stand-in for Results that keeps the numbers, hard cases and tables."""
-
-    def __init__(self):
-        self.n, self.hard, self.tables = {}, {}, {}
-
-    def number(self, key, value, unit, note=""):
-        self.n[key] = value
-
-    def hard_case(self, name, description, measured, bound, unit=""):
-        self.hard[name] = (measured, bound)
-
-    def table(self, key, frame, caption, headers=None):
-        self.tables[key] = frame
-
-
 def test_c1_of_2_29_is_zero_at_lees_start_symbolically():
     """(2.29) with C1 = 0 at phi2 = -sigma3 has p1^2 = m1/nu: solved for C1 there it is exactly zero
     (sympy)."""
@@ -51,9 +35,7 @@ def test_c1_of_2_29_is_zero_at_lees_start_symbolically():
 
 
 def test_start_with_c1_zero_closes_and_a_start_just_off_it_does_not():
-    r = Numbers()
-    lc.c1_zero_start(r, 0.5, 0.1)
-    assert abs(r.n["c1_zero_start_closure"]) < 1e-9
+    assert abs(lc.c1_zero_start(0.5, 0.1)) < 1e-9
     sigma3 = np.arctan(-1.0 / 0.2)
     start = np.sqrt(5.0) + 1e-3  # C1 != 0: the term C1 e^{2 nu phi2} grows over the turn
     sol = solve(
@@ -84,11 +66,10 @@ def test_just_below_F1_runs_away_just_above_tends_to_F(offset, escapes):
 
 
 def test_reversal_in_eulers_equations_runs_to_the_negative_x_axis():
-    r = Numbers()
-    lc.reversal(r, BODY, 0.5, 0.1, 1.0)
-    assert r.n["below_F1_escapes"] == 1
-    assert r.n["below_F1_direction"] == pytest.approx(-1.0, abs=1e-9)
-    assert r.n["above_F1_distance_tau60"] < 1e-6
+    v = lc.reversal(BODY, 0.5, 0.1, 1.0)
+    assert v.escaped
+    assert v.direction == pytest.approx(-1.0, abs=1e-9)
+    assert v.above_distance < 1e-6
 
 
 def test_f1_above_f2_below_nu_star_and_below_above_it():
@@ -112,55 +93,49 @@ def test_the_sign_change_of_f1_minus_f2_is_lees_nu_star(m1):
 
 
 def test_figure_2_12_numbers_and_zoom_table_against_the_closed_form():
-    r = Numbers()
-    lc.figure_2_12(r, 0.5, 0.1, zoom=True)
-    measured, bound = r.hard["separatrix_crossings"]
-    assert measured < bound
-    zoom = r.tables["zoom"]
+    v = lc.figure_2_12(0.5, 0.1)
+    assert v.deviation < lc.CROSSING_BOUND
+    zoom = lc.zoom_table(0.5, 0.1, v.crossings)
     crossing = zoom[zoom.element == "crossing"].sort_values("curve")
     assert list(crossing.curve) == [1, 2, 3, 4]
-    assert crossing.p1.iloc[0] == pytest.approx(r.n["f1_height"], abs=1e-5)
+    assert crossing.p1.iloc[0] == pytest.approx(v.crossings["f1"], abs=1e-5)
     assert set(zoom.element) >= {"separatrix_T", "limit_cycle_F", "saddle", "center", "window"}
 
 
 def test_omega_on_F_returns_after_two_turns_of_phi2_not_one():
-    r = Numbers()
-    lc.periodic_motion(r, BODY, 0.5, 0.1, 1.0)
-    assert r.n["omega_period_tau_F_measured"] == pytest.approx(2 * se.limit_cycle_period(0.5, 0.1), rel=1e-9)
-    assert r.n["omega_return_error"] < 1e-9
-    assert r.n["omega_half_reversed_error"] < 1e-9
-    assert r.n["omega_half_distance"] > 0.5
+    v = lc.periodic_motion(BODY, 0.5, 0.1, 1.0)
+    assert v.period_tau == pytest.approx(2 * se.limit_cycle_period(0.5, 0.1), rel=1e-9)
+    assert v.return_error < 1e-9
+    assert v.half_reversed_error < 1e-9
+    assert v.half_distance > 0.5
 
 
 def test_permanent_rotations_about_x_and_F_shrinking_onto_the_stable_one():
-    r = Numbers()
-    lc.permanent_rotations(r, BODY, 0.5, 0.1, 1.0)
+    v = lc.permanent_rotations(BODY, 0.5, 0.1, 1.0)
     L = se.LargestAxis.with_plane_parameters(BODY, 0.5, -0.1, 1.0)
-    assert r.n["x_rotation_p"] == pytest.approx(np.sqrt(L.m / -L.mu), rel=1e-14)
-    assert r.n["x_rotation_drift"] < 1e-12
-    assert r.n["x_rotation_plus_kicked"] < 1e-5
-    assert r.n["x_rotation_minus_rate"] == pytest.approx(2 * np.sqrt(-L.m * L.mu), rel=1e-3)
-    ratio = r.tables["x_rotation_limit"].ratio.to_numpy()
+    assert v.P == pytest.approx(np.sqrt(L.m / -L.mu), rel=1e-14)
+    assert v.drift < 1e-12
+    assert v.plus_kicked < 1e-5
+    assert v.minus_rate == pytest.approx(2 * np.sqrt(-L.m * L.mu), rel=1e-3)
+    ratio = v.limit.ratio.to_numpy()
     assert np.all(np.diff(np.abs(1 - ratio)) < 0) and abs(1 - ratio[-1]) < 0.01
 
 
 def test_m1_passes_one_where_the_closed_form_says_and_x_stays_stable():
-    r = Numbers()
-    lc.axis_stable(r, BODY, 1.5, 0.1, 1.0)
+    v = lc.axis_stable(BODY, 1.5, 0.1, 1.0)
     L = se.LargestAxis.with_plane_parameters(BODY, 1.5, -0.1, 1.0)
     b, c = BODY.b, BODY.c
-    assert r.n["delta_m1_one"] == pytest.approx(np.sqrt(2 * L.m / (L.R - L.mu * (b + c))), rel=1e-12)
-    assert se.LargestAxis(BODY, L.m, L.mu, 0.5 * r.n["delta_m1_one"]).m1 > 1.0
-    assert r.n["axis_angle_ratio"] < 10
+    assert v.delta_m1_one == pytest.approx(np.sqrt(2 * L.m / (L.R - L.mu * (b + c))), rel=1e-12)
+    assert se.LargestAxis(BODY, L.m, L.mu, 0.5 * v.delta_m1_one).m1 > 1.0
+    assert v.angle_ratio < 10
 
 
 def test_other_torques_of_section_2_6_reduce_to_the_planes():
-    r = Numbers()
-    lc.torque_yz(r, BODY, 0.5, 1.0)
-    lc.torque_grammel(r, BODY, 0.5, 0.1, 1.0)
-    assert r.n["yz_torque_m1"] == pytest.approx(0.5, rel=1e-12)
-    assert r.n["yz_torque_overlay"] < 1e-8 and r.n["yz_torque_energy_spread"] < 1e-10
-    assert r.n["grammel_overlay"] < 1e-8 and r.n["grammel_c1_spread"] < 1e-10 and r.n["grammel_to_F"] < 1e-6
+    yz = lc.torque_yz(BODY, 0.5, 1.0)
+    grammel = lc.torque_grammel(BODY, 0.5, 0.1, 1.0)
+    assert yz.m1 == pytest.approx(0.5, rel=1e-12)
+    assert yz.overlay < 1e-8 and yz.energy_spread < 1e-10
+    assert grammel.overlay < 1e-8 and grammel.c1_spread < 1e-10 and grammel.to_F < 1e-6
 
 
 def test_the_torque_laws_differ_so_the_overlay_can_fail():
@@ -176,9 +151,8 @@ def test_the_torque_laws_differ_so_the_overlay_can_fail():
 def test_the_zoom_panel_draws_its_crossings_with_their_names():
     from classical_dynamics.results import new_figure
 
-    r = Numbers()
-    lc.figure_2_12(r, 0.5, 0.1, zoom=True)
+    zoom = lc.zoom_table(0.5, 0.1, lc.figure_2_12(0.5, 0.1).crossings)
     fig, ax = new_figure()
-    portrait.draw(ax, r.tables["zoom"], "p1", small=True)
+    portrait.draw(ax, zoom, "p1", small=True)
     assert sorted(t.get_text() for t in ax.texts) == ["$f_1$", "$f_2$", "$g_1$", "$g_2$"]
-    assert isinstance(r.tables["zoom"], pd.DataFrame)
+    assert isinstance(zoom, pd.DataFrame)

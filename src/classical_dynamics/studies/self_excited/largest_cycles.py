@@ -12,6 +12,8 @@
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 import pandas as pd
 
@@ -88,15 +90,27 @@ def nu_where_f1_meets_f2(m1, lo=0.02, hi=1.0):
     return brentq(gap, lo, hi, xtol=1e-13, rtol=1e-14)
 
 
-def figure_2_12(results, m1, nu, zoom=False):
-    """The numbers of Lee's Figure 2.12 for this plane; with zoom, the table of the grid's panel (one
-    period)."""
+class Figure212(NamedTuple):
+    """Lee's Figure 2.12 for one plane: the crossings (see `crossings`) and their distance from (2.13)."""
+
+    crossings: dict
+    deviation: float  # the integrated f1, f2 against the closed form (2.13), the larger difference
+
+
+def figure_2_12(m1, nu) -> Figure212:
+    """The numbers of Lee's Figure 2.12 for this plane."""
     x = crossings(m1, nu)
     s1 = float(np.arcsin(-m1))
     c = np.pi - s1
     closed = [
         float(np.sqrt(se.separatrix_p1_squared(np.array([c]), m1, -nu, s))[0]) for s in (s1, s1 + 2 * np.pi)
     ]
+    return Figure212(x, max(abs(x["f1"] - closed[0]), abs(x["f2"] - closed[1])))
+
+
+def _record_figure_2_12(results, values: Figure212, zoom=None):
+    """zoom: the table of the grid's panel (zoom_table), recorded after the numbers."""
+    x = values.crossings
     results.number(
         "f1_height",
         x["f1"],
@@ -127,23 +141,31 @@ def figure_2_12(results, m1, nu, zoom=False):
         note="1 if T2 (backward) falls to the phi2-axis (at g2) before the vertical through S1",
     )
     results.number("g2_phi2", float(x["g2"][0]), "rad", note="where T2, traced back, ends")
-    deviation = max(abs(x["f1"] - closed[0]), abs(x["f2"] - closed[1]))
-    results.number("crossing_closed_deviation", deviation, "1", note="integrated f1, f2 against (2.13)")
+    results.number(
+        "crossing_closed_deviation", values.deviation, "1", note="integrated f1, f2 against (2.13)"
+    )
     results.hard_case(
         "separatrix_crossings",
         "The heights $f_1$, $f_2$ of Lee's Figure 2.12, integrated from the "
         "saddles, against the closed form (2.13) (largest difference)",
-        deviation,
+        values.deviation,
         CROSSING_BOUND,
     )
-    if zoom:
-        _zoom_table(results, m1, nu, x)
-    return x
+    if zoom is not None:
+        results.table(
+            "zoom",
+            zoom,
+            "Lee's Figure 2.12, one period of the plane: the separatrices $T_1$ (out of $S_1$) "
+            "and $T_2$ (into "
+            "$S_2$) integrated from the saddles, $F$ and $F_1$, the singular points, and the crossings "
+            "(curve 1 to 4: $f_1$, $f_2$, $g_1$, $g_2$).",
+            headers=portrait.TABLE_HEADERS,
+        )
 
 
-def _zoom_table(results, m1, nu, x):
+def zoom_table(m1, nu, x) -> pd.DataFrame:
     """One period [S1 - 0.3, S2 + 0.3] in the portrait table's format, for the grid's panel (Lee's Figure
-    2.12)."""
+    2.12); x: the plane's crossings."""
     s1 = float(np.arcsin(-m1))
     lo, hi = s1 - 0.3, s1 + 2 * np.pi + 0.3
     drawing = portrait.Drawing("p1", (lo, hi, 8.0))
@@ -169,20 +191,11 @@ def _zoom_table(results, m1, nu, x):
     )
     top = 1.25 * max(x["f1"], x["f2"], float(np.max(F)) if F is not None else 0.0)
     drawing.window(lo, hi, top)
-    results.table(
-        "zoom",
-        drawing.frame().round({"phi2": portrait.DIGITS, "p1": portrait.DIGITS}),
-        "Lee's Figure 2.12, one period of the plane: the separatrices $T_1$ (out of $S_1$) and $T_2$ (into "
-        "$S_2$) integrated from the saddles, $F$ and $F_1$, the singular points, and the crossings "
-        "(curve 1 to 4: $f_1$, $f_2$, $g_1$, $g_2$).",
-        headers=portrait.TABLE_HEADERS,
-    )
+    return drawing.frame().round({"phi2": portrait.DIGITS, "p1": portrait.DIGITS})
 
 
-def nu_star_bisection(results, m1):
-    nu = nu_where_f1_meets_f2(m1)
+def _record_nu_star_bisection(results, nu):
     results.number("nu_star_bisection", nu, "1", note="nu where the integrated f1 - f2 changes sign (brentq)")
-    return nu
 
 
 # --- omega on F, the permanent rotations, the reversal ------------------------------------------------------
@@ -191,7 +204,16 @@ def _r_up(t, w, p, out):
     out[0] = w[2]
 
 
-def periodic_motion(results, body, m1, nu, delta):
+class PeriodicMotion(NamedTuple):
+    """Euler's equations on F: omega's period and how far omega is from its start (relative to |omega0|)."""
+
+    period_tau: float  # the first upward crossing of r through zero, in tau
+    return_error: float  # |omega(T) - omega0|
+    half_reversed_error: float  # |omega(T/2) - (p0, -q0, -r0)|
+    half_distance: float  # |omega(T/2) - omega0|
+
+
+def periodic_motion(body, m1, nu, delta) -> PeriodicMotion:
     """Euler's equations started on F where r = 0, q > 0 (phi1 = 0, phi2 = sigma1): the first upward crossing
     of r through zero is omega's period; at it omega is back, and at the period of p (half of it) (q, r) is
     reversed."""
@@ -208,36 +230,55 @@ def periodic_motion(results, body, m1, nu, delta):
         events=Events(_r_up, 1, (1,)),
     )
     size = float(np.linalg.norm(w0))
-    measured = float(sol.event_t[0]) * L.time_scale
+    reversed_ = w0 * np.array([1.0, -1.0, -1.0])
+    return PeriodicMotion(
+        period_tau=float(sol.event_t[0]) * L.time_scale,
+        return_error=float(np.linalg.norm(sol.y_eval[1] - w0)) / size,
+        half_reversed_error=float(np.linalg.norm(sol.y_eval[0] - reversed_)) / size,
+        half_distance=float(np.linalg.norm(sol.y_eval[0] - w0)) / size,
+    )
+
+
+def _record_periodic_motion(results, values: PeriodicMotion):
     results.number(
         "omega_period_tau_F_measured",
-        measured,
+        values.period_tau,
         "τ",
         note="the first return of r through zero upward "
         "(φ1 one full turn) along Euler's equations, started on F",
     )
     results.number(
         "omega_return_error",
-        float(np.linalg.norm(sol.y_eval[1] - w0)) / size,
+        values.return_error,
         "1",
         note="|ω(T) − ω0|/|ω0| at T = twice Jacobi's period of p1",
     )
-    reversed_ = w0 * np.array([1.0, -1.0, -1.0])
     results.number(
         "omega_half_reversed_error",
-        float(np.linalg.norm(sol.y_eval[0] - reversed_)) / size,
+        values.half_reversed_error,
         "1",
         note="|ω(T/2) − (p0, −q0, −r0)|/|ω0|: after one period of p, (q, r) is reversed",
     )
     results.number(
         "omega_half_distance",
-        float(np.linalg.norm(sol.y_eval[0] - w0)) / size,
+        values.half_distance,
         "1",
         note="|ω(T/2) − ω0|/|ω0|: not back after the period of p",
     )
 
 
-def permanent_rotations(results, body, m1, nu, delta):
+class PermanentRotations(NamedTuple):
+    """The permanent rotations p = +-P about x (rates per time unit) and F shrinking onto the + one."""
+
+    P: float  # sqrt(m/|mu|)
+    drift: float  # largest change of omega started on either
+    plus_kicked: float  # largest distance from (P, 0, 0) after a kick of 1e-6
+    minus_rate: float  # growth rate of |p + P| off the - one, fitted
+    minus_rate_expected: float  # 2 sqrt(m|mu|)
+    limit: pd.DataFrame  # by delta: m1, the time mean of p on F, its ratio to P
+
+
+def permanent_rotations(body, m1, nu, delta) -> PermanentRotations:
     """p = +-sqrt(m/|mu|) (q = r = 0) are rest points of Euler's equations with mu < 0."""
     L = se.LargestAxis.with_plane_parameters(body, m1, -nu, delta)
     m, mu = L.m, L.mu
@@ -249,13 +290,6 @@ def permanent_rotations(results, body, m1, nu, delta):
         w0 = np.array([sign * P, 0.0, 0.0])
         sol = solve(Problem(se.euler_largest, w0, (0.0, span), par), "dop853", rtol=1e-13, atol=1e-15)
         drift = max(drift, float(np.max(np.abs(sol.y - w0))))
-    results.number("x_rotation_p", P, "1/time", note="√(m/|μ|): the permanent rotations about x at ±this")
-    results.number(
-        "x_rotation_drift",
-        drift,
-        "1/time",
-        note="largest change of ω started at (±√(m/|μ|), 0, 0): + over t ≤ 100, − over t ≤ 20",
-    )
     kick = 1e-6
     t = np.linspace(0.0, t_end, 2001)
     sol = solve(
@@ -265,12 +299,7 @@ def permanent_rotations(results, body, m1, nu, delta):
         atol=1e-18,
         t_eval=t,
     )
-    results.number(
-        "x_rotation_plus_kicked",
-        float(np.max(np.linalg.norm(sol.y_eval - [P, 0, 0], axis=1))),
-        "1/time",
-        note="largest distance from (√(m/|μ|), 0, 0), t ≤ 100, after a kick of 10⁻⁶ in p, q, r",
-    )
+    plus_kicked = float(np.max(np.linalg.norm(sol.y_eval - [P, 0, 0], axis=1)))
     small = 1e-9  # kicked in p only: p − P grows like e^{2√(m|μ|) t} while small
     sol = solve(
         Problem(se.euler_largest, np.array([-P - small, 0.0, 0.0]), (0.0, t_end), par),
@@ -283,13 +312,6 @@ def permanent_rotations(results, body, m1, nu, delta):
     gap = np.abs(sol.y_eval[:, 0] + P)
     use = np.isfinite(gap) & (gap > 2 * small) & (gap < 1e-6)
     rate = float(np.polyfit(t[use], np.log(gap[use]), 1)[0])
-    results.number(
-        "x_rotation_minus_rate",
-        rate,
-        "1/time",
-        note="growth rate of |p + √(m/|μ|)| from 2·10⁻⁹ to 10⁻⁶ (fitted), started 10⁻⁹ off the − rotation",
-    )
-    results.number("x_rotation_minus_rate_expected", 2.0 * np.sqrt(m * abs(mu)), "1/time", note="2√(m|μ|)")
     rows = []
     for d in (1.0, 0.3, 0.1):
         Ld = se.LargestAxis(L.body, m, mu, d)
@@ -300,15 +322,42 @@ def permanent_rotations(results, body, m1, nu, delta):
         sol = solve(Problem(se.euler_largest, w0, (0.0, T), par), "dop853", rtol=1e-12, atol=1e-14, t_eval=ts)
         mean = float(np.trapezoid(sol.y_eval[:, 0], ts) / T)
         rows.append({"delta": d, "m1": m1d, "mean_p": mean, "ratio": mean / P})
+    return PermanentRotations(P, drift, plus_kicked, rate, 2.0 * np.sqrt(m * abs(mu)), pd.DataFrame(rows))
+
+
+def _record_permanent_rotations(results, values: PermanentRotations):
+    results.number(
+        "x_rotation_p", values.P, "1/time", note="√(m/|μ|): the permanent rotations about x at ±this"
+    )
+    results.number(
+        "x_rotation_drift",
+        values.drift,
+        "1/time",
+        note="largest change of ω started at (±√(m/|μ|), 0, 0): + over t ≤ 100, − over t ≤ 20",
+    )
+    results.number(
+        "x_rotation_plus_kicked",
+        values.plus_kicked,
+        "1/time",
+        note="largest distance from (√(m/|μ|), 0, 0), t ≤ 100, after a kick of 10⁻⁶ in p, q, r",
+    )
+    results.number(
+        "x_rotation_minus_rate",
+        values.minus_rate,
+        "1/time",
+        note="growth rate of |p + √(m/|μ|)| from 2·10⁻⁹ to 10⁻⁶ (fitted), started 10⁻⁹ off the − rotation",
+    )
+    results.number("x_rotation_minus_rate_expected", values.minus_rate_expected, "1/time", note="2√(m|μ|)")
+    for d, mean in zip(values.limit.delta, values.limit.mean_p):
         results.number(
             f"mean_p_F_delta_{d:g}".replace(".", "_"),
-            mean,
+            float(mean),
             "1/time",
             note=f"time mean of p over one period of ω on F, δ = {d:g} (m, μ fixed), Euler's equations",
         )
     results.table(
         "x_rotation_limit",
-        pd.DataFrame(rows),
+        values.limit,
         "As $\\delta \\to 0$ (the torque fixed) $F$ shrinks onto "
         "the permanent rotation $p = \\sqrt{m/|\\mu|}$: the time mean of $p$ over one period of "
         "$\\boldsymbol{\\omega}$ on $F$, from Euler's equations.",
@@ -321,7 +370,16 @@ def permanent_rotations(results, body, m1, nu, delta):
     )
 
 
-def reversal(results, body, m1, nu, delta):
+class Reversal(NamedTuple):
+    """Below F1 in Euler's equations, above F1 in the plane."""
+
+    escaped: bool  # |omega| passed the bound in finite time
+    direction: float  # p/|omega| where it did
+    escape_tau: float
+    above_distance: float  # |p1 - F(phi2)| at tau = 60 from just above F1
+
+
+def reversal(body, m1, nu, delta) -> Reversal:
     """A start 0.5 below F1 (phi2 = 0) in Euler's equations: |omega| -> infinity along the negative x-axis. A
     start 0.05 above F1 in the plane: on F at tau = 60."""
     F0 = float(se.limit_cycle_p1(np.zeros(1), m1, nu)[0])
@@ -335,19 +393,8 @@ def reversal(results, body, m1, nu, delta):
         bound=portrait.BLOW_UP_BOUND,
     )
     escaped = sol.status == "blow-up"
-    results.number(
-        "below_F1_escapes",
-        int(escaped),
-        "1",
-        note="1 if Euler's equations from 0.5 below F1 leave every bound (|ω| > 10⁸) in finite time",
-    )
-    results.number(
-        "below_F1_direction",
-        float(sol.y[0] / np.linalg.norm(sol.y)),
-        "1",
-        note="p/|ω| where it left the bound: −1 is the negative x-axis",
-    )
-    results.number("below_F1_escape_tau", float(sol.t) * L.time_scale, "τ", note="when |ω| passed 10⁸ (τ)")
+    direction = float(sol.y[0] / np.linalg.norm(sol.y))
+    escape_tau = float(sol.t) * L.time_scale
     sol = solve(
         Problem(se.plane_largest, [0.0, -F0 + 0.05], (0.0, 60.0), [m1, -nu, 1.0]),
         "dop853",
@@ -355,16 +402,34 @@ def reversal(results, body, m1, nu, delta):
         atol=1e-14,
     )
     on_F = float(se.limit_cycle_p1(np.array([sol.y[0]]), m1, nu)[0])
+    return Reversal(escaped, direction, escape_tau, abs(float(sol.y[1]) - on_F))
+
+
+def _record_reversal(results, values: Reversal):
+    results.number(
+        "below_F1_escapes",
+        int(values.escaped),
+        "1",
+        note="1 if Euler's equations from 0.5 below F1 leave every bound (|ω| > 10⁸) in finite time",
+    )
+    results.number(
+        "below_F1_direction",
+        values.direction,
+        "1",
+        note="p/|ω| where it left the bound: −1 is the negative x-axis",
+    )
+    results.number("below_F1_escape_tau", values.escape_tau, "τ", note="when |ω| passed 10⁸ (τ)")
     results.number(
         "above_F1_distance_tau60",
-        abs(float(sol.y[1]) - on_F),
+        values.above_distance,
         "1",
         note="|p1 − F(φ2)| at τ = 60 from 0.05 above F1 at φ2 = 0",
     )
 
 
-def c1_zero_start(results, m1, nu):
-    """Lee (2.29): from phi2 = -sigma3, p1 = sqrt(m1/nu) C1 = 0, and p1 returns after one turn of phi2."""
+def c1_zero_start(m1, nu) -> float:
+    """Lee (2.29): from phi2 = -sigma3, p1 = sqrt(m1/nu) C1 = 0, and p1 returns after one turn of phi2:
+    p1 after the turn minus the start."""
     sigma3 = float(np.arctan(-1.0 / (2.0 * nu)))
     start = float(np.sqrt(m1 / nu))
     sol = solve(
@@ -373,16 +438,28 @@ def c1_zero_start(results, m1, nu):
         rtol=1e-13,
         atol=1e-15,
     )
+    return float(sol.y[1]) - start
+
+
+def _record_c1_zero_start(results, closure):
     results.number(
         "c1_zero_start_closure",
-        float(sol.y[1]) - start,
+        closure,
         "1",
         note="p1 after one turn of φ2 minus its "
         "start √(m1/ν) at φ2 = −σ3 (C1 = 0), integrated with φ2 as the clock",
     )
 
 
-def axis_stable(results, body, m1, nu, delta):
+class AxisStable(NamedTuple):
+    """Lee (2.37)-(2.38): delta where m1 passes 1, and omega started near +x."""
+
+    delta_m1_one: float
+    start_angle: float  # the start's angle from +x (rad)
+    angle_ratio: float  # the largest angle from +x over t <= 200, over the start's
+
+
+def axis_stable(body, m1, nu, delta) -> AxisStable:
     """Lee (2.37)-(2.38): the torque fixed, m1(delta) grows without bound as delta -> 0; it passes 1 at
     delta_1. From a start a small angle off +x (delta = 0.01), omega stays near +x."""
     from scipy.optimize import brentq
@@ -390,12 +467,6 @@ def axis_stable(results, body, m1, nu, delta):
     L = se.LargestAxis.with_plane_parameters(body, m1, -nu, delta)
     m, mu = L.m, L.mu
     d1 = brentq(lambda d: se.LargestAxis(L.body, m, mu, d).m1 - 1.0, 1e-3, 1e3, xtol=1e-15, rtol=1e-15)
-    results.number(
-        "delta_m1_one",
-        d1,
-        "1",
-        note="δ where m1(δ) of (2.9) = 1 for this scene's torque (brentq); m1 > 1 below",
-    )
     P = np.sqrt(m / abs(mu))
     d = 0.01
     w0 = np.array([P, d * np.sqrt(body.b), 0.0])
@@ -410,12 +481,25 @@ def axis_stable(results, body, m1, nu, delta):
     )
     y = sol.y_eval
     angle = np.arctan2(np.hypot(y[:, 1], y[:, 2]), y[:, 0])
+    return AxisStable(d1, angle0, float(np.max(angle)) / angle0)
+
+
+def _record_axis_stable(results, values: AxisStable):
     results.number(
-        "axis_start_angle", angle0, "rad", note="the start's angle from +x: p = √(m/|μ|), δ = 0.01"
+        "delta_m1_one",
+        values.delta_m1_one,
+        "1",
+        note="δ where m1(δ) of (2.9) = 1 for this scene's torque (brentq); m1 > 1 below",
+    )
+    results.number(
+        "axis_start_angle",
+        values.start_angle,
+        "rad",
+        note="the start's angle from +x: p = √(m/|μ|), δ = 0.01",
     )
     results.number(
         "axis_angle_ratio",
-        float(np.max(angle)) / angle0,
+        values.angle_ratio,
         "1",
         note="largest angle from +x over t ≤ 200 over the start's",
     )
@@ -454,26 +538,48 @@ def _overlay(rhs, physical, L, plane, starts, span=6.0):
 OTHER_STARTS = ((2.0, 0.0), (0.0, 1.2), (-3.0, -0.6), (0.0, 3.0))
 
 
-def torque_yz(results, body, m1, delta, mu_per_moment=-0.3):
+class TorqueYZ(NamedTuple):
+    """Lee §2.6: M + mu0 (q^2 + r^2) along x against the conservative plane."""
+
+    mu0: float  # mu0/A
+    m1: float  # m1 of (2.9) for that torque
+    overlay: float  # Euler's equations mapped, against (2.10) with mu1 = 0 (largest deviation)
+    energy_spread: float  # E along them, relative
+
+
+def torque_yz(body, m1, delta, mu_per_moment=-0.3) -> TorqueYZ:
     """Torque M + mu0 (q^2 + r^2) along x: the conservative plane (mu1 = 0) with m1 of (2.9)."""
     b, c = body.b, body.c
     R = np.sqrt(body.a**2 * b * c + mu_per_moment**2 * (b - c) ** 2)
     m = 0.5 * (m1 * delta**2 * R - mu_per_moment * delta**2 * (b + c))
     L = se.LargestAxis(body, m, mu_per_moment, delta)
     deviation, spread = _overlay(se.euler_largest_yz, L.euler_parameters(), L, (L.m1, 0.0), OTHER_STARTS)
-    results.number("yz_torque_mu0", mu_per_moment, "1", note="μ0/A of the torque M + μ0(q² + r²) along x")
-    results.number("yz_torque_m1", L.m1, "1", note="m1 of (2.9) for that torque: the scene's plane")
+    return TorqueYZ(mu_per_moment, L.m1, deviation, spread)
+
+
+def _record_torque_yz(results, values: TorqueYZ):
+    results.number("yz_torque_mu0", values.mu0, "1", note="μ0/A of the torque M + μ0(q² + r²) along x")
+    results.number("yz_torque_m1", values.m1, "1", note="m1 of (2.9) for that torque: the scene's plane")
     results.number(
         "yz_torque_overlay",
-        deviation,
+        values.overlay,
         "1",
         note="Euler's equations with M + μ0(q² + r²), mapped, "
         "against (2.10) with μ1 = 0 (largest deviation in (φ2, p1))",
     )
-    results.number("yz_torque_energy_spread", spread, "1", note="E along them, relative spread")
+    results.number("yz_torque_energy_spread", values.energy_spread, "1", note="E along them, relative spread")
 
 
-def torque_grammel(results, body, m1, nu, delta):
+class TorqueGrammel(NamedTuple):
+    """Lee §2.6: Grammel's torque M - mu0 p^2 along x against the plane (2.25)."""
+
+    mu0: float  # mu0/A giving this nu
+    overlay: float  # Euler's equations mapped with sigma1 = 0, against (2.25) (largest deviation)
+    c1_spread: float  # C1 along them, relative
+    to_F: float  # |p1 - F| at tau = 60 from 1 above F
+
+
+def torque_grammel(body, m1, nu, delta) -> TorqueGrammel:
     """Grammel's torque M - mu0 p^2 along x (mu0 > 0): the plane (2.25) with sigma1 = 0."""
     bc = np.sqrt(body.b * body.c)
     mu = 2.0 * bc * nu
@@ -482,15 +588,6 @@ def torque_grammel(results, body, m1, nu, delta):
     deviation, spread = _overlay(
         se.euler_grammel, np.array([body.a, body.b, body.c, m, mu]), L, (m1, -nu), OTHER_STARTS
     )
-    results.number("grammel_mu0", mu, "1", note="μ0/A of Grammel's torque M − μ0p² giving this ν")
-    results.number(
-        "grammel_overlay",
-        deviation,
-        "1",
-        note="Euler's equations with Grammel's torque, mapped with "
-        "σ1 = 0, against (2.25) (largest deviation in (φ2, p1))",
-    )
-    results.number("grammel_c1_spread", spread, "1", note="C1 along them, relative spread")
     F0 = float(se.limit_cycle_p1(np.zeros(1), m1, nu)[0])
     w0 = L.from_plane(0.0, F0 + 1.0)
     T = 60.0 / L.time_scale
@@ -502,24 +599,41 @@ def torque_grammel(results, body, m1, nu, delta):
     )
     end = L.to_plane(sol.y)[0]
     gap = abs(end[1] - float(se.limit_cycle_p1(np.array([end[0]]), m1, nu)[0]))
-    results.number("grammel_to_F", gap, "1", note="|p1 − F| at τ = 60 from 1 above F, Grammel's torque")
+    return TorqueGrammel(mu, deviation, spread, gap)
+
+
+def _record_torque_grammel(results, values: TorqueGrammel):
+    results.number("grammel_mu0", values.mu0, "1", note="μ0/A of Grammel's torque M − μ0p² giving this ν")
+    results.number(
+        "grammel_overlay",
+        values.overlay,
+        "1",
+        note="Euler's equations with Grammel's torque, mapped with "
+        "σ1 = 0, against (2.25) (largest deviation in (φ2, p1))",
+    )
+    results.number("grammel_c1_spread", values.c1_spread, "1", note="C1 along them, relative spread")
+    results.number(
+        "grammel_to_F", values.to_F, "1", note="|p1 − F| at τ = 60 from 1 above F, Grammel's torque"
+    )
 
 
 def run(results, data, body, m1, nu, delta):
-    """The scene's analyses of this module (none unless listed)."""
+    """The scene's analyses of this module (none unless listed): each computed, then recorded."""
     analysis = data.get("analysis", {})
     if analysis.get("separatrix_crossings"):
-        figure_2_12(results, m1, nu, zoom=bool(analysis.get("limit_cycle_motion")))
+        values = figure_2_12(m1, nu)
+        zoom = zoom_table(m1, nu, values.crossings) if analysis.get("limit_cycle_motion") else None
+        _record_figure_2_12(results, values, zoom)
     if analysis.get("limit_cycle_motion"):
-        nu_star_bisection(results, m1)
-        periodic_motion(results, body, m1, nu, delta)
-        permanent_rotations(results, body, m1, nu, delta)
-        reversal(results, body, m1, nu, delta)
-        c1_zero_start(results, m1, nu)
+        _record_nu_star_bisection(results, nu_where_f1_meets_f2(m1))
+        _record_periodic_motion(results, periodic_motion(body, m1, nu, delta))
+        _record_permanent_rotations(results, permanent_rotations(body, m1, nu, delta))
+        _record_reversal(results, reversal(body, m1, nu, delta))
+        _record_c1_zero_start(results, c1_zero_start(m1, nu))
     if analysis.get("axis_stability"):
-        axis_stable(results, body, m1, nu, delta)
+        _record_axis_stable(results, axis_stable(body, m1, nu, delta))
     other = analysis.get("other_torque")
     if other == "yz_quadratic":
-        torque_yz(results, body, m1, delta)
+        _record_torque_yz(results, torque_yz(body, m1, delta))
     elif other == "grammel":
-        torque_grammel(results, body, m1, nu, delta)
+        _record_torque_grammel(results, torque_grammel(body, m1, nu, delta))
