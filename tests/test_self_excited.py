@@ -246,14 +246,10 @@ def test_period_on_F_against_jacobis_form():
 def test_next_to_the_separatrix_each_side_keeps_its_fate(m1, nu, passages):
     """Hard case: 1e-10 either side of the separatrix, the side decides (closed orbit or run past the saddle),
     and the period inside grows like n ln(1/eps)/lambda."""
-    from classical_dynamics.results import Results
-
-    results = Results("self_excited", "t", "t")
-    largest_axis._separatrix_sides(results, m1, nu)
-    cases = {h["name"]: h for h in results.stability}
-    assert cases["separatrix_sides"]["measured"] == 0
+    sides = largest_axis.separatrix_sides(m1, nu)
+    assert sides.wrong == 0
     expected = passages / (1 - m1**2) ** 0.25
-    assert results.numbers["separatrix_period_slope"]["value"] == pytest.approx(expected, rel=0.01)
+    assert sides.slope == pytest.approx(expected, rel=0.01)
 
 
 @pytest.mark.parametrize(
@@ -495,8 +491,9 @@ def test_rare_case_without_torque_line_of_rest_points():
     assert M.form == "rare" and M.m == 0.0 and not middle_axis._turns_nowhere(M)
     results = Results("self_excited", "t", "t")
     drawing = portrait.Drawing("q1", (-4.5, 4.5, 6.0))
-    rare_case.rest_line(drawing, results, M)
-    rare_case.escape(results, M)
+    rest, escape = rare_case.rest_line_motion(M), rare_case.escape_motion(M)
+    rare_case.record_rest_line(drawing, results, rest)
+    rare_case.record_escape(results, escape)
     assert drawing.elements() == {"rest_line"}  # the line of rest points is drawn, across the plane
     cases = {h["name"]: h for h in results.stability}
     assert {
@@ -508,11 +505,9 @@ def test_rare_case_without_torque_line_of_rest_points():
     } <= set(cases)
     # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
     assert all(h["holds"] for h in cases.values()), cases
-    assert results.numbers["rest_decay_exponent"]["value"] == pytest.approx(
-        body.b / (body.a + body.c), abs=1e-9
-    )
+    assert rest.exponent == pytest.approx(body.b / (body.a + body.c), abs=1e-9)
     nu = -M.mu1  # from q1 = -1 to -1e8: 1/nu - 1/(1e8 nu)
-    assert results.numbers["blow_up_time"]["value"] == pytest.approx((1.0 - 1e-8) / nu, rel=1e-10)
+    assert escape.blow_up_time == pytest.approx((1.0 - 1e-8) / nu, rel=1e-10)
 
 
 @pytest.mark.parametrize("alpha,m,form", [((0.8, 0.3), 1.5, "cosh"), ((0.6, -0.6), 2.0, "exp-")])
@@ -597,9 +592,10 @@ def test_huge_excursion_below_the_critical_drag_closes():
     from classical_dynamics.studies.self_excited import excursions
 
     M = se.MiddleAxis.with_plane_parameters(se.Body.from_moments([3.0, 2.2, 1.2]), 0.5, -0.3, 0.8, 0.3)
+    orbit = excursions.excursion_orbit(M, excursions.excursion_start(M, 10.0))
+    assert orbit.sizes.max() / orbit.sizes[0] > 100
     results = Results("self_excited", "t", "t")
-    excursions.excursion(results, M, excursions.excursion_start(M, 10.0))
-    assert results.numbers["excursion_growth"]["value"] > 100
+    excursions.record_excursion(results, orbit)
     # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
     assert all(h["holds"] for h in results.stability)
     assert {h["name"] for h in results.stability} == {
@@ -698,16 +694,13 @@ def test_motion_in_space_on_F_two_attitudes_agree_and_the_body_does_not_return()
     L = se.LargestAxis.with_plane_parameters(BODY, m1, -nu, 1.0)
     sigma3 = np.arctan(-1.0 / (2.0 * nu))
     w0 = L.from_plane(-sigma3, float(se.limit_cycle_p1(np.array([-sigma3]), m1, nu)[0]))
-    r = _Numbers()
-    xs, ls = space.run(r, L, BODY, w0)
-    n = r.numbers
+    v = space.motion(L, BODY, w0)
+    xs, ls = v.xs, v.ls
     # omega's period in the body: two turns of phi2 on F, Jacobi's form
-    assert n["space_omega_period"] == pytest.approx(
-        2 * se.limit_cycle_period(m1, nu) / L.time_scale, rel=1e-10
-    )
-    assert n["space_angles_vs_quaternion"] < 1e-10 and n["space_momentum_vs_torque"] < 1e-10
-    assert 0.1 < n["space_theta_min"] and n["space_theta_max"] < np.pi - 0.1
-    assert n["space_turn_after_period"] > 0.01
+    assert v.omega_period == pytest.approx(2 * se.limit_cycle_period(m1, nu) / L.time_scale, rel=1e-10)
+    assert v.angles_vs_quaternion < 1e-10 and v.momentum_vs_torque < 1e-10
+    assert 0.1 < v.theta_min and v.theta_max < np.pi - 0.1
+    assert v.turn_after_period > 0.01
     assert np.allclose(np.linalg.norm(xs, axis=1), 1.0, atol=1e-12) and np.allclose(
         np.linalg.norm(ls, axis=1), 1.0
     )
@@ -739,11 +732,12 @@ def test_next_to_the_separatrix_the_sign_of_the_energy_error_decides_the_side():
     from classical_dynamics.results import Results
     from classical_dynamics.studies.self_excited import accuracy
 
+    runs = accuracy.separatrix(0.5, quick=True)
     results = Results("self_excited", "t", "t")
-    accuracy.separatrix(results, 0.5, quick=True)
-    frame = results.tables["accuracy_separatrix"][0]
+    accuracy.record_separatrix(results, runs)
+    frame = runs.frame
     assert isinstance(frame, pd.DataFrame)
-    gap = results.numbers["separatrix_energy_gap"]["value"]
+    gap = runs.gap
     assert (frame.energy_error == frame.energy_change.abs()).all()
     assert frame[frame.energy_change >= gap].wrong_side.all()  # raised past the separatrix: across
     inside = frame[~frame.wrong_side & (frame.energy_error > gap)]

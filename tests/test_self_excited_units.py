@@ -187,8 +187,9 @@ def _plane_energy(phi2, p1, m1):
 
 def test_separatrix_energy_gap_and_the_runs_that_cross_it(small_accuracy):
     m1 = 0.5
+    runs = small_accuracy.separatrix(m1, True)
     results = _results()
-    small_accuracy.separatrix(results, m1, True)
+    small_accuracy.record_separatrix(results, runs)
     got = _values(results)
     # the start: p1 on the separatrix through the saddle phi_s = -arcsin m1 at the far turning point phi_c,
     # lowered by 1e-6; its energy below the saddle's, from E written out here
@@ -196,8 +197,8 @@ def test_separatrix_energy_gap_and_the_runs_that_cross_it(small_accuracy):
     phi_c = phi_s - (np.pi - 2 * np.arcsin(m1))
     p_sep = np.sqrt(2 * (_plane_energy(phi_s, 0.0, m1) - _plane_energy(phi_c, 0.0, m1)))
     gap = _plane_energy(phi_s, 0.0, m1) - _plane_energy(phi_c, p_sep * (1 - 1e-6), m1)
-    assert got["separatrix_energy_gap"] == pytest.approx(gap, rel=1e-6)
-    frame = results.tables["accuracy_separatrix"][0]
+    assert runs.gap == pytest.approx(gap, rel=1e-6)
+    frame = runs.frame
     assert (~frame.wrong_side | (frame.energy_error >= gap)).all()  # crossing needs |dE| >= the gap
     tight = frame[(frame.kind == "tolerance") & (frame.setting == 1e-10)]
     assert (tight.energy_error < gap).all() and not tight.wrong_side.any()
@@ -213,9 +214,7 @@ def test_limit_cycle_runs_end_where_the_closed_form_puts_them(small_accuracy):
     from scipy.special import ellipk
 
     m1, nu = 1.2, 0.3
-    results = _results()
-    small_accuracy.limit_cycle(results, m1, nu, True)
-    frame = results.tables["accuracy_limit_cycle"][0]
+    frame = small_accuracy.limit_cycle(m1, nu, True)
     alpha, beta = m1 / nu, 2 / np.sqrt(1 + 4 * nu**2)
     span = 2 * 4 * ellipk(2 * beta / (alpha + beta)) / np.sqrt(alpha + beta)
     sigma3 = np.arctan(-1 / (2 * nu))
@@ -299,13 +298,13 @@ def test_degenerate_point_is_reached_algebraically_at_lees_rate(m1):
 
     # |m1| = 1: along the separatrix p1^2 = 2(x - sin x) ~ x^3/3, so dx/dtau = -x^(3/2)/sqrt3 and
     # x = 12/(tau + c)^2: C = 12 exactly (the quadrature done by hand)
-    results = _results()
-    largest_axis._degenerate_approach(results, m1)
-    got = _values(results)
-    assert got["degenerate_approach_coefficient"] == pytest.approx(12.0, rel=1e-4)
+    approach = largest_axis.degenerate_approach(m1)
+    assert approach.coefficient == pytest.approx(12.0, rel=1e-4)
     # from x = 0.5 at tau = 0: c = sqrt(12/0.5) to leading order, so x(100) is near 12/(100 + 4.9)^2
-    assert got["degenerate_distance_tau100"] == pytest.approx(12 / (100 + np.sqrt(24)) ** 2, rel=0.05)
+    assert approach.distance_tau100 == pytest.approx(12 / (100 + np.sqrt(24)) ** 2, rel=0.05)
     # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
+    results = _results()
+    largest_axis._record_degenerate_approach(results, approach)
     assert all(case["holds"] for case in results.stability)
 
 
@@ -314,8 +313,10 @@ def test_singular_points_appear_in_pairs_only_for_m1_within_one():
 
     # sin(phi2) = -m1 has two roots in (-pi, pi] for |m1| < 1 (a saddle where cos > 0, a center where
     # cos < 0) and none beyond: the figure's markers, counted here
+    values = largest_axis.singular_point_bifurcation()
+    assert values.wrong == 0
     results = _results()
-    largest_axis._singular_point_bifurcation(results)
+    largest_axis._record_singular_point_bifurcation(results, values)
     assert results.stability[0]["measured"] == 0
     fig = results.figures["bifurcation_m1"][0]
     markers = {line.get_label(): line.get_xdata() for line in fig.axes[0].lines if line.get_marker() in "xo"}
@@ -332,7 +333,9 @@ def test_cylinder_draws_f_and_its_mirror_and_a_start_that_winds_onto_f():
 
     m1, nu = 0.8, 0.2
     results = _results()
-    largest_axis._cylinder(results, m1, nu, se.singular_points(m1, -nu, -np.pi, np.pi))
+    largest_axis._record_cylinder(
+        results, largest_axis.cylinder(m1, nu, se.singular_points(m1, -nu, -np.pi, np.pi))
+    )
     fig = results.figures["cylinder"][0]
     lines = {line.get_label(): np.array(line.get_data_3d()) for line in fig.axes[0].lines}
     # F of (2.30) written out here: p1^2 = m1/nu + 2 sin(phi2 + sigma3)/sqrt(1 + 4 nu^2)

@@ -15,6 +15,8 @@ an orbit on which |omega| grows by hundreds; the reference is the start, after t
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 import pandas as pd
 
@@ -54,7 +56,16 @@ def _adaptive_rows(problem, error_of, quick):
     return rows
 
 
-def separatrix(results, m1, quick):
+class SeparatrixRuns(NamedTuple):
+    """Work and precision next to a separatrix."""
+
+    m1: float
+    gap: float  # the start's energy below the separatrix's
+    span: float  # PERIODS periods of the orbit (tau)
+    frame: pd.DataFrame  # a row per method and setting: the energy's error and change, the side it ends on
+
+
+def separatrix(m1, quick) -> SeparatrixRuns:
     """The unperturbed plane, a start SEPARATRIX_OFFSET inside the loop, heading for the saddle."""
     phi_s = -np.arcsin(m1)
     side = -1.0 if m1 >= 0 else 1.0
@@ -90,7 +101,13 @@ def separatrix(results, m1, quick):
                     "seconds": seconds,
                 }
             )
-    frame = pd.DataFrame(rows)
+    return SeparatrixRuns(m1, gap, span, pd.DataFrame(rows))
+
+
+def record_separatrix(results, values: SeparatrixRuns):
+    """The gap, the runs that crossed or kept large errors inside (counted from the frame), and the work and
+    precision's table and figure."""
+    m1, gap, span, frame = values
     results.number(
         "separatrix_energy_gap",
         gap,
@@ -167,7 +184,8 @@ def separatrix(results, m1, quick):
     )
 
 
-def limit_cycle(results, m1, nu, quick):
+def limit_cycle(m1, nu, quick) -> pd.DataFrame:
+    """PERIODS periods on F: the distance at the end from the closed form's point, by method and setting."""
     sigma3 = np.arctan(-1.0 / (2.0 * nu))
     y0 = np.array([-sigma3, float(se.limit_cycle_p1(np.array([-sigma3]), m1, nu)[0])])
     span = PERIODS * se.limit_cycle_period(m1, nu)
@@ -177,7 +195,10 @@ def limit_cycle(results, m1, nu, quick):
         return {"error": float(np.hypot(*(np.asarray(y) - target)))}
 
     rows = _adaptive_rows(Problem(se.plane_largest, y0, (0.0, span), [m1, -nu, 1.0]), error_of, quick)
-    frame = pd.DataFrame(rows)
+    return pd.DataFrame(rows)
+
+
+def record_limit_cycle(results, frame, m1, nu):
     publish(
         results,
         frame,
@@ -194,7 +215,13 @@ def limit_cycle(results, m1, nu, quick):
 
 
 def huge_excursion(results, M, start, quick):
-    """start: excursions.excursion_start."""
+    """Computed and recorded (middle_axis.py's entry). start: excursions.excursion_start."""
+    record_huge_excursion(results, excursion_runs(M, start, quick), M, start[0][1])
+
+
+def excursion_runs(M, start, quick) -> pd.DataFrame:
+    """EXCURSION_PERIODS periods of a huge excursion: omega's distance at the end from its start, relative to
+    the largest |omega|, by method and setting. start: excursions.excursion_start."""
     w0, T, _, sizes = start
     scale = float(sizes.max())
 
@@ -202,14 +229,18 @@ def huge_excursion(results, M, start, quick):
         return {"error": float(np.linalg.norm(np.asarray(y) - w0)) / scale}
 
     problem = Problem(se.euler_middle, w0, (0.0, EXCURSION_PERIODS * T), M.euler_parameters())
-    frame = pd.DataFrame(_adaptive_rows(problem, error_of, quick))
+    return pd.DataFrame(_adaptive_rows(problem, error_of, quick))
+
+
+def record_huge_excursion(results, frame, M, q0):
+    """q0: the start's spin about the torque axis."""
     publish(
         results,
         frame,
         "excursion",
         "error",
         f"Euler's equations over {EXCURSION_PERIODS} periods of a huge "
-        f"excursion ($q_0$ = {shortest(w0[1])}, $\\nu$ = {param_text(-M.mu1)} against $\\nu_\\mathrm{{c}}$ "
+        f"excursion ($q_0$ = {shortest(q0)}, $\\nu$ = {param_text(-M.mu1)} against $\\nu_\\mathrm{{c}}$ "
         f"= {format_number(se.MiddleAxis.plane_nu('nu_c', M.body), 4)}), by method and relative tolerance: "
         "the "
         "distance of $\\boldsymbol{\\omega}$ at the end from its start, relative to the largest "

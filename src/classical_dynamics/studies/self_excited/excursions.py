@@ -4,6 +4,8 @@ against them."""
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
 from ...figure_style import legend_below
@@ -63,12 +65,31 @@ def excursion_start(M, q0):
     return w0, T_tau / M.time_scale, turns, sizes
 
 
-def excursion(results, M, start):
+class ExcursionOrbit(NamedTuple):
+    """A huge excursion along Euler's equations against the closed form (rates per time unit)."""
+
+    q0: float  # the start's spin about the torque axis
+    nu: float  # the plane's drag, and the critical one
+    nu_c: float
+    period: float  # T in t, from the closed form
+    left: float  # the turning points (phi2) of the closed form
+    right: float
+    predicted: np.ndarray  # |omega| at the turning points, closed form
+    t_steps: np.ndarray  # Euler's steps and |omega| at each
+    sizes: np.ndarray
+    max_omega_closed_form: float  # |omega| at the far turning point: what the errors are measured against
+    turning: float  # |omega| where Euler's equations turn against the closed form's (worst, relative)
+    closure: float  # |omega - omega0| after EXCURSION_PERIODS periods (relative)
+    c1_spread: float  # relative spread of C1 from Euler's state
+    cylinder_spread: float  # spread of p^2/a - r^2/c, relative to the largest p^2/a + r^2/c
+
+
+def excursion_orbit(M, start) -> ExcursionOrbit:
     """The huge excursions just below mu_c (digest §7.5): from phi = 0 on the cylinder with a large spin q0
     about the torque axis, the orbit closes, but p and r swing out like cosh(sqrt(ac) phi) on the way. The
     turning points and the period come from the closed form; Euler's equations must reach the same points,
     close after every period and stay on their cylinder. Rounding errors in omega are relative to the largest
-    |omega| the orbit reaches, so the errors are measured against it."""
+    |omega| the orbit reaches, so the errors are measured against it. start: excursion_start."""
     w0, T, (left, right), predicted = start
     q0, scale = w0[1], float(predicted.max())  # the largest |omega|, at the far turning point
     full = solve(
@@ -87,10 +108,36 @@ def excursion(results, M, start):
     hyp = se.hyperbola(M.body, w)
     hyp_spread = float(np.ptp(hyp) / np.max(w[:, 0] ** 2 / M.body.a + w[:, 2] ** 2 / M.body.c))
     c1 = se.middle_invariant(M.to_plane(w), M.m1, M.mu1, M.eps1, M.form)
+    return ExcursionOrbit(
+        q0=q0,
+        nu=-M.mu1,
+        nu_c=se.MiddleAxis.plane_nu("nu_c", M.body),
+        period=T,
+        left=float(left),
+        right=float(right),
+        predicted=predicted,
+        t_steps=full.t_steps,
+        sizes=sizes,
+        max_omega_closed_form=scale,
+        turning=turning,
+        closure=closure,
+        c1_spread=float(np.ptp(c1) / np.max(np.abs(c1))),
+        cylinder_spread=hyp_spread,
+    )
+
+
+def excursion(results, M, start):
+    """Computed and recorded (middle_axis.py's entry). start: excursion_start."""
+    record_excursion(results, excursion_orbit(M, start))
+
+
+def record_excursion(results, values: ExcursionOrbit):
+    """The figure of |omega| over the first two periods, the numbers and the hard cases."""
+    T, sizes, predicted, scale = values.period, values.sizes, values.predicted, values.max_omega_closed_form
     fig, ax = new_figure(height=2.6)
-    first = full.t_steps <= 2 * T
+    first = values.t_steps <= 2 * T
     ax.semilogy(
-        full.t_steps[first],
+        values.t_steps[first],
         sizes[first],
         ".-",
         color=portrait.EULER_COLOUR,
@@ -109,12 +156,12 @@ def excursion(results, M, start):
     ax.set_xlabel("$t$ (time units)")
     ax.set_ylabel("$|\\omega|$ (rad per time unit)")
     legend_below(fig, *ax.get_legend_handles_labels(), ncol=2)
-    nu_c = se.MiddleAxis.plane_nu("nu_c", M.body)
+    q0, nu_c = values.q0, values.nu_c
     results.figure(
         "excursion",
         fig,
         "A huge excursion below the critical drag "
-        f"($\\nu$ = {portrait.param_text(-M.mu1)}, "
+        f"($\\nu$ = {portrait.param_text(values.nu)}, "
         f"$\\nu_\\mathrm{{c}}$ = {format_number(nu_c, 3)}): $|\\boldsymbol{{\\omega}}|$ against $t$ "
         f"(log scale) from a spin $q_0$ = {shortest(q0)} about the torque axis, over the first two of the "
         f"{EXCURSION_PERIODS} periods integrated. $|\\boldsymbol{{\\omega}}|$ swings out by a factor "
@@ -137,20 +184,20 @@ def excursion(results, M, start):
         note="2∫dφ2/|q1| between the turning points of the closed form, by quadrature, in t",
     )
     results.number(
-        "excursion_phi2_left", float(left), "1", note="the left turning point of the closed form (q1 = 0)"
+        "excursion_phi2_left", values.left, "1", note="the left turning point of the closed form (q1 = 0)"
     )
     results.number(
-        "excursion_phi2_right", float(right), "1", note="the right turning point of the closed form"
+        "excursion_phi2_right", values.right, "1", note="the right turning point of the closed form"
     )
     results.number(
         "excursion_closure",
-        closure,
+        values.closure,
         "1",
         note=f"|ω − ω0| after {EXCURSION_PERIODS} periods, relative to the largest |ω|",
     )
     results.number(
         "excursion_c1_spread",
-        float(np.ptp(c1) / np.max(np.abs(c1))),
+        values.c1_spread,
         "1",
         note="relative spread of C1 "
         "from Euler's state: q is known to rounding relative to the largest |ω|, and near its turning "
@@ -161,7 +208,7 @@ def excursion(results, M, start):
         "Huge excursions below $\\mu_\\mathrm{c}$: "
         "$|\\boldsymbol{\\omega}|$ where Euler's equations turn ($q = 0$) against the closed "
         "form's turning points (worst, relative to the largest $|\\boldsymbol{\\omega}|$)",
-        turning,
+        values.turning,
         1e-10,
     )
     results.hard_case(
@@ -169,13 +216,13 @@ def excursion(results, M, start):
         f"Huge excursions below $\\mu_\\mathrm{{c}}$: $\\boldsymbol{{\\omega}}$ "
         f"back at its start after {EXCURSION_PERIODS} periods of the closed form (relative to the "
         "largest $|\\boldsymbol{\\omega}|$)",
-        closure,
+        values.closure,
         1e-8,
     )
     results.hard_case(
         "excursion_cylinder",
         "Huge excursions below $\\mu_\\mathrm{c}$: spread of $p^2/a - r^2/c$ "
         "along Euler's equations, relative to the largest $p^2/a + r^2/c$",
-        hyp_spread,
+        values.cylinder_spread,
         1e-12,
     )

@@ -9,6 +9,8 @@ must lie on the plane's trajectories.
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 import pandas as pd
 
@@ -53,15 +55,35 @@ def run(scene, results, quick):
     p1_max = view.get("p1_max", 3.0)
     tau_max = view.get("tau_max", 12.0)
 
-    cycles = _record_reduction(results, body, L, data, smallest)
+    cycles = se.limit_cycle_p1(np.array([0.0]), m1, nu) is not None
+    _record_reduction(results, body, L, data, smallest, cycles)
+    values = plane_portrait(L, body, smallest, m1, nu, delta, (lo, hi), p1_max, tau_max)
+    _record_portrait(results, values, m1, nu, cycles, smallest)
+    _analyses(results, data, L, body, values.points, cycles, quick)
 
+
+class Portrait(NamedTuple):
+    """Lee's plane (2.10) drawn and checked: what the portrait draws and how well it holds."""
+
+    points: list  # the singular points, typed by the linearization
+    wrong_types: int  # points whose type from the numerical Jacobian differs from the closed form's
+    drawing: portrait.Drawing  # every element drawn, window included
+    seconds: float  # what the plane's trajectories cost
+    invariant_spread: float  # E or C1 along the plane's trajectories (largest relative spread)
+    overlay_deviation: float  # Euler's equations mapped into the plane, against (2.10)
+    cylinder_spread: float  # q^2/b + r^2/c along Euler's equations (relative)
+    invariant_spread_euler: float  # E or C1 along Euler's equations mapped into the plane
+    n_paths: int  # integrations of Euler's equations drawn
+    body_view: pd.DataFrame | None  # the smallest axis: the motion in the body seen along z
+
+
+def plane_portrait(L, body, smallest, m1, nu, delta, phi2_range, p1_max, tau_max) -> Portrait:
+    """The singular points, the plane's trajectories, the separatrices and limit cycles from their closed
+    forms, and Euler's equations mapped into the plane, in the window phi2_range x [-p1_max, p1_max]
+    (widened to show F and F1)."""
+    lo, hi = phi2_range
     points = se.singular_points(m1, -nu, lo, hi)
-    results.number("singular_points", points, "1", note="p1 = 0, sin φ2 = −m1, typed by the linearization")
-    for kind in ("saddle", "center", "degenerate"):
-        results.number(f"n_{kind}s", sum(pt["type"] == kind for pt in points), "1")
-    _eigenvalue_check(results, m1, nu, points)
-
-    fig, ax, cx = _portrait_axes(smallest)
+    wrong = _wrong_point_types(m1, nu, points)
     F = se.limit_cycle_p1(np.linspace(lo, hi, 801), m1, nu)
     view = p1_max if F is None else max(p1_max, 1.1 * float(np.max(np.abs(F))))  # F and F1 in the window
     drawing = portrait.Drawing("p1", (lo - 0.5, hi + 0.5, 2.0 * view))
@@ -69,9 +91,31 @@ def run(scene, results, quick):
         lambda: _trajectories(m1, nu, lo, hi, p1_max, tau_max, points), repeats=1, budget_s=0.1
     )
     spreads = _draw_trajectories(drawing, curves, m1, nu, lo, hi, p1_max)
+    _draw_separatrices(drawing, m1, nu, lo, hi, p1_max, points)
+    paths = []
+    deviation, cyl, along_euler = _overlay(drawing, L, body, smallest, m1, nu, lo, hi, points, keep=paths)
+    view_z = seen_along_z(paths, body, delta) if smallest else None
+    drawing.points(points)
+    drawing.window(lo, hi, view)
+    return Portrait(points, wrong, drawing, seconds, spreads, deviation, cyl, along_euler, len(paths), view_z)
+
+
+def _record_portrait(results, values: Portrait, m1, nu, cycles, smallest):
+    """The singular points, the plane's checks, the figure (beside it, for the smallest axis, the body seen
+    along z) and its table, and what the trajectories cost."""
+    points = values.points
+    results.number("singular_points", points, "1", note="p1 = 0, sin φ2 = −m1, typed by the linearization")
+    for kind in ("saddle", "center", "degenerate"):
+        results.number(f"n_{kind}s", sum(pt["type"] == kind for pt in points), "1")
+    results.hard_case(
+        "singular_point_types",
+        "Singular points whose type from the numerical Jacobian differs from the closed form's (count)",
+        values.wrong_types,
+        0,
+    )
     results.number(
         "invariant_spread",
-        spreads,
+        values.invariant_spread,
         "1",
         note=("E" if nu == 0 else "C1") + ": largest spread along "
         "one trajectory, relative to the size of its terms",
@@ -80,30 +124,27 @@ def run(scene, results, quick):
     results.hard_case(
         "plane_invariant",
         f"The plane's first integral {integral} along its trajectories (largest relative spread)",
-        spreads,
+        values.invariant_spread,
         INVARIANT_BOUND,
     )
-    _draw_separatrices(drawing, m1, nu, lo, hi, p1_max, points)
-    paths = []
-    deviation, cyl, along_euler = _overlay(drawing, L, body, smallest, m1, nu, lo, hi, points, keep=paths)
+    fig, ax, cx = _portrait_axes(smallest)
     if smallest:
-        view_z = seen_along_z(paths, body, delta)
-        draw_seen_along_z(cx, view_z)
+        draw_seen_along_z(cx, values.body_view)
         cx.set_title("seen along $z$")
         results.table(
             "body_view",
-            view_z,
+            values.body_view,
             "The motion in the body seen along the torque axis $z$: the ellipse "
             "$p^2/a + q^2/b = \\delta^2$ and the integrations of Euler's equations on it.",
             headers=BODY_VIEW_HEADERS,
         )
-    _overlay_checks(results, deviation, cyl, along_euler, integral)
-    drawing.points(points)
-    drawing.window(lo, hi, view)
-    portrait.finish(ax, drawing, "$p_1$", angle=True)
-    caption = _caption(m1, nu, points, cycles, len(paths), smallest)
+    _overlay_checks(
+        results, values.overlay_deviation, values.cylinder_spread, values.invariant_spread_euler, integral
+    )
+    portrait.finish(ax, values.drawing, "$p_1$", angle=True)
+    caption = _caption(m1, nu, points, cycles, values.n_paths, smallest)
     results.figure("portrait", fig, caption)
-    drawing.save(
+    values.drawing.save(
         results,
         "What the portrait draws, point by point: each element (trajectory, separatrix, limit "
         "cycle, Euler's equations mapped into the plane, singular point by type, the window's corners) and "
@@ -111,15 +152,13 @@ def run(scene, results, quick):
     )
     results.timing_table(
         "cost",
-        pd.DataFrame([{"what": "plane trajectories of the portrait", "seconds": seconds}]),
+        pd.DataFrame([{"what": "plane trajectories of the portrait", "seconds": values.seconds}]),
         "What the portrait's plane trajectories cost to integrate.",
         headers={"what": "computation", "seconds": "wall time (s)"},
     )
 
-    _analyses(results, data, L, body, points, cycles, quick)
 
-
-def _record_reduction(results, body, L, data, smallest):
+def _record_reduction(results, body, L, data, smallest, cycles):
     """The body, the plane's parameters and the physical torque that gives them; whether F and F1 exist."""
     m1, nu, delta = _plane(data)
     plane = data["plane"]
@@ -151,9 +190,7 @@ def _record_reduction(results, body, L, data, smallest):
         results.number(
             "nu_star", se.nu_star(m1), "1", note="limit cycles F, F1 exist for nu below this (Lee §2.5)"
         )
-    cycles = se.limit_cycle_p1(np.array([0.0]), m1, nu) is not None
     results.number("limit_cycles", int(cycles), "1", note="1 if F and F1 exist (m1/ν > 2/√(1 + 4ν²))")
-    return cycles
 
 
 def _portrait_axes(smallest):
@@ -206,7 +243,8 @@ def _caption(m1, nu, points, cycles, n_paths, smallest):
 def _analyses(results, data, L, body, points, cycles, quick):
     """What a scene asks beyond the portrait (its `analysis`), and what the plane's regime calls for: the
     motion in space, the period series about the center, the separatrix's sides, the degenerate approach,
-    blow-up and the limit cycle's period, the motions of §2.5, accuracy and cost, the bifurcations."""
+    blow-up and the limit cycle's period, the motions of §2.5, accuracy and cost, the bifurcations; each
+    computed, then recorded."""
     smallest = data["torque_axis"] == "smallest"
     m1, nu, delta = _plane(data)
     centers = [pt for pt in points if pt["type"] == "center"]
@@ -216,31 +254,32 @@ def _analyses(results, data, L, body, points, cycles, quick):
 
         sigma3 = np.arctan(-1.0 / (2.0 * nu))
         on_F = float(se.limit_cycle_p1(np.array([-sigma3]), m1, nu)[0])
-        sphere = space.run(results, L, body, L.from_plane(-sigma3, on_F))
+        sphere = space.motion(L, body, L.from_plane(-sigma3, on_F))
+        space.record(results, sphere)
     if centers:
         amplitudes = data.get("analysis", {}).get("series_amplitudes", DEFAULT_AMPLITUDES)
-        _series(results, m1, nu, centers[0]["phi2"], amplitudes, sphere)
+        _record_series(results, series(m1, nu, centers[0]["phi2"], amplitudes), sphere)
         if nu == 0.0 or nu < (1.0 - 1e-9) * se.nu_star(m1):  # where the saddle's own loop encloses the center
-            _separatrix_sides(results, m1, nu)
+            _record_separatrix_sides(results, separatrix_sides(m1, nu))
     if nu == 0.0 and abs(abs(m1) - 1.0) < 1e-12:
-        _degenerate_approach(results, m1)
+        _record_degenerate_approach(results, degenerate_approach(m1))
     if cycles:
-        _blow_up(results, m1, nu)
-        _limit_cycle_period(results, m1, nu)
+        _record_blow_up(results, blow_up(m1, nu))
+        _record_limit_cycle_period(results, limit_cycle_period(m1, nu))
         if centers and nu > 0:
-            _cylinder(results, m1, nu, points)
+            _record_cylinder(results, cylinder(m1, nu, points))
     if data.get("analysis", {}).get("motions"):
         from . import motions
 
         motions.run(results, L, m1, points)
     if data.get("analysis", {}).get("accuracy_cost"):
         if nu == 0.0 and centers:
-            accuracy.separatrix(results, m1, quick)
+            accuracy.record_separatrix(results, accuracy.separatrix(m1, quick))
         if cycles:
-            accuracy.limit_cycle(results, m1, nu, quick)
+            accuracy.record_limit_cycle(results, accuracy.limit_cycle(m1, nu, quick), m1, nu)
     if data.get("analysis", {}).get("bifurcation"):
-        _singular_point_bifurcation(results)
-        _limit_cycle_bifurcation(results, m1, nu)
+        _record_singular_point_bifurcation(results, singular_point_bifurcation())
+        _record_limit_cycle_bifurcation(results, limit_cycle_bifurcation(), m1, nu)
     if not smallest:
         from . import largest_cycles  # Lee §2.5 (Figure 2.12, the motions on and off F) and §2.6
 
@@ -285,8 +324,8 @@ def _overlay_checks(results, deviation, cyl, along_euler, integral):
     )
 
 
-def _eigenvalue_check(results, m1, nu, points):
-    """The type of each point from the numerical Jacobian of (2.10), against the closed-form type."""
+def _wrong_point_types(m1, nu, points) -> int:
+    """The points whose type from the numerical Jacobian of (2.10) differs from the closed-form type."""
     wrong = 0
     for pt in points:
         h = 1e-6
@@ -306,12 +345,7 @@ def _eigenvalue_check(results, m1, nu, points):
             else ("saddle" if np.max(lam.real) > 1e-8 else "center")
         )
         wrong += kind != pt["type"]
-    results.hard_case(
-        "singular_point_types",
-        "Singular points whose type from the numerical Jacobian differs from the closed form's (count)",
-        wrong,
-        0,
-    )
+    return wrong
 
 
 def _starts(m1, nu, lo, hi, p1_max, points):
@@ -452,22 +486,35 @@ def _period(m1, nu, phi_c, eta):
     return portrait.period(se.plane_largest, [m1, -nu, 1.0], [phi_c + eta, 0.0], span=60.0)
 
 
-def _series(results, m1, nu, phi_c, amplitudes, sphere=None):
+class Series(NamedTuple):
+    """Lee §4.2: the period series about the center against the integrated period."""
+
+    check: portrait.SeriesCheck
+    period_linear: float  # 2 pi (1 - m1^2)^(-1/4)
+
+
+def series(m1, nu, phi_c, amplitudes) -> Series:
     """Lee §4.2: the series period against the measured one; the error must shrink like eta^4."""
-    frame = portrait.series_check(
+    check = portrait.series_periods(
+        lambda eta: _period(m1, nu, phi_c, eta), lambda eta: se.series_period(m1, nu, eta), amplitudes
+    )
+    return Series(check, 2 * np.pi / (1 - m1**2) ** 0.25)
+
+
+def _record_series(results, values: Series, sphere=None):
+    """The series' table, numbers and figure; with sphere (space.motion), the motion in space."""
+    portrait.record_series_check(
         results,
-        lambda eta: _period(m1, nu, phi_c, eta),
-        lambda eta: se.series_period(m1, nu, eta),
-        amplitudes,
+        values.check,
         "Lee §4.2: the period (in $\\tau$) of the oscillation about the center $\\varphi_{2\\mathrm{c}}$ "
         "started at "
         "$\\varphi_{2\\mathrm{c}} + \\eta$, integrated from the plane system and from the series "
         "$2\\pi(1 - m_1^2)^{-1/4}(1 + h_2\\eta^2 + h_3\\eta^3)$, and their relative difference.",
     )
-    results.number("period_tau_linear", 2 * np.pi / (1 - m1**2) ** 0.25, "τ", note="2π(1 − m1²)^(−1/4)")
-    slope = results.numbers["series_error_slope"]["value"]
+    results.number("period_tau_linear", values.period_linear, "τ", note="2π(1 − m1²)^(−1/4)")
+    slope = values.check.slope
     fig, ax = new_figure(PAIR_WIDTH_IN, 2.9)  # printed beside its table
-    portrait.series_figure(ax, frame, slope, ncol=1)
+    portrait.series_figure(ax, values.check.frame, slope, ncol=1)
     results.figure(
         "series",
         fig,
@@ -483,7 +530,7 @@ def _series(results, m1, nu, phi_c, amplitudes, sphere=None):
 
         results.figure(
             "space",
-            space.figure(*sphere),
+            space.figure(sphere.xs, sphere.ls),
             (
                 "Left: the frames and angles of Lee's Figures 1.1 and 1.2: space axes $X$, $Y$, $Z$ (grey), "
                 "body axes "
@@ -497,7 +544,7 @@ def _series(results, m1, nu, phi_c, amplitudes, sphere=None):
                 "attitude "
                 "integrated as a quaternion: the body's $x$-axis (blue) and $\\mathbf{L}/|\\mathbf{L}|$ "
                 "(green; starts marked) on the unit sphere; $\\mathbf{L}/|\\mathbf{L}|$ stays within "
-                f"{format_number(space.wander(sphere[1])[1], 2)}° of its mean direction, drawn magnified in "
+                f"{format_number(space.wander(sphere.ls)[1], 2)}° of its mean direction, drawn magnified in "
                 "the small middle panel (degrees in the plane tangent there). $\\boldsymbol{\\omega}$ is "
                 "periodic in the "
                 "body, the motion in space is not."
@@ -509,7 +556,15 @@ DEGENERATE_TAUS = (40.0, 100.0)  # where the approach to the degenerate point is
 DEGENERATE_BOUND = 1e-4  # hard case: relative error of the algebraic rate
 
 
-def _degenerate_approach(results, m1):
+class DegenerateApproach(NamedTuple):
+    """|m1| = 1: the algebraic approach to the degenerate point along the separatrix."""
+
+    coefficient: float  # C in |phi2 - phi2d| ~ C/(tau + c)^2: 12 expected
+    distance_tau100: float  # |phi2 - phi2d| at tau = 100
+    rate_error: float  # the rate of |phi2 - phi2d|^(-1/2) against 1/sqrt(12), relative
+
+
+def degenerate_approach(m1) -> DegenerateApproach:
     """|m1| = 1 without drag: the separatrix (2.23) through the degenerate point phi2d (sin phi2d = -m1) is
     p1^2 = 2(x - sin x) ~ x^3/3 in x = |phi2 - phi2d|, so the motion along it reaches the point only
     algebraically, x = 12/(tau + c)^2, where a saddle is approached exponentially. Started on the branch at x
@@ -530,15 +585,22 @@ def _degenerate_approach(results, m1):
     )
     x = np.abs(sol.y_eval[:, 0] - phi_d)
     rate = float(np.diff(x**-0.5)[0] / np.diff(taus)[0])
+    return DegenerateApproach(1.0 / rate**2, float(x[-1]), rate * np.sqrt(12.0) - 1.0)
+
+
+def _record_degenerate_approach(results, values: DegenerateApproach):
     results.number(
         "degenerate_approach_coefficient",
-        1.0 / rate**2,
+        values.coefficient,
         "1",
         note="C in |φ2 − φ2d| ≈ C/(τ + c)² along "
         "the separatrix into the degenerate point, from |φ2 − φ2d|^(−1/2) at τ = 40 and 100; 12 expected",
     )
     results.number(
-        "degenerate_distance_tau100", float(x[-1]), "1", note="|φ2 − φ2d| at τ = 100 from 0.5 at τ = 0"
+        "degenerate_distance_tau100",
+        values.distance_tau100,
+        "1",
+        note="|φ2 − φ2d| at τ = 100 from 0.5 at τ = 0",
     )
     results.hard_case(
         "degenerate_approach",
@@ -546,12 +608,20 @@ def _degenerate_approach(results, m1):
         "point algebraically, $|\\varphi_2 - \\varphi_{2\\mathrm{d}}| \\approx 12/\\tau^2$, not "
         "exponentially as into a saddle (relative error of the rate of "
         "$|\\varphi_2 - \\varphi_{2\\mathrm{d}}|^{-1/2}$ against $1/\\sqrt{12}$, $\\tau$ from 40 to 100)",
-        rate * np.sqrt(12.0) - 1.0,
+        values.rate_error,
         DEGENERATE_BOUND,
     )
 
 
-def _blow_up(results, m1, nu):
+class BlowUp(NamedTuple):
+    """A start below F1 on the plane."""
+
+    start: float  # p1 at phi2 = 0
+    blew_up: bool  # |y| passed BLOW_UP_BOUND in finite time
+    time: float  # when (tau)
+
+
+def blow_up(m1, nu) -> BlowUp:
     """Below F1 the spin runs to the negative x-axis in finite time: p1' ~ -nu p1^2."""
     F1_at_0 = -se.limit_cycle_p1(np.array([0.0]), m1, nu)[0]
     start = F1_at_0 - 0.5
@@ -562,18 +632,22 @@ def _blow_up(results, m1, nu):
         atol=1e-14,
         bound=BLOW_UP_BOUND,
     )
-    if sol.status == "blow-up":
+    return BlowUp(start, sol.status == "blow-up", sol.t)
+
+
+def _record_blow_up(results, values: BlowUp):
+    if values.blew_up:
         results.number(
             "blow_up_time",
-            sol.t,
+            values.time,
             "τ",
-            note=f"from φ2 = 0, p1 = {start:.4g} (below F1): |y| passes "
+            note=f"from φ2 = 0, p1 = {values.start:.4g} (below F1): |y| passes "
             f"{BLOW_UP_BOUND:g}, within 1/(ν·{BLOW_UP_BOUND:g}) of the singularity",
         )
     results.hard_case(
         "below_F1_blows_up",
         "A start below $F_1$ leaves every bound in finite time (1 if it does not)",
-        0.0 if sol.status == "blow-up" else 1.0,
+        0.0 if values.blew_up else 1.0,
         0.0,
     )
 
@@ -581,7 +655,17 @@ def _blow_up(results, m1, nu):
 SEPARATRIX_OFFSETS = (1e-2, 1e-4, 1e-6, 1e-8, 1e-10)
 
 
-def _separatrix_sides(results, m1, nu):
+class SeparatrixSides(NamedTuple):
+    """Starts either side of the saddle's loop: their fates and the period's growth inside."""
+
+    frame: pd.DataFrame  # by offset: the period inside, whether the start outside turns back
+    wrong: int  # starts that end on the wrong side
+    slope: float  # d(period)/d ln(1/eps) inside, fitted
+    slope_expected: float  # n/lambda
+    slope_error: float  # the fitted slope against n/lambda, relative
+
+
+def separatrix_sides(m1, nu) -> SeparatrixSides:
     """Starts a relative 1e-2 ... 1e-10 inside and outside the saddle's loop, on the vertical through its
     center and heading for the saddle: inside, p1 must change sign (a closed orbit) with a period growing
     like n ln(1/eps)/lambda, lambda = (1 - m1^2)^(1/4) the saddle's rate and n the saddles passed in a
@@ -609,9 +693,15 @@ def _separatrix_sides(results, m1, nu):
         period = float(fates["inside"][1] - fates["inside"][0]) if len(fates["inside"]) >= 2 else np.nan
         rows.append({"offset": eps, "period_inside": period, "outside_turns_back": len(fates["outside"]) > 0})
     frame = pd.DataFrame(rows)
+    slope = float(np.polyfit(np.log(1.0 / frame.offset), frame.period_inside, 1)[0])
+    rate = (1.0 - m1**2) ** 0.25 / passages
+    return SeparatrixSides(frame, wrong, slope, 1.0 / rate, slope * rate - 1.0)
+
+
+def _record_separatrix_sides(results, values: SeparatrixSides):
     results.table(
         "separatrix",
-        frame,
+        values.frame,
         "Starts a relative offset $\\varepsilon$ inside and outside the separatrix "
         "loop, heading for the saddle: the period inside (in $\\tau$), which grows like "
         "$\\ln(1/\\varepsilon)$, and whether the start outside ever turns back (it must not).",
@@ -621,16 +711,17 @@ def _separatrix_sides(results, m1, nu):
             "outside_turns_back": "outside turns back",
         },
     )
-    slope = float(np.polyfit(np.log(1.0 / frame.offset), frame.period_inside, 1)[0])
-    rate = (1.0 - m1**2) ** 0.25 / passages
-    results.number("separatrix_period_slope", slope, "τ", note="d(period)/d ln(1/ε) inside the loop")
+    results.number("separatrix_period_slope", values.slope, "τ", note="d(period)/d ln(1/ε) inside the loop")
     results.number(
-        "separatrix_slope_expected", 1.0 / rate, "τ", note="n/λ, λ = (1 − m1²)^(1/4), n saddles passed"
+        "separatrix_slope_expected",
+        values.slope_expected,
+        "τ",
+        note="n/λ, λ = (1 − m1²)^(1/4), n saddles passed",
     )
     results.hard_case(
         "separatrix_sides",
         "Starts a relative 10⁻² to 10⁻¹⁰ either side of the separatrix that end on the wrong side (count)",
-        wrong,
+        values.wrong,
         0,
     )
     results.hard_case(
@@ -638,12 +729,21 @@ def _separatrix_sides(results, m1, nu):
         "Near the separatrix the period grows like "
         "$n\\ln(1/\\varepsilon)/\\lambda$, $\\lambda = (1 - m_1^2)^{1/4}$ the saddle's rate and $n$ the "
         "saddles passed in a period (relative error of the slope)",
-        slope * rate - 1.0,
+        values.slope_error,
         0.01,
     )
 
 
-def _limit_cycle_period(results, m1, nu):
+class LimitCyclePeriod(NamedTuple):
+    """The period of p1 on F (in tau), integrated and from Jacobi's form."""
+
+    period: float  # integrated, phi2 as the clock over one turn
+    jacobi: float  # 4K(k)/sqrt(alpha + beta)
+    relative: float  # period/jacobi - 1
+    closure: float  # p1 after the turn minus its start
+
+
+def limit_cycle_period(m1, nu) -> LimitCyclePeriod:
     """The period of p1 on F, integrated with phi2 as the clock over one turn, against Jacobi's form."""
     sigma3 = np.arctan(-1.0 / (2.0 * nu))
     start = float(se.limit_cycle_p1(np.array([-sigma3]), m1, nu)[0])
@@ -654,33 +754,43 @@ def _limit_cycle_period(results, m1, nu):
         atol=1e-15,
     )
     closed = se.limit_cycle_period(m1, nu)
-    results.number("period_tau_F", float(sol.y[0]), "τ", note="p1 on F, one turn of φ2 (2π), integrated")
-    results.number("period_tau_F_jacobi", closed, "τ", note="4K(k)/√(α + β), Jacobi's form")
+    period = float(sol.y[0])
+    return LimitCyclePeriod(period, closed, period / closed - 1.0, float(sol.y[1]) - start)
+
+
+def _record_limit_cycle_period(results, values: LimitCyclePeriod):
+    results.number("period_tau_F", values.period, "τ", note="p1 on F, one turn of φ2 (2π), integrated")
+    results.number("period_tau_F_jacobi", values.jacobi, "τ", note="4K(k)/√(α + β), Jacobi's form")
     results.number(
         "period_tau_F_minus_jacobi_relative",
-        float(sol.y[0]) / closed - 1.0,
+        values.relative,
         "1",
         note="the integrated period against the rebuilt Jacobi form (Lee's (2.31)-(2.32) are lost)",
     )
-    results.number(
-        "omega_period_tau_F", 2 * float(sol.y[0]), "τ", note="ω returns after two turns of φ2 (4π)"
-    )
+    results.number("omega_period_tau_F", 2 * values.period, "τ", note="ω returns after two turns of φ2 (4π)")
     results.hard_case(
         "limit_cycle_period",
         "The period on $F$, integrated, against Jacobi's closed form "
         "$4K(k)/\\sqrt{\\alpha + \\beta}$ (relative)",
-        float(sol.y[0]) / closed - 1.0,
+        values.relative,
         1e-9,
     )
     results.hard_case(
         "limit_cycle_closes",
         "$p_1$ on $F$ returns to its start after one turn of $\\varphi_2$ (absolute)",
-        float(sol.y[1]) - start,
+        values.closure,
         1e-9,
     )
 
 
-def _singular_point_bifurcation(results):
+class SingularPointBifurcation(NamedTuple):
+    """The roots of m1 + sin(phi2) found numerically over a grid of m1."""
+
+    found: list  # (m1, phi2, type) of each root
+    wrong: int  # roots the closed form misses, misplaces or mistypes
+
+
+def singular_point_bifurcation() -> SingularPointBifurcation:
     """Where the permanent rotations appear, merge and vanish as m1 crosses +-1: roots of m1 + sin(phi2) found
     numerically (sign changes and bisection, types from the numerical Jacobian) against the closed form."""
     from scipy.optimize import brentq
@@ -701,11 +811,16 @@ def _singular_point_bifurcation(results):
             match = [pt for pt in closed if abs(pt["phi2"] - x) < 1e-10 and pt["type"] == kind]
             wrong += len(match) != 1
             found.append((m1, x, kind))
+    return SingularPointBifurcation(found, wrong)
+
+
+def _record_singular_point_bifurcation(results, values: SingularPointBifurcation):
+    """The hard case, and the figure: the closed form's curves and the roots found."""
     results.hard_case(
         "singular_point_bifurcation",
         "Singular points found numerically for $m_1$ in [−1.5, 1.5] "
         "that the closed form misses, misplaces or mistypes (count)",
-        wrong,
+        values.wrong,
         0,
     )
     fig, ax = new_figure(height=2.8)
@@ -716,7 +831,7 @@ def _singular_point_bifurcation(results):
     centre[np.r_[False, np.abs(np.diff(centre)) > np.pi]] = np.nan  # the jump from π to −π is no curve
     ax.plot(m, centre, "k--", lw=1.2, label="centers, closed form")
     for kind, marker in (("saddle", "x"), ("center", "o")):
-        pts = np.array([(a, b) for a, b, k in found if k == kind])
+        pts = np.array([(a, b) for a, b, k in values.found if k == kind])
         ax.plot(
             pts[:, 0],
             pts[:, 1],
@@ -743,7 +858,16 @@ def _singular_point_bifurcation(results):
     )
 
 
-def _limit_cycle_bifurcation(results, m1_scene, nu_scene):
+class LimitCycleGrid(NamedTuple):
+    """The fate of a start above F over a grid of (m1, nu)."""
+
+    m1: np.ndarray  # the grid (m1 along the first index)
+    nu: np.ndarray
+    bounded: np.ndarray  # the start stayed bounded (it tends to F)
+    wrong: int  # cells off nu* by more than 2 % whose fate disagrees with it
+
+
+def limit_cycle_bifurcation() -> LimitCycleGrid:
     """Where F exists in the (m1, nu) plane: a start high above (phi2 = 0, p1 = 4) stays bounded exactly when
     it has F to converge to; otherwise it runs to the negative x-axis in finite time. One batch call."""
     m1s, nus = np.linspace(0.05, 1.95, 39), np.linspace(0.025, 1.0, 40)
@@ -761,14 +885,19 @@ def _limit_cycle_bifurcation(results, m1_scene, nu_scene):
     below = M < 1.0
     star[below] = M[below] / (2.0 * np.sqrt(1.0 - M[below] ** 2))
     clear = np.abs(N / star - 1.0) > 0.02  # cells on the boundary itself are undecided
-    wrong = int(np.sum((bounded != exists) & clear))
+    return LimitCycleGrid(M, N, bounded, int(np.sum((bounded != exists) & clear)))
+
+
+def _record_limit_cycle_bifurcation(results, values: LimitCycleGrid, m1_scene, nu_scene):
+    """The grid's count and hard case, and the figure with the scene's plane marked."""
+    M, N, bounded = values.m1, values.nu, values.bounded
     results.number("limit_cycle_grid_cells", int(M.size), "1")
     results.hard_case(
         "limit_cycle_bifurcation",
         "Cells of the $(m_1, \\nu)$ grid where the integrated fate "
         "disagrees with $\\nu^* = m_1/(2\\sqrt{1 - m_1^2})$ (count, cells within 2 % of the curve "
         "excluded)",
-        wrong,
+        values.wrong,
         0,
     )
     fig, ax = new_figure(height=2.8)
@@ -803,14 +932,59 @@ def _limit_cycle_bifurcation(results, m1_scene, nu_scene):
     )
 
 
-def _cylinder(results, m1, nu, points):
+class Cylinder(NamedTuple):
+    """Lee's Figure 2.13: the plane rolled onto the cylinder (cos phi2, sin phi2, p1)."""
+
+    m1: float
+    nu: float
+    theta: np.ndarray  # phi2 over one turn
+    F: np.ndarray  # p1 on F there (F1 is -F)
+    paths: dict  # label: the integrated (phi2, p1) of each start, where finite and |p1| < 4
+    saddle: float  # phi2 of one saddle and of one center: the cylinder merges each kind into one
+    center: float
+
+
+CYLINDER_COLOURS = {  # the starts' ink
+    "closed orbit about $C$": "k",
+    "above $F_1$: winds onto $F$": "#0072B2",
+    "below $F_1$: runs away": "0.55",
+}
+
+
+def cylinder(m1, nu, points) -> Cylinder:
     """Lee's Figure 2.13: phi2 taken mod 2 pi, the plane rolled onto a cylinder (cos phi2, sin phi2, p1). The
     saddles merge into one S and the centers into one C; F and F1 close on themselves; a closed orbit about C,
     a start above F1 winding onto F, and one below F1 running away to p1 -> -infinity."""
-    fig = bare_figure(figsize=(5.8, 3.2), layout="constrained")  # at most 40 % of a page
-    ax = fig.add_subplot(projection="3d")
     theta = np.linspace(0.0, 2 * np.pi, 721)
     F = se.limit_cycle_p1(theta, m1, nu)
+    center = next(pt["phi2"] for pt in points if pt["type"] == "center")
+    F1_at_0 = -float(se.limit_cycle_p1(np.zeros(1), m1, nu)[0])
+    starts = {
+        "closed orbit about $C$": ([center + 0.7, 0.0], 30.0),
+        "above $F_1$: winds onto $F$": ([0.0, F1_at_0 + 0.05], 60.0),
+        "below $F_1$: runs away": ([0.0, F1_at_0 - 0.05], 20.0),
+    }
+    paths = {}
+    for label, (start, span) in starts.items():
+        tau = np.linspace(0.0, span, 3000)
+        sol = solve(
+            Problem(se.plane_largest, start, (0.0, span), [m1, -nu, 1.0]),
+            "dop853",
+            rtol=1e-10,
+            atol=1e-12,
+            t_eval=tau,
+            bound=BLOW_UP_BOUND,
+        )
+        paths[label] = sol.y_eval[np.all(np.isfinite(sol.y_eval), axis=1) & (np.abs(sol.y_eval[:, 1]) < 4.0)]
+    saddle = next(pt["phi2"] for pt in points if pt["type"] == "saddle")
+    return Cylinder(m1, nu, theta, F, paths, saddle, center)
+
+
+def _record_cylinder(results, values: Cylinder):
+    """The figure of Lee's Figure 2.13."""
+    m1, nu, theta, F = values.m1, values.nu, values.theta, values.F
+    fig = bare_figure(figsize=(5.8, 3.2), layout="constrained")  # at most 40 % of a page
+    ax = fig.add_subplot(projection="3d")
     ax.plot(np.cos(theta), np.sin(theta), F, color=portrait.LIMIT_CYCLE_COLOUR, lw=1.6, label="$F$ (stable)")
     ax.plot(
         np.cos(theta),
@@ -821,27 +995,9 @@ def _cylinder(results, m1, nu, points):
         ls="--",
         label="$F_1$ (unstable)",
     )
-    center = next(pt["phi2"] for pt in points if pt["type"] == "center")
-    F1_at_0 = -float(se.limit_cycle_p1(np.zeros(1), m1, nu)[0])
-    starts = {
-        "closed orbit about $C$": ([center + 0.7, 0.0], 30.0, "k"),
-        "above $F_1$: winds onto $F$": ([0.0, F1_at_0 + 0.05], 60.0, "#0072B2"),
-        "below $F_1$: runs away": ([0.0, F1_at_0 - 0.05], 20.0, "0.55"),
-    }
-    for label, (start, span, color) in starts.items():
-        tau = np.linspace(0.0, span, 3000)
-        sol = solve(
-            Problem(se.plane_largest, start, (0.0, span), [m1, -nu, 1.0]),
-            "dop853",
-            rtol=1e-10,
-            atol=1e-12,
-            t_eval=tau,
-            bound=BLOW_UP_BOUND,
-        )
-        y = sol.y_eval[np.all(np.isfinite(sol.y_eval), axis=1) & (np.abs(sol.y_eval[:, 1]) < 4.0)]
-        ax.plot(np.cos(y[:, 0]), np.sin(y[:, 0]), y[:, 1], color=color, lw=0.7, label=label)
-    for kind, marker, label in (("saddle", "x", "$S$ (saddle)"), ("center", "o", "$C$ (center)")):
-        phi = next(pt["phi2"] for pt in points if pt["type"] == kind)  # one of each: the cylinder merges them
+    for label, y in values.paths.items():
+        ax.plot(np.cos(y[:, 0]), np.sin(y[:, 0]), y[:, 1], color=CYLINDER_COLOURS[label], lw=0.7, label=label)
+    for phi, marker, label in ((values.saddle, "x", "$S$ (saddle)"), (values.center, "o", "$C$ (center)")):
         ax.scatter([np.cos(phi)], [np.sin(phi)], [0.0], color="k", marker=marker, s=24, label=label)
     ax.set_xticks([-1.0, 0.0, 1.0])
     ax.set_yticks([-1.0, 0.0, 1.0])

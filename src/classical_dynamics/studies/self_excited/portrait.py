@@ -4,6 +4,7 @@ singular points by type."""
 from __future__ import annotations
 
 import re
+from typing import NamedTuple
 
 import numpy as np
 import pandas as pd
@@ -35,8 +36,17 @@ def period(rhs, params, start, span=80.0):
     return float(sol.event_t[1] - sol.event_t[0])
 
 
-def series_check(results, measured, series, amplitudes, caption):
-    """Lee §4: a period series against measured periods; its error must fall like eta^4."""
+class SeriesCheck(NamedTuple):
+    """Lee §4: a period series against measured periods (in tau)."""
+
+    frame: pd.DataFrame  # by amplitude eta: measured, series, relative error
+    slope: float  # log-log slope of the error against eta: 4 expected
+    period_tau: float  # measured about the center, eta = 0.1
+
+
+def series_periods(measured, series, amplitudes) -> SeriesCheck:
+    """measured(eta), series(eta): the period of the orbit started eta from the center, integrated and from
+    the series."""
     rows = []
     for eta in amplitudes:
         m, s_ = measured(eta), series(eta)
@@ -44,9 +54,14 @@ def series_check(results, measured, series, amplitudes, caption):
             {"eta": eta, "period_measured": m, "period_series": s_, "relative_error": abs(s_ / m - 1.0)}
         )
     frame = pd.DataFrame(rows)
+    slope = float(np.polyfit(np.log(frame.eta), np.log(frame.relative_error), 1)[0])
+    return SeriesCheck(frame, slope, measured(0.1))
+
+
+def record_series_check(results, values: SeriesCheck, caption):
     results.table(
         "series",
-        frame,
+        values.frame,
         caption,
         headers={
             "eta": "amplitude $\\eta$",
@@ -55,19 +70,28 @@ def series_check(results, measured, series, amplitudes, caption):
             "relative_error": "relative error",
         },
     )
-    slope = float(np.polyfit(np.log(frame.eta), np.log(frame.relative_error), 1)[0])
     results.number(
-        "series_error_slope", slope, "1", note="log-log slope of the series' error against η; 4 expected"
+        "series_error_slope",
+        values.slope,
+        "1",
+        note="log-log slope of the series' error against η; 4 expected",
     )
-    results.number("period_tau", measured(0.1), "τ", note="about the center, η = 0.1")
+    results.number("period_tau", values.period_tau, "τ", note="about the center, η = 0.1")
     results.hard_case(
         "series_order",
         "The period series' error falls like $\\eta^4$: $|s - 4|$ for its fitted "
         "log-log slope $s$ against the amplitude $\\eta$",
-        abs(slope - 4.0),
+        abs(values.slope - 4.0),
         0.5,
     )
-    return frame
+
+
+def series_check(results, measured, series, amplitudes, caption):
+    """Lee §4: a period series against measured periods, computed and recorded (middle_axis.py's entry);
+    its error must fall like eta^4."""
+    values = series_periods(measured, series, amplitudes)
+    record_series_check(results, values, caption)
+    return values.frame
 
 
 def series_figure(ax, frame, slope, ncol=1):

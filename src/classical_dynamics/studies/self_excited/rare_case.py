@@ -4,6 +4,8 @@ rest points, in closed form; without torque (m = 0) the line of rest points q1 =
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
 from ...models import self_excited as se
@@ -19,7 +21,19 @@ RARE_REST = (
 ESCAPE_EXPONENT_BOUND = 1e-3  # hard case: the rare case's escape, ln|q| against ln|(p, r)|, slope b/(a + c)
 
 
-def escape(results, M):
+class RareEscape(NamedTuple):
+    """The rare case's blow-up on the plane and Euler's escape to an axis of plane II."""
+
+    q0: float  # the start (phi2 = 0)
+    blow_up_time: float  # when q1 passed -BLOW_UP_BOUND, integrated (tau)
+    blow_up_time_closed_form: float
+    blow_up_time_error: float  # relative; inf if the plane did not blow up
+    exponent: float  # slope of ln|q| against ln|(p, r)| along Euler's equations
+    exponent_expected: float  # b/(a + c)
+    q_share: float  # |q|/|omega| when |omega| passes 1e12
+
+
+def escape_motion(M) -> RareEscape:
     """Lee (3.65)-(3.66): below the line q1 = -sqrt(m/nu) (m > 0), below q1 = 0 (m = 0) or from anywhere (m <
     0) the Riccati equation dq1/dtau = m - nu q1^2 blows up at a time known in closed form; Euler's equations
     then run to an axis of plane II perpendicular to y, because p and r grow like e^{sqrt(ac)|phi|}, faster
@@ -34,19 +48,6 @@ def escape(results, M):
         bound=bound,
     )
     closed = riccati_time(m, nu, q0, -bound)
-    results.number("blow_up_time", flat.t, "τ", note=f"from φ2 = 0, q1 = {q0:.4g}: q1 passes −{bound:g}")
-    results.number(
-        "blow_up_time_closed_form",
-        closed,
-        "τ",
-        note="dq1/dτ = m − νq1² integrated in closed form between the start and the bound",
-    )
-    results.hard_case(
-        "rare_blow_up_time",
-        "The blow-up time of the rare case against its closed form (relative)",
-        abs(flat.t / closed - 1.0) if flat.status == "blow-up" else np.inf,
-        1e-9,
-    )
     full = solve(
         Problem(se.euler_middle, M.from_plane(0.0, q0), (0.0, 100.0), M.euler_parameters()),
         "dop853",
@@ -58,31 +59,63 @@ def escape(results, M):
     w = full.y_steps
     pr, q = np.hypot(w[:, 0], w[:, 2]), np.abs(w[:, 1])
     late = (pr > 1e4) & (pr < 1e11)
-    slope = float(np.polyfit(np.log(pr[late]), np.log(q[late]), 1)[0])
-    expected = M.body.b / (M.body.a + M.body.c)
+    return RareEscape(
+        q0=q0,
+        blow_up_time=flat.t,
+        blow_up_time_closed_form=closed,
+        blow_up_time_error=abs(flat.t / closed - 1.0) if flat.status == "blow-up" else np.inf,
+        exponent=float(np.polyfit(np.log(pr[late]), np.log(q[late]), 1)[0]),
+        exponent_expected=M.body.b / (M.body.a + M.body.c),
+        q_share=float(q[-1] / np.linalg.norm(w[-1])),
+    )
+
+
+def escape(results, M):
+    """Computed and recorded (middle_axis.py's entry)."""
+    record_escape(results, escape_motion(M))
+
+
+def record_escape(results, values: RareEscape):
+    bound = portrait.BLOW_UP_BOUND
+    results.number(
+        "blow_up_time",
+        values.blow_up_time,
+        "τ",
+        note=f"from φ2 = 0, q1 = {values.q0:.4g}: q1 passes −{bound:g}",
+    )
+    results.number(
+        "blow_up_time_closed_form",
+        values.blow_up_time_closed_form,
+        "τ",
+        note="dq1/dτ = m − νq1² integrated in closed form between the start and the bound",
+    )
+    results.hard_case(
+        "rare_blow_up_time",
+        "The blow-up time of the rare case against its closed form (relative)",
+        values.blow_up_time_error,
+        1e-9,
+    )
     results.number(
         "escape_exponent",
-        slope,
+        values.exponent,
         "1",
         note="slope of ln|q| against ln|(p, r)| as ω leaves every bound "
         "(Euler's equations, |(p, r)| from 1e4 to 1e11)",
     )
     results.number(
         "escape_exponent_expected",
-        expected,
+        values.exponent_expected,
         "1",
         note="b/(a + c) = |μ|/√(ac) at |μ| = μ_c: below 1, so "
         "ω turns towards plane II's axis perpendicular to y",
     )
-    results.number(
-        "escape_q_share", float(q[-1] / np.linalg.norm(w[-1])), "1", note="|q|/|ω| when |ω| passes 1e12"
-    )
+    results.number("escape_q_share", values.q_share, "1", note="|q|/|ω| when |ω| passes 1e12")
     results.hard_case(
         "rare_escape_direction",
         "Lee: below the line $\\boldsymbol{\\omega}$ runs to an axis of plane "
         "II perpendicular to $y$: $|s - b/(a + c)|$ for the slope $s$ of $\\ln|q|$ against "
         "$\\ln|(p, r)|$",
-        abs(slope - expected),
+        abs(values.exponent - values.exponent_expected),
         ESCAPE_EXPONENT_BOUND,
     )
 
@@ -101,13 +134,23 @@ def riccati_time(m, nu, q_from, q_to):
     return float(F(q_to) - F(q_from))
 
 
-def rest_line(drawing, results, M):
+class RestLine(NamedTuple):
+    """The rare case without torque: the line of rest points q1 = 0 and the decay above it."""
+
+    drift: float  # largest |omega(t) - omega0|/|omega0| from three points of the line
+    q10: float  # the start above the line (phi2 = 0)
+    tau_end: float  # the last time the state is in plane II
+    decay_error: float  # Euler's q1 against q10/(1 + nu q10 tau), largest relative error
+    exponent: float  # slope of ln|q| against ln|(p, r)| along that motion
+    exponent_expected: float  # b/(a + c)
+
+
+def rest_line_motion(M) -> RestLine:
     """Lee's Figure 3.18(b), the rare case without torque (m0 = 0): dq1/dtau = -nu q1^2, so every point of q1
     = 0 is at rest (a permanent rotation about an axis of plane II: -b r p + mu |omega|^2 = 0 there at |mu| =
     mu_c). Above the line q1 = q10/(1 + nu q10 tau) falls to 0 while phi2 runs to +infinity, so p and r decay
     like e^{-phi2/2} = (1 + nu q10 tau)^{-1/(2 nu)}, faster than q: omega -> 0 along +y. Along Euler's
     equations ln|q| against ln|(p, r)| has slope 2 nu_c = b/(a + c) exactly."""
-    drawing.curve("rest_line", drawing.reach[:2], [0.0, 0.0])
     drift = 0.0
     for phi in (-2.0, 0.0, 2.0):
         w0 = M.from_plane(phi, 0.0)
@@ -119,20 +162,6 @@ def rest_line(drawing, results, M):
             record_steps=True,
         )
         drift = max(drift, float(np.max(np.linalg.norm(rest.y_steps - w0, axis=1)) / np.linalg.norm(w0)))
-    results.number(
-        "rest_line_drift",
-        drift,
-        "1",
-        note="largest |ω(t) − ω0|/|ω0| over t ≤ 100 from three points of "
-        "q1 = 0 (φ2 = −2, 0, 2), Euler's equations",
-    )
-    results.hard_case(
-        "rest_line_at_rest",
-        "Every point of $q_1 = 0$ is a permanent rotation (Euler's equations "
-        "from three of them: largest relative drift over $t \\le 100$)",
-        drift,
-        1e-12,
-    )
     q10, nu = 1.0, -M.mu1
     tau = np.linspace(0.0, 200.0, 401)
     # tau = t in the rare case
@@ -147,12 +176,39 @@ def rest_line(drawing, results, M):
     w, t = full.y_eval[inside], tau[inside]
     decay = float(np.max(np.abs(M.to_plane(w)[:, 1] / (q10 / (1.0 + nu * q10 * t)) - 1.0)))
     slope = float(np.polyfit(np.log(np.hypot(w[:, 0], w[:, 2])), np.log(np.abs(w[:, 1])), 1)[0])
+    return RestLine(drift, q10, t[-1], decay, slope, M.body.b / (M.body.a + M.body.c))
+
+
+def rest_line(drawing, results, M):
+    """Computed, drawn and recorded (middle_axis.py's entry)."""
+    record_rest_line(drawing, results, rest_line_motion(M))
+
+
+def record_rest_line(drawing, results, values: RestLine):
+    """The line drawn across the portrait (drawing), its numbers and hard cases."""
+    drawing.curve("rest_line", drawing.reach[:2], [0.0, 0.0])
+    drift, decay, slope = values.drift, values.decay_error, values.exponent
+    results.number(
+        "rest_line_drift",
+        drift,
+        "1",
+        note="largest |ω(t) − ω0|/|ω0| over t ≤ 100 from three points of "
+        "q1 = 0 (φ2 = −2, 0, 2), Euler's equations",
+    )
+    results.hard_case(
+        "rest_line_at_rest",
+        "Every point of $q_1 = 0$ is a permanent rotation (Euler's equations "
+        "from three of them: largest relative drift over $t \\le 100$)",
+        drift,
+        1e-12,
+    )
     results.number(
         "rest_decay_error",
         decay,
         "1",
         note=f"Euler's q1 against q10/(1 + νq10τ) from φ2 = 0, q10 = "
-        f"{q10:g}, while the state is in plane II (to τ = {t[-1]:g}; largest relative error)",
+        f"{values.q10:g}, while the state is in plane II (to τ = {values.tau_end:g}; largest relative "
+        "error)",
     )
     results.number(
         "rest_decay_exponent",
@@ -173,6 +229,6 @@ def rest_line(drawing, results, M):
         "rare_rest_direction",
         "Lee: $\\boldsymbol{\\omega} \\to 0$ along $+y$: $|s - b/(a + c)|$ for "
         "the slope $s$ of $\\ln|q|$ against $\\ln|(p, r)|$",
-        abs(slope - M.body.b / (M.body.a + M.body.c)),
+        abs(slope - values.exponent_expected),
         ESCAPE_EXPONENT_BOUND,
     )

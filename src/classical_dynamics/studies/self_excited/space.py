@@ -13,6 +13,8 @@ the quaternion's samples); after one period of omega in the body the body has no
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
 from ...models import self_excited as se
@@ -89,8 +91,23 @@ def rotation_angle(R):
     return float(2.0 * np.arcsin(min(1.0, np.linalg.norm(R - np.eye(3)) / (2.0 * np.sqrt(2.0)))))
 
 
-def run(results, L: se.LargestAxis, body: se.Body, w0: np.ndarray):
-    """Attitude from w0 over PERIODS periods of omega in the body; returns the curves for the sphere panel."""
+class SpaceMotion(NamedTuple):
+    """The body's attitude over PERIODS periods of omega in the body, integrated two ways."""
+
+    omega_period: float  # T: omega returns in the body (time units)
+    omega_return: float  # |omega(T) - omega(0)|/|omega(0)|
+    angles_vs_quaternion: float  # largest rotation between the two attitudes (rad)
+    theta_min: float
+    theta_max: float
+    momentum_vs_torque: float  # largest |L(t) - L(0) - int R M dt|/|L(t)| in space
+    turn_after_period: float  # the body's rotation in space after one period of omega (rad)
+    momentum_direction_turn: float  # the angle between L/|L| at 0 and after one period (rad)
+    xs: np.ndarray  # the body's x-axis in space, for the sphere panel
+    ls: np.ndarray  # L/|L| in space
+
+
+def motion(L: se.LargestAxis, body: se.Body, w0: np.ndarray) -> SpaceMotion:
+    """Attitude from w0 over PERIODS periods of omega in the body."""
     a, b, c = L.body.a, L.body.b, L.body.c
     params = np.array([a, b, c, L.m, L.mu, 2.0 * np.pi / np.sqrt(b * c)])  # phi1 advances 2 pi: omega returns
     first = solve(
@@ -101,15 +118,7 @@ def run(results, L: se.LargestAxis, body: se.Body, w0: np.ndarray):
         events=Events(motions.phase_reaches, 1, (1,), (True,)),
     )
     T = float(first.t)
-    results.number(
-        "space_omega_period", T, "time units", note="ω returns in the body: φ1 = √(bc)∫p dt advances 2π"
-    )
-    results.number(
-        "space_omega_return",
-        float(np.linalg.norm(first.y[:3] - w0) / np.linalg.norm(w0)),
-        "1",
-        note="|ω(T) − ω(0)|/|ω(0)|",
-    )
+    omega_return = float(np.linalg.norm(first.y[:3] - w0) / np.linalg.norm(w0))
     span = PERIODS * T
     x, wts = np.polynomial.legendre.leggauss(GAUSS_NODES)
     edges = np.linspace(0.0, span, 80 * PERIODS + 1)
@@ -136,15 +145,6 @@ def run(results, L: se.LargestAxis, body: se.Body, w0: np.ndarray):
     Ra = np.array([angles_matrix(*y) for y in ang.y_eval[:, 3:]])
     angle_gap = max(rotation_angle(A.T @ B) for A, B in zip(Rq, Ra))
     theta = ang.y_eval[:, 4]
-    results.number(
-        "space_angles_vs_quaternion",
-        angle_gap,
-        "rad",
-        note="largest rotation between the attitude "
-        "from Euler's angles (1.2) and from the quaternion, over four periods of ω",
-    )
-    results.number("space_theta_min", float(theta.min()), "rad", note="θ stays off the poles of (1.2)")
-    results.number("space_theta_max", float(theta.max()), "rad")
 
     w = quat.y_eval[:, :3]
     moments = np.array([body.A, body.B, body.C])
@@ -160,37 +160,68 @@ def run(results, L: se.LargestAxis, body: se.Body, w0: np.ndarray):
         gain += 0.5 * (edges[k + 1] - edges[k]) * np.sum(wts[:, None] * Ms[[index[s] for s in chunk]], axis=0)
         change = Ls[index[edges[k + 1]]] - Ls[0]
         worst = max(worst, float(np.linalg.norm(change - gain) / np.linalg.norm(Ls[index[edges[k + 1]]])))
-    results.number(
-        "space_momentum_vs_torque",
-        worst,
-        "1",
-        note="largest |L(t) − L(0) − ∫R M dt|/|L(t)| in space, "
-        "the torque integrated by Gauss–Legendre on the quaternion's attitude",
-    )
     after = next(i for i, s in enumerate(t) if s >= T - 1e-12)
     # one period exactly: integrate to T alone
     one = solve(
         Problem(se.euler_largest_attitude, np.r_[w0, e0], (0.0, T), P), "dop853", rtol=RTOL, atol=ATOL
     )
     turn = rotation_angle(quaternion_matrix(one.y[3:]) @ R0.T)
+    L0, L1 = Ls[0] / np.linalg.norm(Ls[0]), Ls[after] / np.linalg.norm(Ls[after])
+    xs = Rq[:, :, 0]
+    ls = Ls / np.linalg.norm(Ls, axis=1)[:, None]
+    keep = np.isin(t, np.linspace(0.0, span, 801))
+    return SpaceMotion(
+        omega_period=T,
+        omega_return=omega_return,
+        angles_vs_quaternion=angle_gap,
+        theta_min=float(theta.min()),
+        theta_max=float(theta.max()),
+        momentum_vs_torque=worst,
+        turn_after_period=turn,
+        momentum_direction_turn=float(np.arccos(np.clip(L0 @ L1, -1, 1))),
+        xs=xs[keep],
+        ls=ls[keep],
+    )
+
+
+def record(results, values: SpaceMotion):
+    """The numbers of the motion in space (the sphere's figure is drawn with the period series')."""
+    results.number(
+        "space_omega_period",
+        values.omega_period,
+        "time units",
+        note="ω returns in the body: φ1 = √(bc)∫p dt advances 2π",
+    )
+    results.number("space_omega_return", values.omega_return, "1", note="|ω(T) − ω(0)|/|ω(0)|")
+    results.number(
+        "space_angles_vs_quaternion",
+        values.angles_vs_quaternion,
+        "rad",
+        note="largest rotation between the attitude "
+        "from Euler's angles (1.2) and from the quaternion, over four periods of ω",
+    )
+    results.number("space_theta_min", values.theta_min, "rad", note="θ stays off the poles of (1.2)")
+    results.number("space_theta_max", values.theta_max, "rad")
+    results.number(
+        "space_momentum_vs_torque",
+        values.momentum_vs_torque,
+        "1",
+        note="largest |L(t) − L(0) − ∫R M dt|/|L(t)| in space, "
+        "the torque integrated by Gauss–Legendre on the quaternion's attitude",
+    )
     results.number(
         "space_turn_after_period",
-        turn,
+        values.turn_after_period,
         "rad",
         note="rotation of the body in space after one period of "
         "ω in the body (0 if the motion in space were periodic)",
     )
-    L0, L1 = Ls[0] / np.linalg.norm(Ls[0]), Ls[after] / np.linalg.norm(Ls[after])
     results.number(
         "space_momentum_direction_turn",
-        float(np.arccos(np.clip(L0 @ L1, -1, 1))),
+        values.momentum_direction_turn,
         "rad",
         note="angle between L/|L| at 0 and after one period of ω (sample nearest)",
     )
-    xs = Rq[:, :, 0]
-    ls = Ls / np.linalg.norm(Ls, axis=1)[:, None]
-    keep = np.isin(t, np.linspace(0.0, span, 801))
-    return xs[keep], ls[keep]
 
 
 def wander(ls):
