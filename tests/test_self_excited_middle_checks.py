@@ -8,15 +8,6 @@ from classical_dynamics.models import self_excited as se
 from classical_dynamics.studies.self_excited import middle_checks as mc
 from classical_dynamics.studies.self_excited import symbolic
 
-
-class Numbers:
-    def __init__(self):
-        self.values = {}
-
-    def number(self, name, value, unit, **kw):
-        self.values[name] = value
-
-
 BODY = se.Body.from_moments([3.0, 2.2, 1.2])
 
 
@@ -50,39 +41,33 @@ def test_theta_series_orders_and_a_wrong_theta2_is_caught(monkeypatch):
     M = _sinh()
     center = float(np.arcsinh(0.5))
     k_sq, beta2, beta3 = np.sqrt(1.25), -0.5, -np.sqrt(1.25)
-    slopes = mc.theta_series(Numbers(), M, center, k_sq, beta2, beta3)
+    slopes = mc.theta_series(M, center, k_sq, beta2, beta3).slopes
     assert abs(slopes[0] - 2) < 0.3 and abs(slopes[1] - 3) < 0.3 and abs(slopes[2] - 4) < 0.3
     right = mc.lee_theta2
     monkeypatch.setattr(mc, "lee_theta2", lambda s, k, b, m: 1.1 * right(s, k, b, m))
-    assert mc.theta_series(Numbers(), M, center, k_sq, beta2, beta3)[1] < 2.3
+    assert mc.theta_series(M, center, k_sq, beta2, beta3).slopes[1] < 2.3
 
 
 def test_general_solution_and_k_identity_along_euler():
     M = _sinh()
-    out = Numbers()
-    mc.general_solution(out, M, M.from_plane(0.2, 0.5), 12.0 / M.time_scale)
+    out = mc.general_solution(M, M.from_plane(0.2, 0.5), 12.0 / M.time_scale)
     # independent methods: Euler's equations integrated (DOP853) against Lee's (3.3) and (3.8) in closed form,
     # which call no integrator; a coefficient of m0 scaled 0.5 -> 0.45, or Euler's r' scaled by 0.9, fails it
-    assert out.values["general_solution_error"] < 1e-10 and out.values["k_identity_error"] < 1e-10
+    assert out.error < 1e-10 and out.k_identity_error < 1e-10
 
 
 def test_center_rests_and_middle_axis_is_unstable():
     M = se.MiddleAxis.with_plane_parameters(BODY, 0.5, 0.0, 0.8, 0.3)
-    out = Numbers()
-    mc.center_at_rest(out, M, float(np.arcsinh(0.5)))
-    mc.middle_axis_unstable(out, M)
-    assert out.values["center_drift"] < 1e-12 and out.values["y_axis_escape_angle"] > 0.5
+    assert mc.center_at_rest(M, float(np.arcsinh(0.5))).drift < 1e-12
+    assert mc.middle_axis_unstable(M) > 0.5
 
 
 def test_plane_one_large_q0_has_no_exceptions():
     M = se.MiddleAxis.with_plane_parameters(BODY, 0.5, -0.2, 0.6, 0.6)
-    out = Numbers()
-    mc.large_q0(out, M, m3s=(5.0,))
-    assert out.values["large_q0_runs"] == 8 and out.values["large_q0_exceptions"] == 0
+    out = mc.large_q0(M, m3s=(5.0,))
+    assert out.runs == 8 and out.exceptions == 0
 
 
 def test_plane_departure_is_rounding_in_plane_two():
     M = se.MiddleAxis.with_plane_parameters(BODY, -0.5, -0.1, 0.6, -0.6)
-    out = Numbers()
-    mc.plane_departure(out, M, M.from_plane(0.5, 0.0), 12.0 / M.time_scale)
-    assert out.values["plane_off_share"] < 1e-12
+    assert mc.plane_departure(M, M.from_plane(0.5, 0.0), 12.0 / M.time_scale) < 1e-12

@@ -115,20 +115,16 @@ def test_large_order_bound_holds_and_the_factor_is_lees():
             {"nu": 0.3, "mu": 0.5, "torque": [0.4, -0.2, 0.3], "omega0": [0.5, 0.8, 2.0], "t_max": 1}
         ).data
     )
-    results = _results()
-    viscous.large_order(results, V, nu=0.32, mu=0.05, times=(5.0, 20.0))
-    got = _values(results)
+    got = viscous.large_order(V, nu=0.32, mu=0.05, times=(5.0, 20.0))
     h, g1 = 0.6, 0.6 * 0.3 / 0.05  # xi's final rate h m3/mu
-    assert complex(got["large_order_w_real"], got["large_order_w_imag"]) == pytest.approx(
-        1 + (0.32 + 1j * g1) / 0.05, rel=1e-13
-    )
+    assert complex(got.w.real, got.w.imag) == pytest.approx(1 + (0.32 + 1j * g1) / 0.05, rel=1e-13)
     # the formula in double precision loses digits here (w = 7.4 + 72i, |g| = 48): its error against 30
     # digits is its distance from the true motion, scipy's integration of (5.49), and its bound covers it
     run = _lee_549(h, 0.32, 0.05, (0.4, -0.2, 0.3), [0.5, 0.8, 2.0], 20.0, [5.0, 20.0])
     y, _ = replace(V, nu=0.32, mu=0.05).closed_form([5.0, 20.0])
     distance = np.max(np.hypot(*(y[:, :2] - run.y.T[:, :2]).T))
-    assert got["large_order_error"] == pytest.approx(distance, rel=1e-6)
-    assert 1e-3 < got["large_order_error"] <= got["large_order_bound"] + 1e-13
+    assert got.error == pytest.approx(distance, rel=1e-6)
+    assert 1e-3 < got.error <= got.bound + 1e-13
 
 
 def test_solution_costs_reach_the_30_digit_state_by_series_and_integration():
@@ -137,9 +133,7 @@ def test_solution_costs_reach_the_30_digit_state_by_series_and_integration():
             {"nu": 0.3, "mu": 0.5, "torque": [0.4, -0.2, 0.3], "omega0": [0.5, 0.8, 2.0], "t_max": 1}
         ).data
     )
-    results = _results()
-    viscous.solution_costs(results, V, True, t_end=2.0)
-    frame = results.tables["accuracy_solution"][0]
+    frame = viscous.solution_costs(V, True, t_end=2.0).frame
     # more terms of the series, a smaller error; the best integrator reaches 1e-10
     series = frame[frame.method == "Lee formula, series"].sort_values("setting")
     assert series.error.iloc[-1] < 1e-12 < series.error.iloc[0]
@@ -151,15 +145,15 @@ def test_solution_costs_reach_the_30_digit_state_by_series_and_integration():
 
 
 def test_special_function_costs_keep_their_bounds():
-    results = _results()
-    viscous.special_function_costs(results, True)
-    got = _values(results)
-    assert got["si_ci_error_over_bound"] <= 1.0
+    got = viscous.special_function_costs(True)
+    assert got.error_over_bound <= 1.0
     # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
-    assert all(case["holds"] for case in results.stability)
+    results = _results()
+    viscous._record_special_function_costs(results, got)
+    assert got.bounds_exceeded == 0 and all(case["holds"] for case in results.stability)
     # the series serves small x, the expansion large x (Lee (5.38)-(5.48))
-    assert got["si_ci_reaches_1e-12_x2_series"] == 1
-    assert got["si_ci_asymptotic_error_x30"] < 1e-12
+    assert got.reaches[2.0, "series"] == 1
+    assert float(got.frame.asymptotic_error[got.frame.x == 30.0].iloc[0]) < 1e-12
 
 
 # --- accuracy.py: what accuracy costs on Lee's plane (2.10) --------------------------------------------
@@ -433,12 +427,10 @@ def test_time_dependent_torque_quadratures_against_scipy_and_the_principal_arcta
         np.testing.assert_allclose(q["fixed"], reference, atol=1e-9)
         # sigma1 = arctan(m1/m2) as a principal value puts the torque term in the wrong quadrant (m2 < 0)
         assert np.max(np.abs(q["principal"][:2] - reference[:2])) > 0.05
-    results = _results()
-    section5.time_dependent_torque(results, V)
-    got = _values(results)
-    assert got["td_general_vs_ode"] < 1e-9 and got["td_frictionless_fixed_vs_ode"] < 1e-9
-    assert 0 < got["td_theorem_1_ratio"] <= 1  # Theorem 1 with M_i' = |m_i| max F
-    assert got["td_fixed_principal_arctan_gap"] > 0.05
+    got = section5.time_dependent_torque(V)
+    assert got.friction["general"] < 1e-9 and got.frictionless["fixed"] < 1e-9
+    assert 0 < got.theorem_1_ratio <= 1  # Theorem 1 with M_i' = |m_i| max F
+    assert got.friction["principal"] > 0.05
 
 
 def test_case_one_panels_run_straight_to_the_point_and_keep_r_zero():

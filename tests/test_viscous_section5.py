@@ -19,17 +19,6 @@ V2 = replace(V3, m=(0.4, -0.2, 0.0))
 FREE2 = replace(V2, nu=0.0, mu=0.0)
 
 
-class Numbers:
-    def __init__(self):
-        self.n, self.hard = {}, []
-
-    def number(self, name, value, unit, **kw):
-        self.n[name] = value
-
-    def hard_case(self, name, description, measured, bound, unit=""):
-        self.hard.append((name, measured, bound))
-
-
 @pytest.mark.parametrize("kind, a, b", [(0, 0.5, 2.0), (1, 1.0, 1.0)])
 @pytest.mark.parametrize("V", [V3, replace(V3, nu=0.0, mu=0.0)])
 def test_time_dependent_quadratures_against_eulers_equations(V, kind, a, b):
@@ -53,22 +42,20 @@ def test_constant_modulus_reduces_to_the_constant_torque_solution():
 
 
 def test_case_one_and_four_are_straight_and_reach_the_point():
-    r = Numbers()
-    s5.case_one(r, V2)
-    s5.case_four(r, V3)
-    for name in (
-        "case_one_lee_vs_ode",
-        "case_one_line_distance",
-        "case_one_frictionless_gap",
-        "case_four_lee_vs_ode",
-        "case_four_line_distance",
-        "case_four_frictionless_gap",
-        "case_four_space_line_distance_equal_drags",
+    one, four = s5.case_one(V2), s5.case_four(V3)
+    for name, value in (
+        ("case_one_lee_vs_ode", one.linear.lee),
+        ("case_one_line_distance", one.linear.line_pq),
+        ("case_one_frictionless_gap", one.linear.frictionless),
+        ("case_four_lee_vs_ode", four.linear.lee),
+        ("case_four_line_distance", four.linear.line_pq),
+        ("case_four_frictionless_gap", four.linear.frictionless),
+        ("case_four_space_line_distance_equal_drags", four.line_equal_drags),
     ):
-        assert r.n[name] < 1e-11, name
-    assert r.n["case_one_limit_gap"] < 1e-8 and r.n["case_four_limit_gap"] < 1e-8
-    assert r.n["case_one_r_max"] == 0.0
-    assert r.n["case_four_space_line_distance"] > 0.1  # nu != mu: curved in space
+        assert value < 1e-11, name
+    assert one.linear.gap < 1e-8 and four.linear.gap < 1e-8
+    assert one.r_max == 0.0
+    assert four.linear.line_space > 0.1  # nu != mu: curved in space
 
 
 def test_lee_linear_formula_is_not_the_integrator():
@@ -81,14 +68,14 @@ def test_lee_linear_formula_is_not_the_integrator():
 
 
 def test_spiral_rates_and_hyperbola():
-    r = Numbers()
-    s5.spiral(r, V3)
-    assert abs(r.n["spiral_decay_rate"] / V3.nu - 1) < 1e-8
-    assert abs(r.n["spiral_turn_rate"] / V3.g1 - 1) < 1e-8
-    panels, _ = s5.singular_curve(r, FREE2)
-    assert r.n["singular_curve_drift"] < 1e-12
-    assert abs(r.n["singular_curve_k"] + np.hypot(0.4, 0.2) / FREE2.h) < 1e-14
-    assert r.n["circle_center_fit_gap"] < 1e-10 and len(panels) == 1
+    spiral = s5.spiral(V3)
+    assert abs(spiral.decay_rate / V3.nu - 1) < 1e-8
+    assert abs(spiral.turn_rate / V3.g1 - 1) < 1e-8
+    curve = s5.singular_curve(FREE2)
+    panels, _ = s5.singular_curve_panels(curve)
+    assert curve.drift < 1e-12
+    assert abs(curve.k_mean + np.hypot(0.4, 0.2) / FREE2.h) < 1e-14
+    assert curve.circle_center_gap < 1e-10 and len(panels) == 1
 
 
 def test_a_point_off_the_hyperbola_moves():
@@ -112,13 +99,12 @@ def test_reduction_formulas_and_the_printed_sign(K, x):
 
 
 def test_reduction_a_b_and_re_w():
-    r = Numbers()
-    s5.reduction_formulas(r, V3)
-    assert r.n["reduction_A_B_error"] < 1e-25 and r.n["reduction_relative_error"] < 1e-30
-    s5.re_w(r, V3)
-    assert r.n["re_w_formula"] == pytest.approx(1.6, rel=1e-15)
-    assert 1.0 < r.n["re_w_elongated_min"] < r.n["re_w_elongated_max"] < 2.0 < r.n["re_w_disc_min"]
-    assert r.n["re_w_disc_max"] == pytest.approx(3.0, rel=1e-15)
+    reduction = s5.reduction_formulas(V3)
+    assert reduction.a_b_error < 1e-25 and reduction.relative_error < 1e-30
+    re_w = s5.re_w(V3)
+    assert re_w.formula == pytest.approx(1.6, rel=1e-15)
+    assert 1.0 < min(re_w.elongated) < max(re_w.elongated) < 2.0 < min(re_w.disc)
+    assert max(re_w.disc) == pytest.approx(3.0, rel=1e-15)
 
 
 @pytest.mark.parametrize("s", [0.3, 7.0, 30.0])
@@ -135,8 +121,7 @@ def test_every_added_panel_labels_both_axes_with_units():
     """The panels Cases I and IV add beside the solution: each axis named, in Lee's scaled units."""
     import matplotlib.pyplot as plt
 
-    r = Numbers()
-    drawers = s5.case_one(r, V2)[0] + s5.singular_curve(r, FREE2)[0]
+    drawers = s5.case_one_panels(s5.case_one(V2))[0] + s5.singular_curve_panels(s5.singular_curve(FREE2))[0]
     fig, axes = plt.subplots(1, len(drawers))
     for draw, ax in zip(drawers, axes):
         draw(ax)

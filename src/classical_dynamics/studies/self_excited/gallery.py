@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
+from typing import NamedTuple
 
 from ...io import ResultError
 
@@ -768,11 +769,12 @@ def closed_form_figure(frame, mu_c, body):
     return fig
 
 
-def closed_forms(results):
-    """Lee's Figures 2.1, 2.3, 3.6 and 3.7 as one figure with its table and the crossings as numbers."""
+def _record_closed_forms(results, data):
+    """Lee's Figures 2.1, 2.3, 3.6 and 3.7 as one figure with its table and the crossings as numbers (data:
+    closed_form_data())."""
     from ...formatting import shortest
 
-    frame, crossings, mu_c, body = closed_form_data()
+    frame, crossings, mu_c, body = data
     moments = ", ".join(shortest(m) for m in CLOSED_FORM_BODY)
     (a1, a2), (_, b2) = CLOSED_FORM_ALPHA
     caption = (
@@ -834,9 +836,9 @@ def build(study_dir: Path, scenes, quick=False):
                 results.number(
                     f"grid_{panel.scene}", group.name, "", note="the grid that draws the scene's portrait"
                 )
-    closed_forms(results)
-    body_views(results)
-    symbolic_checks(results)
+    _record_closed_forms(results, closed_form_data())
+    _record_body_views(results, body_view_data())
+    _record_symbolic_checks(results, symbolic_checks())
     return results
 
 
@@ -972,9 +974,8 @@ def body_view_figure(frame):
     return fig
 
 
-def body_views(results):
-    """Lee's Figures 3.1 and 3.2 as one figure with its table."""
-    frame = body_view_data()
+def _record_body_views(results, frame):
+    """Lee's Figures 3.1 and 3.2 as one figure with its table (frame: body_view_data())."""
     results.figure(
         "body_views",
         body_view_figure(frame),
@@ -1000,62 +1001,85 @@ def body_views(results):
     )
 
 
-def symbolic_checks(results):
+class SymbolicChecks(NamedTuple):
     """Lee §3's k1, k2, mu_c and nu_c, and §4.1's series coefficients, by sympy (see symbolic.py)."""
+
+    k_constants: int  # terms of (3.3) in Euler's q equation that do not cancel against (3.8)
+    mu_c_factors: int  # factorisations of k1 -+ k2 sympy does not confirm
+    mu_c_exceptions: int  # random bodies, cylinders and drags breaking Lee's rule
+    mu_c_samples: int
+    mu_c_below: int  # of them below mu_c
+    nu_c_identity: int  # a - b + c - abc simplified (0: the identity holds)
+    nu_c_exact: object  # b/(2(a + c)) for the moments 3, 2.2, 1.2, exact (sympy)
+    nu_c_largest: float  # over random bodies
+    nu_c_bodies: int
+    lindstedt_differ: list  # Lee's printed coefficients that differ from the expansion
+    lindstedt_total: int
+
+
+def symbolic_checks() -> SymbolicChecks:
     import numpy as np
 
     from . import symbolic
 
     rng = np.random.default_rng(1964)
+    k_constants = symbolic.k_constants()
+    factors, exceptions, samples, below = symbolic.mu_c_regimes(rng)
+    identity, exact, largest, bodies = symbolic.nu_c(rng)
+    differ, total, _ = symbolic.lindstedt()
+    return SymbolicChecks(
+        k_constants, factors, exceptions, samples, below, identity, exact, largest, bodies, differ, total
+    )
+
+
+def _record_symbolic_checks(results, values: SymbolicChecks):
     results.number(
         "k_constants_mismatch",
-        symbolic.k_constants(),
+        values.k_constants,
         "1",
         note="terms of (3.3) put into Euler's q "
         "equation that do not cancel against Lee's (3.8) with his m0, k1, k2 (sympy)",
     )
-    factors, exceptions, samples, below = symbolic.mu_c_regimes(rng)
     results.number(
         "mu_c_factor_mismatch",
-        factors,
+        values.mu_c_factors,
         "1",
         note="of k1 − k2 = ½(α1 − α2)²(a + c)(|μ| − μc) and "
         "k1 + k2 = −½(α1 + α2)²(a + c)(|μ| + μc), those sympy does not confirm",
     )
     results.number(
         "mu_c_regime_exceptions",
-        exceptions,
+        values.mu_c_exceptions,
         "1",
-        note=f"of {samples} random bodies, cylinders and "
-        f"drags |μ| in (0, 2μc) ({below} below μc), those breaking Lee's rule: below μc |k1| > |k2| and "
-        "k1 < 0, above it |k2| > |k1| and k2 < 0",
+        note=f"of {values.mu_c_samples} random bodies, cylinders and "
+        f"drags |μ| in (0, 2μc) ({values.mu_c_below} below μc), those breaking Lee's rule: below μc "
+        "|k1| > |k2| and k1 < 0, above it |k2| > |k1| and k2 < 0",
     )
-    identity, exact, largest, bodies = symbolic.nu_c(rng)
     results.number(
         "nu_c_identity_mismatch",
-        identity,
+        values.nu_c_identity,
         "1",
         note="a − b + c − abc simplified by sympy for symbolic "
         "A, B, C (0: the identity holds, so b < a + c and νc < ½)",
     )
     results.number(
         "nu_c_exact",
-        float(exact),
+        float(values.nu_c_exact),
         "1",
-        note=f"b/(2(a + c)) in exact arithmetic for the moments 3, 2.2, 1.2: {exact}",
+        note=f"b/(2(a + c)) in exact arithmetic for the moments 3, 2.2, 1.2: {values.nu_c_exact}",
     )
     results.number(
         "nu_c_sweep_max",
-        largest,
+        values.nu_c_largest,
         "1",
-        note=f"largest νc = b/(2(a + c)) over {bodies} random bodies A > B > C, A < B + C",
+        note=f"largest νc = b/(2(a + c)) over {values.nu_c_bodies} random bodies A > B > C, A < B + C",
     )
-    differ, total, _ = symbolic.lindstedt()
+    differ = values.lindstedt_differ
     results.number(
         "lindstedt_mismatch",
         len(differ),
         "1",
-        note=f"of Lee's {total} printed coefficients of (4.6)–"
+        note=f"of Lee's {values.lindstedt_total} printed coefficients of (4.6)–"
         "(4.8) (h1, θ2's three, h2, c0 … c3, h3), those that differ from a sympy Lindstedt–Poincaré "
         "expansion of (4.1) to third order" + (f": {', '.join(differ)}" if differ else ""),
     )

@@ -14,6 +14,8 @@ the plane has it.
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 from scipy.optimize import brentq
 
@@ -69,7 +71,9 @@ def run(scene, results, quick):
     m1 = float(M.m1) if m1 is None else float(m1)
     lo, hi = data.get("portrait", {}).get("phi2_range", [-4.0, 4.0])
     q1_max = data.get("portrait", {}).get("p1_max", 3.0)
-    points = _record_reduction(results, M, plane, m1, nu)
+    reduced = reduction(M, m1)
+    _record_reduction(results, M, plane, m1, nu, reduced)
+    points = reduced.points
 
     fig, ax = new_figure(TEXT_WIDTH_IN, 3.6)
     drawing = portrait.Drawing("q1", (lo - 0.5, hi + 0.5, 2.0 * q1_max))
@@ -79,11 +83,15 @@ def run(scene, results, quick):
     starts, others = _starts(M.form, centers, saddles, lo, hi)
     for y in portrait.trajectories(se.plane_middle, M.plane_parameters, starts + others, 30.0):
         drawing.curve("trajectory", y[:, 0], y[:, 1])
-    _orbits_close(results, M, starts)
+    if starts:
+        _record_orbits_close(results, orbits_close(M, starts))
     _separatrix(drawing, M, saddles, centers, lo, hi)
     _fates(results, drawing, M, points, centers, saddles, others)
     overlay_starts = starts[:3] + others[:1] if starts else others[2:6]
-    _overlay_checks(results, drawing, M, overlay_starts)
+    mapped = overlay(M, overlay_starts)
+    for curve in mapped.curves:
+        drawing.curve("euler", curve[:, 0], curve[:, 1])
+    _record_overlay(results, M, mapped)
     drawing.points(points)
     drawing.window(lo, hi, q1_max)
     portrait.finish(ax, drawing, "$q_1$")
@@ -106,19 +114,24 @@ def run(scene, results, quick):
         accuracy.huge_excursion(results, M, start, quick)
 
 
-def _record_reduction(results, M, plane, m1, nu):
-    """The plane's parameters, the physical torque that gives them, and its singular points (returned)."""
+class Reduction(NamedTuple):
+    nu_c: float  # b/(2(a + c)): above it the cosh form
+    points: list  # the singular points: {"phi2", "p1", "type"}
+
+
+def reduction(M, m1) -> Reduction:
+    """The critical drag and the plane's singular points (m1: the scene's, or the plane's if it has none)."""
+    return Reduction(se.MiddleAxis.plane_nu("nu_c", M.body), _singular_points(m1, M.form, M.eps1))
+
+
+def _record_reduction(results, M, plane, m1, nu, values: Reduction):
+    """The plane's parameters, the physical torque that gives them, and its singular points."""
     form, name = M.form, LABELS[M.form]
     results.number(
         "m1", m1, "1", note=f"{name} of the plane: " + plane.get("source", "chosen to show the regime")
     )
     results.number("nu", nu, "1", note="mu1 = −nu")
-    results.number(
-        "nu_c",
-        se.MiddleAxis.plane_nu("nu_c", M.body),
-        "1",
-        note="b/(2(a + c)): above it the cosh form (3.56) takes over",
-    )
+    results.number("nu_c", values.nu_c, "1", note="b/(2(a + c)): above it the cosh form (3.56) takes over")
     results.number("cosh_form", int(form == "cosh"), "1", note="1: |k2| > |k1|, Lee (3.56); 0 otherwise")
     results.number(
         "form",
@@ -130,13 +143,12 @@ def _record_reduction(results, M, plane, m1, nu):
     results.number("M_over_B", M.m, "1/time²", note=f"the constant torque per unit B that gives {name} here")
     results.number("mu0_over_B", M.mu, "1")
     results.number("hyperbola", M.alpha1**2 - M.alpha2**2, "1", note="p²/a − r²/c = α1² − α2²")
-    points = _singular_points(m1, form, M.eps1)
+    points = values.points
     results.number(
         "singular_points", points, "1", note=f"q1 = 0 where {name} + ε f(φ2) = 0, typed by the linearization"
     )
     for kind in ("saddle", "center", "degenerate"):
         results.number(f"n_{kind}s", sum(pt["type"] == kind for pt in points), "1")
-    return points
 
 
 def _starts(form, centers, saddles, lo, hi):
@@ -160,8 +172,8 @@ def _starts(form, centers, saddles, lo, hi):
     return starts, others
 
 
-def _orbits_close(results, M, starts):
-    """Orbits about the center close: each turns back twice."""
+def orbits_close(M, starts) -> int:
+    """Orbits about the center close: each turns back twice. Returns how many of the starts' orbits do not."""
     closed = 0
     for phi, q1 in starts:
         sol = solve(
@@ -173,22 +185,26 @@ def _orbits_close(results, M, starts):
             bound=portrait.BLOW_UP_BOUND,
         )
         closed += len(sol.event_t) >= 2
-    if starts:
-        results.hard_case(
-            "orbits_about_the_center_closed",
-            "Starts about the center whose orbit does not close "
-            "(count; Lee: every motion is periodic for $|\\mu| < \\mu_\\mathrm{c}$, and inside the "
-            "saddle's loop or $F$ otherwise)",
-            len(starts) - closed,
-            0,
-        )
+    return len(starts) - closed
+
+
+def _record_orbits_close(results, not_closed: int):
+    results.hard_case(
+        "orbits_about_the_center_closed",
+        "Starts about the center whose orbit does not close "
+        "(count; Lee: every motion is periodic for $|\\mu| < \\mu_\\mathrm{c}$, and inside the "
+        "saddle's loop or $F$ otherwise)",
+        not_closed,
+        0,
+    )
 
 
 def _fates(results, drawing, M, points, centers, saddles, others):
     """Each fate Lee names where this plane has it: every start escapes, the rare case's blow-up and rest
-    line, motions of the third kind, the unperturbed runaway, settling to a finite limit."""
+    line, motions of the third kind, the unperturbed runaway, settling to a finite limit. Picks the checks
+    and records them."""
     if M.mu1 < 0 and _turns_nowhere(M):
-        _every_start_escapes(results, M, others)
+        _record_every_start_escapes(results, every_start_escapes(M, others))
     if M.form == "rare":
         rare_case.escape(results, M)
         if M.m1 == 0.0:
@@ -196,17 +212,22 @@ def _fates(results, drawing, M, points, centers, saddles, others):
     else:
         escape = _escaping_start(M, centers, saddles)
         if escape is not None:
-            _third_kind(results, M, escape)
+            _record_third_kind(results, third_kind(M, escape))
     if M.mu1 == 0.0 and not points:
-        _runaway(results, M)
+        _record_runaway(results, M, runaway(M))
     if M.mu1 < 0 and not points and M.m1 > 0 and not _turns_nowhere(M):
-        _settles(results, M)
+        _record_settles(results, settles(M))
 
 
-def _overlay_checks(results, drawing, M, overlay_starts):
+def _record_overlay(results, M, values: Overlay):
     """Euler's equations mapped into the plane: on the plane's trajectories, keeping its first integral, and
     on their hyperbolic cylinder."""
-    deviation, hyp, invariant, share = _overlay(drawing, M, overlay_starts)
+    deviation, hyp, invariant, share = (
+        values.deviation,
+        values.cylinder_spread,
+        values.invariant,
+        values.share,
+    )
     results.number(
         "overlay_deviation", deviation, "1", note="Euler's equations in the plane against the plane, max"
     )
@@ -357,7 +378,8 @@ def _turns_nowhere(M):
     return top <= 0.0
 
 
-def _every_start_escapes(results, M, starts):
+def every_start_escapes(M, starts) -> int:
+    """How many of the starts do not leave every bound in finite time."""
     stayed = 0
     for start in starts:
         sol = solve(
@@ -368,6 +390,10 @@ def _every_start_escapes(results, M, starts):
             bound=portrait.BLOW_UP_BOUND,
         )
         stayed += sol.status != "blow-up"
+    return stayed
+
+
+def _record_every_start_escapes(results, stayed: int):
     results.hard_case(
         "every_start_escapes",
         "Starts of the portrait that do not leave every bound in finite time "
@@ -461,7 +487,13 @@ def _escaping_start(M, centers, saddles):
     return [0.0, 0.0] if _turns_nowhere(M) else None
 
 
-def _third_kind(results, M, start):
+class ThirdKind(NamedTuple):
+    blows_up: bool  # the start leaves every bound in finite time
+    t: float  # where the integration stopped (the blow-up time if it blows up)
+
+
+def third_kind(M, start) -> ThirdKind:
+    """A start outside the bounded region, integrated until it leaves every bound (or tau = 200)."""
     sol = solve(
         Problem(se.plane_middle, start, (0.0, 200.0), M.plane_parameters()),
         "dop853",
@@ -469,10 +501,14 @@ def _third_kind(results, M, start):
         atol=1e-14,
         bound=portrait.BLOW_UP_BOUND,
     )
-    if sol.status == "blow-up":
+    return ThirdKind(sol.status == "blow-up", sol.t)
+
+
+def _record_third_kind(results, values: ThirdKind):
+    if values.blows_up:
         results.number(
             "blow_up_time",
-            sol.t,
+            values.t,
             "τ",
             note="a start just outside the bounded region: ω leaves every "
             f"bound (|y| passes {portrait.BLOW_UP_BOUND:g})",
@@ -480,16 +516,27 @@ def _third_kind(results, M, start):
     results.hard_case(
         "third_kind_blows_up",
         "A start outside the bounded region leaves every bound in finite time (1 if it does not)",
-        0.0 if sol.status == "blow-up" else 1.0,
+        0.0 if values.blows_up else 1.0,
         0.0,
     )
 
 
-def _overlay(drawing, M, starts):
-    """Euler's equations from each start mapped into the plane against the plane's solution; returns the worst
-    deviation, the spreads of the hyperbola and of the plane's first integral along Euler's rows, and the
-    share of samples compared."""
+class Overlay(NamedTuple):
+    """Euler's equations from the overlay's starts mapped into the plane, against the plane's solution."""
+
+    deviation: float  # largest, relative to max(1, |plane's value|)
+    cylinder_spread: float  # of p^2/a - r^2/c, relative
+    invariant: float  # the plane's first integral's largest relative spread
+    share: float  # of the samples compared
+    curves: list  # each run mapped into the plane, every 5th compared sample: (phi2, q1) rows
+
+
+def overlay(M, starts) -> Overlay:
+    """Euler's equations from each start mapped into the plane against the plane's solution: the worst
+    deviation, the spreads of the hyperbola and of the plane's first integral along Euler's rows, the share
+    of samples compared, and the mapped runs to draw."""
     worst, hyp_worst, inv_worst, compared = 0.0, 0.0, 0.0, 0
+    curves = []
     for phi, q1 in starts:
         tau = np.linspace(0.0, 12.0, 241)
         # a start that runs away stops there, as in the plane
@@ -530,18 +577,25 @@ def _overlay(drawing, M, starts):
             hyp_worst, float(np.ptp(h) / max(abs(h[0]), w0[0] ** 2 / M.body.a + w0[2] ** 2 / M.body.c))
         )
         inv_worst = max(inv_worst, se.middle_invariant_spread(mapped, M.m1, M.mu1, M.eps1, M.form))
-        drawing.curve("euler", mapped[::5, 0], mapped[::5, 1])
-    return worst, hyp_worst, inv_worst, compared / (len(starts) * tau.size)
+        curves.append(mapped[::5])
+    return Overlay(worst, hyp_worst, inv_worst, compared / (len(starts) * tau.size), curves)
+
+
+def lyapunov_coefficients(M, center):
+    """k^2, beta2, beta3 of the Lyapunov system about the center: minus the first, the second and the third
+    derivative of F = m + eps f(phi2) there."""
+    F = _derivatives(M.m1, M.form, M.eps1, center)
+    return -F[1], F[2], F[3]
 
 
 def _series(results, M, center, nu):
-    """Lee §4: the Lyapunov system about the center, (4.13), (4.14), (4.15), (4.16)."""
-    F = _derivatives(M.m1, M.form, M.eps1, center)
-    k_sq, beta2, beta3 = -F[1], F[2], F[3]
+    """Lee §4: the Lyapunov system about the center, (4.13), (4.14), (4.15), (4.16). Records the series
+    (portrait.series_check measures the periods and records them)."""
+    k_sq, beta2, beta3 = lyapunov_coefficients(M, center)
     which = {"sinh": "(4.13)", "cosh": "(4.14)", "exp": "(4.15)", "exp-": "(4.16)"}[M.form]
     from . import middle_checks
 
-    middle_checks.theta_series(results, M, center, k_sq, beta2, beta3)
+    middle_checks.record_theta_series(results, middle_checks.theta_series(M, center, k_sq, beta2, beta3))
     portrait.series_check(
         results,
         lambda eta: portrait.period(se.plane_middle, M.plane_parameters(), [center + eta, 0.0]),
@@ -556,22 +610,33 @@ def _series(results, M, center, nu):
 
 def _middle_checks(results, M, starts, centers):
     """Lee (3.3)/(3.8), the planes (3.38)-(3.41), the center as a permanent rotation, the unstable middle axis
-    and plane I's escape for large q0 (see middle_checks)."""
-    from . import middle_checks
+    and plane I's escape for large q0 (see middle_checks): picks those this plane has and records them."""
+    from . import middle_checks as mc
 
     w0 = M.from_plane(*starts[0])
-    middle_checks.general_solution(results, M, w0, 12.0 / M.time_scale)
+    mc.record_general_solution(results, mc.general_solution(M, w0, 12.0 / M.time_scale))
     if M.form in ("exp", "exp-") and abs(M.alpha1) == abs(M.alpha2):
-        middle_checks.plane_departure(results, M, w0, 12.0 / M.time_scale)
+        mc.record_plane_departure(results, mc.plane_departure(M, w0, 12.0 / M.time_scale))
     if centers:
-        middle_checks.center_at_rest(results, M, centers[0])
+        mc.record_center_at_rest(results, mc.center_at_rest(M, centers[0]))
     if M.form == "sinh" and M.mu1 == 0.0:
-        middle_checks.middle_axis_unstable(results, M)
+        mc.record_middle_axis_unstable(results, mc.middle_axis_unstable(M))
     if M.form == "exp" and M.alpha1 == M.alpha2 and M.mu1 < 0 and centers:
-        middle_checks.large_q0(results, M)
+        mc.record_large_q0(results, mc.large_q0(M))
 
 
-def _runaway(results, M):
+class Runaway(NamedTuple):
+    """Unperturbed, no singular point: from phi2 = 0, q1 = 0."""
+
+    rate: float  # dq1/dtau between tau = 40 and 60
+    rate_gap: float  # |rate - m3|
+    limit_q1: float | None  # with m3 = 0: q1 at tau = 60 (None otherwise)
+    limit: float | None  # with m3 = 0: the closed form's limit -+sqrt(2E)
+    limit_gap: float | None  # |q1 - limit| at tau = 60
+    q_over_start: float | None  # the limiting |q| against |omega0|
+
+
+def runaway(M) -> Runaway:
     """Unperturbed, no singular point (Lee's Figures 3.4 (d), (e), 3.5 (e)): the exponential term dies away
     and q1 changes at the constant rate m3; with m3 = 0 (no torque: the force-free separatrix motion) it tends
     to the finite limit -+sqrt(2E)."""
@@ -586,24 +651,40 @@ def _runaway(results, M):
         bound=portrait.BLOW_UP_BOUND,
     )
     rate = float(np.diff(sol.y_eval[:, 1])[0] / np.diff(tau)[0])
-    results.number("runaway_rate", rate, "1/τ", note="dq1/dτ between τ = 40 and 60, from φ2 = 0, q1 = 0")
+    if M.m1 != 0.0:
+        return Runaway(rate, abs(rate - M.m1), None, None, None, None)
+    E = float(se.middle_energy(start, 0.0, M.eps1, M.form)[0])
+    limit = float(np.sign(sol.y_eval[-1, 1])) * np.sqrt(2 * E)
+    q1 = float(sol.y_eval[-1, 1])
+    return Runaway(
+        rate,
+        abs(rate - M.m1),
+        q1,
+        limit,
+        abs(q1 - limit),
+        abs(M.from_plane(0.0, limit)[1]) / np.linalg.norm(M.from_plane(0.0, 0.0)),
+    )
+
+
+def _record_runaway(results, M, values: Runaway):
+    results.number(
+        "runaway_rate", values.rate, "1/τ", note="dq1/dτ between τ = 40 and 60, from φ2 = 0, q1 = 0"
+    )
     results.hard_case(
         "runaway_rate",
         f"Unperturbed, no singular point: $q_1$ changes at the rate {SYMBOLS[M.form]} "
         "($|dq_1/d\\tau - m_3|$ late in the motion)",
-        abs(rate - M.m1),
+        values.rate_gap,
         RUNAWAY_BOUND,
     )
-    if M.m1 == 0.0:
-        E = float(se.middle_energy(start, 0.0, M.eps1, M.form)[0])
-        limit = float(np.sign(sol.y_eval[-1, 1])) * np.sqrt(2 * E)
-        results.number("limit_q1", float(sol.y_eval[-1, 1]), "1", note="q1 at τ = 60")
+    if values.limit_q1 is not None:
+        results.number("limit_q1", values.limit_q1, "1", note="q1 at τ = 60")
         results.number(
-            "limit_q1_closed_form", limit, "1", note="±√(2E): all of the energy in q1 once e^{±φ2} → 0"
+            "limit_q1_closed_form", values.limit, "1", note="±√(2E): all of the energy in q1 once e^{±φ2} → 0"
         )
         results.number(
             "limit_q_over_start",
-            abs(M.from_plane(0.0, limit)[1]) / np.linalg.norm(M.from_plane(0.0, 0.0)),
+            values.q_over_start,
             "1",
             note="the limiting |q| against |ω0|: ω tends to the y axis with finite modulus",
         )
@@ -611,12 +692,22 @@ def _runaway(results, M):
             "force_free_limit",
             "No torque in a plane of the separating polhodes: $q_1$ tends to the "
             "finite limit $\\pm\\sqrt{2E}$ ($|q_1 - \\text{limit}|$ at $\\tau = 60$)",
-            abs(float(sol.y_eval[-1, 1]) - limit),
+            values.limit_gap,
             RUNAWAY_BOUND,
         )
 
 
-def _settles(results, M):
+class Settles(NamedTuple):
+    """With the drag, no singular point: from phi2 = 0, q1 = 0."""
+
+    q1: float  # at tau = 80
+    limit: float  # sqrt(m/nu)
+    gap: float  # |q1 - limit| (inf if the run did not reach tau = 80)
+    departure_rate: float  # d ln(departure from plane II)/d phi2 along Euler's equations
+    departure_rate_gap: float  # |departure_rate - 1|
+
+
+def settles(M) -> Settles:
     """With the drag and nothing to stop it but the drag (Lee's Figure 3.15; the rare case above its line):
     from phi2 = 0, q1 = 0 the motion runs off along the axis and q1 tends to sqrt(m/nu), the permanent
     rotation about +y (p and r -> 0)."""
@@ -628,17 +719,7 @@ def _settles(results, M):
         bound=portrait.BLOW_UP_BOUND,
     )
     limit = np.sqrt(M.m1 / -M.mu1)
-    results.number("limit_q1", float(sol.y[1]), "1", note="q1 at τ = 80 from φ2 = 0, q1 = 0")
-    results.number(
-        "limit_q1_closed_form", float(limit), "1", note="√(m/ν): the rotation about +y, q = √(m/|μ|)"
-    )
-    results.hard_case(
-        "settles_on_the_axis",
-        "The drag stops the growth: $q_1$ tends to $\\sqrt{m/\\nu}$ "
-        "($|q_1 - \\sqrt{m/\\nu}|$ at $\\tau = 80$)",
-        abs(float(sol.y[1]) - limit) if sol.status == "success" else np.inf,
-        RUNAWAY_BOUND,
-    )
+    gap = abs(float(sol.y[1]) - limit) if sol.status == "success" else np.inf
     # Euler's equations: the rotation about +y is a saddle, and plane II its stable manifold. A rounding error
     # off the plane grows like e^{phi2} against the in-plane part, so Euler's solution leaves the plane.
     full = solve(
@@ -652,9 +733,24 @@ def _settles(results, M):
     departure = M.plane_departure(full.y_steps)
     grown = np.cumprod(departure < 1e-4).astype(bool) & (departure > 1e-11)  # before it has left the plane
     slope = float(np.polyfit(M.to_plane(full.y_steps[grown])[:, 0], np.log(departure[grown]), 1)[0])
+    return Settles(float(sol.y[1]), float(limit), gap, slope, abs(slope - 1.0))
+
+
+def _record_settles(results, values: Settles):
+    results.number("limit_q1", values.q1, "1", note="q1 at τ = 80 from φ2 = 0, q1 = 0")
+    results.number(
+        "limit_q1_closed_form", values.limit, "1", note="√(m/ν): the rotation about +y, q = √(m/|μ|)"
+    )
+    results.hard_case(
+        "settles_on_the_axis",
+        "The drag stops the growth: $q_1$ tends to $\\sqrt{m/\\nu}$ "
+        "($|q_1 - \\sqrt{m/\\nu}|$ at $\\tau = 80$)",
+        values.gap,
+        RUNAWAY_BOUND,
+    )
     results.number(
         "plane_departure_rate",
-        slope,
+        values.departure_rate,
         "1",
         note="d ln(departure)/dφ2 along Euler's equations (departure "
         "from 1e-11 to 1e-4): the plane repels like e^{φ2}",
@@ -664,6 +760,6 @@ def _settles(results, M):
         "Plane II repels as $\\boldsymbol{\\omega}$ runs to $+y$: the departure $D$ "
         "of Euler's solution from the plane grows like $e^{\\varphi_2}$ "
         "($|d\\ln D/d\\varphi_2 - 1|$)",
-        abs(slope - 1.0),
+        values.departure_rate_gap,
         0.01,
     )

@@ -10,10 +10,13 @@
   theta_series: Lee's theta2 (4.6) and theta3 (4.7)-(4.8) against the integrated orbit about the center: the
     residual falls like eta^2, eta^3, eta^4 as the terms are added.
 The references are closed forms (Lee's, evaluated here from his printed formulas) and the full equations; the
-coefficients themselves are checked against a sympy Lindstedt-Poincare expansion in symbolic.py.
+coefficients themselves are checked against a sympy Lindstedt-Poincare expansion in symbolic.py. Each check
+returns its values and takes no Results; record_<check> beside it writes them.
 """
 
 from __future__ import annotations
+
+from typing import NamedTuple
 
 import numpy as np
 
@@ -32,7 +35,15 @@ def euler_middle_phase(t, w, p, out):
     out[3] = w[1]
 
 
-def general_solution(results, M, w0, t_end):
+class GeneralSolution(NamedTuple):
+    """Lee (3.3) and (3.8) along Euler's equations (relative errors)."""
+
+    error: float  # p, r against (3.3), over the largest |omega|
+    k_identity_error: float  # phi'' - mu phi'^2 against (3.8), over |m| + (b + |mu|)|omega|^2
+    span: float  # the range of sqrt(ac) phi covered
+
+
+def general_solution(M, w0, t_end) -> GeneralSolution:
     """(3.3) and (3.8) along Euler's equations from w0 (phi = 0 there, so alpha1 = p0/sqrt a, alpha2 = r0/sqrt
     c)."""
     a, b, c = M.body.a, M.body.b, M.body.c
@@ -63,30 +74,28 @@ def general_solution(results, M, w0, t_end):
     rhs = m0 + k1 * np.sinh(2 * X) + k2 * np.cosh(2 * X)
     scale = abs(m) + (b + abs(mu)) * size**2
     k_err = float(np.max(np.abs(lhs - rhs)) / scale)
+    return GeneralSolution(err, k_err, float(np.ptp(phi) * np.sqrt(a * c)))
+
+
+def record_general_solution(results, values: GeneralSolution):
     results.number(
         "general_solution_error",
-        err,
+        values.error,
         "1",
         note="Euler's p, r (with φ = ∫q dt integrated beside them) "
         "against Lee (3.3), (3.40) or (3.41): largest difference over the run, relative to the largest |ω|",
     )
     results.number(
         "k_identity_error",
-        k_err,
+        values.k_identity_error,
         "1",
         note="φ'' − μφ'² from Euler's equations against m0 + k1 sinh "
         "2√(ac)φ + k2 cosh 2√(ac)φ of Lee (3.8): largest difference relative to |m| + (b + |μ|)|ω|²",
     )
-    results.number(
-        "general_solution_span",
-        float(np.ptp(phi) * np.sqrt(a * c)),
-        "1",
-        note="range of √(ac)φ the check covers",
-    )
-    return err
+    results.number("general_solution_span", values.span, "1", note="range of √(ac)φ the check covers")
 
 
-def plane_departure(results, M, w0, t_end):
+def plane_departure(M, w0, t_end) -> float:
     """In plane I or II: the largest |r/sqrt c -+ p/sqrt a| / |omega| while |phi2| < 5 along Euler's
     equations."""
     t = np.linspace(0.0, t_end, 801)
@@ -103,7 +112,10 @@ def plane_departure(results, M, w0, t_end):
     off = np.abs(v - u) if M.alpha1 == M.alpha2 else np.abs(v + u)
     phi2 = M.to_plane(w)[:, 0]
     inside = np.cumprod(np.abs(phi2) < 5.0).astype(bool)
-    worst = float(np.max(off[inside] / np.linalg.norm(w[inside], axis=1)))
+    return float(np.max(off[inside] / np.linalg.norm(w[inside], axis=1)))
+
+
+def record_plane_departure(results, worst: float):
     results.number(
         "plane_off_share",
         worst,
@@ -113,7 +125,12 @@ def plane_departure(results, M, w0, t_end):
     )
 
 
-def center_at_rest(results, M, center):
+class CenterAtRest(NamedTuple):
+    w0: np.ndarray  # the center's omega
+    drift: float  # largest |omega(t) - omega0|/|omega0|, t <= 100
+
+
+def center_at_rest(M, center) -> CenterAtRest:
     """The center (q1 = 0) is a permanent rotation about an axis in the xz-plane: Euler's equations stay
     put."""
     w0 = M.from_plane(center, 0.0)
@@ -125,17 +142,23 @@ def center_at_rest(results, M, center):
         record_steps=True,
     )
     drift = float(np.max(np.linalg.norm(sol.y_steps - w0, axis=1)) / np.linalg.norm(w0))
+    return CenterAtRest(w0, drift)
+
+
+def record_center_at_rest(results, values: CenterAtRest):
+    w0 = values.w0
     results.number(
         "center_drift",
-        drift,
+        values.drift,
         "1",
         note="largest |ω(t) − ω0|/|ω0| for t ≤ 100 from the center's ω "
         f"(q = 0, ω0 = ({w0[0]:.4g}, 0, {w0[2]:.4g}))",
     )
 
 
-def middle_axis_unstable(results, M):
-    """From a start 1e-6 off the y-axis (q = 1), the angle between omega and y reaches order 1."""
+def middle_axis_unstable(M) -> float:
+    """From a start 1e-6 off the y-axis (q = 1), the angle between omega and y reaches order 1: its largest
+    value over t <= 60."""
     w0 = np.array([1e-6, 1.0, 1e-6])
     sol = solve(
         Problem(se.euler_middle, w0, (0.0, 60.0), M.euler_parameters()),
@@ -147,15 +170,26 @@ def middle_axis_unstable(results, M):
     )
     w = sol.y_steps
     angle = np.arctan2(np.hypot(w[:, 0], w[:, 2]), w[:, 1])
+    return float(np.max(angle))
+
+
+def record_middle_axis_unstable(results, angle: float):
     results.number(
         "y_axis_escape_angle",
-        float(np.max(angle)),
+        angle,
         "rad",
         note="largest angle between ω and +y over t ≤ 60 from ω0 = (10⁻⁶, 1, 10⁻⁶)",
     )
 
 
-def large_q0(results, M, m3s=(5.0, 50.0), factors=(1.01, 0.99)):
+class LargeQ0(NamedTuple):
+    m3s: tuple  # the m3 of the scene's plane, then those added
+    nu: float
+    exceptions: int
+    runs: int
+
+
+def large_q0(M, m3s=(5.0, 50.0), factors=(1.01, 0.99)) -> LargeQ0:
     """Plane I with drag (Lee §3.4, Case 2): at the center phi2 = ln m3 the separatrix F (c1 = 0 of (3.60),
     q1^2 = m3/nu - 2 e^phi2/(1 + 2 nu)) has q1^2 = m3/(nu(1 + 2 nu)). Euler's equations from the center with
     q1 just above F (either sign) must leave every bound, just below must return (q crosses 0 twice):
@@ -181,15 +215,20 @@ def large_q0(results, M, m3s=(5.0, 50.0), factors=(1.01, 0.99)):
                 returned = len(sol.event_t) >= 2 and not escaped
                 exceptions += (escaped != (f > 1)) or (returned != (f < 1))
                 runs += 1
+    return LargeQ0((M.m1,) + tuple(m3s), nu, exceptions, runs)
+
+
+def record_large_q0(results, values: LargeQ0):
+    m3, *m3s = values.m3s
     results.number(
         "large_q0_exceptions",
-        exceptions,
+        values.exceptions,
         "1",
-        note=f"of {runs} starts at the center of plane I "
-        f"(m3 = {M.m1:g}, {', '.join(f'{m:g}' for m in m3s)}; ν = {nu:g}) with q1 = ±1.01 and ±0.99 times "
-        "F's height there: those that do not escape (above F) or do not return (below F)",
+        note=f"of {values.runs} starts at the center of plane I "
+        f"(m3 = {m3:g}, {', '.join(f'{m:g}' for m in m3s)}; ν = {values.nu:g}) with q1 = ±1.01 and ±0.99 "
+        "times F's height there: those that do not escape (above F) or do not return (below F)",
     )
-    results.number("large_q0_runs", runs, "1")
+    results.number("large_q0_runs", values.runs, "1")
 
 
 @rhs_function
@@ -231,10 +270,17 @@ def lee_h(k_sq, beta2, beta3, mu1):
 THETA_AMPLITUDES = (0.2, 0.1, 0.05, 0.025)
 
 
-def theta_series(results, M, center, k_sq, beta2, beta3):
+class ThetaSeries(NamedTuple):
+    """Residuals of the orbit about the center against the series (4.5) cut after eta, eta^2, eta^3."""
+
+    slopes: list  # log-log slopes over THETA_AMPLITUDES: 2, 3, 4 expected
+    residuals: np.ndarray  # rows: THETA_AMPLITUDES; columns: first, theta2, theta3
+
+
+def theta_series(M, center, k_sq, beta2, beta3) -> ThetaSeries:
     """The orbit of the plane about the center from phi2c + eta (q1 = 0) over one period, against eta cos s, +
     eta^2 theta2(s), + eta^3 theta3(s) with s = k tau/(1 + h2 eta^2 + h3 eta^3): the largest residual must
-    fall like eta^2, eta^3 and eta^4. Returns the fitted slopes."""
+    fall like eta^2, eta^3 and eta^4."""
     mu1 = M.mu1
     k = np.sqrt(k_sq)
     h2, h3 = lee_h(k_sq, beta2, beta3, mu1)
@@ -258,6 +304,11 @@ def theta_series(results, M, center, k_sq, beta2, beta3):
         residuals.append([float(np.max(np.abs(r))) for r in (r1, r2, r3)])
     residuals = np.array(residuals)
     slopes = [float(np.polyfit(np.log(THETA_AMPLITUDES), np.log(residuals[:, j]), 1)[0]) for j in range(3)]
+    return ThetaSeries(slopes, residuals)
+
+
+def record_theta_series(results, values: ThetaSeries):
+    slopes, residuals = values
     amps = ", ".join(f"{e:g}" for e in THETA_AMPLITUDES)
     for j, (name, order) in enumerate((("first", 2), ("theta2", 3), ("theta3", 4))):
         results.number(
@@ -269,4 +320,3 @@ def theta_series(results, M, center, k_sq, beta2, beta3):
             f" (η = {amps}); {order} expected",
         )
         results.number(f"theta_residual_{name}", float(residuals[1, j]), "1", note="that residual at η = 0.1")
-    return slopes

@@ -16,11 +16,14 @@ reduction_formulas     (5.32)-(5.37): Lee's explicit reduction of si, ci of orde
                        order w' (0 < Re w' < 1), at 40 digits, against the incomplete gamma function; A, B of
                        (5.37) against mpmath's quadrature.
 re_w                   Re w = 1 + nu/mu = 1 + mu1 C/(mu0 A) (after (5.29)) over symmetric bodies.
+Each check takes the medium and returns its values (no Results); _record_<check> beside it writes them, and
+case_one_panels, singular_curve_panels draw the panels they add (viscous.run calls them: ANALYSES, PANELS).
 """
 
 from __future__ import annotations
 
 from dataclasses import replace
+from typing import NamedTuple
 
 import mpmath
 import numpy as np
@@ -123,7 +126,16 @@ def _quadratures(V: ViscousMedium, F, t: float) -> dict:
     }
 
 
-def time_dependent_torque(results, V: ViscousMedium):
+class TimeDependent(NamedTuple):
+    """Lee's quadratures against Euler's equations for the time-dependent torques (largest |d omega|)."""
+
+    friction: dict  # general (5.10), fixed (5.11), principal (5.11 with the principal arctan)
+    frictionless: dict  # general (5.13), (5.14); fixed (5.15)
+    theorem_1_ratio: float  # Theorem 1: the larger of |p|, |q| and |r| over their bounds
+
+
+def time_dependent_torque(V: ViscousMedium) -> TimeDependent:
+    """(5.3)-(5.15) for both modulations, with the scene's drags and without."""
     friction = {"general": 0.0, "fixed": 0.0, "principal": 0.0}
     frictionless = {"general": 0.0, "fixed": 0.0}
     ratio = 0.0
@@ -144,6 +156,11 @@ def time_dependent_torque(results, V: ViscousMedium):
                 ratio = max(
                     ratio, float(np.max(np.abs(fine[:, :2]))) / pq, float(np.max(np.abs(fine[:, 2]))) / rb
                 )
+    return TimeDependent(friction, frictionless, ratio)
+
+
+def _record_time_dependent_torque(results, values: TimeDependent):
+    friction, frictionless = values.friction, values.frictionless
     note = (
         "F = 1 + sin(2t)/2 and F = 1 − e^(−t) along the scene's torque; max over p, q, r, both F and t = 0, "
         "5, "
@@ -179,7 +196,7 @@ def time_dependent_torque(results, V: ViscousMedium):
     )
     results.number(
         "td_theorem_1_ratio",
-        ratio,
+        values.theorem_1_ratio,
         "1",
         note="Theorem 1 for the time-dependent torques: the largest "
         "|p|, |q| over δ + (M1' + M2')/ν and |r| over |r0| + M3'/μ, M_i' = |m_i| max F, 0 < t ≤ 30",
@@ -219,8 +236,22 @@ def _lee_linear(V: ViscousMedium, omega0, t):
     return (w0 - m / rates) * np.exp(-rates * t) + m / rates
 
 
-def _linear_case(results, V: ViscousMedium, prefix: str, label: str):
-    """Several starts of Case I or IV with friction (to CASE_T) and without (to 10); returns the
+class LinearCase(NamedTuple):
+    """Case I or IV: several starts, with friction to CASE_T and without to 10."""
+
+    case: str  # the model's case
+    lee: float  # Lee's formula as printed against Euler's equations
+    model: float  # the model's quadrature solution against Euler's equations
+    line_pq: float  # largest distance of (p, q) from the line to the limit
+    line_space: float  # the same in (p, q, r)
+    gap: float  # |omega(CASE_T) - the limit|
+    frictionless: float  # |omega - omega0 - m t| without friction
+    limit: np.ndarray  # (m1/nu, m2/nu, m3/mu)
+    drawn: dict  # the trajectories: "friction" and "frictionless", one array per start
+
+
+def _linear_case(V: ViscousMedium) -> LinearCase:
+    """Several starts of Case I or IV with friction (to CASE_T) and without (to 10), with their
     trajectories."""
     limit = np.array(V.m) / np.array([V.nu, V.nu, V.mu])
     t = np.linspace(0.0, CASE_T, 401)
@@ -242,49 +273,69 @@ def _linear_case(results, V: ViscousMedium, prefix: str, label: str):
         y = _euler(W, w0, tf)
         free = max(free, float(np.max(np.abs(y - _lee_linear(W, w0, tf)))))
         drawn["frictionless"].append(y)
+    return LinearCase(V.case, lee, model, line_pq, line_space, gap, free, limit, drawn)
+
+
+def _record_linear_case(results, values: LinearCase, prefix: str, label: str):
     results.number(
         f"{prefix}_lee_vs_ode",
-        lee,
+        values.lee,
         "1/time",
         note=f"{label} as printed against Euler's equations "
         f"(DOP853, rtol 1e-13), 7 starts, t ≤ {CASE_T:g}, max over p, q, r",
     )
     results.number(
         f"{prefix}_model_vs_ode",
-        model,
+        values.model,
         "1/time",
-        note=f"the model's quadrature solution (its case {V.case}) against Euler's equations, same starts",
+        note=f"the model's quadrature solution (its case {values.case}) against Euler's equations, "
+        "same starts",
     )
     results.number(
         f"{prefix}_line_distance",
-        line_pq,
+        values.line_pq,
         "1/time",
         note="largest distance of (p, q) from the line through (p0, q0) and (m1/ν, m2/ν)",
     )
     results.number(
         f"{prefix}_space_line_distance",
-        line_space,
+        values.line_space,
         "1/time",
         note="largest distance of (p, q, r) from "
         "the line through ω0 and the limit (zero unless the axial part r − m3/μ decays with μ ≠ ν)",
     )
     results.number(
-        f"{prefix}_limit_gap", gap, "1/time", note=f"largest |ω(t = {CASE_T:g}) − (m1/ν, m2/ν, m3/μ)|"
+        f"{prefix}_limit_gap", values.gap, "1/time", note=f"largest |ω(t = {CASE_T:g}) − (m1/ν, m2/ν, m3/μ)|"
     )
     results.number(
         f"{prefix}_frictionless_gap",
-        free,
+        values.frictionless,
         "1/time",
         note="without friction: largest |ω − ω0 − m t| (p0 + m1 t, ...), 7 starts, t ≤ 10",
     )
-    return limit, drawn
 
 
-def case_one(results, V: ViscousMedium):
+class CaseOne(NamedTuple):
+    linear: LinearCase
+    r_max: float  # largest |r| over every run (r0 = 0, m3 = 0: r stays 0)
+
+
+def case_one(V: ViscousMedium) -> CaseOne:
+    """Case I: the scene's body, medium and torque with r0 = 0."""
     V1 = replace(V, omega0=(V.omega0[0], V.omega0[1], 0.0))
-    limit, drawn = _linear_case(results, V1, "case_one", "Lee (5.18)")
-    r_max = max(float(np.max(np.abs(y[:, 2]))) for part in drawn.values() for y in part)
-    results.number("case_one_r_max", r_max, "1/time", note="largest |r| (r0 = 0, m3 = 0: r stays 0)")
+    linear = _linear_case(V1)
+    r_max = max(float(np.max(np.abs(y[:, 2]))) for part in linear.drawn.values() for y in part)
+    return CaseOne(linear, r_max)
+
+
+def _record_case_one(results, values: CaseOne):
+    _record_linear_case(results, values.linear, "case_one", "Lee (5.18)")
+    results.number("case_one_r_max", values.r_max, "1/time", note="largest |r| (r0 = 0, m3 = 0: r stays 0)")
+
+
+def case_one_panels(values: CaseOne):
+    """Two panels to draw beside the solution (with friction, without) and what the caption says of them."""
+    limit, drawn = values.linear.limit, values.linear.drawn
 
     def with_friction(ax):
         for y in drawn["friction"]:
@@ -315,56 +366,90 @@ def case_one(results, V: ViscousMedium):
     return [with_friction, without], caption
 
 
-def case_four(results, V: ViscousMedium):
+class CaseFour(NamedTuple):
+    linear: LinearCase
+    line_equal_drags: float  # largest distance from the line in space with mu = nu
+
+
+def case_four(V: ViscousMedium) -> CaseFour:
+    """Case IV: the same medium and torque on a body with C = A (h = 0)."""
     V4 = replace(V, h=0.0)
-    _linear_case(results, V4, "case_four", "Lee (5.31)")
+    linear = _linear_case(V4)
     # Lee: "all trajectories in the phase space are rectilinear": so in space only when nu = mu
     same = replace(V4, mu=V4.nu)
     limit = np.array(same.m) / same.nu
     t = np.linspace(0.0, CASE_T, 401)
     line = max(_line_distance(_euler(same, w0, t), np.array(w0), limit) for w0 in _starts(limit, same.omega0))
+    return CaseFour(linear, line)
+
+
+def _record_case_four(results, values: CaseFour):
+    _record_linear_case(results, values.linear, "case_four", "Lee (5.31)")
     results.number(
         "case_four_space_line_distance_equal_drags",
-        line,
+        values.line_equal_drags,
         "1/time",
         note="the same with μ = ν: the trajectories are straight in space",
     )
 
 
 # --- (5.30): the spiral in the plane r = m3/mu --------------------------------------------------------------
-def spiral(results, V: ViscousMedium, t_fit=20.0):
+class Spiral(NamedTuple):
+    t_fit: float
+    case: str  # the model's case for the start in the plane
+    model_vs_ode: float  # the model's elementary solution against Euler's equations
+    plane_gap: float  # largest |r - m3/mu|
+    decay_rate: float  # -d ln|z|/dt fitted (Lee: nu)
+    turn_rate: float  # d arg z/dt fitted (Lee: g1)
+
+
+def spiral(V: ViscousMedium, t_fit=20.0) -> Spiral:
     Vg = replace(V, omega0=(V.omega0[0], V.omega0[1], V.m[2] / V.mu))
     t = np.linspace(0.0, t_fit, 201)
     y = _euler(Vg, Vg.omega0, t)
-    results.number(
-        "spiral_model_vs_ode",
-        float(np.max(np.abs(Vg.closed_form(t)[0] - y))),
-        "1/time",
-        note=f"the model's case {Vg.case} (elementary) against Euler's equations, t ≤ {t_fit:g}",
-    )
-    results.number(
-        "spiral_plane_gap",
-        float(np.max(np.abs(y[:, 2] - V.m[2] / V.mu))),
-        "1/time",
-        note="largest |r − m3/μ|",
-    )
+    model_vs_ode = float(np.max(np.abs(Vg.closed_form(t)[0] - y)))
+    plane_gap = float(np.max(np.abs(y[:, 2] - V.m[2] / V.mu)))
     nu, g1 = Vg.nu, Vg.g1
     m1, m2 = Vg.m[:2]
     d = nu**2 + g1**2
     z = (y[:, 1] - (nu * m2 - g1 * m1) / d) + 1j * (y[:, 0] - (nu * m1 + g1 * m2) / d)
     decay = -np.polyfit(t, np.log(np.abs(z)), 1)[0]
     turn = np.polyfit(t, np.unwrap(np.angle(z)), 1)[0]
+    return Spiral(t_fit, Vg.case, model_vs_ode, plane_gap, float(decay), float(turn))
+
+
+def _record_spiral(results, values: Spiral):
+    results.number(
+        "spiral_model_vs_ode",
+        values.model_vs_ode,
+        "1/time",
+        note=f"the model's case {values.case} (elementary) against Euler's equations, t ≤ {values.t_fit:g}",
+    )
+    results.number("spiral_plane_gap", values.plane_gap, "1/time", note="largest |r − m3/μ|")
     results.number(
         "spiral_decay_rate",
-        float(decay),
+        values.decay_rate,
         "1/time",
         note="(5.30): −d ln|z|/dt fitted along Euler's equations, z = (q − q∞) + i(p − p∞); Lee: ν",
     )
-    results.number("spiral_turn_rate", float(turn), "1/time", note="d arg z/dt fitted; Lee: g1 = h m3/μ")
+    results.number("spiral_turn_rate", values.turn_rate, "1/time", note="d arg z/dt fitted; Lee: g1 = h m3/μ")
 
 
 # --- (5.50)-(5.52): the hyperbola of permanent rotations ----------------------------------------------------
-def singular_curve(results, V: ViscousMedium):
+class SingularCurve(NamedTuple):
+    drift: float  # the points as starts of Euler's equations: largest |omega(t) - omega(0)|, t <= 30
+    plane: float  # (5.51): |m1 p + m2 q| relative to its terms, largest
+    p_rot: float  # (5.52): largest |p'|/|q'| in the turned frame
+    k_mean: float  # k' = q'r' (5.52), mean over the points
+    k_spread: float  # relative
+    circle_center_gap: float  # the fitted center of the circle of omega0 against Theorem 2's
+    q_rot: np.ndarray  # the points in the turned frame: q'
+    r: np.ndarray  # and r'
+    center_q: float  # Theorem 2's center at r0, q'
+    r0: float
+
+
+def singular_curve(V: ViscousMedium) -> SingularCurve:
     h, (m1, m2, _) = V.h, V.m
     rs = np.concatenate([-np.linspace(4.0, 0.5, 8), np.linspace(0.5, 4.0, 8)])
     points = np.column_stack([m2 / (h * rs), -m1 / (h * rs), rs])
@@ -374,54 +459,72 @@ def singular_curve(results, V: ViscousMedium):
     p_rot = points[:, 0] * np.cos(theta) - points[:, 1] * np.sin(theta)
     q_rot = points[:, 0] * np.sin(theta) + points[:, 1] * np.cos(theta)
     k = q_rot * points[:, 2]
-    results.number(
-        "singular_curve_drift",
-        drift,
-        "1/time",
-        note="points (m2/(hr), −m1/(hr), r), r = ±0.5 ... ±4, as "
-        "starts of Euler's equations: largest |ω(t) − ω(0)|, t ≤ 30",
-    )
-    results.number(
-        "singular_curve_plane",
-        float(
-            np.max(
-                np.abs(m1 * points[:, 0] + m2 * points[:, 1])
-                / (np.abs(m1 * points[:, 0]) + np.abs(m2 * points[:, 1]))
-            )
-        ),
-        "1",
-        note="(5.51) q/p = −m1/m2: |m1 p + m2 q| relative to its terms, largest",
-    )
-    results.number(
-        "singular_curve_p_rot",
-        float(np.max(np.abs(p_rot) / np.abs(q_rot))),
-        "1",
-        note="(5.52): |p'|/|q'| in the frame turned by θ = arctan(−m2/m1), largest",
-    )
-    results.number(
-        "singular_curve_k", float(np.mean(k)), "1/time", note="k' = q'r' (5.52), mean over the points"
-    )
-    results.number(
-        "singular_curve_k_spread", float(np.ptp(k) / abs(np.mean(k))), "1", note="relative spread of q'r'"
+    plane = float(
+        np.max(
+            np.abs(m1 * points[:, 0] + m2 * points[:, 1])
+            / (np.abs(m1 * points[:, 0]) + np.abs(m2 * points[:, 1]))
+        )
     )
     # the circle of the scene's start, its center fitted (Kasa) against Theorem 2's
     r0 = V.omega0[2]
     y = _euler(V, V.omega0, np.linspace(0.0, 2 * np.pi / abs(h * r0), 41))
     M = np.column_stack([2 * y[:, 0], 2 * y[:, 1], np.ones(len(y))])
     cx, cy, _ = np.linalg.lstsq(M, y[:, 0] ** 2 + y[:, 1] ** 2, rcond=None)[0]
+    gap = float(np.hypot(cx - m2 / (h * r0), cy + m1 / (h * r0)))
+    center_q = (m2 / (h * r0)) * np.sin(theta) - (m1 / (h * r0)) * np.cos(theta)
+    return SingularCurve(
+        drift,
+        plane,
+        float(np.max(np.abs(p_rot) / np.abs(q_rot))),
+        float(np.mean(k)),
+        float(np.ptp(k) / abs(np.mean(k))),
+        gap,
+        q_rot,
+        points[:, 2],
+        center_q,
+        r0,
+    )
+
+
+def _record_singular_curve(results, values: SingularCurve):
+    results.number(
+        "singular_curve_drift",
+        values.drift,
+        "1/time",
+        note="points (m2/(hr), −m1/(hr), r), r = ±0.5 ... ±4, as "
+        "starts of Euler's equations: largest |ω(t) − ω(0)|, t ≤ 30",
+    )
+    results.number(
+        "singular_curve_plane",
+        values.plane,
+        "1",
+        note="(5.51) q/p = −m1/m2: |m1 p + m2 q| relative to its terms, largest",
+    )
+    results.number(
+        "singular_curve_p_rot",
+        values.p_rot,
+        "1",
+        note="(5.52): |p'|/|q'| in the frame turned by θ = arctan(−m2/m1), largest",
+    )
+    results.number("singular_curve_k", values.k_mean, "1/time", note="k' = q'r' (5.52), mean over the points")
+    results.number("singular_curve_k_spread", values.k_spread, "1", note="relative spread of q'r'")
     results.number(
         "circle_center_fit_gap",
-        float(np.hypot(cx - m2 / (h * r0), cy + m1 / (h * r0))),
+        values.circle_center_gap,
         "1/time",
         note="center of the circle of ω0 fitted (least squares) against (m2/(hr0), −m1/(hr0))",
     )
-    center_q = (m2 / (h * r0)) * np.sin(theta) - (m1 / (h * r0)) * np.cos(theta)
+
+
+def singular_curve_panels(values: SingularCurve):
+    """The panel to draw beside the solution and what the caption says of it."""
+    k_mean, q_rot, r_points, center_q, r0 = values.k_mean, values.q_rot, values.r, values.center_q, values.r0
 
     def panel(ax):
         for sign in (-1.0, 1.0):
             r = sign * np.linspace(0.3, 4.5, 200)
-            ax.plot(np.mean(k) / r, r, color="#000000", lw=0.9)
-        ax.plot(q_rot, points[:, 2], ".", color="0.35", ms=4)
+            ax.plot(k_mean / r, r, color="#000000", lw=0.9)
+        ax.plot(q_rot, r_points, ".", color="0.35", ms=4)
         ax.plot(center_q, r0, "+", color="#D55E00", ms=9, mew=1.5)
         ax.set_xlabel("$q'$ (rad per time unit)")
         ax.set_ylabel("$r'$ (rad per time unit)")
@@ -475,7 +578,14 @@ def lee_reduction(x, w, ocr_sign=False):
     return si, ci
 
 
-def reduction_formulas(results, V: ViscousMedium):
+class ReductionFormulas(NamedTuple):
+    w1: complex  # the scene's w'
+    relative_error: float  # of si, ci by (5.32)-(5.35) against the incomplete gamma function
+    ocr_sign_error: float  # the same for si with the OCR's +P cos x (K = 3)
+    a_b_error: float  # (5.37) A, B against mpmath's quadrature
+
+
+def reduction_formulas(V: ViscousMedium) -> ReductionFormulas:
     w1 = V.w - np.floor(V.w.real)  # the scene's w' (0.6 + 0.72i here)
     worst = ocr = 0.0
     for K in (1, 2, 3, 4):
@@ -489,17 +599,6 @@ def reduction_formulas(results, V: ViscousMedium):
                 if K == 3:
                     wrong, _ = lee_reduction(x, K + w1, ocr_sign=True)
                     ocr = max(ocr, float(abs(wrong - ref_si) / abs(ref_si)))
-    results.number(
-        "reduction_relative_error",
-        worst,
-        "1",
-        note=f"Lee (5.32)–(5.35) at 40 digits, w = K + w', "
-        f"w' = {w1.real:.2g} + {w1.imag:.2g}i, K = 1 ... 4, x = 0.5, 2, 8, against the incomplete gamma "
-        "function (mpmath): largest relative error of si, ci",
-    )
-    results.number(
-        "reduction_ocr_sign_error", ocr, "1", note="the same for si with the OCR's +P cos x (K = 3)"
-    )
     ab = 0.0
     with mpmath.workdps(30):
         for v in (mpmath.mpc(w1), mpmath.mpf(0.6), mpmath.mpc(0.3, 0.4)):
@@ -514,9 +613,28 @@ def reduction_formulas(results, V: ViscousMedium):
             plus, minus = (mpmath.exp(k * 1j * mpmath.pi * (1 - v) / 2) * E for k in (1, -1))
             qa, qb = (plus - minus) / 2j, (plus + minus) / 2
             ab = max(ab, float(abs(A - qa) / abs(qa)), float(abs(B - qb) / abs(qb)))
+    return ReductionFormulas(w1, worst, ocr, ab)
+
+
+def _record_reduction_formulas(results, values: ReductionFormulas):
+    w1 = values.w1
+    results.number(
+        "reduction_relative_error",
+        values.relative_error,
+        "1",
+        note=f"Lee (5.32)–(5.35) at 40 digits, w = K + w', "
+        f"w' = {w1.real:.2g} + {w1.imag:.2g}i, K = 1 ... 4, x = 0.5, 2, 8, against the incomplete gamma "
+        "function (mpmath): largest relative error of si, ci",
+    )
+    results.number(
+        "reduction_ocr_sign_error",
+        values.ocr_sign_error,
+        "1",
+        note="the same for si with the OCR's +P cos x (K = 3)",
+    )
     results.number(
         "reduction_A_B_error",
-        ab,
+        values.a_b_error,
         "1",
         note="(5.37) A(w'), B(w') against mpmath's quadrature of "
         "their integrals turned onto the imaginary axis (20 digits), w' = the scene's, 0.6, 0.3 + 0.4i: "
@@ -525,14 +643,24 @@ def reduction_formulas(results, V: ViscousMedium):
 
 
 # --- Re w after (5.29) --------------------------------------------------------------------------------------
-def re_w(results, V: ViscousMedium):
-    results.number("re_w_formula", 1.0 + V.nu / V.mu, "1", note="1 + ν/μ from the scene's drags")
+class ReW(NamedTuple):
+    formula: float  # 1 + nu/mu from the scene's drags
+    elongated: list  # Re w for mu0 = mu1, A = B = 1, C = 0.05 ... 0.5
+    disc: list  # and C = 1.05 ... 2
 
+
+def re_w(V: ViscousMedium) -> ReW:
     def w_real(A, C):  # mu0 = mu1 = 1: nu = mu1/A, mu = mu0/C
         return ViscousMedium.from_moments(A, C, 1.0 / A, 1.0 / C, (0.4, -0.2, 0.0), (0.5, 0.8, 2.0)).w.real
 
     elongated = [w_real(1.0, c) for c in np.linspace(0.05, 0.5, 10)]
     disc = [w_real(1.0, c) for c in np.linspace(1.05, 2.0, 20)]
+    return ReW(1.0 + V.nu / V.mu, elongated, disc)
+
+
+def _record_re_w(results, values: ReW):
+    elongated, disc = values.elongated, values.disc
+    results.number("re_w_formula", values.formula, "1", note="1 + ν/μ from the scene's drags")
     results.number(
         "re_w_elongated_max",
         max(elongated),
@@ -544,11 +672,16 @@ def re_w(results, V: ViscousMedium):
     results.number("re_w_disc_max", max(disc), "1", note="largest, at the thin disc C = A + B = 2A")
 
 
+# the checks a scene's `analysis` switches on, by name: (compute, record), and for those that add panels to
+# the solution's figure, (compute, record, panels)
 ANALYSES = {
-    "time_dependent_torque": time_dependent_torque,
-    "case_four": case_four,
-    "spiral": spiral,
-    "reduction_formulas": reduction_formulas,
-    "re_w": re_w,
+    "time_dependent_torque": (time_dependent_torque, _record_time_dependent_torque),
+    "case_four": (case_four, _record_case_four),
+    "spiral": (spiral, _record_spiral),
+    "reduction_formulas": (reduction_formulas, _record_reduction_formulas),
+    "re_w": (re_w, _record_re_w),
 }
-PANELS = {"case_one": case_one, "singular_curve": singular_curve}
+PANELS = {
+    "case_one": (case_one, _record_case_one, case_one_panels),
+    "singular_curve": (singular_curve, _record_singular_curve, singular_curve_panels),
+}

@@ -4,12 +4,14 @@ Lee's quadrature solution (through his generalized sine and cosine integrals, or
 friction) against Euler's equations integrated, and against itself with the integrals at 30 digits; its
 error bound; the limiting rotation of Theorem 3 and the bounds of Theorem 1 with friction; the circles of
 Theorem 2 without. With `analysis.special_functions`, what si and ci cost by series, asymptotic expansion
-and quadrature, and what the solution costs by quadrature formula against integration.
+and quadrature, and what the solution costs by quadrature formula against integration. Each computation
+returns its values and takes no Results; _record_<name> beside it writes them, and run records them in order.
 """
 
 from __future__ import annotations
 
 from dataclasses import replace
+from typing import NamedTuple
 
 import numpy as np
 import pandas as pd
@@ -72,6 +74,42 @@ def run(scene, results, quick):
         results.number("w_imag", V.w.imag, "1")
         results.number("g", V.g, "1", note="(h/μ)(r0 − m3/μ)")
 
+    sol = solution(V, t_max)
+    _record_solution(results, sol, t_max)
+    asymptotic = asymptotics(V, sol.ode)
+    _record_asymptotics(results, asymptotic, t_max)
+    analysis = data.get("analysis", {})
+    panels, more = [], ""
+    for name, (check, record, draw) in section5.PANELS.items():
+        if analysis.get(name):
+            values = check(V)
+            record(results, values)
+            extra, text = draw(values)
+            panels, more = panels + extra, more + text
+    for name, (check, record) in section5.ANALYSES.items():
+        if analysis.get(name):
+            record(results, check(V))
+    fig = _figure(V, sol.t, sol.closed, sol.ode, asymptotic.points, panels)
+    results.figure("solution", fig, _caption(V, t_max, more))
+    if analysis.get("special_functions"):
+        _record_special_function_costs(results, special_function_costs(quick))
+        _record_solution_costs(results, solution_costs(V, quick))
+        _record_large_order(results, large_order(V))
+
+
+class Solution(NamedTuple):
+    """Lee's quadrature solution against Euler's equations integrated and against itself at 30 digits."""
+
+    t: np.ndarray
+    ode: object  # the integration (t_eval, y_eval)
+    closed: np.ndarray  # Lee's quadratures at t
+    deviation: float  # largest |closed - ode|
+    error: float  # largest distance of (p, q) from the formula with si, ci at 30 digits
+    bound: float  # the formula's own largest bound
+    error_over_bound: float  # largest error/(bound + 1e-13)
+
+
+def solution(V, t_max) -> Solution:
     t = np.linspace(0.0, t_max, SAMPLES)
     ode = solve(
         Problem(viscous_symmetric, list(V.omega0), (0.0, t_max), V.parameters()),
@@ -82,6 +120,22 @@ def run(scene, results, quick):
     )
     closed, bound = V.closed_form(t)
     deviation = float(np.max(np.abs(closed - ode.y_eval)))
+    every = (SAMPLES - 1) // (REFERENCE_SAMPLES - 1)
+    exact, _ = V.closed_form(t[::every], integrals=sc.reference_value)
+    error = np.hypot(*(closed[::every, :2] - exact[:, :2]).T)
+    return Solution(
+        t,
+        ode,
+        closed,
+        deviation,
+        float(error.max()),
+        float(bound.max()),
+        float(np.max(error / (bound[::every] + 1e-13))),
+    )
+
+
+def _record_solution(results, values: Solution, t_max):
+    deviation = values.deviation
     results.number(
         "closed_vs_ode",
         deviation,
@@ -95,18 +149,15 @@ def run(scene, results, quick):
         deviation,
         CLOSED_VS_ODE_BOUND,
     )
-    every = (SAMPLES - 1) // (REFERENCE_SAMPLES - 1)
-    exact, _ = V.closed_form(t[::every], integrals=sc.reference_value)
-    error = np.hypot(*(closed[::every, :2] - exact[:, :2]).T)
     results.number(
         "closed_form_error",
-        float(error.max()),
+        values.error,
         "1/time",
         note="against the same formula with si, ci at 30 digits (mpmath), max over t",
     )
     results.number(
         "closed_form_bound",
-        float(bound.max()),
+        values.bound,
         "1/time",
         note="the formula's own bound, from those of the series and expansions, max over t",
     )
@@ -114,32 +165,77 @@ def run(scene, results, quick):
         "closed_form_within_bound",
         "The quadrature solution's error (against $\\si$, $\\ci$ at 30 "
         "digits) over its own bound (10⁻¹³ added for round-off), largest over $t$",
-        float(np.max(error / (bound[::every] + 1e-13))),
+        values.error_over_bound,
         1.0,
     )
-    points = _asymptotics(results, V, ode, t_max)
-    analysis = data.get("analysis", {})
-    panels, more = [], ""
-    for name, check in section5.PANELS.items():
-        if analysis.get(name):
-            extra, text = check(results, V)
-            panels, more = panels + extra, more + text
-    for name, check in section5.ANALYSES.items():
-        if analysis.get(name):
-            check(results, V)
-    fig = _figure(V, t, closed, ode, points, panels)
-    results.figure("solution", fig, _caption(V, t_max, more))
-    if analysis.get("special_functions"):
-        special_function_costs(results, quick)
-        solution_costs(results, V, quick)
-        large_order(results, V)
 
 
-def _asymptotics(results, V, ode, t_max):
-    """Theorem 1 and 3 with friction, Theorem 2 (circles) without; the scene's singular points."""
+class Limit(NamedTuple):
+    """With friction: Theorem 3's uniform rotation and Theorem 1's bounds."""
+
+    limit: np.ndarray  # (p, q, r)
+    gap: float  # |omega(t_max) - limit|
+    theorem_1_ratio: float  # the larger of max |p|, |q| and max |r| over their bounds, t > 0
+    kind: str  # stable focus or node
+
+    @property
+    def points(self):
+        return [self.limit]
+
+
+class Circle(NamedTuple):
+    """Without friction, m3 = 0: Theorem 2's circles."""
+
+    center: np.ndarray
+    radius_spread: float  # relative, along the circle
+    period: float  # 2 pi/|h r0|
+    period_measured: float  # from the angle swept about the center
+    period_gap: float  # relative
+
+    @property
+    def points(self):
+        return [self.center]
+
+
+class Unbounded(NamedTuple):
+    """Without friction, m3 != 0: r grows without bound, p and q stay bounded."""
+
+    pq_max: float
+    r_final: float
+
+    @property
+    def points(self):
+        return []
+
+
+def asymptotics(V, ode):
+    """Theorem 1 and 3 with friction, Theorem 2 (circles) without, or the unbounded growth of r: Limit,
+    Circle or Unbounded, each with the scene's singular points (points)."""
     y = ode.y_eval
     limit = V.limit()
     if limit is not None:
+        gap = float(np.max(np.abs(y[-1] - limit)))
+        pq_bound, r_bound = V.bounds()
+        later = y[1:]  # Theorem 1 holds for t > 0: at t = 0, |r| = |r0| is its bound when m3 = 0
+        ratio = max(
+            float(np.max(np.abs(later[:, :2]))) / pq_bound, float(np.max(np.abs(later[:, 2]))) / r_bound
+        )
+        return Limit(limit, gap, ratio, "stable focus" if V.g1 != 0.0 else "stable node")
+    center = V.circle_center()
+    if center is not None:
+        radius = np.hypot(y[:, 0] - center[0], y[:, 1] - center[1])
+        period = 2 * np.pi / abs(V.h * V.omega0[2])
+        angle = np.unwrap(np.arctan2(y[:, 1] - center[1], y[:, 0] - center[0]))
+        measured = 2 * np.pi * (ode.t_eval[-1] - ode.t_eval[0]) / abs(angle[-1] - angle[0])
+        return Circle(
+            center, float(np.ptp(radius) / radius[0]), period, measured, abs(measured / period - 1.0)
+        )
+    return Unbounded(float(np.max(np.abs(y[:, :2]))), float(y[-1, 2]))
+
+
+def _record_asymptotics(results, values, t_max):
+    if isinstance(values, Limit):
+        limit, gap, ratio = values.limit, values.gap, values.theorem_1_ratio
         for k, name in enumerate("pqr"):
             results.number(
                 f"limit_{name}",
@@ -147,18 +243,12 @@ def _asymptotics(results, V, ode, t_max):
                 "1/time",
                 note="Theorem 3: (νm1 + g1m2, νm2 − g1m1)/(ν² + g1²), m3/μ",
             )
-        gap = float(np.max(np.abs(y[-1] - limit)))
         results.number("limit_gap", gap, "1/time", note=f"|ω(t = {t_max:g}) − Theorem 3's rotation|")
         results.hard_case(
             "limiting_rotation",
             f"Euler's equations at $t$ = {shortest(t_max)} against Theorem 3's uniform rotation",
             gap,
             LIMIT_BOUND,
-        )
-        pq_bound, r_bound = V.bounds()
-        later = y[1:]  # Theorem 1 holds for t > 0: at t = 0, |r| = |r0| is its bound when m3 = 0
-        ratio = max(
-            float(np.max(np.abs(later[:, :2]))) / pq_bound, float(np.max(np.abs(later[:, 2]))) / r_bound
         )
         results.number(
             "theorem_1_ratio",
@@ -175,41 +265,36 @@ def _asymptotics(results, V, ode, t_max):
             ratio,
             1.0,
         )
-        kind = "stable focus" if V.g1 != 0.0 else "stable node"
         results.number(
             "singular_points",
-            [{"p": float(limit[0]), "q": float(limit[1]), "r": float(limit[2]), "type": kind}],
+            [{"p": float(limit[0]), "q": float(limit[1]), "r": float(limit[2]), "type": values.kind}],
             "1/time",
             note="the uniform rotation all motions tend to",
         )
-        return [limit]
-    center = V.circle_center()
-    if center is not None:
-        radius = np.hypot(y[:, 0] - center[0], y[:, 1] - center[1])
-        results.number(
-            "radius_spread", float(np.ptp(radius) / radius[0]), "1", note="relative, along the circle"
-        )
+    elif isinstance(values, Circle):
+        center = values.center
+        results.number("radius_spread", values.radius_spread, "1", note="relative, along the circle")
         results.hard_case(
             "circle_closed",
             "Without friction, $m_3 = 0$: $\\boldsymbol{\\omega}$ keeps its circle "
             "about Theorem 2's center (relative spread of the radius)",
-            float(np.ptp(radius) / radius[0]),
+            values.radius_spread,
             1e-10,
         )
-        period = 2 * np.pi / abs(V.h * V.omega0[2])
         results.number(
-            "period_tau", float(period), "time", note="2π/|h r0| (Theorem 2); §5 has no reduced time: τ = t"
+            "period_tau",
+            float(values.period),
+            "time",
+            note="2π/|h r0| (Theorem 2); §5 has no reduced time: τ = t",
         )
-        angle = np.unwrap(np.arctan2(y[:, 1] - center[1], y[:, 0] - center[0]))
-        measured = 2 * np.pi * (ode.t_eval[-1] - ode.t_eval[0]) / abs(angle[-1] - angle[0])
         results.number(
-            "period_measured", float(measured), "time", note="from the angle swept about the center"
+            "period_measured",
+            float(values.period_measured),
+            "time",
+            note="from the angle swept about the center",
         )
         results.hard_case(
-            "circle_period",
-            "The circles' period against $2\\pi/|hr_0|$ (relative)",
-            abs(measured / period - 1.0),
-            1e-9,
+            "circle_period", "The circles' period against $2\\pi/|hr_0|$ (relative)", values.period_gap, 1e-9
         )
         results.number(
             "singular_points",
@@ -217,18 +302,15 @@ def _asymptotics(results, V, ode, t_max):
             "1/time",
             note="Theorem 2: a stable permanent rotation",
         )
-        return [center]
-    results.number(
-        "singular_points",
-        [],
-        "1/time",
-        note="none: without friction and with m3 ≠ 0, r grows without bound while p and q stay bounded",
-    )
-    results.number(
-        "pq_max", float(np.max(np.abs(y[:, :2]))), "1/time", note="max |p|, |q| (bounded, Fresnel)"
-    )
-    results.number("r_final", float(y[-1, 2]), "1/time", note="r = r0 + m3 t")
-    return []
+    else:
+        results.number(
+            "singular_points",
+            [],
+            "1/time",
+            note="none: without friction and with m3 ≠ 0, r grows without bound while p and q stay bounded",
+        )
+        results.number("pq_max", values.pq_max, "1/time", note="max |p|, |q| (bounded, Fresnel)")
+        results.number("r_final", values.r_final, "1/time", note="r = r0 + m3 t")
 
 
 def _figure(V, t, closed, ode, points, panels=()):
@@ -306,7 +388,15 @@ X_POINTS = (0.5, 2.0, 10.0, 30.0)
 W_POINTS = (0.3 + 0.4j, 1.7 + 0.5j)
 
 
-def special_function_costs(results, quick):
+class SpecialFunctionCosts(NamedTuple):
+    frame: pd.DataFrame  # si at 30 digits, each method's error and bound (table si_ci_values)
+    error_over_bound: float  # largest: the series (10^-16 added to its bound) and the expansion
+    bounds_exceeded: int  # rows where the series' or the expansion's error exceeds its bound
+    timing: pd.DataFrame  # error and wall time by method and setting at x = 2 and 30 (table si_ci_costs)
+    reaches: dict  # {(x, method): 1 if it reaches 1e-12, else 0}, mpmath left out
+
+
+def special_function_costs(quick) -> SpecialFunctionCosts:
     """Table T-D of the digest: si, ci by series, expansion and quadrature against 30 digits, with bounds;
     and error against time for each method at x = 2 and x = 30."""
     rows = []
@@ -324,61 +414,12 @@ def special_function_costs(results, quick):
                 row[f"{name}_bound"] = v.bound
             rows.append(row)
     frame = pd.DataFrame(rows)
-    results.table(
-        "si_ci_values",
-        frame,
-        "Lee's generalized sine integral $\\si(x, w)$ at 30 digits (the incomplete "
-        "gamma function of mpmath), and the error (the larger over $\\si$ and $\\ci$) and error bound of "
-        "each way to compute it in double precision: the series, Lee (5.38) and (5.39), with the reduction, "
-        "Lee (5.32) and (5.33), summed until the Lagrange bound, Lee (5.40) and (5.41), is below 10⁻¹⁶ of "
-        "the sum, plus a round-off estimate; the asymptotic expansion, Lee (5.42)–(5.48), cut at its "
-        "smallest remainder bound, Lee (5.45); and quadrature (SciPy's QAWO over $[x, 40]$, the expansion "
-        "beyond, with its own error estimate).",
-        headers={
-            "w": "$w$",
-            "x": "$x$",
-            "si_real": "$\\Re\\,\\si(x, w)$",
-            "si_imag": "$\\Im\\,\\si(x, w)$",
-            "series_error": "series error",
-            "series_bound": "series bound",
-            "asymptotic_error": "expansion error",
-            "asymptotic_bound": "expansion bound",
-            "quadrature_error": "quadrature error",
-            "quadrature_bound": "quadrature estimate",
-        },
-    )
     held = (frame.series_error <= frame.series_bound + 1e-16) & (
         frame.asymptotic_error <= frame.asymptotic_bound
     )
     ratio = np.maximum(
         frame.series_error / (frame.series_bound + 1e-16), frame.asymptotic_error / frame.asymptotic_bound
     )
-    results.number(
-        "si_ci_error_over_bound",
-        float(ratio.max()),
-        "1",
-        note="largest error/bound over the table "
-        "si_ci_values, the series (10⁻¹⁶ added to its bound for round-off) and the expansion",
-    )
-    results.hard_case(
-        "si_ci_bounds_hold",
-        "Values of $\\si$, $\\ci$ where the series' or the expansion's error exceeds its bound (count)",
-        int((~held).sum()),
-        0,
-    )
-    results.number(
-        "si_ci_digest_check_x2",
-        float(frame.series_error[(frame.x == 2.0)].iloc[0]),
-        "1",
-        note="series error at x = 2, w = 0.3 + 0.4i",
-    )
-    for method in ("series", "asymptotic"):
-        results.number(
-            f"si_ci_{method}_error_x30",
-            float(frame[f"{method}_error"][frame.x == 30.0].iloc[0]),
-            "1",
-            note="at x = 30, w = 0.3 + 0.4i",
-        )
     timing_rows = []
     w = W_POINTS[0]
     for x in (2.0, 30.0):
@@ -417,6 +458,67 @@ def special_function_costs(results, quick):
                 }
             )
     timing = pd.DataFrame(timing_rows)
+    reaches = {}
+    for x in (2.0, 30.0):
+        part = timing[(timing.x == x) & (timing.method != "mpmath incomplete gamma")]
+        for method, rows_ in part.groupby("method"):
+            good = rows_[rows_.error <= 1e-12]
+            reaches[x, method] = int(len(good) > 0)
+    return SpecialFunctionCosts(frame, float(ratio.max()), int((~held).sum()), timing, reaches)
+
+
+def _record_special_function_costs(results, values: SpecialFunctionCosts):
+    frame, timing = values.frame, values.timing
+    w = W_POINTS[0]  # the timings'
+    results.table(
+        "si_ci_values",
+        frame,
+        "Lee's generalized sine integral $\\si(x, w)$ at 30 digits (the incomplete "
+        "gamma function of mpmath), and the error (the larger over $\\si$ and $\\ci$) and error bound of "
+        "each way to compute it in double precision: the series, Lee (5.38) and (5.39), with the reduction, "
+        "Lee (5.32) and (5.33), summed until the Lagrange bound, Lee (5.40) and (5.41), is below 10⁻¹⁶ of "
+        "the sum, plus a round-off estimate; the asymptotic expansion, Lee (5.42)–(5.48), cut at its "
+        "smallest remainder bound, Lee (5.45); and quadrature (SciPy's QAWO over $[x, 40]$, the expansion "
+        "beyond, with its own error estimate).",
+        headers={
+            "w": "$w$",
+            "x": "$x$",
+            "si_real": "$\\Re\\,\\si(x, w)$",
+            "si_imag": "$\\Im\\,\\si(x, w)$",
+            "series_error": "series error",
+            "series_bound": "series bound",
+            "asymptotic_error": "expansion error",
+            "asymptotic_bound": "expansion bound",
+            "quadrature_error": "quadrature error",
+            "quadrature_bound": "quadrature estimate",
+        },
+    )
+    results.number(
+        "si_ci_error_over_bound",
+        values.error_over_bound,
+        "1",
+        note="largest error/bound over the table "
+        "si_ci_values, the series (10⁻¹⁶ added to its bound for round-off) and the expansion",
+    )
+    results.hard_case(
+        "si_ci_bounds_hold",
+        "Values of $\\si$, $\\ci$ where the series' or the expansion's error exceeds its bound (count)",
+        values.bounds_exceeded,
+        0,
+    )
+    results.number(
+        "si_ci_digest_check_x2",
+        float(frame.series_error[(frame.x == 2.0)].iloc[0]),
+        "1",
+        note="series error at x = 2, w = 0.3 + 0.4i",
+    )
+    for method in ("series", "asymptotic"):
+        results.number(
+            f"si_ci_{method}_error_x30",
+            float(frame[f"{method}_error"][frame.x == 30.0].iloc[0]),
+            "1",
+            note="at x = 30, w = 0.3 + 0.4i",
+        )
     caption = (
         f"What $\\si$ and $\\ci$ cost: the error (against 40 digits, the larger over the two) of "
         f"$\\si(x, w)$ and $\\ci(x, w)$ for $w$ = {_complex(w)}, by method and setting (series and "
@@ -464,20 +566,23 @@ def special_function_costs(results, quick):
         "above 1 (the expansion diverges at $x = 2$) are drawn at 1, errors below 10⁻¹⁸ at 10⁻¹⁸. "
         "The series serves small $x$, the expansion large $x$.",
     )
-    for x in (2.0, 30.0):
-        part = timing[(timing.x == x) & (timing.method != "mpmath incomplete gamma")]
-        for method, rows_ in part.groupby("method"):
-            good = rows_[rows_.error <= 1e-12]
-            key = method.split(" ")[0]
-            results.number(
-                f"si_ci_reaches_1e-12_x{x:g}_{key}",
-                int(len(good) > 0),
-                "1",
-                note=f"whether {method} reaches 1e-12 at x = {x:g}",
-            )
+    for (x, method), reached in values.reaches.items():
+        key = method.split(" ")[0]
+        results.number(
+            f"si_ci_reaches_1e-12_x{x:g}_{key}",
+            reached,
+            "1",
+            note=f"whether {method} reaches 1e-12 at x = {x:g}",
+        )
 
 
-def solution_costs(results, V, quick, t_end=4.0):
+class SolutionCosts(NamedTuple):
+    t_end: float
+    case: str  # Lee's case of the scene
+    frame: pd.DataFrame  # error and wall time by method and setting (a work-precision frame)
+
+
+def solution_costs(V, quick, t_end=4.0) -> SolutionCosts:
     """The state at t_end by Lee's formula (series with a given number of terms) against integration, each
     against the formula at 30 digits."""
     exact = V.closed_form([t_end], integrals=sc.reference_value)[0][0]
@@ -515,8 +620,14 @@ def solution_costs(results, V, quick, t_end=4.0):
                 lambda m=method, r=rtol: solve(problem, m, rtol=r, atol=r * 1e-2).y,
                 1 if method.startswith("scipy") else 5,
             )
+    return SolutionCosts(t_end, V.case, pd.DataFrame(rows))
+
+
+def _record_solution_costs(results, values: SolutionCosts):
+    t_end = values.t_end
     caption = (
-        f"What the solution costs: $\\boldsymbol{{\\omega}}$ at $t$ = {shortest(t_end)} (Case {V.case}) by "
+        f"What the solution costs: $\\boldsymbol{{\\omega}}$ at $t$ = {shortest(t_end)} "
+        f"(Case {values.case}) by "
         "Lee's quadrature formula, with $\\si$ and $\\ci$ from the series cut at a given number of terms, "
         "and "
         "by integrating Euler's equations at a given relative tolerance; the error of $(p, q)$ against the "
@@ -525,7 +636,7 @@ def solution_costs(results, V, quick, t_end=4.0):
     results.number("solution_t_end", t_end, "time", note="the time at which the costs are measured")
     publish(
         results,
-        pd.DataFrame(rows),
+        values.frame,
         "solution",
         "error",
         caption,
@@ -534,26 +645,49 @@ def solution_costs(results, V, quick, t_end=4.0):
     )
 
 
-def large_order(results, V, nu=0.32, mu=0.05, times=(5.0, 20.0, 40.0)):
+class LargeOrder(NamedTuple):
+    nu: float
+    mu: float
+    times: tuple
+    w: complex  # 1 + (nu + i g1)/mu
+    factor: float  # |g|^(nu/mu)/mu, which multiplies si, ci
+    error: float  # largest against 30 digits
+    bound: float  # the formula's own largest bound
+    error_over_bound: float  # largest error/(bound + 1e-13)
+
+
+def large_order(V, nu=0.32, mu=0.05, times=(5.0, 20.0, 40.0)) -> LargeOrder:
     """Hard case (digest §7 item 9): with mu small against nu, w = 1 + (nu + i g1)/mu is large, si and ci are
     tiny and are multiplied by |g|^(nu/mu)/mu: the formula loses digits. Its bound must say so, and hold."""
     W = replace(V, nu=nu, mu=mu)
     y, bound = W.closed_form(times)
     exact, _ = W.closed_form(times, integrals=sc.reference_value)
     error = np.hypot(*(y[:, :2] - exact[:, :2]).T)
-    results.number("large_order_w_real", W.w.real, "1", note=f"ν = {nu:g}, μ = {mu:g}")
-    results.number("large_order_w_imag", W.w.imag, "1")
-    results.number(
-        "large_order_factor", abs(W.g) ** (nu / mu) / mu, "1", note="|g|^(ν/μ)/μ, which multiplies si, ci"
+    return LargeOrder(
+        nu,
+        mu,
+        times,
+        W.w,
+        abs(W.g) ** (nu / mu) / mu,
+        float(error.max()),
+        float(bound.max()),
+        float(np.max(error / (bound + 1e-13))),
     )
+
+
+def _record_large_order(results, values: LargeOrder):
+    nu, mu, w = values.nu, values.mu, values.w
+    results.number("large_order_w_real", w.real, "1", note=f"ν = {nu:g}, μ = {mu:g}")
+    results.number("large_order_w_imag", w.imag, "1")
+    results.number("large_order_factor", values.factor, "1", note="|g|^(ν/μ)/μ, which multiplies si, ci")
     results.number(
-        "large_order_error", float(error.max()), "1/time", note=f"against 30 digits, t in {list(times)}"
+        "large_order_error", values.error, "1/time", note=f"against 30 digits, t in {list(values.times)}"
     )
-    results.number("large_order_bound", float(bound.max()), "1/time", note="the formula's own bound")
+    results.number("large_order_bound", values.bound, "1/time", note="the formula's own bound")
     results.hard_case(
         "large_order_bound_holds",
-        f"Large order $w$ = {_complex(W.w, 3)}: the formula's error over its "
+        f"Large order $w$ = {_complex(w, 3)}: the formula's error over its "
         "own bound (10⁻¹³ added for round-off), largest over $t$",
-        float(np.max(error / (bound + 1e-13))),
+        values.error_over_bound,
         1.0,
     )
