@@ -214,11 +214,6 @@ def record_limit_cycle(results, frame, m1, nu):
     )
 
 
-def huge_excursion(results, M, start, quick):
-    """Computed and recorded (middle_axis.py's entry). start: excursions.excursion_start."""
-    record_huge_excursion(results, excursion_runs(M, start, quick), M, start[0][1])
-
-
 def excursion_runs(M, start, quick) -> pd.DataFrame:
     """EXCURSION_PERIODS periods of a huge excursion: omega's distance at the end from its start, relative to
     the largest |omega|, by method and setting. start: excursions.excursion_start."""

@@ -126,11 +126,6 @@ def excursion_orbit(M, start) -> ExcursionOrbit:
     )
 
 
-def excursion(results, M, start):
-    """Computed and recorded (middle_axis.py's entry). start: excursion_start."""
-    record_excursion(results, excursion_orbit(M, start))
-
-
 def record_excursion(results, values: ExcursionOrbit):
     """The figure of |omega| over the first two periods, the numbers and the hard cases."""
     T, sizes, predicted, scale = values.period, values.sizes, values.predicted, values.max_omega_closed_form

@@ -110,8 +110,8 @@ def run(scene, results, quick):
     _middle_checks(results, M, overlay_starts, centers)
     if "excursion" in data:
         start = excursions.excursion_start(M, float(data["excursion"]["q0"]))
-        excursions.excursion(results, M, start)
-        accuracy.huge_excursion(results, M, start, quick)
+        excursions.record_excursion(results, excursions.excursion_orbit(M, start))
+        accuracy.record_huge_excursion(results, accuracy.excursion_runs(M, start, quick), M, start[0][1])
 
 
 class Reduction(NamedTuple):
@@ -206,9 +206,9 @@ def _fates(results, drawing, M, points, centers, saddles, others):
     if M.mu1 < 0 and _turns_nowhere(M):
         _record_every_start_escapes(results, every_start_escapes(M, others))
     if M.form == "rare":
-        rare_case.escape(results, M)
+        rare_case.record_escape(results, rare_case.escape_motion(M))
         if M.m1 == 0.0:
-            rare_case.rest_line(drawing, results, M)
+            rare_case.record_rest_line(drawing, results, rare_case.rest_line_motion(M))
     else:
         escape = _escaping_start(M, centers, saddles)
         if escape is not None:
@@ -590,17 +590,20 @@ def lyapunov_coefficients(M, center):
 
 def _series(results, M, center, nu):
     """Lee §4: the Lyapunov system about the center, (4.13), (4.14), (4.15), (4.16). Records the series
-    (portrait.series_check measures the periods and records them)."""
+    (portrait.series_periods measures the periods)."""
     k_sq, beta2, beta3 = lyapunov_coefficients(M, center)
     which = {"sinh": "(4.13)", "cosh": "(4.14)", "exp": "(4.15)", "exp-": "(4.16)"}[M.form]
     from . import middle_checks
 
     middle_checks.record_theta_series(results, middle_checks.theta_series(M, center, k_sq, beta2, beta3))
-    portrait.series_check(
-        results,
+    values = portrait.series_periods(
         lambda eta: portrait.period(se.plane_middle, M.plane_parameters(), [center + eta, 0.0]),
         lambda eta: se.lyapunov_period(k_sq, beta2, beta3, -nu, eta),
         COSH_AMPLITUDES if M.form == "cosh" else AMPLITUDES,
+    )
+    portrait.record_series_check(
+        results,
+        values,
         f"Lee {which}: the period (in $\\tau$) of the oscillation about the center "
         f"$\\varphi_{{2\\mathrm{{c}}}}$ "
         "started at $\\varphi_{2\\mathrm{c}} + \\eta$, integrated from the plane system and from the series "

@@ -86,14 +86,6 @@ def record_series_check(results, values: SeriesCheck, caption):
     )
 
 
-def series_check(results, measured, series, amplitudes, caption):
-    """Lee §4: a period series against measured periods, computed and recorded (middle_axis.py's entry);
-    its error must fall like eta^4."""
-    values = series_periods(measured, series, amplitudes)
-    record_series_check(results, values, caption)
-    return values.frame
-
-
 def series_figure(ax, frame, slope, ncol=1):
     """A period series' relative error against the amplitude (log-log), the fitted slope in the legend, and
     the dashed reference slope eta^4 through the points' centre, moved down by a factor 3 so both stay

@@ -70,11 +70,6 @@ def escape_motion(M) -> RareEscape:
     )
 
 
-def escape(results, M):
-    """Computed and recorded (middle_axis.py's entry)."""
-    record_escape(results, escape_motion(M))
-
-
 def record_escape(results, values: RareEscape):
     bound = portrait.BLOW_UP_BOUND
     results.number(
@@ -177,11 +172,6 @@ def rest_line_motion(M) -> RestLine:
     decay = float(np.max(np.abs(M.to_plane(w)[:, 1] / (q10 / (1.0 + nu * q10 * t)) - 1.0)))
     slope = float(np.polyfit(np.log(np.hypot(w[:, 0], w[:, 2])), np.log(np.abs(w[:, 1])), 1)[0])
     return RestLine(drift, q10, t[-1], decay, slope, M.body.b / (M.body.a + M.body.c))
-
-
-def rest_line(drawing, results, M):
-    """Computed, drawn and recorded (middle_axis.py's entry)."""
-    record_rest_line(drawing, results, rest_line_motion(M))
 
 
 def record_rest_line(drawing, results, values: RestLine):
