@@ -22,7 +22,7 @@ from ...results import new_figure, subplots
 from ...solvers import chain_eigen
 from ...solvers.special import bessel_j0_zeros, laguerre_lowest_zero_asymptotic, laguerre_zero_mp
 from ...solvers.timing import min_time
-from . import small_oscillations
+from . import small_oscillations as so
 
 symbolic = lazy_module(f"{__package__}.symbolic")  # sympy, for the scenes that ask for a closed form
 
@@ -187,22 +187,21 @@ def run(scene, results, quick):
     if "closed_form" in analysis:
         _closed_form(results, masses, built.segment_stiffness, ends, analysis["closed_form"], values)
         if analysis["closed_form"] in symbolic.SOURCE_SHAPES:
-            small_oscillations.printed_shapes(results, built, masses, analysis["closed_form"])
+            so.record_printed_shapes(results, so.printed_shapes(built, masses, analysis["closed_form"]))
     if "closed_form" in analysis or "constraint" in analysis:
-        small_oscillations.orthogonality(results, built)
+        so.record_orthogonality(results, so.orthogonality(built))
     if analysis.get("separation"):
-        small_oscillations.separation(results, built)
+        so.record_separation(results, so.separation(built))
     if analysis.get("rayleigh_symmetric"):
-        small_oscillations.rayleigh_symmetric(results, built, masses)
+        so.record_rayleigh_symmetric(results, so.rayleigh_symmetric(built, masses))
     if "constraint" in analysis:
-        small_oscillations.constraint(
-            results, built, analysis["constraint"]["samples"], analysis["constraint"]["seed"]
-        )
+        spec = analysis["constraint"]
+        so.record_constraint(results, so.constraint(built, spec["samples"], spec["seed"]))
     if "forced" in analysis:
-        small_oscillations.forced(results, built, analysis["forced"])
+        so.record_forced(results, so.forced(built, analysis["forced"]))
     if "friction" in analysis:
-        small_oscillations.friction(results, built, analysis["friction"])
-        small_oscillations.dissipation(results, built, analysis["friction"]["aperiodic_scale"])
+        so.record_friction(results, so.friction(built, analysis["friction"]))
+        so.record_dissipation(results, so.dissipation(built, analysis["friction"]["aperiodic_scale"]))
     if analysis.get("parabola_type"):
         quotient = float(symbolic.string_parabola_quotient())
         results.number(
@@ -220,7 +219,7 @@ def run(scene, results, quick):
     if "continuum_limit" in analysis:
         _continuum_limit(results, chain, effects, ends, analysis["continuum_limit"]["n_values"])
     if "initial_value" in analysis:
-        small_oscillations.initial_value(results, built, analysis["initial_value"])
+        so.record_initial_value(results, so.initial_value(built, analysis["initial_value"]))
     if analysis.get("stability"):
         from . import stability
 
