@@ -104,11 +104,11 @@ def run(scene, results, quick):
     if "galerkin" in analysis:  # Lamb Art. 100: the same chain from Hamilton's principle
         from . import stability
 
-        stability.hamilton_chain(results, analysis["galerkin"]["elements"])
+        stability.record_hamilton_chain(results, stability.hamilton_chain(analysis["galerkin"]["elements"]))
     if "membrane" in analysis:  # the drum of the lecture notes: Bessel's equation again, all m
         from . import stability
 
-        stability.drum(results, analysis["membrane"]["points"])
+        stability.record_drum(results, stability.drum(analysis["membrane"]["points"]))
 
 
 def _record_frequencies(results, values: Frequencies, gravity):

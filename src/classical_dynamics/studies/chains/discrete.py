@@ -223,12 +223,12 @@ def run(scene, results, quick):
     if analysis.get("stability"):
         from . import stability
 
-        stability.equilibrium(results, built)
-        stability.ball_modes(results)
+        stability.record_equilibrium(results, stability.equilibrium(built))
+        stability.record_ball_modes(results, stability.ball_modes())
     if analysis.get("revolving"):
         from . import stability
 
-        stability.revolving(results)
+        stability.record_revolving(results, stability.revolving())
     if shapes is not None and analysis.get("mode_shapes") and "gravity" in effects:
         _mode_shapes(results, shapes, n, k)
     if "convergence" in analysis:
