@@ -41,38 +41,41 @@ def test_equal_roots_bounded_but_a_jordan_block_grows():
 
 
 def test_gyroscopic_switch_secular_instability_and_bowl():
-    r = Recorder()
-    stability.gyroscopic(r, {"beta": 3.0, "epsilon": 1e-4, "bowl_friction": 0.1})
-    v = r.values
-    assert abs(v["kinetic_switch_beta"] - 2.0) < 1e-10
-    assert v["kinetic_positive_c_unstable_count"] == 0 and v["kinetic_mixed_c_stable_count"] == 0
-    slower, faster = v["secular_real_parts_c_negative"]
+    v = stability.gyroscopic({"beta": 3.0, "epsilon": 1e-4, "bowl_friction": 0.1})
+    assert abs(v.switch_beta - 2.0) < 1e-10
+    assert v.positive_c_unstable_count == 0 and v.mixed_c_stable_count == 0
+    negative, positive = v.secular
+    assert (negative.label, positive.label) == ("negative", "positive")
+    slower, faster = negative.real_parts
     assert slower > 0 > faster  # the slower mode grows: secular instability
-    assert max(v["secular_real_parts_c_positive"]) < 0  # positive c: both decay
-    assert v["secular_vs_first_order_c_negative"] < 1e-6
-    assert abs(v["bowl_switch_omega_over_n"] - 1.0) < 1e-10
-    assert np.allclose(v["bowl_space_rates_frictionless"], [-1.0, 1.0], atol=1e-12)
-    assert v["bowl_growing_mode_space_rate"] > 0 and v["bowl_growing_real_part"] > 0
+    assert max(positive.real_parts) < 0  # positive c: both decay
+    assert negative.deviation < 1e-6
+    assert abs(v.bowl.switch_omega - 1.0) < 1e-10
+    assert np.allclose(v.bowl.space_rates_frictionless, [-1.0, 1.0], atol=1e-12)
+    assert v.bowl.growing_space_rate > 0 and v.bowl.growing_real_part > 0
+    # the record writes the same values under the report's names
+    r = Recorder()
+    stability.record_gyroscopic(r, v)
+    assert r.values["secular_real_parts_c_negative"] == negative.real_parts
+    assert r.values["bowl_switch_omega_over_n"] == v.bowl.switch_omega
 
 
 def test_revolving_examples():
-    r = Recorder()
-    stability.revolving(r)
+    v = stability.revolving()
     # by hand: kappa^2 = 3f/r + f' is e^-r (1/r^3 - 1/r^2) for f = e^-r/r^2 (zero at r = a),
     # e^-r (2/r^2 - 1/r) for the OCR's e^-r/r (zero at 2a); the module bisects a complex-step derivative
-    assert abs(r.values["exponential_force_switch"] - 1.0) < 1e-10
-    assert abs(r.values["exponential_force_switch_ocr_reading"] - 2.0) < 1e-10
+    assert abs(v.force_switch - 1.0) < 1e-10
+    assert abs(v.force_switch_ocr - 2.0) < 1e-10
     # independent sides: a nonlinear integration of Lagrange's equations against Routh's sigma^2 from sympy
-    assert r.values["revolving_sigma2_fitted_vs_formula"] < 1e-8
+    assert v.sigma2_fitted_vs_formula < 1e-8
 
 
 def test_ball_modes_are_conjugate_and_fixed_axes():
-    r = Recorder()
-    stability.ball_modes(r, seed=3)
+    v = stability.ball_modes(seed=3)
     # conjugacy in I and V is what scipy's eigh guarantees: these two show the reported figures are
     # computed, not that project code is right; the axis check integrates linear.state_matrix (tested below)
-    assert r.values["ball_conjugate_inertia"] < 1e-13 and r.values["ball_conjugate_potential"] < 1e-13
-    assert r.values["ball_mode_axis_fixed"] < 1e-10
+    assert v.conjugate_inertia < 1e-13 and v.conjugate_potential < 1e-13
+    assert v.axis_fixed < 1e-10
 
 
 def test_state_matrix_has_the_characteristic_roots():
@@ -93,22 +96,20 @@ def test_state_matrix_has_the_characteristic_roots():
 
 
 def test_hamilton_chain_converges_at_order_two_to_the_j0_zeros():
-    r = Recorder()
-    stability.hamilton_chain(r, [250, 500, 1000, 2000])
+    v = stability.hamilton_chain([250, 500, 1000, 2000])
     # the errors are against (j_0k/2)^2 from scipy's jn_zeros (a library's Bessel zeros, not the module's
     # finite elements); a wrong reference (j_0k/2.02) stops the convergence and fails the order
-    assert abs(r.values["galerkin_order"] - 2.0) < 0.02
-    assert r.values["galerkin_richardson_error"] < r.values["galerkin_finest_error"] / 100
+    assert abs(v.order - 2.0) < 0.02
+    assert v.richardson_error < v.errors[-1] / 100
 
 
 def test_drum_collocation_finds_the_bessel_zeros_not_their_roots():
-    r = Recorder()
-    stability.drum(r, 41)
-    computed = np.array(r.values["drum_frequencies_collocation"])
+    v = stability.drum(41)
+    computed = np.array(v.collocation)
     assert abs(computed[0] - jn_zeros(0, 1)[0]) < 1e-12
     assert abs(computed[0] - 1.551) > 0.8  # the notes' 1.551 is sqrt(j01), not a frequency
-    assert r.values["drum_collocation_vs_bessel"] < 1e-12
-    assert [tuple(x) for x in r.values["drum_modes_mn"][:4]] == [(0, 1), (1, 1), (2, 1), (0, 2)]
+    assert v.collocation_vs_bessel < 1e-12
+    assert [tuple(x) for x in v.modes_mn[:4]] == [(0, 1), (1, 1), (2, 1), (0, 2)]
 
 
 RING = {

@@ -15,17 +15,21 @@ def test_loaded_string_approaches_the_continuum_by_the_sine_law():
     # Lagrange (Lamb Ex. XIV.10): n particles of rho a on n + 1 intervals a under tension P have
     # omega_s = 2 sqrt(P/(rho a^2)) sin(x), x = s pi/(2(n + 1)); the harmonics are s pi/l sqrt(P/rho),
     # so the ratio is exactly sin(x)/x, whatever P, rho and l
-    results = Results("chains", "t", "t")
     chain = {"n": 10, "ends": "fixed-fixed", "length_m": 1.7, "mass_kg": 0.6}
     n_values = [10, 20, 40, 80]
-    discrete._continuum_limit(results, chain, {"tension": {"newton": 2.5}}, "fixed-fixed", n_values)
-    got = {k: v["value"] for k, v in results.numbers.items()}
+    values = discrete.continuum_limit(chain, {"tension": {"newton": 2.5}}, "fixed-fixed", n_values)
     x = np.arange(1, 4)[None, :] * np.pi / (2 * (np.array(n_values)[:, None] + 1))
     errors = np.abs(np.sin(x) / x - 1)
-    assert got["continuum_limit_error_at_largest"] == pytest.approx(errors[-1].max(), rel=1e-8)
+    assert values.error_at_largest == pytest.approx(errors[-1].max(), rel=1e-8)
     intervals = np.log(np.array(n_values) + 1.0)
     order = min(-np.polyfit(intervals, np.log(errors[:, s]), 1)[0] for s in range(3))
-    assert got["continuum_limit_order"] == pytest.approx(order, rel=1e-6)
+    assert values.order == pytest.approx(order, rel=1e-6)
+    # the record writes the same values, and the largest n
+    results = Results("chains", "t", "t")
+    discrete._record_continuum_limit(results, values)
+    got = {k: v["value"] for k, v in results.numbers.items()}
+    assert got["continuum_limit_error_at_largest"] == values.error_at_largest
+    assert got["continuum_limit_order"] == values.order
     assert got["continuum_limit_n_largest"] == 80
 
 

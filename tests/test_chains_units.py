@@ -152,20 +152,21 @@ def test_detuned_response_against_a_50_digit_solve_at_1e_10_from_resonance(m):
 def test_forced_response_by_normal_coordinates_matches_a_direct_solve_and_the_statical_limit():
     # m = 3 so that sigma_1 is no simple binary number: the 50-digit reference must be exact for it too
     built = _string(m=3.0, forcing={"newton": [1.0, 0.0, 0.0]})
-    results = _results()
     spec = {"sigma_max_over_lowest": 3.0, "points": 31, "transient_detuning": 1e-12, "transient_periods": 2}
-    small_oscillations.forced(results, built, spec)
-    got = _values(results)
-    assert got["forced_direct_vs_normal"] < 1e-12  # a term dropped from Lamb's sum: O(1)
-    assert got["forced_static_limit"] < 1e-12
-    assert got["resonance_residue_slope"] == pytest.approx(1.0, abs=0.01)  # the deviation is O(delta)
-    assert got["transient_integrator_vs_closed_form"] < 1e-8
-    # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
+    values = small_oscillations.forced(built, spec)
+    assert values.direct_vs_normal < 1e-12  # a term dropped from Lamb's sum: O(1)
+    assert values.static_limit < 1e-12
+    assert values.residue_slope == pytest.approx(1.0, abs=0.01)  # the deviation is O(delta)
+    assert values.transient.integrator_vs_closed_form < 1e-8
+    # the record's hard-case verdicts as the report prints them, not a reference (the other asserts are)
+    results = _results()
+    small_oscillations.record_forced(results, values)
+    assert _values(results)["forced_direct_vs_normal"] == values.direct_vs_normal
     assert all(case["holds"] for case in results.stability), results.stability
     # the table's amplitudes against numpy's solve on the matrices written out here, at delta = 1e-2
     K, M = _string_matrices(3.0, 1.0)
     F = np.array([1.0, 0.0, 0.0])
-    frame = results.tables["resonance"][0]
+    frame = values.resonance
     row = frame[frame.detuning == 1e-2].iloc[0]
     s = np.sqrt((2 - np.sqrt(2)) / 3.0) * (1 - 1e-2)
     expected = np.linalg.norm(np.linalg.solve(K - s**2 * M, F)) / np.linalg.norm(np.linalg.solve(K, F))
@@ -173,11 +174,9 @@ def test_forced_response_by_normal_coordinates_matches_a_direct_solve_and_the_st
 
 
 def test_initial_value_sum_of_modes_follows_the_integrator_and_shares_the_energy():
-    results = _results()
-    small_oscillations.initial_value(results, _string(m=2.0, P=3.0), {"seed": 4, "periods": 2})
-    got = _values(results)
-    assert got["initial_value_modal_vs_integrator"] < 1e-9  # one mode left out, or its sine: O(1)
-    assert got["energy_sum_of_modes"] < 1e-12
+    values = small_oscillations.initial_value(_string(m=2.0, P=3.0), {"seed": 4, "periods": 2})
+    assert values.modal_vs_integrator < 1e-9  # one mode left out, or its sine: O(1)
+    assert values.energy_sum_of_modes < 1e-12
 
 
 # --- small_oscillations.py: friction (Arts. 96-97) -----------------------------------------------------
@@ -185,14 +184,12 @@ def test_initial_value_sum_of_modes_follows_the_integrator_and_shares_the_energy
 
 def test_small_friction_orders_and_decay_rates_against_numpy():
     built = _string(friction={"b_kg_per_s": [0.5, 0.0, 0.0]})
-    results = _results()
-    small_oscillations.friction(results, built, {"scales": [0.01, 0.001]})
-    got = _values(results)
+    values = small_oscillations.friction(built, {"scales": [0.01, 0.001]})
     # Lamb Art. 96: the frequency moves at second order, the decay is c_kk/2 to second order, and the
     # second-order term leaves third order
-    assert got["frequency_shift_order"] == pytest.approx(2.0, abs=0.05)
-    assert got["decay_vs_first_order_order"] == pytest.approx(2.0, abs=0.05)
-    assert got["second_order_remainder_order"] == pytest.approx(3.0, abs=0.1)
+    assert values.orders["frequency_shift"] == pytest.approx(2.0, abs=0.05)
+    assert values.orders["decay_vs_first_order"] == pytest.approx(2.0, abs=0.05)
+    assert values.orders["second_order_remainder"] == pytest.approx(3.0, abs=0.1)
     # the table's frequency shift at scale 0.001 from numpy's roots of det(K + lambda B + lambda^2 M)
     K, M = _string_matrices(1.0, 1.0)
     B = np.diag([0.5e-3, 0.0, 0.0])
@@ -201,7 +198,7 @@ def test_small_friction_orders_and_decay_rates_against_numpy():
     roots = roots[roots.imag > 0]
     roots = roots[np.argsort(roots.imag)]
     sigma = np.sqrt(np.array([2 - np.sqrt(2), 2, 2 + np.sqrt(2)]))
-    frame = results.tables["friction"][0]
+    frame = values.table
     table = frame[frame.scale == 0.001].sort_values("mode").frequency_shift.to_numpy()
     np.testing.assert_allclose(table, np.abs(roots.imag - sigma) / sigma, rtol=1e-3, atol=1e-15)
     # the decay rate at first order, c_kk/2 with c = phi^T B phi, phi the M-normalized shapes of Fig. 57
@@ -217,17 +214,15 @@ def test_small_friction_orders_and_decay_rates_against_numpy():
 
 def test_dissipation_balance_and_aperiodic_roots_past_critical_friction():
     built = _string(friction={"b_kg_per_s": [0.5, 0.0, 0.0]})
-    results = _results()
-    small_oscillations.dissipation(results, built, 50.0)
-    got = _values(results)
-    assert got["dissipation_balance"] < 1e-9  # T + V + the work against friction is constant
+    values = small_oscillations.dissipation(built, 50.0)
+    assert values.balance < 1e-9  # T + V + the work against friction is constant
     # the real roots of det(K + lambda 50 B + lambda^2 M), by numpy here
     K, M = _string_matrices(1.0, 1.0)
     roots = np.linalg.eigvals(np.block([[np.zeros((3, 3)), np.eye(3)], [-K, -np.diag([25.0, 0, 0])]]))
     real = roots[np.abs(roots.imag) < 1e-9].real
-    assert got["aperiodic_real_roots"] == real.size == 2
-    assert got["aperiodic_largest_real_root"] == pytest.approx(real.max() / np.sqrt(2 - np.sqrt(2)), rel=1e-9)
-    assert got["aperiodic_largest_real_root"] < 0
+    assert values.real_roots == real.size == 2
+    assert values.largest_real_root == pytest.approx(real.max() / np.sqrt(2 - np.sqrt(2)), rel=1e-9)
+    assert values.largest_real_root < 0
 
 
 # --- small_oscillations.py: the statical theorems (Arts. 90-94) ---------------------------------------
@@ -237,49 +232,41 @@ def test_separation_of_two_roots_by_the_diagonal_values():
     # Lamb Art. 90 Ex. 1, springs k, 2k, 3k between walls, m = 1: a = 3, b = 5, h = -2, so
     # (3 - s)(5 - s) = 4 has roots 4 -+ sqrt 5, separated by 3 and 5
     built = particle_chain(2, "fixed-fixed", 1.0, 1.0, {"springs": {"k_n_per_m": [1.0, 2.0, 3.0]}})
-    results = _results()
-    small_oscillations.separation(results, built)
-    got = _values(results)
-    assert got["separation_proved"] == 1
-    assert got["separation_margin"] == pytest.approx((np.sqrt(5) - 1) / (4 + np.sqrt(5)), rel=1e-12)
-    assert got["mode_direction_residual"] < 1e-14
+    values = small_oscillations.separation(built)
+    assert values.proved
+    assert values.margin == pytest.approx((np.sqrt(5) - 1) / (4 + np.sqrt(5)), rel=1e-12)
+    assert values.direction_residual < 1e-14
     unequal = particle_chain(2, "fixed-fixed", 1.0, [1.0, 2.0], {"springs": {"k_n_per_m": 1.0}})
     with pytest.raises(ValueError, match="equal masses"):
-        small_oscillations.separation(_results(), unequal)
+        small_oscillations.separation(unequal)
 
 
 def test_three_on_string_shapes_symmetric_type_orthogonality_and_constraints():
     built = _string()
     masses = np.ones(3)
-    results = _results()
-    small_oscillations.printed_shapes(results, built, masses, "three_on_string")
-    small_oscillations.rayleigh_symmetric(results, built, masses)
-    small_oscillations.orthogonality(results, built)
-    small_oscillations.constraint(results, built, 10, 3)
-    got = _values(results)
-    assert got["source_shapes_exact"] == 1 and got["source_shapes_vs_solver"] < 1e-14
+    shapes = small_oscillations.printed_shapes(built, masses, "three_on_string")
+    assert shapes.exact and shapes.vs_solver < 1e-14
     # Art. 94 Ex. 1: theta = -+1/sqrt2, where the quotient is (2 -+ sqrt2) P/(m a), exactly the roots
-    np.testing.assert_allclose(
-        got["rayleigh_stationary_theta"], [-1 / np.sqrt(2), 1 / np.sqrt(2)], rtol=1e-14
-    )
-    assert got["rayleigh_stationary_exact"] == 1 and got["rayleigh_stationary_vs_solver"] < 1e-14
-    assert got["orthogonality_mass"] < 1e-14 and got["orthogonality_stiffness"] < 1e-14
+    symmetric = small_oscillations.rayleigh_symmetric(built, masses)
+    np.testing.assert_allclose(symmetric.stationary_theta, [-1 / np.sqrt(2), 1 / np.sqrt(2)], rtol=1e-14)
+    assert symmetric.exact and symmetric.vs_solver < 1e-14
+    orthogonal = small_oscillations.orthogonality(built)
+    assert orthogonal.mass < 1e-14 and orthogonal.stiffness < 1e-14
     # Arts. 91-93: a constraint interlaces, holding phi_1 leaves the rest, the quotient errs at second order
-    assert got["interlacing_violations"] == 0 and got["interlacing_margin"] >= -1e-13
-    assert got["constraints_tried"] == 3 + 10
-    assert got["successive_minima_error"] < 1e-13
-    assert got["stationary_order"] == pytest.approx(2.0, abs=0.05)
-    assert got["general_roots_imaginary"] < 1e-8 and got["general_roots_not_positive"] == 0
+    held = small_oscillations.constraint(built, 10, 3)
+    assert held.interlacing_violations == 0 and held.interlacing_margin >= -1e-13
+    assert held.constraints_tried == 3 + 10
+    assert held.successive_minima_error < 1e-13
+    assert held.stationary_order == pytest.approx(2.0, abs=0.05)
+    assert held.general_roots_imaginary < 1e-8 and held.general_roots_not_positive == 0
 
 
 def test_a_free_molecules_vibrations_carry_no_momentum():
     # the triatomic molecule m-M-m: the vibrations (1, 0, -1) and (1, -2m/M, 1) have sum m_i X_i = 0
     built = particle_chain(3, "free-free", 1.0, [1.0, 3.0, 1.0], {"springs": {"k_n_per_m": 1.0}})
-    results = _results()
-    small_oscillations.printed_shapes(results, built, built.masses, "triatomic")
-    got = _values(results)
-    assert got["source_shapes_exact"] == 1 and got["source_shapes_vs_solver"] < 1e-12
-    assert got["vibration_momentum"] < 1e-14
+    values = small_oscillations.printed_shapes(built, built.masses, "triatomic")
+    assert values.exact and values.vs_solver < 1e-12
+    assert values.vibration_momentum < 1e-14
 
 
 # --- time_domain.py ---------------------------------------------------------------------------------------

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 import pandas as pd
 import scipy.linalg as sla
@@ -22,7 +24,7 @@ from ...results import new_figure, subplots
 from ...solvers import chain_eigen
 from ...solvers.special import bessel_j0_zeros, laguerre_lowest_zero_asymptotic, laguerre_zero_mp
 from ...solvers.timing import min_time
-from . import small_oscillations
+from . import small_oscillations as so
 
 symbolic = lazy_module(f"{__package__}.symbolic")  # sympy, for the scenes that ask for a closed form
 
@@ -107,21 +109,37 @@ def hanging_particles_scaled(n: int, k: int, method: str = "pliability"):
     return chain_eigen.lowest_eigenvalues(s, None, np.ones(n), "fixed-free", k, method)
 
 
-def run(scene, results, quick):
-    data = scene.data
-    chain, effects, analysis = data["chain"], data["effects"], data.get("analysis", {})
-    model, n, k = chain["model"], chain["n"], analysis.get("modes", 5)
+class ZeroMode(NamedTuple):
+    rigid_name: str  # the rigid motion the zero mode should be
+    eigenvalue_relative: float  # |lambda_0|/lambda_max before clipping
+    misalignment: float  # 1 - |cos| of the angle between the zero mode and the rigid motion
+
+
+class Spectrum(NamedTuple):
+    built: object | None  # the ParticleChain; None for rigid links
+    effects: dict  # the effects the free frequencies see
+    values: np.ndarray  # the frequencies (rad/s)
+    unit: float
+    unit_name: str
+    unit_label: str
+    exact: np.ndarray | None  # the discrete chain's closed form
+    continuum: np.ndarray | None
+    shapes: np.ndarray | None
+    zero_mode: ZeroMode | None  # where the chain has a neutral motion
+
+
+def spectrum(chain, effects, k) -> Spectrum:
+    """The lowest k free frequencies of the scene's chain, beside the continuum's and the closed form."""
+    model, n = chain["model"], chain["n"]
     ends = chain.get("ends", "fixed-free")
     length = chain["length_m"]
     masses = _masses(chain, n)
     total = float(masses.sum())
-    results.number("n", n, model)
+    built, exact, shapes, zero = None, None, None, None
     if model == "links":
         omega_unit = np.sqrt(effects["gravity"]["g_m_per_s2"] / length)
         values = links_frequencies(n, k) * omega_unit
         unit, unit_name, unit_label = omega_unit, "sqrt_g_over_l", "√(g/l)"
-        exact = None
-        shapes = None
     else:
         built = particle_chain(n, ends, length, masses, effects)
         # the free frequencies' effects
@@ -139,14 +157,82 @@ def run(scene, results, quick):
         if np.any(np.abs(lam) <= zero_floor):
             # the neutral motion: a translation of a free chain, a rigid turn (y ~ r) of a whirling one
             rigid = built.geometry.positions_m if "rotation" in effects else np.ones(n)
-            _zero_modes(
-                results,
+            zero = zero_mode(
                 lam,
                 shapes,
                 rigid,
                 "rigid rotation ($y \\propto r$)" if "rotation" in effects else "rigid translation",
             )
     cont = continuum_frequencies(effects, ends, length, total, len(values), n=n)
+    return Spectrum(built, effects, values, unit, unit_name, unit_label, exact, cont, shapes, zero)
+
+
+def run(scene, results, quick):
+    data = scene.data
+    chain, analysis = data["chain"], data.get("analysis", {})
+    model, n, k = chain["model"], chain["n"], analysis.get("modes", 5)
+    ends = chain.get("ends", "fixed-free")
+    masses = _masses(chain, n)
+    results.number("n", n, model)
+    found = spectrum(chain, data["effects"], k)
+    built, effects, values, shapes = found.built, found.effects, found.values, found.shapes
+    if found.zero_mode is not None:
+        _record_zero_mode(results, found.zero_mode)
+    _record_frequencies(results, found, n, model)
+    if "closed_form" in analysis:
+        name = analysis["closed_form"]
+        _record_closed_form(results, closed_form(masses, built.segment_stiffness, ends, name, values))
+        if name in symbolic.SOURCE_SHAPES:
+            so.record_printed_shapes(results, so.printed_shapes(built, masses, name))
+    if "closed_form" in analysis or "constraint" in analysis:
+        so.record_orthogonality(results, so.orthogonality(built))
+    if analysis.get("separation"):
+        so.record_separation(results, so.separation(built))
+    if analysis.get("rayleigh_symmetric"):
+        so.record_rayleigh_symmetric(results, so.rayleigh_symmetric(built, masses))
+    if "constraint" in analysis:
+        spec = analysis["constraint"]
+        so.record_constraint(results, so.constraint(built, spec["samples"], spec["seed"]))
+    if "forced" in analysis:
+        so.record_forced(results, so.forced(built, analysis["forced"]))
+    if "friction" in analysis:
+        so.record_friction(results, so.friction(built, analysis["friction"]))
+        so.record_dissipation(results, so.dissipation(built, analysis["friction"]["aperiodic_scale"]))
+    if analysis.get("parabola_type"):
+        _record_parabola(results, float(symbolic.string_parabola_quotient()))
+    if "continuum_limit" in analysis:
+        n_values = analysis["continuum_limit"]["n_values"]
+        _record_continuum_limit(results, continuum_limit(chain, effects, ends, n_values))
+    if "initial_value" in analysis:
+        so.record_initial_value(results, so.initial_value(built, analysis["initial_value"]))
+    if analysis.get("stability"):
+        from . import stability
+
+        stability.record_equilibrium(results, stability.equilibrium(built))
+        stability.record_ball_modes(results, stability.ball_modes())
+    if analysis.get("revolving"):
+        from . import stability
+
+        stability.record_revolving(results, stability.revolving())
+    if shapes is not None and analysis.get("mode_shapes") and "gravity" in effects:
+        _record_mode_shapes(results, mode_shapes(shapes, n, k))
+    if "convergence" in analysis:
+        _record_convergence(results, convergence(model, analysis["convergence"]["n_values"], quick))
+    if "accuracy_cost" in analysis:
+        spec = analysis["accuracy_cost"]
+        _record_accuracy_cost(results, accuracy_cost(spec["n_values"], spec.get("repeats", 10), quick))
+        _record_cost_to_target(results, cost_to_target(spec["targets"], quick))
+    if "large_n" in analysis:
+        _record_large_n(results, large_n(analysis["large_n"]["n"], quick))
+    if analysis.get("dispersion"):
+        chain_dispersion = dispersion(built, values)
+        if chain_dispersion is not None:
+            _record_dispersion(results, chain_dispersion, found.unit, found.unit_name, found.unit_label)
+
+
+def _record_frequencies(results, found: Spectrum, n, model):
+    values, unit, unit_name, unit_label = found.values, found.unit, found.unit_name, found.unit_label
+    cont, exact = found.continuum, found.exact
     results.number(f"frequencies_{unit_name}", values / unit, unit_label)
     results.number("frequencies_rad_per_s", values, "rad/s")
     if cont is not None:
@@ -184,65 +270,30 @@ def run(scene, results, quick):
         f"{unit_math}" + (f", beside {' and '.join(beside)}." if beside else "."),
         headers=headers,
     )
-    if "closed_form" in analysis:
-        _closed_form(results, masses, built.segment_stiffness, ends, analysis["closed_form"], values)
-        if analysis["closed_form"] in symbolic.SOURCE_SHAPES:
-            small_oscillations.printed_shapes(results, built, masses, analysis["closed_form"])
-    if "closed_form" in analysis or "constraint" in analysis:
-        small_oscillations.orthogonality(results, built)
-    if analysis.get("separation"):
-        small_oscillations.separation(results, built)
-    if analysis.get("rayleigh_symmetric"):
-        small_oscillations.rayleigh_symmetric(results, built, masses)
-    if "constraint" in analysis:
-        small_oscillations.constraint(
-            results, built, analysis["constraint"]["samples"], analysis["constraint"]["seed"]
-        )
-    if "forced" in analysis:
-        small_oscillations.forced(results, built, analysis["forced"])
-    if "friction" in analysis:
-        small_oscillations.friction(results, built, analysis["friction"])
-        small_oscillations.dissipation(results, built, analysis["friction"]["aperiodic_scale"])
-    if analysis.get("parabola_type"):
-        quotient = float(symbolic.string_parabola_quotient())
-        results.number(
-            "parabola_sigma2_rho_l2_over_p",
-            quotient,
-            "1",
-            note="$\\sigma^2\\rho l^2/P$ of the type $x(l - x)$ (Lamb Ex. XIV.12), derived with sympy",
-        )
-        results.number(
-            "parabola_over_continuum",
-            quotient / np.pi**2,
-            "1",
-            note="over the continuous string's exact $\\pi^2$: above 1, as Art. 94 requires",
-        )
-    if "continuum_limit" in analysis:
-        _continuum_limit(results, chain, effects, ends, analysis["continuum_limit"]["n_values"])
-    if "initial_value" in analysis:
-        small_oscillations.initial_value(results, built, analysis["initial_value"])
-    if analysis.get("stability"):
-        from . import stability
-
-        stability.equilibrium(results, built)
-        stability.ball_modes(results)
-    if analysis.get("revolving"):
-        from . import stability
-
-        stability.revolving(results)
-    if shapes is not None and analysis.get("mode_shapes") and "gravity" in effects:
-        _mode_shapes(results, shapes, n, k)
-    if "convergence" in analysis:
-        _convergence(results, model, analysis["convergence"]["n_values"], quick)
-    if "accuracy_cost" in analysis:
-        _accuracy_cost(results, analysis["accuracy_cost"], quick)
-    if "large_n" in analysis:
-        _large_n(results, analysis["large_n"]["n"], quick)
-    if analysis.get("dispersion"):
-        _dispersion(results, built, values, unit, unit_name, unit_label)
 
 
-def _continuum_limit(results, chain, effects, ends, n_values):
+def _record_parabola(results, quotient):
+    results.number(
+        "parabola_sigma2_rho_l2_over_p",
+        quotient,
+        "1",
+        note="$\\sigma^2\\rho l^2/P$ of the type $x(l - x)$ (Lamb Ex. XIV.12), derived with sympy",
+    )
+    results.number(
+        "parabola_over_continuum",
+        quotient / np.pi**2,
+        "1",
+        note="over the continuous string's exact $\\pi^2$: above 1, as Art. 94 requires",
+    )
+
+
+class ContinuumLimit(NamedTuple):
+    n_values: list[int]
+    order: float  # smallest fitted order of the lowest three frequencies' approach to the harmonics
+    error_at_largest: float  # largest relative difference from the harmonics at the largest n
+
+
+def continuum_limit(chain, effects, ends, n_values) -> ContinuumLimit:
     """The string of density rho = (mass)/l lumped into n particles of rho a each (Lamb's loaded string: the
     spacing a = l/(n + 1) carries its own mass): its lowest three frequencies tend to the continuous string's
     harmonics (s pi / l) sqrt(P / rho); the fitted order of the approach."""
@@ -255,9 +306,14 @@ def _continuum_limit(results, chain, effects, ends, n_values):
         intervals.append(built.geometry.n_segments)
     errors = np.array(errors)
     orders = [-np.polyfit(np.log(intervals), np.log(errors[:, s]), 1)[0] for s in range(3)]
+    return ContinuumLimit(n_values, float(min(orders)), float(errors[-1].max()))
+
+
+def _record_continuum_limit(results, values: ContinuumLimit):
+    n_values = values.n_values
     results.number(
         "continuum_limit_order",
-        float(min(orders)),
+        values.order,
         "1",
         note=f"fitted order in the number of intervals of the lowest three frequencies' approach to the "
         f"harmonics, $n$ = "
@@ -265,14 +321,22 @@ def _continuum_limit(results, chain, effects, ends, n_values):
     )
     results.number(
         "continuum_limit_error_at_largest",
-        float(errors[-1].max()),
+        values.error_at_largest,
         "1",
         note=f"largest relative difference from the harmonics at $n$ = {n_values[-1]}",
     )
     results.number("continuum_limit_n_largest", int(n_values[-1]), "particles")
 
 
-def _closed_form(results, masses, springs, ends, name, values):
+class ClosedForm(NamedTuple):
+    derived: np.ndarray  # omega from the roots of the characteristic polynomial (sympy, 30 digits)
+    squared_over_k_per_m: np.ndarray  # omega^2 over the softest spring (or P/a) over the first mass
+    solver_vs_derived: float  # largest relative difference
+    formula_exact: bool  # the printed formula equals the derived roots for every value of its symbols
+    formula_vs_solver: float
+
+
+def closed_form(masses, springs, ends, name, values) -> ClosedForm:
     """ω² derived with sympy (the characteristic polynomial's roots), against the eigensolver's numbers and
     against the source's printed formula, which must equal the derived roots for every value of its
     symbols."""
@@ -281,71 +345,90 @@ def _closed_form(results, masses, springs, ends, name, values):
     printed = symbolic.SOURCE_FORMULAS[name]
     from_source = np.sqrt(np.clip(symbolic.evaluate(printed, symbols), 0.0, None))
     scale = np.max(derived)  # zero modes compare on the scale of the largest frequency
-    solver_vs_derived = float(np.max(np.abs(values - derived) / np.maximum(derived, scale)))
+    return ClosedForm(
+        derived,
+        derived**2 / (symbols[symbolic.k] / symbols[symbolic.m1]),
+        float(np.max(np.abs(values - derived) / np.maximum(derived, scale))),
+        symbolic.formula_is_exact(printed, roots),
+        float(np.max(np.abs(values - from_source) / np.maximum(from_source, scale))),
+    )
+
+
+def _record_closed_form(results, values: ClosedForm):
     results.number(
         "closed_form_frequencies_rad_per_s",
-        derived,
+        values.derived,
         "rad/s",
         note="roots of the characteristic polynomial derived with sympy, evaluated at 30 digits",
     )
     results.number(
         "closed_form_squared_over_k_per_m",
-        derived**2 / (symbols[symbolic.k] / symbols[symbolic.m1]),
+        values.squared_over_k_per_m,
         "k/m",
         note="$\\omega^2$ in units of the softest spring (or $P/a$) over the first mass",
     )
     results.number(
         "solver_vs_closed_form",
-        solver_vs_derived,
+        values.solver_vs_derived,
         "1",
         note="largest relative difference, eigensolver against the sympy derivation",
     )
     results.number(
         "source_formula_exact",
-        int(symbolic.formula_is_exact(printed, roots)),
+        int(values.formula_exact),
         "1",
         note="1: the printed formula equals the derived roots for every value of its symbols",
     )
-    results.number(
-        "source_formula_vs_solver",
-        float(np.max(np.abs(values - from_source) / np.maximum(from_source, scale))),
-        "1",
-    )
+    results.number("source_formula_vs_solver", values.formula_vs_solver, "1")
     results.hard_case(
         "closed_form",
         "The eigensolver's frequencies against the roots of the characteristic "
         "polynomial derived with sympy (largest relative difference)",
-        solver_vs_derived,
+        values.solver_vs_derived,
         1e-12,
     )
 
 
-def _zero_modes(results, lam, shapes, rigid, rigid_name):
+def zero_mode(lam, shapes, rigid, rigid_name) -> ZeroMode:
     zero = np.argmin(np.abs(lam))
     v = shapes[:, zero] / np.linalg.norm(shapes[:, zero])
     rigid = rigid / np.linalg.norm(rigid)
+    return ZeroMode(rigid_name, abs(lam[zero]) / np.max(np.abs(lam)), float(1 - abs(v @ rigid)))
+
+
+def _record_zero_mode(results, values: ZeroMode):
     results.number(
         "zero_mode_eigenvalue_relative",
-        abs(lam[zero]) / np.max(np.abs(lam)),
+        values.eigenvalue_relative,
         "1",
         note="$|\\lambda_0|/\\lambda_\\mathrm{max}$ before clipping",
     )
     results.hard_case(
         "zero_mode",
-        f"The zero mode is a {rigid_name}: $1 - |\\cos\\theta|$, $\\theta$ the angle between "
+        f"The zero mode is a {values.rigid_name}: $1 - |\\cos\\theta|$, $\\theta$ the angle between "
         "them; its eigenvalue is round-off, clipped to 0, not reported as an instability",
-        float(1 - abs(v @ rigid)),
+        values.misalignment,
         1e-12,
     )
     results.hard_case(
         "zero_mode_eigenvalue",
         "$|\\lambda_0|/\\lambda_\\mathrm{max}$ of the free chain's zero mode",
-        float(abs(lam[zero]) / np.max(np.abs(lam))),
+        float(values.eigenvalue_relative),
         1e-12,
     )
 
 
-def _mode_shapes(results, shapes, n, k):
+class ModeShapes(NamedTuple):
+    n: int
+    j: np.ndarray  # the first three zeros of J0
+    height: np.ndarray  # each particle's height above the free end, x/l, the chain (n + 1/2)a long
+    drawn: list[np.ndarray]  # each mode shown, scaled to the continuum at the lowest particle
+    misfits: list[float]  # largest |particle - continuum| of each mode shown
+    node: float | None  # mode 2's node, x/l from the free end (None when not found or not asked)
+
+
+def mode_shapes(shapes, n, k) -> ModeShapes:
+    """The lowest mode shapes against the continuum's J0(j_0k sqrt(x/l)), and mode 2's node."""
     from scipy import special
 
     j = bessel_j0_zeros(3)
@@ -354,15 +437,33 @@ def _mode_shapes(results, shapes, n, k):
     # 1/2) of the length above the free end. (At l = na the lowest particle would sit on the free end and
     # modes 2 and 3 would look several times further from the continuum than they are.)
     height = (n + 0.5 - np.arange(1, n + 1)) / (n + 0.5)
-    fig, ax = new_figure(4.4, 3.2)
-    x = np.linspace(0, 1, 400)
-    misfits = []
-    shown = min(3, k, n)
-    for idx in range(shown):
+    drawn, misfits = [], []
+    for idx in range(min(3, k, n)):
         # each mode scaled to the continuum's displacement at the lowest particle (no fit)
         at_particles = special.j0(j[idx] * np.sqrt(height))
         y = shapes[:, idx] / shapes[-1, idx] * at_particles[-1]
         misfits.append(float(np.max(np.abs(y - at_particles))))
+        drawn.append(y)
+    node = None
+    if n >= 3 and k >= 2:
+        y2 = shapes[:, 1]
+        sign = np.nonzero(np.sign(y2[:-1]) != np.sign(y2[1:]))[0]
+        if sign.size:
+            i = sign[-1]
+            lumped = 1 - np.arange(1, n + 1) / n  # heights with l = na, as this number has always been read
+            h0, h1 = lumped[i], lumped[i + 1]
+            node = h0 + (h1 - h0) * y2[i] / (y2[i] - y2[i + 1])
+    return ModeShapes(n, j, height, drawn, misfits, node)
+
+
+def _record_mode_shapes(results, values: ModeShapes):
+    from scipy import special
+
+    j, height, misfits, n = values.j, values.height, values.misfits, values.n
+    shown = len(values.drawn)
+    fig, ax = new_figure(4.4, 3.2)
+    x = np.linspace(0, 1, 400)
+    for idx, y in enumerate(values.drawn):
         cont = special.j0(j[idx] * np.sqrt(x))
         line = ax.plot(cont, x, lw=1, alpha=0.7)[0]
         ax.plot(y, height, "o", ms=3.5, color=line.get_color(), label=f"mode {idx + 1}")
@@ -386,20 +487,13 @@ def _mode_shapes(results, shapes, n, k):
         "frequencies converge at second order, each mode scaled to the continuum at the lowest particle. "
         f"The largest gap between particle and curve is {misfit_text} for modes 1 to {shown}.",
     )
-    if n >= 3 and k >= 2:
-        y2 = shapes[:, 1]
-        sign = np.nonzero(np.sign(y2[:-1]) != np.sign(y2[1:]))[0]
-        if sign.size:
-            i = sign[-1]
-            lumped = 1 - np.arange(1, n + 1) / n  # heights with l = na, as this number has always been read
-            h0, h1 = lumped[i], lumped[i + 1]
-            node = h0 + (h1 - h0) * y2[i] / (y2[i] - y2[i + 1])
-            results.number(
-                "second_mode_node_x_over_l",
-                node,
-                "x/l from the free end",
-                note="linear interpolation between particles",
-            )
+    if values.node is not None:
+        results.number(
+            "second_mode_node_x_over_l",
+            values.node,
+            "x/l from the free end",
+            note="linear interpolation between particles",
+        )
 
 
 def _fit_order(n_values, errors):
@@ -409,7 +503,19 @@ def _fit_order(n_values, errors):
     return -slope
 
 
-def _convergence(results, model, n_values, quick):
+class Convergence(NamedTuple):
+    model: str
+    frame: pd.DataFrame  # omega_1 against n, each scheme, and its relative error
+    exact: float  # the continuum's omega_1/sqrt(g/l)
+    fitted: dict  # scheme -> (order, first n, last n) of the fit
+    orders: list  # (name, order, first n, last n): the orders the report names
+    all_on_one_side: bool  # links: all above the continuum; particles: l = na all below
+    richardson_n: int | None  # particles: smallest n whose Richardson omega_1 is within 1e-10
+
+
+def convergence(model, n_values, quick) -> Convergence:
+    """The gravest frequency against n: rigid links, or particles with l = na, l = (n + 1/2)a and
+    Richardson's extrapolation from n/2 and n, against the continuum."""
     n_values = [n for n in n_values if not quick or n <= 1024]
     exact = bessel_j0_zeros(1)[0] / 2  # omega_1 / sqrt(g/l)
     rows = []
@@ -425,11 +531,10 @@ def _convergence(results, model, n_values, quick):
                 }
             )
         order = _fit_order(n_values, [r["relative_error"] for r in rows])
-        results.number(
-            "links_convergence_order", order, "1", note=f"fitted over $n$ = {n_values[0]} to {n_values[-1]}"
-        )
+        orders = [("links", order, n_values[0], n_values[-1])]
         fitted = {"links": (order, n_values[0], n_values[-1])}
-        results.number("links_all_above_continuum", all(r["relative_error"] > 0 for r in rows), "bool")
+        one_side = all(r["relative_error"] > 0 for r in rows)
+        reach_n = None
     else:
         previous = None
         for n in n_values:
@@ -464,7 +569,7 @@ def _convergence(results, model, n_values, quick):
                 )
             previous = (n, lam)
         frame = pd.DataFrame(rows)
-        fitted = {}
+        fitted, orders = {}, []
         for scheme, name in (
             ("particles, l = n a", "plain"),
             ("particles, l = (n + 1/2) a", "end_corrected"),
@@ -473,28 +578,37 @@ def _convergence(results, model, n_values, quick):
             part = frame[frame.scheme == scheme]
             tail = part[part.n >= 16] if name != "richardson" else part[(part.n >= 16) & (part.n <= 256)]
             order = _fit_order(tail.n, tail.relative_error)
+            orders.append((name, order, int(tail.n.min()), int(tail.n.max())))
+            fitted[_scheme(scheme)] = (order, int(tail.n.min()), int(tail.n.max()))
+        rich = frame[frame.scheme == "Richardson, from n/2 and n"]
+        reach = rich[np.abs(rich.relative_error) <= 1e-10]
+        reach_n = int(reach.n.min()) if len(reach) else None
+        one_side = bool((frame[frame.scheme == "particles, l = n a"].relative_error < 0).all())
+    return Convergence(model, pd.DataFrame(rows), exact, fitted, orders, one_side, reach_n)
+
+
+def _record_convergence(results, values: Convergence):
+    if values.model == "links":
+        ((_, order, first, last),) = values.orders
+        results.number("links_convergence_order", order, "1", note=f"fitted over $n$ = {first} to {last}")
+        results.number("links_all_above_continuum", values.all_on_one_side, "bool")
+    else:
+        for name, order, first, last in values.orders:
             results.number(
                 f"{name}_convergence_order",
                 order,
                 "1",
                 note=f"least-squares slope of $\\log|\\text{{error}}|$ against $\\log n$, $n$ = "
-                f"{int(tail.n.min())} to {int(tail.n.max())}",
+                f"{first} to {last}",
             )
-            fitted[_scheme(scheme)] = (order, int(tail.n.min()), int(tail.n.max()))
-        rich = frame[frame.scheme == "Richardson, from n/2 and n"]
-        reach = rich[np.abs(rich.relative_error) <= 1e-10]
         results.number(
             "richardson_n_for_1e-10",
-            int(reach.n.min()) if len(reach) else None,
+            values.richardson_n,
             "particles",
             note="smallest $n$ (with $n/2$) whose Richardson value of $\\omega_1$ is within $10^{-10}$",
         )
-        results.number(
-            "plain_all_below_continuum",
-            bool((frame[frame.scheme == "particles, l = n a"].relative_error < 0).all()),
-            "bool",
-        )
-    frame = pd.DataFrame(rows)
+        results.number("plain_all_below_continuum", values.all_on_one_side, "bool")
+    frame = values.frame
     results.table(
         "convergence",
         frame,
@@ -507,7 +621,7 @@ def _convergence(results, model, n_values, quick):
             "relative_error": "relative error",
         },
     )
-    _convergence_figure(results, model, frame, exact, fitted)
+    _convergence_figure(results, values.model, frame, values.exact, values.fitted)
 
 
 def _convergence_figure(results, model, frame, exact, fitted):
@@ -603,9 +717,11 @@ def exact_lambda1(n: int) -> float:
     return float(laguerre_zero_mp(n, guess)) if n <= 1024 else float(guess)
 
 
-def _accuracy_cost(results, spec, quick):
-    n_values = [n for n in spec["n_values"] if not quick or n <= 4096]
-    repeats = 3 if quick else spec.get("repeats", 10)
+def accuracy_cost(n_values, repeats, quick) -> pd.DataFrame:
+    """Each solver's time for the lowest five eigenvalues of the hanging chain, its error in lambda_1 against
+    the exact Laguerre zero, and the end-corrected omega_1's against the continuum."""
+    n_values = [n for n in n_values if not quick or n <= 4096]
+    repeats = 3 if quick else repeats
     j1 = bessel_j0_zeros(1)[0] / 2
     rows = []
     for n in n_values:
@@ -628,7 +744,10 @@ def _accuracy_cost(results, spec, quick):
                     "discretization_relative_error": abs(np.sqrt((n + 0.5) * lam) / j1 - 1),
                 }
             )
-    frame = pd.DataFrame(rows)
+    return pd.DataFrame(rows)
+
+
+def _record_accuracy_cost(results, frame):
     results.timing_table(
         "solver_cost",
         frame,
@@ -694,7 +813,6 @@ def _accuracy_cost(results, spec, quick):
             "1",
             note=f"$n$ up to {format_number(int(part.n.max()))}",
         )
-    _cost_to_target(results, spec["targets"], quick)
 
 
 # the schemes of the cost-to-target table, typeset as the chapter writes them
@@ -705,7 +823,16 @@ PLAIN, END_CORRECTED, RICHARDSON = (
 )
 
 
-def _cost_to_target(results, targets, quick):
+class CostToTarget(NamedTuple):
+    top: int  # the sweep's largest n is 2^top
+    frame: pd.DataFrame  # each scheme and target: the n that reaches it and its time, or the n predicted
+    errors: dict  # scheme -> {n: relative error of omega_1}
+    costs: dict  # scheme -> {n: wall time (s)}
+    lapack_errors: list[float]  # the end-corrected omega_1 by LAPACK's solver (floored at 1e-17)
+    lapack_seconds: list[float]
+
+
+def cost_to_target(targets, quick) -> CostToTarget:
     """Smallest n and the time to reach each target error by plain n, end-corrected n, Richardson."""
     j1 = bessel_j0_zeros(1)[0] / 2
     top = 12 if quick else 18
@@ -757,8 +884,21 @@ def _cost_to_target(results, targets, quick):
                         "measured": False,
                     }
                 )
-    _work_precision_figure(results, errors, cost, ns)
-    frame = pd.DataFrame(rows)
+    # LAPACK's solver of the lowest mode alone, end-corrected, where it runs: the figure's floor
+    lapack_err, lapack_time = [], []
+    for n in [n for n in ns if n <= SOLVER_LIMITS["tridiagonal_select"]]:
+        secs, lam_n, _ = min_time(
+            lambda: hanging_particles_scaled(n, 1, "tridiagonal_select")[0], repeats=3, budget_s=0.5
+        )
+        lapack_err.append(max(abs(np.sqrt((n + 0.5) * lam_n) / j1 - 1), 1e-17))
+        lapack_time.append(secs)
+    costs = {scheme: {n: cost[scheme](n) for n in err} for scheme, err in errors.items()}
+    return CostToTarget(top, pd.DataFrame(rows), errors, costs, lapack_err, lapack_time)
+
+
+def _record_cost_to_target(results, values: CostToTarget):
+    top, frame = values.top, values.frame
+    _work_precision_figure(results, values)
     results.timing_table(
         "cost_to_target",
         frame,
@@ -781,32 +921,23 @@ def _cost_to_target(results, targets, quick):
     )
 
 
-def _work_precision_figure(results, errors, cost, ns):
+def _work_precision_figure(results, values: CostToTarget):
     """Error of omega_1 against the time it took, one line per route (and LAPACK's floor)."""
-    j1 = bessel_j0_zeros(1)[0] / 2
     fig, ax = new_figure(5.6, 3.1)
-    for scheme, err in errors.items():
+    for scheme, err in values.errors.items():
         n_sorted = sorted(err)
         label, colour, _ = SCHEMES[_scheme(scheme)]
         ax.loglog(
             [max(err[n], 1e-17) for n in n_sorted],
-            [cost[scheme](n) for n in n_sorted],
+            [values.costs[scheme][n] for n in n_sorted],
             "o-",
             ms=3,
             color=colour,
             label=f"{label}, pliability",
         )
-    lapack = [n for n in ns if n <= SOLVER_LIMITS["tridiagonal_select"]]
-    lapack_err, lapack_time = [], []
-    for n in lapack:
-        seconds, lam, _ = min_time(
-            lambda: hanging_particles_scaled(n, 1, "tridiagonal_select")[0], repeats=3, budget_s=0.5
-        )
-        lapack_err.append(max(abs(np.sqrt((n + 0.5) * lam) / j1 - 1), 1e-17))
-        lapack_time.append(seconds)
     ax.loglog(
-        lapack_err,
-        lapack_time,
+        values.lapack_errors,
+        values.lapack_seconds,
         "o--",
         ms=3,
         color=SOLVERS["tridiagonal_select"][1],
@@ -828,7 +959,13 @@ def _work_precision_figure(results, errors, cost, ns):
     )
 
 
-def _large_n(results, n, quick):
+class LargeN(NamedTuple):
+    n: int
+    relative_errors: dict  # solver -> |lambda_1/reference - 1|, the reference Tricomi's expansion
+    reciprocity: float  # |Q.q' - Q'.q|/|Q||q'| for two random loads (Lamb Art. 87)
+
+
+def large_n(n, quick) -> LargeN:
     """The lowest mode of a very long chain: relative accuracy survives only in the factored form."""
     n = min(n, 20000) if quick else n
     reference = laguerre_lowest_zero_asymptotic(n)  # error O(n^-5): below 1e-20 relative here
@@ -836,9 +973,22 @@ def _large_n(results, n, quick):
     for method in ("tridiagonal_select", "pliability"):
         lam = hanging_particles_scaled(n, 1, method)[0]
         measured[method] = abs(lam / reference - 1)
-        results.number(
-            f"large_n_{method}_relative_error", measured[method], "1", note=f"$n$ = {format_number(n)}"
-        )
+    # Lamb Art. 87: the pliabilities are reciprocal, sum Q q' = sum Q' q, here for the long chain's factored
+    # K^-1
+    rng = np.random.default_rng(7)
+    loads = rng.standard_normal((n, 2))
+    q = chain_eigen._apply_pliability(loads, np.arange(n, 0, -1.0), np.ones(n))
+    reciprocity = float(
+        abs(loads[:, 0] @ q[:, 1] - loads[:, 1] @ q[:, 0])
+        / (np.linalg.norm(loads[:, 0]) * np.linalg.norm(q[:, 1]))
+    )
+    return LargeN(n, measured, reciprocity)
+
+
+def _record_large_n(results, values: LargeN):
+    n, measured = values.n, values.relative_errors
+    for method, error in measured.items():
+        results.number(f"large_n_{method}_relative_error", error, "1", note=f"$n$ = {format_number(n)}")
     results.hard_case(
         "large_n_lowest_mode",
         f"Lowest mode of a chain of $n$ = {format_number(n)} particles to "
@@ -846,17 +996,9 @@ def _large_n(results, n, quick):
         measured["pliability"],
         1e-12,
     )
-    # Lamb Art. 87: the pliabilities are reciprocal, sum Q q' = sum Q' q, here for the long chain's factored
-    # K^-1
-    rng = np.random.default_rng(7)
-    loads = rng.standard_normal((n, 2))
-    q = chain_eigen._apply_pliability(loads, np.arange(n, 0, -1.0), np.ones(n))
     results.number(
         "reciprocity_relative",
-        float(
-            abs(loads[:, 0] @ q[:, 1] - loads[:, 1] @ q[:, 0])
-            / (np.linalg.norm(loads[:, 0]) * np.linalg.norm(q[:, 1]))
-        ),
+        values.reciprocity,
         "1",
         note=f"$|Q\\cdot q' - Q'\\cdot q|/|Q||q'|$ for two random loads, $n$ = {format_number(n)}",
     )
@@ -867,31 +1009,59 @@ def _large_n(results, n, quick):
     )
 
 
-def _dispersion(results, built, values, unit, unit_name, unit_label):
+class Dispersion(NamedTuple):
+    spacing: float  # a (m)
+    sqrt_k_over_m: float  # (rad/s)
+    q: np.ndarray  # the computed modes' wavenumbers s pi/((n + 1) a)
+    values: np.ndarray  # the computed frequencies (rad/s)
+    max_relative_deviation: float  # from omega = 2 sqrt(k/m) |sin(qa/2)|
+
+
+def dispersion(built, values) -> Dispersion | None:
+    """The chain of springs fixed at both ends against its dispersion law; None for other ends."""
     g = built.geometry
     if g.ends != "fixed-fixed":
-        return
+        return None
     n, a = g.n, g.spacing_m
     stiffness, m = built.segment_stiffness[0], g.masses_kg[0]
     q = np.arange(1, n + 1) * np.pi / ((n + 1) * a)
     law = 2 * np.sqrt(stiffness / m) * np.abs(np.sin(q * a / 2))
+    return Dispersion(
+        a,
+        np.sqrt(stiffness / m),
+        q,
+        values,
+        float(np.max(np.abs(values - law[: len(values)]) / law[: len(values)])),
+    )
+
+
+def _record_dispersion(results, values: Dispersion, unit, unit_name, unit_label):
+    a, q = values.spacing, values.q
+    root = values.sqrt_k_over_m
     qq = np.linspace(0, np.pi / a, 300)
     fig, ax = new_figure(5.2, 3.2)
     ax.plot(
         qq * a / np.pi,
-        2 * np.sqrt(stiffness / m) * np.sin(qq * a / 2) / unit,
+        2 * root * np.sin(qq * a / 2) / unit,
         color="C4",
         label=r"$\omega = 2\sqrt{k/m}\,|\sin(qa/2)|$",
     )
     ax.plot(
         qq * a / np.pi,
-        qq * a * np.sqrt(stiffness / m) / unit,
+        qq * a * root / unit,
         "--",
         lw=0.9,
         color="0.4",
         label=r"continuum, $\omega = qa\sqrt{k/m}$",
     )
-    ax.plot(q[: len(values)] * a / np.pi, values / unit, "o", ms=4, color="C5", label="computed modes")
+    ax.plot(
+        q[: len(values.values)] * a / np.pi,
+        values.values / unit,
+        "o",
+        ms=4,
+        color="C5",
+        label="computed modes",
+    )
     ax.set_xlabel(r"wavenumber $qa/\pi$")
     ax.set_ylabel(f"$\\omega$ ({UNIT_MATH.get(unit_name, unit_label)})")
     ax.set_xlim(0, 1)
@@ -904,9 +1074,5 @@ def _dispersion(results, built, values, unit, unit_name, unit_label):
         "The computed frequencies lie on $\\omega = 2\\sqrt{k/m}\\,|\\sin(qa/2)|$, below the "
         "continuum's line, up to the cut-off $2\\sqrt{k/m}$ at $qa = \\pi$.",
     )
-    results.number(
-        "dispersion_max_relative_deviation",
-        float(np.max(np.abs(values - law[: len(values)]) / law[: len(values)])),
-        "1",
-    )
-    results.number("cutoff_over_unit", 2 * np.sqrt(stiffness / m) / unit, unit_label)
+    results.number("dispersion_max_relative_deviation", values.max_relative_deviation, "1")
+    results.number("cutoff_over_unit", 2 * values.sqrt_k_over_m / unit, unit_label)

@@ -16,6 +16,8 @@ omega (s^2 - 3)/(s^2 + 1), in space 0 and 2 omega (s^2 - 1)/(s^2 + 1); the stead
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 import pandas as pd
 import scipy.linalg as sla
@@ -78,27 +80,24 @@ def dispersion():
     return roots, exact
 
 
-def run_ring(scene, results, quick):
-    chain, effects = scene.data["chain"], scene.data["effects"]
-    spec = scene.data["analysis"]["ring_waves"]
+class Ring(NamedTuple):
+    n: int
+    s_max: int
+    stiffness_ratio: float  # k/(m omega^2)
+    tension_ratio: float  # the steady tension over Lamb's rho omega^2 a^2
+    largest_real_part: float  # max|Re lambda|/max|lambda| but the two defective roots
+    defective_real_part: float  # the defective roots' |Re lambda|/omega
+    waves: pd.DataFrame  # pattern speeds over omega, each wave number s
+    dispersion_exact: bool  # sympy's roots of Lamb's (44) are his
+
+
+def ring(chain, effects, s_max) -> Ring:
+    """The rotating ring's waves (Lamb Art. 98): the gyroscopic eigenproblem about the turning circle."""
     n = chain["n"]  # 400 beads: a few seconds, quick or not
     radius = chain["length_m"] / (2 * np.pi)
     omega, k = effects["rotation"]["omega_rad_per_s"], float(effects["springs"]["k_n_per_m"])
     theta, positions, m, tension = equilibrium(n, radius, chain["mass_kg"], omega)
     rho = chain["mass_kg"] / chain["length_m"]
-    results.number("n", n, "particles")
-    results.number(
-        "stiffness_ratio",
-        k / (m * omega**2),
-        "1",
-        note="$k/m\\omega^2$: large, the chain nearly inextensible",
-    )
-    results.number(
-        "tension_over_rho_omega2_a2",
-        tension / (rho * omega**2 * radius**2),
-        "1",
-        note="the beads' steady tension against Lamb's $\\rho\\omega^2a^2$",
-    )
     M, G, K_eff = matrices(positions, m, omega, k, tension)
     lam, s = modes(theta, positions, M, G, K_eff)
     # Two roots are defective: s = 0 at zero (a change of spin: the ring's angle drifts in the rotating frame)
@@ -106,21 +105,8 @@ def run_ring(scene, results, quick):
     # by about sqrt(eps), into a real pair or a quartet. Every other root must be imaginary.
     defective = (np.abs(lam) < 1e-3 * omega) | (np.abs(np.abs(lam) - omega) < 1e-3 * omega)
     regular = ~defective
-    results.number(
-        "largest_real_part",
-        float(np.max(np.abs(lam[regular].real)) / np.max(np.abs(lam))),
-        "1",
-        note="$\\max|\\operatorname{Re}\\lambda|/\\max|\\lambda|$ but the two defective roots: "
-        "gyroscopic and stable, the roots imaginary",
-    )
-    results.number(
-        "defective_real_part",
-        float(np.max(np.abs(lam[defective].real)) / omega),
-        "1",
-        note="the defective roots ($s$ = 0, 1) split by rounding, $|\\operatorname{Re}\\lambda|/\\omega$",
-    )
     rows = []
-    for wave in range(1, spec["s_max"] + 1):
+    for wave in range(1, s_max + 1):
         candidates = lam[s == wave]
         flexural = candidates[np.argsort(np.abs(candidates))[:2]]  # the stretching waves are far faster
         speeds = np.sort(-flexural.imag / wave / omega)
@@ -136,14 +122,63 @@ def run_ring(scene, results, quick):
                 "deviation": max(abs(speeds[0] - expected[0]), abs(speeds[1] - expected[1])),
             }
         )
-    frame = pd.DataFrame(rows)
+    _, exact = dispersion()
+    return Ring(
+        n,
+        s_max,
+        k / (m * omega**2),
+        tension / (rho * omega**2 * radius**2),
+        float(np.max(np.abs(lam[regular].real)) / np.max(np.abs(lam))),
+        float(np.max(np.abs(lam[defective].real)) / omega),
+        pd.DataFrame(rows),
+        exact,
+    )
+
+
+def run_ring(scene, results, quick):
+    chain, effects = scene.data["chain"], scene.data["effects"]
+    _record_ring(results, ring(chain, effects, scene.data["analysis"]["ring_waves"]["s_max"]))
+    if "gyroscopic" in scene.data["analysis"]:  # Lamb Art. 99: kinetic stability, secular instability
+        from . import stability
+
+        stability.record_gyroscopic(results, stability.gyroscopic(scene.data["analysis"]["gyroscopic"]))
+
+
+def _record_ring(results, values: Ring):
+    results.number("n", values.n, "particles")
+    results.number(
+        "stiffness_ratio",
+        values.stiffness_ratio,
+        "1",
+        note="$k/m\\omega^2$: large, the chain nearly inextensible",
+    )
+    results.number(
+        "tension_over_rho_omega2_a2",
+        values.tension_ratio,
+        "1",
+        note="the beads' steady tension against Lamb's $\\rho\\omega^2a^2$",
+    )
+    results.number(
+        "largest_real_part",
+        values.largest_real_part,
+        "1",
+        note="$\\max|\\operatorname{Re}\\lambda|/\\max|\\lambda|$ but the two defective roots: "
+        "gyroscopic and stable, the roots imaginary",
+    )
+    results.number(
+        "defective_real_part",
+        values.defective_real_part,
+        "1",
+        note="the defective roots ($s$ = 0, 1) split by rounding, $|\\operatorname{Re}\\lambda|/\\omega$",
+    )
+    frame = values.waves
     waves = frame[frame.s >= 2]
     results.number(
         "stationary_wave_speed_max",
         float(waves.space_1.abs().max()),
         "1",
         note="largest $|$pattern speed in space$|/\\omega$ of the first wave, $s$ = 2 to "
-        f"{spec['s_max']}: Lamb's 0",
+        f"{values.s_max}: Lamb's 0",
     )
     results.number(
         "second_wave_deviation_max",
@@ -159,10 +194,9 @@ def run_ring(scene, results, quick):
         "1",
         note="$s = 1$: both waves at rest in space (the disturbed form is a displaced circle)",
     )
-    _, exact = dispersion()
     results.number(
         "dispersion_roots_exact",
-        int(exact),
+        int(values.dispersion_exact),
         "1",
         note="1: sympy's roots of (44) are $-s\\omega$ and $s\\omega(s^2 - 3)/(s^2 + 1)$ exactly",
     )
@@ -170,7 +204,7 @@ def run_ring(scene, results, quick):
         "ring_roots_imaginary",
         "Rotating ring: the gyroscopic eigenproblem's largest real part, "
         "relative, but the defective roots (rounding; a growing mode would be an instability)",
-        float(np.max(np.abs(lam[regular].real)) / np.max(np.abs(lam))),
+        values.largest_real_part,
         1e-9,
     )
     results.hard_case(
@@ -178,7 +212,7 @@ def run_ring(scene, results, quick):
         "Rotating ring: the defective double roots, a change of spin ($s$ = "
         "0) and a drifting ring ($s$ = 1), split by about $\\sqrt{\\epsilon}$, not by an instability: "
         "$|\\operatorname{Re}\\lambda|/\\omega$",
-        float(np.max(np.abs(lam[defective].real)) / omega),
+        values.defective_real_part,
         1e-3,
     )
     results.table(
@@ -197,10 +231,6 @@ def run_ring(scene, results, quick):
             "deviation": "largest |deviation|",
         },
     )
-    if "gyroscopic" in scene.data["analysis"]:  # Lamb Art. 99: kinetic stability, secular instability
-        from . import stability
-
-        stability.gyroscopic(results, scene.data["analysis"]["gyroscopic"])
 
 
 # --- The triangle: three equal atoms on three equal springs ------------------------------------------------
@@ -222,10 +252,18 @@ def triangle_polynomial():
     return polynomial, {sp.simplify(r * m / k): multiplicity for r, multiplicity in roots.items()}
 
 
-def run_triangle(scene, results, quick):
+class Triangle(NamedTuple):
+    omega_squared: np.ndarray  # the solver's omega^2 over k/m
+    sympy_roots: list[float]  # roots of det(K - omega^2 M) over k/m, each as often as it is multiple
+    solver_vs_sympy: float
+    zero_modes_vs_rigid: float  # largest principal angle (rad)
+    breathing_vs_radial: float  # 1 - |cos| of the top mode against the radial breathing
+    pair_angle: float  # largest principal angle between the degenerate pair and its plane (rad)
+
+
+def triangle(chain, k) -> Triangle:
     """The ozone molecule of the notes: omega^2 = 0 three times (two translations, a rotation), 3k/2m twice
     (a degenerate pair) and 3k/m (the breathing mode)."""
-    chain, k = scene.data["chain"], float(scene.data["effects"]["springs"]["k_n_per_m"])
     side, m = chain["length_m"] / 3, chain["mass_kg"] / 3
     angles = np.pi / 2 + 2 * np.pi * np.arange(3) / 3
     positions = side / np.sqrt(3) * np.column_stack([np.cos(angles), np.sin(angles)])
@@ -233,23 +271,8 @@ def run_triangle(scene, results, quick):
     lam, shapes = np.linalg.eigh(K / m)
     scale = lam.max()
     lam = np.where(np.abs(lam) <= 1e-12 * scale, 0.0, lam)
-    results.number("omega_squared_over_k_per_m", lam / (k / m), "k/m")
     _, exact = triangle_polynomial()
-    results.number(
-        "sympy_roots_over_k_per_m",
-        [float(r) for r in sorted(exact) for _ in range(exact[r])],
-        "k/m",
-        note="roots of $\\det(K - \\omega^2M)$, factored by sympy, with their multiplicities",
-    )
-    results.number(
-        "solver_vs_sympy",
-        float(
-            np.max(
-                np.abs(lam / (k / m) - np.array([float(r) for r in sorted(exact) for _ in range(exact[r])]))
-            )
-        ),
-        "1",
-    )
+    roots = [float(r) for r in sorted(exact) for _ in range(exact[r])]
     # The rigid motions span the zero modes: two translations and the turn about the centre (y ~ r x e_z).
     rigid = np.column_stack(
         [
@@ -259,25 +282,48 @@ def run_triangle(scene, results, quick):
         ]
     )
     zero = shapes[:, :3]
+    breathing = positions.ravel() / np.linalg.norm(positions)
+    pair = shapes[:, 3:5]
+    expected = sla.null_space(np.column_stack([rigid, breathing]).T)  # what is left: the degenerate plane
+    return Triangle(
+        lam / (k / m),
+        roots,
+        float(np.max(np.abs(lam / (k / m) - np.array(roots)))),
+        float(np.max(sla.subspace_angles(zero, rigid))),
+        float(1 - abs(shapes[:, 5] @ breathing)),
+        float(np.max(sla.subspace_angles(pair, expected))),
+    )
+
+
+def run_triangle(scene, results, quick):
+    k = float(scene.data["effects"]["springs"]["k_n_per_m"])
+    _record_triangle(results, triangle(scene.data["chain"], k))
+
+
+def _record_triangle(results, values: Triangle):
+    results.number("omega_squared_over_k_per_m", values.omega_squared, "k/m")
+    results.number(
+        "sympy_roots_over_k_per_m",
+        values.sympy_roots,
+        "k/m",
+        note="roots of $\\det(K - \\omega^2M)$, factored by sympy, with their multiplicities",
+    )
+    results.number("solver_vs_sympy", values.solver_vs_sympy, "1")
     results.number(
         "zero_modes_vs_rigid",
-        float(np.max(sla.subspace_angles(zero, rigid))),
+        values.zero_modes_vs_rigid,
         "rad",
         note="largest principal angle between the zero modes and the rigid motions",
     )
-    breathing = positions.ravel() / np.linalg.norm(positions)
     results.number(
         "breathing_mode_vs_radial",
-        float(1 - abs(shapes[:, 5] @ breathing)),
+        values.breathing_vs_radial,
         "1",
         note="$1 - |\\cos\\theta|$: the top mode against the radial breathing",
     )
-    pair = shapes[:, 3:5]
-    expected = sla.null_space(np.column_stack([rigid, breathing]).T)  # what is left: the degenerate plane
-    pair_angle = float(np.max(sla.subspace_angles(pair, expected)))
     results.number(
         "degenerate_pair_subspace",
-        pair_angle,
+        values.pair_angle,
         "rad",
         note="largest principal angle between the solver's pair and the plane orthogonal to the "
         "rigid motions and the breathing (vectors of a degenerate pair are not unique)",
@@ -286,7 +332,7 @@ def run_triangle(scene, results, quick):
         "degenerate_pair",
         "Ozone: the doubly degenerate pair compared as a plane (principal "
         "angles), not as vectors, which any rotation within it changes",
-        pair_angle,
+        values.pair_angle,
         1e-12,
         "rad",
     )

@@ -1,6 +1,7 @@
 """Lamb's general theory of small oscillations (Higher Mechanics, Arts. 90-97) on the scenes' chains.
 
-Each function checks one statement of the theory on a built ParticleChain and records what it measures:
+Each function checks one statement of the theory on a built ParticleChain and returns what it measures
+(record_<name> beside it writes that to the results):
 the printed mode shapes (Art. 90, Fig. 57), the separation of two roots by the diagonal values (Art. 90
 Ex. 1), the stationary symmetric type (Art. 94 Ex. 1), interlacing under a constraint and orthogonality
 (Arts. 91, 93), the forced response and its resonances (Art. 95), and small friction (Arts. 96-97). The
@@ -8,6 +9,8 @@ numbers come from the eigensolver or an integrator; sympy derives the references
 """
 
 from __future__ import annotations
+
+from typing import NamedTuple
 
 import numpy as np
 import pandas as pd
@@ -34,16 +37,16 @@ def _modes(built):
     return np.sqrt(np.clip(lam, 0.0, None)), phi
 
 
-def printed_shapes(results, built, masses, name):
+class PrintedShapes(NamedTuple):
+    exact: bool  # each printed shape annulled by K - sigma^2 M at its printed sigma^2 (sympy)
+    vs_solver: float  # largest 1 - |cos| between a printed shape and the eigensolver's
+    vibration_momentum: float | None  # a free molecule's: largest |sum m_i X_i| over sum m_i max|X_i|
+
+
+def printed_shapes(built, masses, name) -> PrintedShapes:
     """The source's mode shapes: exact eigenvectors (sympy) and the eigensolver's shapes against them."""
     K, M = symbolic.stiffness_and_mass(masses, built.segment_stiffness, built.geometry.ends)
     exact = symbolic.shapes_are_exact(K, M, symbolic.SOURCE_FORMULAS[name], symbolic.SOURCE_SHAPES[name])
-    results.number(
-        "source_shapes_exact",
-        int(exact),
-        "1",
-        note="1: each printed shape is annulled by $K - \\sigma^2 M$ at its printed $\\sigma^2$ (sympy)",
-    )
     _, phi = _modes(built)
     _, _, values = symbolic.derive(masses, built.segment_stiffness, built.geometry.ends)
     printed = np.array(
@@ -53,34 +56,47 @@ def printed_shapes(results, built, masses, name):
         abs(phi[:, i] @ printed[:, i]) / (np.linalg.norm(phi[:, i]) * np.linalg.norm(printed[:, i]))
         for i in range(printed.shape[1])
     ]
-    results.number(
-        "source_shapes_vs_solver",
-        float(max(1 - c for c in cosines)),
-        "1",
-        note="largest $1 - |\\cos\\theta|$ between a printed shape and the eigensolver's",
-    )
+    momentum = None
     if built.geometry.ends == "free-free":  # a free molecule: its vibrations carry no momentum
         sigma, _ = _modes(built)
         moving = phi[:, sigma > 1e-6 * sigma.max()]
         momentum = np.abs(built.masses @ moving) / (built.masses.sum() * np.max(np.abs(moving), axis=0))
+        momentum = float(momentum.max())
+    return PrintedShapes(exact, float(max(1 - c for c in cosines)), momentum)
+
+
+def record_printed_shapes(results, values: PrintedShapes):
+    results.number(
+        "source_shapes_exact",
+        int(values.exact),
+        "1",
+        note="1: each printed shape is annulled by $K - \\sigma^2 M$ at its printed $\\sigma^2$ (sympy)",
+    )
+    results.number(
+        "source_shapes_vs_solver",
+        values.vs_solver,
+        "1",
+        note="largest $1 - |\\cos\\theta|$ between a printed shape and the eigensolver's",
+    )
+    if values.vibration_momentum is not None:
         results.number(
             "vibration_momentum",
-            float(momentum.max()),
+            values.vibration_momentum,
             "1",
             note="largest $|\\sum m_iX_i|$ of a vibration over $\\sum m_i\\max|X_i|$",
         )
 
 
-def separation(results, built):
+class Separation(NamedTuple):
+    proved: bool  # sympy finds -h^2 at sigma^2 = a/m and at b/m
+    margin: float  # not negative when the diagonal values separate the roots
+    direction_residual: float  # of Lamb's (8)
+
+
+def separation(built) -> Separation:
     """Art. 90 Ex. 1: the roots are separated by a/m and b/m (sympy shows f = -h^2 there), and the mode
     directions obey h (F^2 - G^2) = (a - b) F G; both on this scene's two-particle chain."""
     at_a, at_b, expected = symbolic.separation_by_diagonal()
-    results.number(
-        "separation_proved",
-        int(at_a == expected and at_b == expected),
-        "1",
-        note="1: sympy finds $-h^2$ at $\\sigma^2 = a/m$ and at $b/m$",
-    )
     K, M = _matrices(built)
     if not np.allclose(np.diag(M), M[0, 0]):
         raise ValueError("separation (Lamb Art. 90 Ex. 1) is stated for equal masses")
@@ -89,23 +105,39 @@ def separation(results, built):
     sigma, phi = _modes(built)
     diagonal = sorted([a / m, b / m])
     margin = min(diagonal[0] - sigma[0] ** 2, sigma[1] ** 2 - diagonal[1]) / sigma[1] ** 2
+    residual = max(abs(h * (F**2 - G**2) - (a - b) * F * G) / (abs(h) * (F**2 + G**2)) for F, G in phi.T)
+    return Separation(at_a == expected and at_b == expected, float(margin), float(residual))
+
+
+def record_separation(results, values: Separation):
+    results.number(
+        "separation_proved",
+        int(values.proved),
+        "1",
+        note="1: sympy finds $-h^2$ at $\\sigma^2 = a/m$ and at $b/m$",
+    )
     results.number(
         "separation_margin",
-        float(margin),
+        values.margin,
         "1",
         note="$\\min(\\min(a, b)/m - \\sigma_1^2,\\ \\sigma_2^2 - \\max(a, b)/m)/\\sigma_2^2$: "
         "not negative when the diagonal values separate the roots",
     )
-    residual = max(abs(h * (F**2 - G**2) - (a - b) * F * G) / (abs(h) * (F**2 + G**2)) for F, G in phi.T)
     results.number(
         "mode_direction_residual",
-        float(residual),
+        values.direction_residual,
         "1",
         note="largest $|h(F^2 - G^2) - (a - b)FG|$ over $|h|(F^2 + G^2)$, Lamb's (8)",
     )
 
 
-def rayleigh_symmetric(results, built, masses):
+class RayleighSymmetric(NamedTuple):
+    stationary_theta: list[float]  # roots of d sigma^2/d theta for the type (theta, 1, theta)
+    exact: bool  # the roots are exactly -+1/sqrt2
+    vs_solver: float  # the quotient there against the eigensolver's sigma_1^2, sigma_3^2 (relative)
+
+
+def rayleigh_symmetric(built, masses) -> RayleighSymmetric:
     """Art. 94 Ex. 1: y1 = y3 = theta y2 makes sigma^2 stationary at theta = +-1/sqrt2, where it is exact."""
     K, M = symbolic.stiffness_and_mass(masses, built.segment_stiffness, built.geometry.ends)
     theta, quotient, stationary = symbolic.rayleigh_symmetric_type(K, M)
@@ -113,50 +145,74 @@ def rayleigh_symmetric(results, built, masses):
     exact = len(stationary) == 2 and all(
         symbolic.sp.simplify(s - p) == 0 for s, p in zip(stationary, printed)
     )
-    results.number(
-        "rayleigh_stationary_theta",
-        [float(s) for s in stationary],
-        "1",
-        note="roots of $d\\sigma^2/d\\theta$ for the type $(\\theta, 1, \\theta)$ (sympy)",
-    )
-    results.number(
-        "rayleigh_stationary_exact", int(exact), "1", note="1: the roots are exactly $\\pm1/\\sqrt2$"
-    )
     sigma, _ = _modes(built)
     values = symbolic.evaluate(
         [quotient.subs(theta, s) for s in stationary],
         {symbolic.k: float(built.segment_stiffness.min()), symbolic.m1: float(masses[0])},
     )
     symmetric = np.sort(sigma[[0, 2]] ** 2)  # the two symmetric modes: (1, ±√2, 1)
+    return RayleighSymmetric(
+        [float(s) for s in stationary], exact, float(np.max(np.abs(np.sort(values) - symmetric) / symmetric))
+    )
+
+
+def record_rayleigh_symmetric(results, values: RayleighSymmetric):
+    results.number(
+        "rayleigh_stationary_theta",
+        values.stationary_theta,
+        "1",
+        note="roots of $d\\sigma^2/d\\theta$ for the type $(\\theta, 1, \\theta)$ (sympy)",
+    )
+    results.number(
+        "rayleigh_stationary_exact", int(values.exact), "1", note="1: the roots are exactly $\\pm1/\\sqrt2$"
+    )
     results.number(
         "rayleigh_stationary_vs_solver",
-        float(np.max(np.abs(np.sort(values) - symmetric) / symmetric)),
+        values.vs_solver,
         "1",
         note="the quotient at its stationary points against the eigensolver's $\\sigma_1^2$, $\\sigma_3^2$",
     )
 
 
-def orthogonality(results, built):
+class Orthogonality(NamedTuple):
+    mass: float  # largest |phi_i^T M phi_j - delta_ij|
+    stiffness: float  # largest |phi_i^T K phi_j|, i != j, over sigma_n^2
+
+
+def orthogonality(built) -> Orthogonality:
     """Art. 91: the modes are conjugate, orthogonal in T (the mass) and in V (the stiffness)."""
     K, M = _matrices(built)
     sigma, phi = _modes(built)
     lam, n = sigma**2, len(sigma)
-    results.number(
-        "orthogonality_mass",
-        float(np.max(np.abs(phi.T @ M @ phi - np.eye(n)))),
-        "1",
-        note="largest $|\\phi_i^T M \\phi_j - \\delta_{ij}|$",
-    )
     off = phi.T @ K @ phi - np.diag(lam)
+    return Orthogonality(
+        float(np.max(np.abs(phi.T @ M @ phi - np.eye(n)))), float(np.max(np.abs(off)) / lam.max())
+    )
+
+
+def record_orthogonality(results, values: Orthogonality):
+    results.number(
+        "orthogonality_mass", values.mass, "1", note="largest $|\\phi_i^T M \\phi_j - \\delta_{ij}|$"
+    )
     results.number(
         "orthogonality_stiffness",
-        float(np.max(np.abs(off)) / lam.max()),
+        values.stiffness,
         "1",
         note="largest $|\\phi_i^T K \\phi_j|$, $i \\ne j$, over $\\sigma_n^2$",
     )
 
 
-def constraint(results, built, samples: int, seed: int):
+class Constraint(NamedTuple):
+    successive_minima_error: float  # held by phi_1^T M y = 0, the roots against sigma_2^2, ... (relative)
+    stationary_order: float  # fitted order of the quotient's error for the type phi_1 + eps eta
+    general_roots_imaginary: float  # largest |Im lambda|/|lambda| over random pairs T, V
+    general_roots_not_positive: int
+    constraints_tried: int
+    interlacing_violations: int  # roots outside [sigma_k^2, sigma_{k+1}^2] after one constraint
+    interlacing_margin: float  # smallest distance of a constrained root inside its interval, over sigma_n^2
+
+
+def constraint(built, samples: int, seed: int) -> Constraint:
     """Arts. 91, 93: modes orthogonal in T and V; one constraint puts each new root between two old ones."""
     K, M = _matrices(built)
     sigma, phi = _modes(built)
@@ -174,12 +230,7 @@ def constraint(results, built, samples: int, seed: int):
     # Art. 93: held orthogonal (in T) to the gravest mode, the system's roots are the remaining ones exactly
     basis = sla.null_space((M @ phi[:, 0])[None, :])
     rest = sla.eigh(basis.T @ K @ basis, basis.T @ M @ basis, eigvals_only=True)
-    results.number(
-        "successive_minima_error",
-        float(np.max(np.abs(rest - lam[1:]) / lam[1:])),
-        "1",
-        note="constrained by $\\phi_1^TMy = 0$, the roots against $\\sigma_2^2, \\ldots$ (relative)",
-    )
+    successive = float(np.max(np.abs(rest - lam[1:]) / lam[1:]))
     # Art. 94: the quotient is stationary at a mode: a type off by epsilon errs by epsilon^2
     direction = rng.standard_normal(n)
     epsilons = np.array([1e-2, 1e-3, 1e-4])
@@ -187,12 +238,7 @@ def constraint(results, built, samples: int, seed: int):
     for eps in epsilons:
         y = phi[:, 0] + eps * direction
         errors.append(abs((y @ K @ y) / (y @ M @ y) - lam[0]) / lam[0])
-    results.number(
-        "stationary_order",
-        float(np.polyfit(np.log(epsilons), np.log(errors), 1)[0]),
-        "1",
-        note="fitted order of the quotient's error for the type $\\phi_1 + \\epsilon\\eta$, $\\eta$ random",
-    )
+    order = float(np.polyfit(np.log(epsilons), np.log(errors), 1)[0])
     # Art. 92: the roots of det(V - lambda T) are real for any symmetric T > 0 and V, and positive when V > 0;
     # asked of the general (non-symmetric) QZ solver, which could return complex roots
     worst_imaginary, negative = 0.0, 0
@@ -203,32 +249,65 @@ def constraint(results, built, samples: int, seed: int):
             roots = sla.eig(V, T, right=False)
             worst_imaginary = max(worst_imaginary, float(np.max(np.abs(roots.imag) / np.abs(roots))))
             negative += int(np.sum(roots.real <= 0))
+    return Constraint(successive, order, worst_imaginary, negative, len(relations), violations, worst)
+
+
+def record_constraint(results, values: Constraint):
+    results.number(
+        "successive_minima_error",
+        values.successive_minima_error,
+        "1",
+        note="constrained by $\\phi_1^TMy = 0$, the roots against $\\sigma_2^2, \\ldots$ (relative)",
+    )
+    results.number(
+        "stationary_order",
+        values.stationary_order,
+        "1",
+        note="fitted order of the quotient's error for the type $\\phi_1 + \\epsilon\\eta$, $\\eta$ random",
+    )
     results.number(
         "general_roots_imaginary",
-        worst_imaginary,
+        values.general_roots_imaginary,
         "1",
         note=(
             "largest $|\\operatorname{Im}\\lambda|/|\\lambda|$ over 180 random pairs $T$, $V$ of sizes 2 to "
             "10"
         ),
     )
-    results.number("general_roots_not_positive", negative, "1")
-    results.number("constraints_tried", len(relations), "1")
+    results.number("general_roots_not_positive", values.general_roots_not_positive, "1")
+    results.number("constraints_tried", values.constraints_tried, "1")
     results.number(
         "interlacing_violations",
-        violations,
+        values.interlacing_violations,
         "1",
         note="roots outside $[\\sigma_k^2, \\sigma_{k+1}^2]$ after one constraint",
     )
     results.number(
         "interlacing_margin",
-        worst,
+        values.interlacing_margin,
         "1",
         note="smallest distance of a constrained root inside its interval, over $\\sigma_n^2$",
     )
 
 
-def forced(results, built, spec):
+class Transient(NamedTuple):
+    detuning: float
+    integrator_vs_closed_form: float  # DOP853 against the product of sines, over the largest displacement
+    difference_of_cosines_error: float  # the textbook form against the product of sines
+
+
+class Forced(NamedTuple):
+    direct_vs_normal: float  # largest relative difference away from the resonances
+    static_limit: float  # the sum at sigma = 0 against K^{-1} F
+    residue_slope: float  # fitted order of (sigma_1^2 - sigma^2) y's deviation from mode 1's term
+    resonance: pd.DataFrame  # near the gravest resonance, against 50 digits
+    transient: Transient
+    sigma: np.ndarray  # the free frequencies (rad/s)
+    fine: np.ndarray  # the drawn curve's forcing frequencies
+    amplitude: np.ndarray  # |y_j|/|y_0| there, one column a particle
+
+
+def forced(built, spec) -> Forced:
     """Art. 95: the response to F cos(sigma t), directly and in normal coordinates, and near resonance."""
     K, M = _matrices(built)
     F = built.force
@@ -244,20 +323,8 @@ def forced(results, built, spec):
     grid = np.linspace(0.0, spec["sigma_max_over_lowest"] * sigma[0], spec["points"])
     away = [s for s in grid if np.min(np.abs(sigma - s)) > 1e-3 * sigma[0]]
     deviation = max(np.linalg.norm(direct(s) - normal(s)) / np.linalg.norm(normal(s)) for s in away)
-    results.number(
-        "forced_direct_vs_normal",
-        float(deviation),
-        "1",
-        note="largest relative difference, $(K - \\sigma^2 M)^{-1}F$ against Lamb's sum over normal "
-        "coordinates",
-    )
     static = np.linalg.solve(K, F)
-    results.number(
-        "forced_static_limit",
-        float(np.linalg.norm(normal(0.0) - static) / np.linalg.norm(static)),
-        "1",
-        note="the sum at $\\sigma = 0$ against the statical displacement $K^{-1}F$",
-    )
+    static_limit = float(np.linalg.norm(normal(0.0) - static) / np.linalg.norm(static))
 
     def detuned(delta):
         return detuned_response(sigma, phi, modal_force, delta)
@@ -280,9 +347,39 @@ def forced(results, built, spec):
         )
     frame = pd.DataFrame(rows)
     slope = float(np.polyfit(np.log(frame.detuning), np.log(frame.residue_deviation), 1)[0])
+    # the figure's curve: the direct solve on a fine grid, over the statical displacement
+    fine = np.linspace(grid[0], grid[-1], 3001)
+    amplitude = np.array([np.abs(direct(s)) for s in fine]) / np.linalg.norm(static)
+    return Forced(
+        float(deviation),
+        static_limit,
+        slope,
+        frame,
+        transient(built, sigma, phi, modal_force, spec),
+        sigma,
+        fine,
+        amplitude,
+    )
+
+
+def record_forced(results, values: Forced):
+    results.number(
+        "forced_direct_vs_normal",
+        values.direct_vs_normal,
+        "1",
+        note="largest relative difference, $(K - \\sigma^2 M)^{-1}F$ against Lamb's sum over normal "
+        "coordinates",
+    )
+    results.number(
+        "forced_static_limit",
+        values.static_limit,
+        "1",
+        note="the sum at $\\sigma = 0$ against the statical displacement $K^{-1}F$",
+    )
+    frame = values.resonance
     results.number(
         "resonance_residue_slope",
-        slope,
+        values.residue_slope,
         "1",
         note="$(\\sigma_1^2 - \\sigma^2)y$ tends to the first mode's term as the detuning $\\delta$: "
         "fitted order of its deviation",
@@ -316,8 +413,8 @@ def forced(results, built, spec):
             "direct_error": "direct solve",
         },
     )
-    _transient(results, built, sigma, phi, modal_force, spec)
-    _response_figure(results, grid, direct, static, sigma)
+    _record_transient(results, values.transient)
+    _response_figure(results, values.fine, values.amplitude, values.sigma)
 
 
 def detuned_response(sigma, phi, modal_force, delta):
@@ -352,7 +449,7 @@ def _response_mp(built, sigma1, delta):
         return np.array([float(v) for v in y])
 
 
-def _transient(results, built, sigma, phi, modal_force, spec):
+def transient(built, sigma, phi, modal_force, spec) -> Transient:
     """Started from rest at detuning delta, y(t) = sum phi_k Theta_k (cos sigma t - cos sigma_k t)/(sigma_k^2
     - sigma^2). Written so the difference of cosines cancels; the product of sines keeps every digit."""
     delta = spec["transient_detuning"]
@@ -386,16 +483,25 @@ def _transient(results, built, sigma, phi, modal_force, spec):
         atol=1e-16,
     )
     scale = np.max(np.abs(stable(t)))
+    return Transient(
+        delta,
+        float(np.max(np.abs(run.y_eval[:, :n].T - stable(t))) / scale),
+        float(np.max(np.abs(naive(t) - stable(t))) / scale),
+    )
+
+
+def _record_transient(results, values: Transient):
+    delta = values.detuning
     results.number("transient_detuning", delta, "1")
     results.number(
         "transient_integrator_vs_closed_form",
-        float(np.max(np.abs(run.y_eval[:, :n].T - stable(t))) / scale),
+        values.integrator_vs_closed_form,
         "1",
         note="DOP853 (scipy, rtol $10^{-13}$) against the product-of-sines form",
     )
     results.number(
         "transient_difference_of_cosines_error",
-        float(np.max(np.abs(naive(t) - stable(t))) / scale),
+        values.difference_of_cosines_error,
         "1",
         note="the textbook difference of cosines against the product of sines: the digits cancellation loses",
     )
@@ -404,15 +510,13 @@ def _transient(results, built, sigma, phi, modal_force, spec):
         "resonance_transient",
         f"Started from rest at detuning $\\delta = 10^{{{exponent}}}$: the "
         "closed form as a product of sines against DOP853",
-        float(np.max(np.abs(run.y_eval[:, :n].T - stable(t))) / scale),
+        values.integrator_vs_closed_form,
         1e-8,
     )
 
 
-def _response_figure(results, grid, direct, static, sigma):
+def _response_figure(results, fine, amplitude, sigma):
     fig, ax = new_figure(FULL_WIDTH_IN, 3.4)  # five decades need height: about 0.5 in each
-    fine = np.linspace(grid[0], grid[-1], 3001)
-    amplitude = np.array([np.abs(direct(s)) for s in fine]) / np.linalg.norm(static)
     for j, style in enumerate(("-", "--", ":")):
         ax.semilogy(fine / sigma[0], amplitude[:, j], style, lw=1.0, label=f"particle {j + 1}")
     for s in sigma:
@@ -430,7 +534,14 @@ def _response_figure(results, grid, direct, static, sigma):
     )
 
 
-def friction(results, built, spec):
+class Friction(NamedTuple):
+    table: pd.DataFrame  # each scale and mode: frequency shift, decay against c_kk/2, 2nd-order remainder
+    orders: dict  # each column's smallest fitted order in the scale over the modes
+    frequency_shift_at_largest: float
+    scale_largest: float
+
+
+def friction(built, spec) -> Friction:
     """Arts. 96-97: a small dashpot changes each frequency at second order and sets the decay rate at first
     order, c_kk/2 in normal coordinates; sympy's second-order term leaves a third-order remainder."""
     K, M = _matrices(built)
@@ -461,23 +572,28 @@ def friction(results, built, spec):
                 }
             )
     frame = pd.DataFrame(rows)
+    orders = {}
     for column in ("frequency_shift", "decay_vs_first_order", "second_order_remainder"):
         slopes = [np.polyfit(np.log(g.scale), np.log(g[column]), 1)[0] for _, g in frame.groupby("mode")]
-        results.number(
-            f"{column}_order",
-            float(min(slopes)),
-            "1",
-            note="smallest fitted order in the friction scale over the modes",
-        )
-    results.number(
-        "frequency_shift_at_largest",
+        orders[column] = float(min(slopes))
+    return Friction(
+        frame,
+        orders,
         float(frame[frame.scale == max(spec["scales"])].frequency_shift.max()),
-        "1",
+        float(max(spec["scales"])),
     )
-    results.number("friction_scale_largest", float(max(spec["scales"])), "1")
+
+
+def record_friction(results, values: Friction):
+    for column, order in values.orders.items():
+        results.number(
+            f"{column}_order", order, "1", note="smallest fitted order in the friction scale over the modes"
+        )
+    results.number("frequency_shift_at_largest", values.frequency_shift_at_largest, "1")
+    results.number("friction_scale_largest", values.scale_largest, "1")
     results.table(
         "friction",
-        frame,
+        values.table,
         "Small friction (Lamb Arts. 96 and 97): at each scale of the dashpot, each "
         "mode's relative frequency change, its decay rate against the first-order $c_{kk}/2$, and what "
         "the second-order term derived with sympy leaves.",
@@ -491,7 +607,12 @@ def friction(results, built, spec):
     )
 
 
-def initial_value(results, built, spec):
+class InitialValue(NamedTuple):
+    modal_vs_integrator: float  # largest difference over the largest displacement
+    energy_sum_of_modes: float  # T + V against the sum of the modes' energies (relative)
+
+
+def initial_value(built, spec) -> InitialValue:
     """Art. 91: any motion is the sum of the modes, each started by the mass-weighted projections of the
     initial state; Ex. XIV.1: its energy is the sum of the modes' energies. Against dop853 from a random start
     (seeded)."""
@@ -509,24 +630,38 @@ def initial_value(results, built, spec):
         linear.linear_system, np.concatenate([y0, v0]), (0.0, t[-1]), linear.pack(linear.state_matrix(K, M))
     )
     run = solve(free, "dop853", t_eval=t, rtol=1e-13, atol=1e-14)
+    energy = 0.5 * v0 @ M @ v0 + 0.5 * y0 @ K @ y0
+    by_modes = float(np.sum(0.5 * b**2 + 0.5 * sigma**2 * a**2))
+    return InitialValue(
+        float(np.max(np.abs(run.y_eval[:, :n].T - modal)) / np.max(np.abs(modal))),
+        abs(by_modes - energy) / energy,
+    )
+
+
+def record_initial_value(results, values: InitialValue):
     results.number(
         "initial_value_modal_vs_integrator",
-        float(np.max(np.abs(run.y_eval[:, :n].T - modal)) / np.max(np.abs(modal))),
+        values.modal_vs_integrator,
         "1",
         note="the sum of modes against DOP853 (rtol $10^{-13}$), largest difference over the largest "
         "displacement",
     )
-    energy = 0.5 * v0 @ M @ v0 + 0.5 * y0 @ K @ y0
-    by_modes = float(np.sum(0.5 * b**2 + 0.5 * sigma**2 * a**2))
     results.number(
         "energy_sum_of_modes",
-        abs(by_modes - energy) / energy,
+        values.energy_sum_of_modes,
         "1",
         note="$T + V$ against the sum of the modes' energies (relative)",
     )
 
 
-def dissipation(results, built, scale):
+class Dissipation(NamedTuple):
+    balance: float  # T + V against its start less the work against friction (relative to the start)
+    aperiodic_scale: float  # the dashpot raised past critical
+    real_roots: int
+    largest_real_root: float | None  # over the free sigma_1; None without a real root
+
+
+def dissipation(built, scale) -> Dissipation:
     """Art. 96: the energy falls at the rate 2F, F = 1/2 q'^T B q' (Rayleigh's dissipation function), along a
     DOP853 run; Art. 97: past critical friction a root is real and negative, the motion aperiodic."""
     K, M = _matrices(built)
@@ -547,19 +682,28 @@ def dissipation(results, built, scale):
     )
     q, v, lost = run.y_eval[:, :n].T, run.y_eval[:, n:-1].T, run.y_eval[:, -1]
     energy = 0.5 * np.einsum("it,ij,jt->t", v, M, v) + 0.5 * np.einsum("it,ij,jt->t", q, K, q)
+    lam = np.linalg.eigvals(linear.state_matrix(K, M, scale * B))
+    real = lam[np.abs(lam.imag) <= 1e-12 * np.abs(lam).max()].real
+    return Dissipation(
+        float(np.max(np.abs(energy - (energy[0] - lost))) / energy[0]),
+        scale,
+        int(real.size),
+        float(real.max()) / sigma[0] if real.size else None,
+    )
+
+
+def record_dissipation(results, values: Dissipation):
     results.number(
         "dissipation_balance",
-        float(np.max(np.abs(energy - (energy[0] - lost))) / energy[0]),
+        values.balance,
         "1",
         note="$T + V$ along DOP853 against its start less $\\int 2F\\,dt$ (relative to the start)",
     )
-    lam = np.linalg.eigvals(linear.state_matrix(K, M, scale * B))
-    real = lam[np.abs(lam.imag) <= 1e-12 * np.abs(lam).max()].real
-    results.number("aperiodic_scale", scale, "1", note="the dashpot raised past critical")
-    results.number("aperiodic_real_roots", int(real.size), "1")
+    results.number("aperiodic_scale", values.aperiodic_scale, "1", note="the dashpot raised past critical")
+    results.number("aperiodic_real_roots", values.real_roots, "1")
     results.number(
         "aperiodic_largest_real_root",
-        float(real.max()) / sigma[0] if real.size else None,
+        values.largest_real_root,
         "1",
         note="over the free $\\sigma_1$; negative: the displacements decay without oscillation",
     )

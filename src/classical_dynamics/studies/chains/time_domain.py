@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 import pandas as pd
 
@@ -39,18 +41,21 @@ def simulate(n, length, g, mode, amplitude_rad, periods, steps_per_fastest):
     return omega, h, sol.extra["tip_x"], sol.extra["energy"], sol.extra["constraint"], sample
 
 
-def run(scene, results, quick):
-    data = scene.data
-    n, length = data["chain"]["n"], data["chain"]["length_m"]
-    g = data["effects"]["gravity"]["g_m_per_s2"]
-    spec = data["analysis"]["time_domain"]
-    steps = spec["steps_per_fastest_period"]
+class LongRun(NamedTuple):
+    periods: int  # gravest periods run
+    drift: np.ndarray  # (E - E0)/(E0 - E_rest) at each sample
+    t_periods: np.ndarray  # the samples' times in gravest periods
+    tenth: int  # samples in a tenth of the run
+    constraint: float  # largest ||q_j - q_{j-1}| - a| (m)
+
+
+def small_amplitude(n, length, g, amplitude_rad, steps, quick) -> pd.DataFrame:
+    """The frequency read from the motion of a small-amplitude start in each of the first three modes,
+    against the eigenvalue, in units of sqrt(g/l)."""
     unit = np.sqrt(g / length)
-    small = np.radians(spec["small_amplitude_deg"])
-    # 1. small amplitude: the frequency read from the motion against the eigenvalue
     rows = []
     for mode in range(1, min(3, n) + 1):
-        omega, h, tip, _, _, _ = simulate(n, length, g, mode, small, 30 if quick else 100, steps)
+        omega, h, tip, _, _, _ = simulate(n, length, g, mode, amplitude_rad, 30 if quick else 100, steps)
         measured, cycles = rattle.crossing_frequency(tip, h)
         rows.append(
             {
@@ -61,12 +66,55 @@ def run(scene, results, quick):
                 "relative_difference": measured / omega[mode - 1] - 1,
             }
         )
-    frame = pd.DataFrame(rows)
+    return pd.DataFrame(rows)
+
+
+def long_run(n, length, g, amplitude_rad, periods, steps) -> LongRun:
+    """The energy error of a mode-1 start over a long run, relative to the oscillation's own energy."""
+    omega, h, tip, energies, constraint, sample = simulate(n, length, g, 1, amplitude_rad, periods, steps)
+    rest = -g * length * (n + 1) / 2 / n * 1.0  # sum over particles of m g y at rest (total mass 1)
+    scale = energies[0] - rest  # the oscillation's own energy
+    drift = (energies - energies[0]) / scale
+    t_periods = np.arange(energies.size) * sample * h * omega[0] / (2 * np.pi)
+    tenth = max(2, energies.size // 10)
+    return LongRun(periods, drift, t_periods, tenth, constraint)
+
+
+def amplitude_shift(n, length, g, amplitudes_deg, steps, quick) -> pd.DataFrame:
+    """The mean frequency of a mode-1 start against its initial amplitude, relative to the linear omega_1."""
+    rows = []
+    for deg in amplitudes_deg:
+        omega, h, tip, _, _, _ = simulate(n, length, g, 1, np.radians(deg), 20 if quick else 60, steps)
+        measured, _ = rattle.crossing_frequency(tip, h)
+        rows.append({"amplitude_deg": deg, "omega_over_linear": measured / omega[0]})
+    return pd.DataFrame(rows)
+
+
+def run(scene, results, quick):
+    data = scene.data
+    n, length = data["chain"]["n"], data["chain"]["length_m"]
+    g = data["effects"]["gravity"]["g_m_per_s2"]
+    spec = data["analysis"]["time_domain"]
+    steps = spec["steps_per_fastest_period"]
+    # 1. small amplitude: the frequency read from the motion against the eigenvalue
+    frame = small_amplitude(n, length, g, np.radians(spec["small_amplitude_deg"]), steps, quick)
+    _record_small_amplitude(results, frame, spec["small_amplitude_deg"], steps)
+    # 2. energy over a long run
+    periods = min(spec["long_run_periods"], 1000) if quick else spec["long_run_periods"]
+    values = long_run(n, length, g, np.radians(spec["long_run_amplitude_deg"]), periods, steps)
+    _record_long_run(results, values, n, spec["long_run_amplitude_deg"])
+    # 3. large amplitude: the frequency shift
+    _record_amplitude_shift(
+        results, amplitude_shift(n, length, g, spec["large_amplitudes_deg"], steps, quick)
+    )
+
+
+def _record_small_amplitude(results, frame, amplitude_deg, steps):
     results.table(
         "time_domain_small_amplitude",
         frame,
         "Frequencies read from the zero crossings of the free end "
-        f"in RATTLE runs started in each linear mode at {shortest(spec['small_amplitude_deg'])}°, against "
+        f"in RATTLE runs started in each linear mode at {shortest(amplitude_deg)}°, against "
         f"the eigenvalues ({steps} steps per period of the fastest mode), in units of $\\sqrt{{g/l}}$; "
         "they differ by the method's small phase error.",
         headers={
@@ -81,17 +129,12 @@ def run(scene, results, quick):
         "time_domain_max_relative_frequency_difference",
         float(frame.relative_difference.abs().max()),
         "1",
-        note=f"modes 1 to {len(rows)}, amplitude {shortest(spec['small_amplitude_deg'])}°",
+        note=f"modes 1 to {len(frame)}, amplitude {shortest(amplitude_deg)}°",
     )
-    # 2. energy over a long run
-    periods = min(spec["long_run_periods"], 1000) if quick else spec["long_run_periods"]
-    amp = np.radians(spec["long_run_amplitude_deg"])
-    omega, h, tip, energies, constraint, sample = simulate(n, length, g, 1, amp, periods, steps)
-    rest = -g * length * (n + 1) / 2 / n * 1.0  # sum over particles of m g y at rest (total mass 1)
-    scale = energies[0] - rest  # the oscillation's own energy
-    drift = (energies - energies[0]) / scale
-    t_periods = np.arange(energies.size) * sample * h * omega[0] / (2 * np.pi)
-    tenth = max(2, energies.size // 10)
+
+
+def _record_long_run(results, values: LongRun, n, amplitude_deg):
+    periods, drift, t_periods, tenth = values.periods, values.drift, values.t_periods, values.tenth
     results.number("time_domain_periods", periods, "gravest periods")
     results.number(
         "time_domain_energy_error_max",
@@ -101,7 +144,9 @@ def run(scene, results, quick):
     )
     results.number("time_domain_energy_error_first_tenth", float(np.max(np.abs(drift[:tenth]))), "1")
     results.number("time_domain_energy_error_last_tenth", float(np.max(np.abs(drift[-tenth:]))), "1")
-    results.number("time_domain_constraint_error_m", constraint, "m", note="largest $||q_j - q_{j-1}| - a|$")
+    results.number(
+        "time_domain_constraint_error_m", values.constraint, "m", note="largest $||q_j - q_{j-1}| - a|$"
+    )
     results.hard_case(
         "energy_bounded",
         f"Energy error over {format_number(periods)} gravest periods does not "
@@ -120,17 +165,13 @@ def run(scene, results, quick):
         "energy_error",
         fig,
         f"Energy error of RATTLE over {format_number(periods)} gravest periods "
-        f"({n} particles, amplitude {shortest(spec['long_run_amplitude_deg'])}°): the running maximum of "
+        f"({n} particles, amplitude {shortest(amplitude_deg)}°): the running maximum of "
         "$|E - E_0|$ relative to the oscillation's energy $E_0 - E_\\mathrm{rest}$, sampled four times a "
         "period. It reaches its level within the first period and stays there (bounded, no drift).",
     )
-    # 3. large amplitude: the frequency shift
-    rows = []
-    for deg in spec["large_amplitudes_deg"]:
-        omega, h, tip, _, _, _ = simulate(n, length, g, 1, np.radians(deg), 20 if quick else 60, steps)
-        measured, _ = rattle.crossing_frequency(tip, h)
-        rows.append({"amplitude_deg": deg, "omega_over_linear": measured / omega[0]})
-    shift = pd.DataFrame(rows)
+
+
+def _record_amplitude_shift(results, shift):
     results.table(
         "amplitude_shift",
         shift,
