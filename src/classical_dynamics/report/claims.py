@@ -6,7 +6,8 @@ and a check: {absolute: tol}, {relative: tol} or {factor: f} (within a factor f)
 {at_most: x} / {at_least: x} / {equals: x} on the computed value. A failing claim with must_hold: true fails
 the build. Optional: headline: true puts a claim in the report's key results; explanation says why a claim
 that may fail does (a failing claim without one fails the build: the report explains every failure it shows);
-ours_is: input (or reference) says that "ours" is a model input (or the reference's value), not a result;
+ours_is: input (or reference, or data) says that "ours" is a model input (or the reference's value, or our
+fit to observed data), not a result of the model;
 source: derived: true, that the source's own value or form is lost or never printed and was derived here.
 A limit of the model says what the model omits (omits:) and may name a reference that omits the same
 (expected: {value, cite, what, text}, a rigid-Earth series beside the non-rigid one, text as printed):
@@ -89,7 +90,7 @@ class ClaimResult:
     omits: str = ""  # a limit: what the model leaves out, and its expected size
     consistency: str = ""  # an input fitted to the observable it is compared with: what the match tests
     ours_is: str = (
-        ""  # "input" or "reference": "ours" is a model input or the reference's value, not a result
+        ""  # "input", "reference" or "data": a model input, the reference's value or our fit to observed data
     )
     expected: dict | None = None  # a limit: a reference that leaves out what the model leaves out
 
@@ -350,8 +351,8 @@ def _kind(claim: dict) -> str:
     kind = claim.get("kind")
     if kind not in KINDS:
         raise ClaimFailure(f"claim {claim.get('id')}: kind {kind!r} is not one of {', '.join(KINDS)}")
-    if claim.get("ours_is", "") not in ("", "input", "reference"):
-        raise ClaimFailure(f"claim {claim.get('id')}: ours_is is input or reference")
+    if claim.get("ours_is", "") not in ("", "input", "reference", "data"):
+        raise ClaimFailure(f"claim {claim.get('id')}: ours_is is input, reference or data")
     if kind == "limit" and not claim.get("omits"):
         raise ClaimFailure(f"claim {claim.get('id')}: a limit of the model says what it omits (omits:)")
     expected = claim.get("expected")

@@ -18,6 +18,7 @@ from typing import NamedTuple
 import numpy as np
 import scipy.linalg as sla
 
+from ...formatting import format_number
 from ...models import chains as chain_models
 from ...models import linear
 from ...solvers.ode import Events, Problem, solve
@@ -147,8 +148,8 @@ def record_equilibrium(results, values: Equilibrium):
         "equal_roots_amplitude_growth",
         values.equal_roots_growth,
         "1",
-        note=f"largest $|q|$ over {periods} periods (8 samples a period, exact propagator) over "
-        "that of the first period, less 1",
+        note=f"largest $|q|$ over {format_number(periods)} periods (8 samples a period, exact propagator) "
+        "over that of the first period, less 1",
     )
     results.number(
         "non_symmetric_amplitude_growth",
@@ -159,8 +160,8 @@ def record_equilibrium(results, values: Equilibrium):
     results.hard_case(
         "equal_roots_bounded",
         "Equal roots (Lamb Art. 92): a symmetric system with a double "
-        f"root stays bounded over {periods} periods (largest amplitude over the first period's, "
-        "less 1)",
+        f"root stays bounded over {format_number(periods)} periods (largest amplitude over the first "
+        "period's, less 1)",
         values.equal_roots_growth,
         1e-9,
     )
