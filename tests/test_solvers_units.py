@@ -243,8 +243,10 @@ def test_numerical_damping_figure_names_each_method_as_its_table_does():
     import matplotlib.pyplot as plt
 
     results = Results("solvers", "hard_cases", "t")
-    hard_cases._numerical_damping(results, periods=5)  # the names, not the values: a short run
-    frame = results.tables["numerical_damping"][0]
+    damping = hard_cases.numerical_damping(periods=5)  # the names, not the values: a short run
+    hard_cases._record_numerical_damping(results, damping)
+    frame = damping.frame
+    assert results.tables["numerical_damping"][0] is frame
     fig, _ = results.figures["numerical_damping"]
     ax = fig.axes[0]
     names = [t.get_text().replace("\n", "") for t in ax.get_xticklabels()]
@@ -257,20 +259,21 @@ def test_numerical_damping_figure_names_each_method_as_its_table_does():
 
 
 def test_intermediate_axis_grows_at_the_linearised_rate():
-    results = Results("solvers", "hard_cases", "t")
-    hard_cases._intermediate_axis(results)
-    n = values(results)
+    axis = hard_cases.intermediate_axis()
     theory = np.sqrt((3 - 2) * (2 - 1) / (3 * 1))  # A, B, C = 3, 2, 1, q0 = 1: linearised Euler equations
-    assert n["intermediate_axis_growth_theory"] == pytest.approx(theory, rel=1e-15)
-    assert n["intermediate_axis_growth_rate"] == pytest.approx(theory, rel=1e-3)
+    assert axis.theory == pytest.approx(theory, rel=1e-15)
+    assert axis.measured == pytest.approx(theory, rel=1e-3)
+    results = Results("solvers", "hard_cases", "t")
+    hard_cases._record_intermediate_axis(results, axis)
+    assert values(results)["intermediate_axis_growth_rate"] == axis.measured
     # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
     assert results.stability[0]["holds"]
 
 
 def test_blow_up_times_are_the_integral_of_dp_over_m_plus_mu_p_squared():
+    frame = hard_cases.blow_up()
     results = Results("solvers", "hard_cases", "t")
-    hard_cases._blow_up(results)
-    frame = results.tables["blow_up"][0]
+    hard_cases._record_blow_up(results, frame)
     for row in frame.itertuples():
         # t* = integral from p0 to +-infinity of dp / (m + mu p^2), by scipy's quad
         end = np.inf if (row.mu > 0 or (row.mu == 0 and row.m > 0)) else -np.inf
@@ -282,42 +285,43 @@ def test_blow_up_times_are_the_integral_of_dp_over_m_plus_mu_p_squared():
 
 
 def test_near_the_separatrix_the_period_returns_the_body_and_the_invariants_hold():
+    sep = hard_cases.separatrix(1e-4, True)
     results = Results("solvers", "hard_cases", "t")
-    hard_cases._separatrix(results, 1e-4, True)
+    hard_cases._record_separatrix(results, sep)
     n = values(results)
+    assert n["separatrix_period"] == sep.period and n["separatrix_ellipj_error_ours"] == sep.ellipj_error_ours
     # scipy's solve_ivp over one period from omega0 = (sqrt(3 m), 0, 1), I = (1, 2, 3): back at the start
     I, m = np.array([1.0, 2.0, 3.0]), 1 - 1e-4
     w0 = np.array([np.sqrt(3 * m), 0.0, 1.0])
     sol = solve_ivp(
-        lambda t, w: euler_free(t, w, I),
-        (0, n["separatrix_period"]),
-        w0,
-        method="DOP853",
-        rtol=1e-13,
-        atol=1e-14,
+        lambda t, w: euler_free(t, w, I), (0, sep.period), w0, method="DOP853", rtol=1e-13, atol=1e-14
     )
     assert np.max(np.abs(sol.y[:, -1] - w0)) < 1e-6
-    assert n["separatrix_ellipj_error_ours"] < 1e-13
-    assert n["separatrix_dop853_energy_error"] < 1e-10 and n["separatrix_splitting_casimir_error"] < 1e-12
-    assert n["separatrix_reference_vs_dop853"] < 1e-8
+    assert sep.ellipj_error_ours < 1e-13
+    assert sep.dop853_energy_error < 1e-10 and sep.splitting_casimir_error < 1e-12
+    assert sep.reference_vs_dop853 < 1e-8
     # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
     assert all(case["holds"] for case in results.stability)
 
 
 def test_the_spring_keeps_its_energy_and_the_handbooks_rotation_turns_60_degrees():
-    results = Results("solvers", "hard_cases", "t")
-    hard_cases._energy_kept(results)
-    hard_cases._rotations(results)
-    n = values(results)
-    assert n["spring_hamilton_equations_exact"] == 1
+    spring, turn = hard_cases.energy_kept(), hard_cases.rotations()
+    assert spring.hamilton_exact == 1
     # the implicit midpoint rule keeps a quadratic invariant of a linear system to rounding
-    assert n["oscillator_lagrangian_midpoint_energy_change"] < 1e-12
-    assert n["oscillator_hamiltonian_midpoint_energy_change"] < 1e-12
+    assert spring.midpoint_energy_change["lagrangian"] < 1e-12
+    assert spring.midpoint_energy_change["hamiltonian"] < 1e-12
     # Tr R = (3 + 2 + 3)/4 = 2 = 1 + 2 cos phi: phi = 60 degrees, about (1, 0, 1)/sqrt 2
-    assert n["ex2_2_angle_deg"] == pytest.approx(60.0, rel=1e-12)
-    assert n["ex2_2_angle_from_trace_deg"] == pytest.approx(60.0, rel=1e-12)
-    for key in ("rotation_trace_identity", "ex2_2_orthogonality", "ex2_2_axis_misalignment"):
-        assert n[key] < 1e-12, key
+    assert turn.angle_deg == pytest.approx(60.0, rel=1e-12)
+    assert turn.angle_from_trace_deg == pytest.approx(60.0, rel=1e-12)
+    for key in ("trace_identity", "orthogonality", "axis_misalignment"):
+        assert getattr(turn, key) < 1e-12, key
+    # the records write them under the report's names
+    results = Results("solvers", "hard_cases", "t")
+    hard_cases._record_energy_kept(results, spring)
+    hard_cases._record_rotations(results, turn)
+    n = values(results)
+    assert n["oscillator_hamiltonian_midpoint_energy_change"] == spring.midpoint_energy_change["hamiltonian"]
+    assert n["ex2_2_angle_deg"] == turn.angle_deg
 
 
 # ---- heavy_top.py
