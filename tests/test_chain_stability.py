@@ -179,20 +179,16 @@ def test_bad_stability_scenes(tmp_path, data, field, expected):
 def test_rotation_checks_and_kept_energy():
     from classical_dynamics.studies.solvers import hard_cases
 
-    r = Recorder()
-    hard_cases._rotations(r)
-    hard_cases._energy_kept(r)
-    v = r.values
-    assert v["rotation_trace_identity"] < 1e-14
-    assert v["ex2_2_axis_misalignment"] < 1e-15 and abs(v["ex2_2_angle_deg"] - 60.0) < 1e-12
-    assert v["spring_hamilton_equations_exact"] == 1
-    assert v["oscillator_hamiltonian_midpoint_energy_change"] < 1e-12
+    turn, spring = hard_cases.rotations(), hard_cases.energy_kept()
+    assert turn.trace_identity < 1e-14
+    assert turn.axis_misalignment < 1e-15 and abs(turn.angle_deg - 60.0) < 1e-12
+    assert spring.hamilton_exact == 1
+    assert spring.midpoint_energy_change["hamiltonian"] < 1e-12
 
 
 def test_reciprocal_theorem_needs_the_reversal():
     from classical_dynamics.studies.solvers import heavy_top, top_model
 
-    r = Recorder()
-    heavy_top._reciprocal(r, top_model.Top(1.0, 0.5, 1.0), 6.0, np.radians(60.0))
-    assert r.values["reciprocal_relative_difference"] < 1e-6
-    assert r.values["reciprocal_unreversed_relative_difference"] > 0.1
+    r = heavy_top.reciprocal(top_model.Top(1.0, 0.5, 1.0), 6.0, np.radians(60.0))
+    assert r.relative_difference < 1e-6
+    assert r.unreversed_relative_difference > 0.1

@@ -7,17 +7,10 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from classical_dynamics.results import Results
 from classical_dynamics.studies.solvers import heavy_top, top_model
 
 TOP = top_model.Top(1.0, 0.5, 1.0)  # the scene's body: A = Mgh = 1, C = 1/2
 SPIN = 6.0
-
-
-def run(part, *args):
-    results = Results("solvers", "heavy_top", "t")
-    part(results, TOP, *args)
-    return results
 
 
 def effective_sigma(A, Mgh, J3, alpha, omega):
@@ -33,8 +26,8 @@ def effective_sigma(A, Mgh, J3, alpha, omega):
 
 
 def test_steady_precession_rates_solve_lambs_quadratic_and_hold():
-    r = run(heavy_top._steady, SPIN, 1e-10)
-    frame = r.tables["steady_precession"][0]
+    r = heavy_top.steady(TOP, SPIN, 1e-10)
+    frame = r.frame
     J3 = TOP.C * SPIN
     for row in frame.itertuples():
         c = np.cos(np.radians(row.alpha_deg))
@@ -45,33 +38,32 @@ def test_steady_precession_rates_solve_lambs_quadratic_and_hold():
     assert (
         len(frame) == 6 and frame.theta_deviation.max() < 1e-8 and frame.rate_relative_difference.max() < 1e-8
     )
-    n = {k: v["value"] for k, v in r.numbers.items()}
     # the conical pendulum (no spin) at 120 degrees: g/(l |cos a|) with A = M l^2, Mgh = M g l
-    assert n["conical_pendulum_rate"] == pytest.approx(np.sqrt(TOP.Mgh / (TOP.A * 0.5)), rel=1e-14)
-    assert n["conical_pendulum_theta_deviation"] < 1e-8
+    assert r.conical_rate == pytest.approx(np.sqrt(TOP.Mgh / (TOP.A * 0.5)), rel=1e-14)
+    assert r.conical_theta_deviation < 1e-8
     # no steady state below J3^2 = 4 A Mgh cos 60 = 2 A Mgh
-    assert n["steady_threshold_spin_60deg"] == pytest.approx(np.sqrt(2 * TOP.A * TOP.Mgh) / TOP.C, rel=1e-14)
-    assert n["steady_roots_exist_just_below"] is False and n["conical_roots_exist_above_support"] is False
+    assert r.threshold_spin_60deg == pytest.approx(np.sqrt(2 * TOP.A * TOP.Mgh) / TOP.C, rel=1e-14)
+    assert r.roots_exist_just_below is False and r.conical_roots_exist_above_support is False
 
 
 def test_roots_approach_their_limits_as_the_spin_grows():
     # with x = 4 A Mgh cos a / J3^2 = 1/ratio: slow = (Mgh/J3) 2/(1 + sqrt(1 - x)), fast = (J3/(A cos a))
     # (1 + sqrt(1 - x))/2, so both differences are x/4 + O(x^2): slope -2 in J3
-    n = {k: v["value"] for k, v in run(heavy_top._roots_limits).numbers.items()}
+    r = heavy_top.roots_limits(TOP)
     x = 1.0 / np.geomspace(10.0, 1e4, 7)
     root = np.sqrt(1.0 - x)
     d_slow, d_fast = 2.0 / (1.0 + root) - 1.0, 1.0 - (1.0 + root) / 2.0
-    assert n["slow_root_difference_at_10"] == pytest.approx(d_slow[0], rel=1e-12)
-    assert n["fast_root_difference_at_10"] == pytest.approx(d_fast[0], rel=1e-12)
+    assert r.slow_difference_at_10 == pytest.approx(d_slow[0], rel=1e-12)
+    assert r.fast_difference_at_10 == pytest.approx(d_fast[0], rel=1e-12)
     log_j3 = -0.5 * np.log(x)  # log J3 up to a constant, which the slope does not see
-    assert n["slow_root_slope"] == pytest.approx(np.polyfit(log_j3, np.log(d_slow), 1)[0], rel=1e-6)
-    assert n["fast_root_slope"] == pytest.approx(np.polyfit(log_j3, np.log(d_fast), 1)[0], rel=1e-6)
-    assert n["slow_root_slope"] == pytest.approx(-2.0, abs=0.02)
-    assert n["fast_root_free_difference"] == pytest.approx(0.0, abs=1e-15)
+    assert r.slow_slope == pytest.approx(np.polyfit(log_j3, np.log(d_slow), 1)[0], rel=1e-6)
+    assert r.fast_slope == pytest.approx(np.polyfit(log_j3, np.log(d_fast), 1)[0], rel=1e-6)
+    assert r.slow_slope == pytest.approx(-2.0, abs=0.02)
+    assert r.fast_free_difference == pytest.approx(0.0, abs=1e-15)
 
 
 def test_disturbed_precession_nutates_at_the_effective_potentials_frequency():
-    frame = run(heavy_top._oscillation, 1e-10).tables["nutation_frequency"][0]
+    frame = heavy_top.oscillation(TOP, 1e-10)
     assert len(frame) == 6
     for row in frame.itertuples():
         alpha = np.radians(row.alpha_deg)
@@ -83,14 +75,14 @@ def test_disturbed_precession_nutates_at_the_effective_potentials_frequency():
 
 
 def test_horizontal_gyroscope():
-    n = {k: v["value"] for k, v in run(heavy_top._gyroscope, 1e-10).numbers.items()}
+    g = heavy_top.gyroscope(TOP, 1e-10)
     J3 = 10.0 * np.sqrt(TOP.A * TOP.Mgh)
     rate = TOP.Mgh / J3  # theta = 90 degrees: the quadratic's only finite root
-    assert n["gyroscope_rate_measured"] == pytest.approx(rate, rel=1e-7)
+    assert g.rate_measured == pytest.approx(rate, rel=1e-7)
     sigma = effective_sigma(TOP.A, TOP.Mgh, J3, np.pi / 2, rate)
-    assert n["gyroscope_nutation_frequency"] == pytest.approx(sigma, rel=1e-7)
+    assert g.nutation_frequency == pytest.approx(sigma, rel=1e-7)
     # sigma^2 = (J3/A)^2 + rate^2 there: above J3/A by rate^2 A^2 / (2 J3^2) = 5e-5
-    assert n["gyroscope_nutation_vs_J3_over_A"] == pytest.approx(5e-5, rel=1e-3)
+    assert g.nutation_vs_J3_over_A == pytest.approx(5e-5, rel=1e-3)
 
 
 def test_integrals_in_euler_angles_and_conserved():
@@ -104,7 +96,4 @@ def test_integrals_in_euler_angles_and_conserved():
     kinetic = 0.5 * TOP.A * (theta_dot**2 + (phi_dot * np.sin(theta)) ** 2) + 0.5 * TOP.C * w3**2
     assert E == pytest.approx(kinetic + TOP.Mgh * np.cos(theta), rel=1e-14)
     # the study's run: 20 nutations at rtol 1e-12 keep all three within 1e-10 (DOP853's global error)
-    results = Results("solvers", "heavy_top", "t")
-    heavy_top._general(results, TOP, SPIN, np.radians(60.0), 20, 1e-12)
-    n = {k: v["value"] for k, v in results.numbers.items()}
-    assert 0 < n["integrals_max_drift"] < 1e-10
+    assert 0 < max(heavy_top.general(TOP, SPIN, np.radians(60.0), 20, 1e-12).drift) < 1e-10

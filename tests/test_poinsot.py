@@ -133,19 +133,25 @@ def test_sphere_has_no_couple():
 
 
 def test_least_axis_follows_the_least_moment():
+    v = examples.least_axis_stable([3.0, 1.0, 2.0], start_offset_rad=1e-3, span=100.0)
+    assert v.stable == 2 and v.on_least_axis == 1
+    assert v.growth_least < 1.5 < 100 < v.growth_others
     r = Recorder()
-    examples.least_axis_stable(r, {"moments": [3.0, 1.0, 2.0], "start_offset_rad": 1e-3, "span": 100.0})
-    assert r.numbers["stable_equilibria"] == 2 and r.numbers["stable_equilibria_on_least_axis"] == 1
-    assert r.numbers["libration_growth_least"] < 1.5 < 100 < r.numbers["libration_growth_others"]
+    examples._record_least_axis_stable(r, v)
+    assert r.numbers["stable_equilibria"] == 2 and r.numbers["libration_growth_others"] == v.growth_others
 
 
 def test_inertia_examples():
+    helix = examples.whirling_helix(60, [0.1, 0.05, 0.02])
+    added = examples.added_mass([1.0, 2.0, 3.0], seed=3, epsilons=[1e-2, 1e-3, 1e-4])
+    assert helix.sympy_holds == 1 and examples.uniaxal_products() == 1
+    assert helix.order == pytest.approx(2.0, abs=0.02)
+    assert added.moment_order == pytest.approx(2.0, abs=0.05)
+    assert added.axis_order == pytest.approx(2.0, abs=0.05)
     r = Recorder()
-    examples.whirling_helix(r, {"slope_deg": 60, "bead_steps_rad": [0.1, 0.05, 0.02]})
-    examples.added_mass(r, {"moments": [1.0, 2.0, 3.0], "seed": 3, "epsilons": [1e-2, 1e-3, 1e-4]})
-    examples.uniaxal_products(r)
-    n = r.numbers
-    assert n["helix_sympy"] == 1 and n["uniaxal_products_sympy"] == 1
-    assert n["helix_bead_order"] == pytest.approx(2.0, abs=0.02)
-    assert n["added_mass_moment_order"] == pytest.approx(2.0, abs=0.05)
-    assert n["added_mass_axis_order"] == pytest.approx(2.0, abs=0.05)
+    examples._record_whirling_helix(r, helix)
+    examples._record_added_mass(r, added)
+    assert (
+        r.numbers["helix_bead_order"] == helix.order
+        and r.numbers["added_mass_axis_order"] == added.axis_order
+    )

@@ -436,38 +436,24 @@ def test_lamb_examples_from_the_model():
     written out here from the example's data (not the module's own closed-form number) and Lamb's answer."""
     from classical_dynamics.studies.precession import examples
 
-    class Collect:
-        def __init__(self):
-            self.numbers = {}
-
-        def number(self, name, value, unit, note=None):
-            self.numbers[name] = value
-
-    r = Collect()
-    examples.moon_line_offset(
-        r, {"C_minus_A_over_Ea2": 0.00109, "moon_distance_radii": 60, "declination_deg": 28}
-    )
+    line = examples.moon_line_offset(rho=60, declination_deg=28, C_minus_A=0.00109)
     d = np.radians(28)
-    assert r.numbers["moon_line_offset_radii"] == pytest.approx(
-        3 * 0.00109 * np.sin(d) * np.cos(d) / 60, rel=1e-13
-    )
-    assert r.numbers["moon_line_offset_radii"] == pytest.approx(0.0000225, rel=0.01)  # Lamb's answer
-    examples.gyroscope_couple(
-        r,
-        {
-            "weights_lb": [300, 35],
-            "radii_of_gyration_ft": [1.0, 2.5],
-            "spin_rev_per_s": 20,
-            "turn_period_s": 10,
-            "g_ft_per_s2": 32.2,
-            "transverse_over_axial": 0.3,
-        },
+    assert line.offset_radii == pytest.approx(3 * 0.00109 * np.sin(d) * np.cos(d) / 60, rel=1e-13)
+    assert line.offset_radii == pytest.approx(0.0000225, rel=0.01)  # Lamb's answer
+    assert line.offset_ft is None  # no Earth radius given
+    gyro = examples.gyroscope_couple(
+        weights_lb=[300, 35],
+        radii_of_gyration_ft=[1.0, 2.5],
+        spin_rev_per_s=20,
+        turn_period_s=10,
+        g=32.2,
+        transverse_over_axial=0.3,
     )
     C = (300 * 1.0**2 + 35 * 2.5**2) / 32.2  # slug ft^2
-    assert r.numbers["gyroscope_axial_moment_slug_ft2"] == pytest.approx(C, rel=1e-14)
+    assert gyro.C == pytest.approx(C, rel=1e-14)
     # C n psi' with n = 2 pi 20 /s, psi' = 2 pi/10 /s
-    assert r.numbers["gyroscope_couple_ft_lb"] == pytest.approx(C * 40 * np.pi * 0.2 * np.pi, rel=1e-13)
-    assert r.numbers["gyroscope_couple_ft_lb"] == pytest.approx(1270, rel=0.005)  # Lamb: [1270 ft.-lbs.]
+    assert gyro.couple == pytest.approx(C * 40 * np.pi * 0.2 * np.pi, rel=1e-13)
+    assert gyro.couple == pytest.approx(1270, rel=0.005)  # Lamb: [1270 ft.-lbs.]
 
 
 def test_the_suns_obliquity_sidebands_are_e_and_7e_over_3_of_the_semiannual_term():

@@ -209,9 +209,8 @@ def test_effect_ladder_adds_one_effect_a_row(monkeypatch):
     untimed(monkeypatch)
     effects = ("solar_torque", "lunar_torque", "orbit_eccentricity", "lunar_inclination")
     m = prec.assemble(earth.H_P03, EPS0, prec.modern(), {e: {} for e in effects})
-    r = Results("precession", "x", "x")
-    full._effect_ladder(r, m, None, 0.125, 2, 2.0)
-    frame = r.tables["effect_ladder"][0]
+    ladder = full.effect_ladder(m, 0.125, 2, 2.0)
+    frame = ladder.frame
     assert list(frame.adds) == [
         "solar_torque",
         "+ lunar_torque",
@@ -225,7 +224,7 @@ def test_effect_ladder_adds_one_effect_a_row(monkeypatch):
     # a fixed tilted lunar orbit moves the rate by several arcsec per year
     assert abs(frame.rate[3] - frame.secular_formula[3]) > 1.0
     assert frame.rate_change.sum() == pytest.approx(frame.rate[3], rel=1e-12)
-    assert len(r.timing_tables["effect_ladder"][0]) == 4
+    assert len(ladder.times) == 4
 
 
 # --- what accuracy costs ------------------------------------------------------------------------------------

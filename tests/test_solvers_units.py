@@ -243,8 +243,10 @@ def test_numerical_damping_figure_names_each_method_as_its_table_does():
     import matplotlib.pyplot as plt
 
     results = Results("solvers", "hard_cases", "t")
-    hard_cases._numerical_damping(results, periods=5)  # the names, not the values: a short run
-    frame = results.tables["numerical_damping"][0]
+    damping = hard_cases.numerical_damping(periods=5)  # the names, not the values: a short run
+    hard_cases._record_numerical_damping(results, damping)
+    frame = damping.frame
+    assert results.tables["numerical_damping"][0] is frame
     fig, _ = results.figures["numerical_damping"]
     ax = fig.axes[0]
     names = [t.get_text().replace("\n", "") for t in ax.get_xticklabels()]
@@ -257,20 +259,21 @@ def test_numerical_damping_figure_names_each_method_as_its_table_does():
 
 
 def test_intermediate_axis_grows_at_the_linearised_rate():
-    results = Results("solvers", "hard_cases", "t")
-    hard_cases._intermediate_axis(results)
-    n = values(results)
+    axis = hard_cases.intermediate_axis()
     theory = np.sqrt((3 - 2) * (2 - 1) / (3 * 1))  # A, B, C = 3, 2, 1, q0 = 1: linearised Euler equations
-    assert n["intermediate_axis_growth_theory"] == pytest.approx(theory, rel=1e-15)
-    assert n["intermediate_axis_growth_rate"] == pytest.approx(theory, rel=1e-3)
+    assert axis.theory == pytest.approx(theory, rel=1e-15)
+    assert axis.measured == pytest.approx(theory, rel=1e-3)
+    results = Results("solvers", "hard_cases", "t")
+    hard_cases._record_intermediate_axis(results, axis)
+    assert values(results)["intermediate_axis_growth_rate"] == axis.measured
     # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
     assert results.stability[0]["holds"]
 
 
 def test_blow_up_times_are_the_integral_of_dp_over_m_plus_mu_p_squared():
+    frame = hard_cases.blow_up()
     results = Results("solvers", "hard_cases", "t")
-    hard_cases._blow_up(results)
-    frame = results.tables["blow_up"][0]
+    hard_cases._record_blow_up(results, frame)
     for row in frame.itertuples():
         # t* = integral from p0 to +-infinity of dp / (m + mu p^2), by scipy's quad
         end = np.inf if (row.mu > 0 or (row.mu == 0 and row.m > 0)) else -np.inf
@@ -282,60 +285,57 @@ def test_blow_up_times_are_the_integral_of_dp_over_m_plus_mu_p_squared():
 
 
 def test_near_the_separatrix_the_period_returns_the_body_and_the_invariants_hold():
+    sep = hard_cases.separatrix(1e-4, True)
     results = Results("solvers", "hard_cases", "t")
-    hard_cases._separatrix(results, 1e-4, True)
+    hard_cases._record_separatrix(results, sep)
     n = values(results)
+    assert n["separatrix_period"] == sep.period and n["separatrix_ellipj_error_ours"] == sep.ellipj_error_ours
     # scipy's solve_ivp over one period from omega0 = (sqrt(3 m), 0, 1), I = (1, 2, 3): back at the start
     I, m = np.array([1.0, 2.0, 3.0]), 1 - 1e-4
     w0 = np.array([np.sqrt(3 * m), 0.0, 1.0])
     sol = solve_ivp(
-        lambda t, w: euler_free(t, w, I),
-        (0, n["separatrix_period"]),
-        w0,
-        method="DOP853",
-        rtol=1e-13,
-        atol=1e-14,
+        lambda t, w: euler_free(t, w, I), (0, sep.period), w0, method="DOP853", rtol=1e-13, atol=1e-14
     )
     assert np.max(np.abs(sol.y[:, -1] - w0)) < 1e-6
-    assert n["separatrix_ellipj_error_ours"] < 1e-13
-    assert n["separatrix_dop853_energy_error"] < 1e-10 and n["separatrix_splitting_casimir_error"] < 1e-12
-    assert n["separatrix_reference_vs_dop853"] < 1e-8
+    assert sep.ellipj_error_ours < 1e-13
+    assert sep.dop853_energy_error < 1e-10 and sep.splitting_casimir_error < 1e-12
+    assert sep.reference_vs_dop853 < 1e-8
     # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
     assert all(case["holds"] for case in results.stability)
 
 
 def test_the_spring_keeps_its_energy_and_the_handbooks_rotation_turns_60_degrees():
-    results = Results("solvers", "hard_cases", "t")
-    hard_cases._energy_kept(results)
-    hard_cases._rotations(results)
-    n = values(results)
-    assert n["spring_hamilton_equations_exact"] == 1
+    spring, turn = hard_cases.energy_kept(), hard_cases.rotations()
+    assert spring.hamilton_exact == 1
     # the implicit midpoint rule keeps a quadratic invariant of a linear system to rounding
-    assert n["oscillator_lagrangian_midpoint_energy_change"] < 1e-12
-    assert n["oscillator_hamiltonian_midpoint_energy_change"] < 1e-12
+    assert spring.midpoint_energy_change["lagrangian"] < 1e-12
+    assert spring.midpoint_energy_change["hamiltonian"] < 1e-12
     # Tr R = (3 + 2 + 3)/4 = 2 = 1 + 2 cos phi: phi = 60 degrees, about (1, 0, 1)/sqrt 2
-    assert n["ex2_2_angle_deg"] == pytest.approx(60.0, rel=1e-12)
-    assert n["ex2_2_angle_from_trace_deg"] == pytest.approx(60.0, rel=1e-12)
-    for key in ("rotation_trace_identity", "ex2_2_orthogonality", "ex2_2_axis_misalignment"):
-        assert n[key] < 1e-12, key
+    assert turn.angle_deg == pytest.approx(60.0, rel=1e-12)
+    assert turn.angle_from_trace_deg == pytest.approx(60.0, rel=1e-12)
+    for key in ("trace_identity", "orthogonality", "axis_misalignment"):
+        assert getattr(turn, key) < 1e-12, key
+    # the records write them under the report's names
+    results = Results("solvers", "hard_cases", "t")
+    hard_cases._record_energy_kept(results, spring)
+    hard_cases._record_rotations(results, turn)
+    n = values(results)
+    assert n["oscillator_hamiltonian_midpoint_energy_change"] == spring.midpoint_energy_change["hamiltonian"]
+    assert n["ex2_2_angle_deg"] == turn.angle_deg
 
 
 # ---- heavy_top.py
 
 
 def test_reciprocal_theorem_holds_in_the_reversed_motion_and_not_in_the_forward_one():
-    results = Results("solvers", "heavy_top", "t")
-    heavy_top._reciprocal(results, TOP, 6.0, np.radians(60.0))
-    n = values(results)
-    assert n["reciprocal_d_psi_reversed"] == pytest.approx(n["reciprocal_d_theta"], rel=1e-6)
-    assert n["reciprocal_relative_difference"] < 1e-6 < 1e-2 < n["reciprocal_unreversed_relative_difference"]
-    assert n["reciprocal_energy_check"] < 1e-11  # energy conserved by the Euler-angle run
+    r = heavy_top.reciprocal(TOP, 6.0, np.radians(60.0))
+    assert r.d_psi_reversed == pytest.approx(r.d_theta, rel=1e-6)
+    assert r.relative_difference < 1e-6 < 1e-2 < r.unreversed_relative_difference
+    assert r.energy_check < 1e-11  # energy conserved by the Euler-angle run
 
 
 def test_a_top_released_at_rest_descends_to_the_root_of_its_turning_point_quadratic():
-    results = Results("solvers", "heavy_top", "t")
-    heavy_top._descent(results, TOP, 1e-12)
-    n = values(results)
+    d = heavy_top.descent(TOP, 1e-12)
     alpha = np.radians(60.0)
     # released at rest at alpha: Jz = J3 cos alpha, E = J3^2/2C + Mgh cos alpha; theta' = 0 again where
     # 2 A Mgh u^2 - J3^2 u + J3^2 cos alpha - 2 A Mgh = 0 (u = cos theta != cos alpha), by numpy's roots
@@ -344,31 +344,32 @@ def test_a_top_released_at_rest_descends_to_the_root_of_its_turning_point_quadra
         u = np.roots([2 * TOP.A * TOP.Mgh, -J3sq, J3sq * np.cos(alpha) - 2 * TOP.A * TOP.Mgh])
         u = u[np.abs(u) <= 1][0]
         assert np.arccos(u) - alpha == pytest.approx(2 * s * np.sin(alpha), rel=5 * s)  # Lamb Ex. XI.8
-    assert n["descent_vs_root_max_relative"] < 1e-7
+    assert np.max(np.abs(d.frame.descent / d.frame.exact - 1)) < 1e-7
     # Lamb's 2 A Mgh sin(alpha)/(C n)^2 is the first term: the rest falls like (C n)^-2, slope -2 in n
-    assert n["descent_slope"] == pytest.approx(-2.0, abs=0.05)
+    assert d.slope == pytest.approx(-2.0, abs=0.05)
 
 
 def test_the_sleeping_top_is_stable_above_four_A_Mgh_and_falls_below():
-    results = Results("solvers", "heavy_top", "t")
-    heavy_top._sleeping(results, TOP, 1e-12, True)
-    n = values(results)
+    s = heavy_top.sleeping(TOP, 1e-12, True)
     nu2 = 1.01 * 4 * TOP.A * TOP.Mgh
     bound = 1e-4 * np.sqrt(nu2) / np.sqrt(nu2 - 4 * TOP.A * TOP.Mgh)  # the linearised bound, here sqrt(101)
-    assert n["sleeping_above_linear_bound"] == pytest.approx(bound, rel=1e-12)
-    assert n["sleeping_above_largest_tilt"] == pytest.approx(bound, rel=1e-3)
-    assert n["sleeping_below_largest_tilt_deg"] > 10.0
+    assert s.above_linear_bound == pytest.approx(bound, rel=1e-12)
+    assert s.above_largest_tilt == pytest.approx(bound, rel=1e-3)
+    assert np.degrees(s.below_largest_tilt) > 10.0
     # the small-tilt frequencies at nu^2 = 16 A Mgh: A s^2 - nu s + Mgh = 0, s = 2 -+ sqrt 3
-    assert n["upright_sigma_fitted"] == pytest.approx([2 - np.sqrt(3), 2 + np.sqrt(3)], rel=1e-7)
-    assert n["upright_ellipse_period"] == pytest.approx(4 * np.pi / (2 * np.sqrt(3)), rel=1e-7)
+    assert s.upright_sigma_fitted.tolist() == pytest.approx([2 - np.sqrt(3), 2 + np.sqrt(3)], rel=1e-7)
+    results = Results("solvers", "heavy_top", "t")
+    heavy_top._record_sleeping(results, s)
+    assert values(results)["upright_ellipse_period"] == pytest.approx(4 * np.pi / (2 * np.sqrt(3)), rel=1e-7)
     # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
     assert [c["holds"] for c in results.stability] == [True, True]
 
 
 def test_the_tops_work_precision_errors_are_those_of_scipys_dop853_against_jacobis_solution():
-    results = Results("solvers", "heavy_top", "t")
     numerics = {"methods": ["dop853", "scipy:DOP853"], "tolerances": [1e-6, 1e-8, 1e-12], "repeats": 1}
-    heavy_top._work_precision(results, TOP, 6.0, np.radians(60.0), numerics, True)
+    timed = heavy_top.work_precision(TOP, 6.0, np.radians(60.0), numerics, True)
+    results = Results("solvers", "heavy_top", "t")
+    heavy_top._record_work_precision(results, timed)
     frame = results.tables["top_accuracy"][0]
     assert sorted(set(frame.rtol)) == [1e-8, 1e-6]  # quick: nothing below 1e-9
     a, b = (frame[frame.method == m].reset_index() for m in ("dop853", "scipy:DOP853"))

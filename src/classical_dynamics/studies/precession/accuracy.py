@@ -9,6 +9,8 @@ accumulate round-off (the order-4 error rises below a few hours; at a quarter of
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 import pandas as pd
 
@@ -52,34 +54,25 @@ def _angle_mas(a, b):
     return float(np.arctan2(np.linalg.norm(np.cross(a, b)), np.dot(a, b)) / earth.MAS)
 
 
-def run(scene, model, results, quick):
-    spec = scene.data["analysis"]["accuracy_cost"]
-    span_years = QUICK_SPAN_YEARS if quick else spec["span_years"]
+class AccuracyCost(NamedTuple):
+    span_years: float
+    agreement: float  # the two references' (mas)
+    frame: pd.DataFrame  # per method and step or tolerance: the error (mas), steps and wall time
+    resolution: float  # the larger of the agreement and the order-4 splitting's scatter (mas)
+    best: dict  # wp.best_by_method: method -> (smallest error, its setting)
+
+
+def accuracy_cost(model, span_years, methods, steps_hours, tolerances, repeats=3) -> AccuracyCost:
+    """The work-precision sweep of the spin-resolved Earth over span_years against DOP853 at rtol 1e-13."""
     span = span_years * earth.JULIAN_YEAR_DAYS
-    repeats = spec.get("repeats", 3)
     reference, _ = _axis_rk(model, span, "dop853", REFERENCE_RTOL)
     check = _axis_splitting(model, span, CHECK_STEP_HOURS, 4)
     agreement = _angle_mas(reference, check)
-    results.number("accuracy_span_years", span_years, "yr")
-    results.number(
-        "reference_agreement_mas",
-        agreement,
-        "mas",
-        note=f"DOP853 at rtol $10^{{-13}}$ against the splitting (order 4, {shortest(CHECK_STEP_HOURS)} h): "
-        "the sweep's resolution",
-    )
-    results.hard_case(
-        "reference_agreement",
-        "Two independent references for the work-precision sweep agree (final angular-momentum axis, mas)",
-        agreement,
-        REFERENCE_AGREEMENT_BOUND_MAS,
-        "mas",
-    )
     rows = []
-    for method in spec["methods"]:
+    for method in methods:
         if method.startswith("splitting"):
             order = int(method[-1])
-            for h in spec["steps_hours"]:
+            for h in steps_hours:
                 seconds, axis, _ = min_time(
                     lambda: _axis_splitting(model, span, h, order), repeats=repeats, budget_s=2.0
                 )
@@ -94,7 +87,7 @@ def run(scene, model, results, quick):
                     }
                 )
             continue
-        for rtol in spec["tolerances"]:
+        for rtol in tolerances:
             budget = 0.5 if method.startswith("scipy") else 2.0
             seconds, (axis, n_steps), _ = min_time(
                 lambda: _axis_rk(model, span, method, rtol),
@@ -112,11 +105,45 @@ def run(scene, model, results, quick):
                 }
             )
     frame = pd.DataFrame(rows)
-    span_text = f"{shortest(span_years)} {plural(span_years, 'year')}"
     # The two references' agreement does not bound the reference's own error: the order-4 splitting's errors
     # at the smallest steps, where round-off decides them, scatter above it. The resolution is the larger.
     small = frame[(frame["method"] == "splitting, order 4") & (frame["setting"] <= SCATTER_STEP_HOURS)]
     resolution = max([agreement, *small["error_mas"]])
+    return AccuracyCost(span_years, agreement, frame, resolution, wp.best_by_method(frame, "error_mas"))
+
+
+def run(scene, model, results, quick):
+    spec = scene.data["analysis"]["accuracy_cost"]
+    span_years = QUICK_SPAN_YEARS if quick else spec["span_years"]
+    values = accuracy_cost(
+        model, span_years, spec["methods"], spec["steps_hours"], spec["tolerances"], spec.get("repeats", 3)
+    )
+    _record_accuracy_cost(results, values)
+
+
+def _record_accuracy_cost(results, values: AccuracyCost):
+    span_years, agreement, frame, resolution = (
+        values.span_years,
+        values.agreement,
+        values.frame,
+        values.resolution,
+    )
+    results.number("accuracy_span_years", span_years, "yr")
+    results.number(
+        "reference_agreement_mas",
+        agreement,
+        "mas",
+        note=f"DOP853 at rtol $10^{{-13}}$ against the splitting (order 4, {shortest(CHECK_STEP_HOURS)} h): "
+        "the sweep's resolution",
+    )
+    results.hard_case(
+        "reference_agreement",
+        "Two independent references for the work-precision sweep agree (final angular-momentum axis, mas)",
+        agreement,
+        REFERENCE_AGREEMENT_BOUND_MAS,
+        "mas",
+    )
+    span_text = f"{shortest(span_years)} {plural(span_years, 'year')}"
     results.number(
         "resolution_mas",
         resolution,
@@ -161,7 +188,7 @@ def run(scene, model, results, quick):
         "free flow (fixed steps, dotted) against adaptive Runge–Kutta on Euler's equations and the "
         "quaternion, compiled (solid) and through SciPy (dashed). Accuracy grows to the right.",
     )
-    for key, (best, setting) in wp.best_by_method(frame, "error_mas").items():
+    for key, (best, setting) in values.best.items():
         results.number(f"best_error_mas_{key}", best, "mas", note=f"at {format_number(setting, 3)}")
 
 

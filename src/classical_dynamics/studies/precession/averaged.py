@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 import pandas as pd
 
@@ -37,12 +39,79 @@ def integrate(model, span_days, t_eval=None, rtol=RTOL):
     return solve(problem, "dop853", rtol=rtol, atol=rtol, t_eval=t_eval)
 
 
-def run(scene, model, results, quick):
-    span_years = scene.data["analysis"]["span_years"]  # cheap: a whole cycle takes 0.1 s, quick or not
+class Averaged(NamedTuple):
+    span_years: float
+    t: np.ndarray  # days, every SAMPLE_DAYS
+    s: np.ndarray  # the spin axis at t, (n, 3)
+    steps: int  # DOP853's
+    evaluations: int
+    seconds: float  # one run, minimum of repeats
+    psi: np.ndarray
+    eps: np.ndarray
+    norm_drift: float  # largest departure of |s| from 1
+    rate: float  # fitted (rad/day)
+    mean_obliquity_offset_arcsec: float | None  # fitted mean obliquity - the model's; None for a fixed node
+    rate_minus_secular_relative: float
+    second_order_mas_per_century: float | None  # averaged - secular, with the node regressing; else None
+    crossing_period_days: float | None  # psi reaches 360°; None within the span
+    obliquity_range_arcsec: float
+    obliquity_drift_arcsec: float  # mean of the last twentieth minus the first's
+
+
+def averaged(model, span_years) -> Averaged:
+    """The averaged equations over span_years (cheap: a whole cycle takes 0.1 s, quick or not)."""
     span = span_years * earth.JULIAN_YEAR_DAYS
     t = np.arange(0.0, span, SAMPLE_DAYS)
     sol = integrate(model, span, t)
     seconds, _, _ = min_time(lambda: integrate(model, span), repeats=3, budget_s=2.0)
+    psi, eps = prec.precession_angles(sol.y_eval)
+    norm_drift = float(np.max(np.abs(np.linalg.norm(sol.y_eval, axis=1) - 1.0)))
+
+    # A fixed lunar orbit tilted to the ecliptic: the axis precesses about the orbits' mean pole, not the
+    # ecliptic's, and the obliquity swings; with the node regressing it averages to the ecliptic's.
+    nodal = model.moon and model.inclined
+    offset = second_order = None
+    if nodal and not model.regressing:
+        rate = np.polyfit(t, psi, 1)[0]
+    else:
+        args = fitting.arguments(model, model.secular_rate())
+        rate = fitting.fit(t, psi, args).rate
+        mean_eps = fitting.fit(t, eps, args).offset
+        offset = (mean_eps - model.obliquity) / earth.ARCSEC
+    if nodal and model.regressing:
+        second_order = (rate - model.secular_rate()) * 36525.0 / earth.MAS
+    eps_arcsec = eps / earth.ARCSEC
+    k = max(1, len(t) // 20)
+    return Averaged(
+        span_years,
+        t,
+        sol.y_eval,
+        sol.n_steps,
+        sol.nfev,
+        seconds,
+        psi,
+        eps,
+        norm_drift,
+        rate,
+        offset,
+        rate / model.secular_rate() - 1.0,
+        second_order,
+        _period_by_crossing(t, psi),
+        float(eps_arcsec.max() - eps_arcsec.min()),
+        float(np.mean(eps_arcsec[-k:]) - np.mean(eps_arcsec[:k])),
+    )
+
+
+def run(scene, model, results, quick):
+    values = averaged(model, scene.data["analysis"]["span_years"])
+    _record_averaged(results, model, values)
+    if model.moon and model.inclined and model.regressing:
+        _record_nutation(results, nutation(model, values.t, values.psi, values.eps))
+    _cone_figure(results, model, values.s, values.t, values.eps / earth.ARCSEC, values.span_years)
+
+
+def _record_averaged(results, model, values: Averaged):
+    span_years, rate = values.span_years, values.rate
     results.timing_table(
         "cost",
         pd.DataFrame(
@@ -51,9 +120,9 @@ def run(scene, model, results, quick):
                     "rung": "averaged",
                     "effects": ", ".join(model.listed),
                     "span_years": span_years,
-                    "steps": sol.n_steps,
-                    "evaluations": sol.nfev,
-                    "seconds": seconds,
+                    "steps": values.steps,
+                    "evaluations": values.evaluations,
+                    "seconds": values.seconds,
                 }
             ]
         ),
@@ -68,28 +137,17 @@ def run(scene, model, results, quick):
             "seconds": "wall time (s)",
         },
     )
-    psi, eps = prec.precession_angles(sol.y_eval)
     results.number("span_years", span_years, "yr")
-    norm_drift = float(np.max(np.abs(np.linalg.norm(sol.y_eval, axis=1) - 1.0)))
     results.hard_case(
         "unit_axis",
         "$|\\mathbf{s}| = 1$ kept by the averaged equations over the span (largest departure)",
-        norm_drift,
+        values.norm_drift,
         1e-9,
     )
-
-    # A fixed lunar orbit tilted to the ecliptic: the axis precesses about the orbits' mean pole, not the
-    # ecliptic's, and the obliquity swings; with the node regressing it averages to the ecliptic's.
-    nodal = model.moon and model.inclined
-    if nodal and not model.regressing:
-        rate = np.polyfit(t, psi, 1)[0]
-    else:
-        args = fitting.arguments(model, model.secular_rate())
-        rate = fitting.fit(t, psi, args).rate
-        mean_eps = fitting.fit(t, eps, args).offset
+    if values.mean_obliquity_offset_arcsec is not None:
         results.number(
             "mean_obliquity_offset_arcsec",
-            (mean_eps - model.obliquity) / earth.ARCSEC,
+            values.mean_obliquity_offset_arcsec,
             "″",
             note="fitted mean obliquity − the model's (mean) obliquity",
         )
@@ -97,57 +155,51 @@ def run(scene, model, results, quick):
             "start_on_forced_state",
             "The axis starts on the mean pole moved by the first-order "
             "nutation, so the mean obliquity is the model's (″)",
-            (mean_eps - model.obliquity) / earth.ARCSEC,
+            values.mean_obliquity_offset_arcsec,
             MEAN_OBLIQUITY_BOUND_ARCSEC,
             "″",
         )
-    if not nodal:
+    if not (model.moon and model.inclined):
         results.hard_case(
             "averaged_rate_matches_formula",
             "The averaged equations' rate against the secular "
             "formula, exact for orbits in the ecliptic (relative)",
-            rate / model.secular_rate() - 1.0,
+            values.rate_minus_secular_relative,
             RATE_BOUND,
         )
-    elif model.regressing:
+    elif values.second_order_mas_per_century is not None:
         results.number(
             "second_order_lunar_mas_per_century",
-            (rate - model.secular_rate()) * 36525.0 / earth.MAS,
+            values.second_order_mas_per_century,
             "mas/cy",
             note="averaged − secular: the node's regression couples to the nutation at second order",
         )
     rate_y = fitting.per_year_arcsec(rate)
     results.number("precession_rate_arcsec_per_year", rate_y, "″/yr", note="fitted to the integrated $\\psi$")
     results.number("precession_period_years", ARCSEC_PER_TURN / rate_y, "yr", note="360° / fitted rate")
-    results.number("averaged_minus_secular_relative", rate / model.secular_rate() - 1.0, "1")
+    results.number("averaged_minus_secular_relative", values.rate_minus_secular_relative, "1")
     results.hard_case(
         "retrograde", "The equinox moves westward (1 if it moves eastward)", 0.0 if rate > 0 else 1.0, 0.0
     )
-    turn = _period_by_crossing(t, psi)
-    if turn is not None:
+    if values.crossing_period_days is not None:
         results.number(
             "precession_period_by_crossing_years",
-            turn / earth.JULIAN_YEAR_DAYS,
+            values.crossing_period_days / earth.JULIAN_YEAR_DAYS,
             "yr",
             note="the time for $\\psi$ to reach 360°, read off the integration",
         )
-    eps_arcsec = eps / earth.ARCSEC
     results.number(
         "obliquity_range_arcsec",
-        float(eps_arcsec.max() - eps_arcsec.min()),
+        values.obliquity_range_arcsec,
         "″",
         note="max − min of the obliquity over the span",
     )
-    k = max(1, len(t) // 20)
     results.number(
         "obliquity_drift_arcsec",
-        float(np.mean(eps_arcsec[-k:]) - np.mean(eps_arcsec[:k])),
+        values.obliquity_drift_arcsec,
         "″",
         note="the mean of the last twentieth of the span minus the first's",
     )
-    if model.moon and model.inclined and model.regressing:
-        _nutation(results, model, t, psi, eps)
-    _cone_figure(results, model, sol.y_eval, t, eps_arcsec, span_years)
 
 
 def _period_by_crossing(t, psi):
@@ -158,7 +210,15 @@ def _period_by_crossing(t, psi):
     return float(np.interp(2.0 * np.pi, psi[j - 1 : j + 1], t[j - 1 : j + 1]))
 
 
-def _nutation(results, model, t, psi, eps):
+class Nutation(NamedTuple):
+    d_psi: float  # the 18.6-year term in longitude, fitted (rad)
+    d_eps: float  # in obliquity
+    closed_psi: float  # first order in the lunar inclination
+    closed_eps: float
+    two_cot_two_eps: float  # the first-order ratio d_psi/d_eps
+
+
+def nutation(model, t, psi, eps) -> Nutation:
     """The 18.6-year nutation of the averaged model, fitted, against its first-order closed form."""
     window = t <= min(t[-1], 1000.0 * earth.JULIAN_YEAR_DAYS)  # a millennium: the cone's curvature is
     args = fitting.arguments(model, model.secular_rate())  # then negligible for a line fit
@@ -166,6 +226,12 @@ def _nutation(results, model, t, psi, eps):
     fe = fitting.fit(t[window], eps[window], args)
     d_psi, d_eps = fitting.amplitude(fp, "18.6 yr"), fitting.amplitude(fe, "18.6 yr")
     closed_psi, closed_eps = model.nutation_18p6yr()
+    return Nutation(d_psi, d_eps, closed_psi, closed_eps, 2.0 / np.tan(2.0 * model.obliquity))
+
+
+def _record_nutation(results, values: Nutation):
+    d_psi, d_eps = values.d_psi, values.d_eps
+    closed_psi, closed_eps = values.closed_psi, values.closed_eps
     results.number(
         "nutation_longitude_18p6yr_arcsec", d_psi / earth.ARCSEC, "″", note="fitted, averaged equations"
     )
@@ -185,7 +251,7 @@ def _nutation(results, model, t, psi, eps):
         "1",
         note="$\\Delta\\psi/\\Delta\\varepsilon$; first order: $2\\cot 2\\varepsilon$",
     )
-    results.number("two_cot_two_eps", 2.0 / np.tan(2.0 * model.obliquity), "1")
+    results.number("two_cot_two_eps", values.two_cot_two_eps, "1")
 
 
 def _cone_figure(results, model, s, t, eps_arcsec, span_years):

@@ -18,6 +18,8 @@ distant_mass_couple, least_axis_stable, whirling_helix, added_mass, uniaxal_prod
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
 from ...models import earth
@@ -31,50 +33,91 @@ CM_PER_FT = 30.48  # exact (international foot)
 def run(scene, model, results) -> None:
     analysis = scene.data.get("analysis", {})
     if "polhode_circle" in analysis:
-        polhode_circle(results, model, analysis["polhode_circle"])
+        spec = analysis["polhode_circle"]
+        _record_polhode_circle(results, polhode_circle(model, spec["earth_radius_cm"]), spec["source"])
     if "moon_line_offset" in analysis:
-        moon_line_offset(results, analysis["moon_line_offset"], analysis.get("polhode_circle"))
+        spec, polhode = analysis["moon_line_offset"], analysis.get("polhode_circle")
+        values = moon_line_offset(
+            spec["moon_distance_radii"],
+            spec["declination_deg"],
+            spec["C_minus_A_over_Ea2"],
+            None if polhode is None else polhode["earth_radius_cm"],
+        )
+        _record_moon_line_offset(results, values)
     if "gyroscope_couple" in analysis:
-        gyroscope_couple(results, analysis["gyroscope_couple"])
+        spec = analysis["gyroscope_couple"]
+        values = gyroscope_couple(
+            spec["weights_lb"],
+            spec["radii_of_gyration_ft"],
+            spec["spin_rev_per_s"],
+            spec["turn_period_s"],
+            spec["g_ft_per_s2"],
+            spec["transverse_over_axial"],
+        )
+        _record_gyroscope_couple(results, values)
     if "distant_mass_couple" in analysis:
-        couple_of_distant_mass(results, analysis["distant_mass_couple"])
+        spec = analysis["distant_mass_couple"]
+        values = couple_of_distant_mass(spec["c_over_a"], spec["axis_angle_deg"], spec["distances_radii"])
+        _record_couple_of_distant_mass(results, values)
     if "least_axis_stable" in analysis:
-        least_axis_stable(results, analysis["least_axis_stable"])
+        spec = analysis["least_axis_stable"]
+        values = least_axis_stable(spec["moments"], spec["start_offset_rad"], spec["span"])
+        _record_least_axis_stable(results, values)
     if "whirling_helix" in analysis:
-        whirling_helix(results, analysis["whirling_helix"])
+        spec = analysis["whirling_helix"]
+        _record_whirling_helix(results, whirling_helix(spec["slope_deg"], spec["bead_steps_rad"]))
     if "added_mass" in analysis:
-        added_mass(results, analysis["added_mass"])
+        spec = analysis["added_mass"]
+        _record_added_mass(results, added_mass(spec["moments"], spec["seed"], spec["epsilons"]))
     if analysis.get("uniaxal_products"):
-        uniaxal_products(results)
+        _record_uniaxal_products(results, uniaxal_products())
     if "lamb_art61" in analysis:
-        lamb_art61(results, model, analysis["lamb_art61"])
+        spec = analysis["lamb_art61"]
+        _record_lamb_art61(results, lamb_art61(model, spec["samples"], spec["seed"]))
 
 
-def polhode_circle(results, model, spec) -> None:
+class PolhodeCircle(NamedTuple):
+    earth_radius_cm: float
+    beta: float  # the polhode cone's half-angle (rad)
+    radius_cm: float  # R sin(beta)
+
+
+def polhode_circle(model, earth_radius_cm) -> PolhodeCircle:
     """Lamb Art. 29: psi' = omega sin(beta)/sin(alpha), alpha the obliquity, omega ~ n: the polhode's
     radius."""
     beta = np.arcsin(model.secular_rate() * np.sin(model.obliquity) / model.n)
-    radius = spec["earth_radius_cm"]
-    results.number("earth_radius_cm", radius, "cm", note=spec["source"])
+    return PolhodeCircle(earth_radius_cm, beta, earth_radius_cm * np.sin(beta))
+
+
+def _record_polhode_circle(results, values: PolhodeCircle, source):
+    results.number("earth_radius_cm", values.earth_radius_cm, "cm", note=source)
     results.number(
         "polhode_cone_angle_mas",
-        beta / earth.MAS,
+        values.beta / earth.MAS,
         "mas",
         note="$\\beta$: $\\sin\\beta = \\dot\\psi\\sin\\varepsilon/n$, the secular rate of this scene "
         "(Lamb Art. 29)",
     )
     results.number(
         "polhode_circle_radius_cm",
-        radius * np.sin(beta),
+        values.radius_cm,
         "cm",
         note="where the polhode cone meets the Earth's surface: $R\\sin\\beta$",
     )
 
 
-def moon_line_offset(results, spec, polhode=None) -> None:
+class MoonLineOffset(NamedTuple):
+    moon_distance_radii: float  # rho
+    declination_deg: float
+    C_minus_A_over_Ea2: float
+    offset_radii: float  # couple/force, from the torque routine
+    closed_form_radii: float  # 3(C - A) sin(delta) cos(delta)/rho
+    offset_ft: float | None  # the same on Lamb's radius of Art. 29; None without it
+
+
+def moon_line_offset(rho, declination_deg, C_minus_A, earth_radius_cm=None) -> MoonLineOffset:
     """Lamb Ex. VI.5: couple/force of the Moon on the Earth, in Earth radii (units: E = a = gamma M = 1)."""
-    rho, delta = spec["moon_distance_radii"], np.radians(spec["declination_deg"])
-    C_minus_A = spec["C_minus_A_over_Ea2"]
+    delta = np.radians(declination_deg)
     # torque_body returns N/C with H = (C - A)/C; C = 1 (in E a^2) makes H = C - A, and N = that output
     p = np.zeros(prec.N_PARAMS)
     p[prec.H_] = C_minus_A
@@ -86,38 +129,57 @@ def moon_line_offset(results, spec, polhode=None) -> None:
     prec.torque_body(0.0, q, p, torque)
     couple, force = float(np.linalg.norm(torque)), 1.0 / rho**2
     offset = couple / force
+    return MoonLineOffset(
+        rho,
+        declination_deg,
+        C_minus_A,
+        offset,
+        3.0 * C_minus_A * np.sin(delta) * np.cos(delta) / rho,
+        None if earth_radius_cm is None else offset * earth_radius_cm / CM_PER_FT,
+    )
+
+
+def _record_moon_line_offset(results, values: MoonLineOffset):
     results.number(
         "moon_line_offset_radii",
-        offset,
+        values.offset_radii,
         "1",
-        note=f"Lamb Ex. VI.5: couple/force of the Moon at {spec['moon_distance_radii']:g} radii and "
-        f"declination {spec['declination_deg']:g}°, $C - A$ = {spec['C_minus_A_over_Ea2']:g} "
+        note=f"Lamb Ex. VI.5: couple/force of the Moon at {values.moon_distance_radii:g} radii and "
+        f"declination {values.declination_deg:g}°, $C - A$ = {values.C_minus_A_over_Ea2:g} "
         "$Ea^2$ (the couple from the full rung's torque routine)",
     )
     results.number(
         "moon_line_offset_closed_form_radii",
-        3.0 * C_minus_A * np.sin(delta) * np.cos(delta) / rho,
+        values.closed_form_radii,
         "1",
         note="$3(C - A)\\sin\\delta\\cos\\delta/(E\\rho)$",
     )
-    if polhode is not None:
+    if values.offset_ft is not None:
         results.number(
             "moon_line_offset_ft",
-            offset * polhode["earth_radius_cm"] / CM_PER_FT,
+            values.offset_ft,
             "ft",
             note="the same on Lamb's radius of Art. 29, 30.48 cm to the foot",
         )
 
 
-def gyroscope_couple(results, spec) -> None:
+class GyroscopeCouple(NamedTuple):
+    g: float  # ft/s^2
+    C: float  # axial moment, slug ft^2
+    couple: float  # largest over the rotor's turn, ft-lb
+    closed_form: float  # C n psi'
+
+
+def gyroscope_couple(
+    weights_lb, radii_of_gyration_ft, spin_rev_per_s, turn_period_s, g, transverse_over_axial
+) -> GyroscopeCouple:
     """Lamb Ex. XI.1: the pitching couple of a rotary engine and propeller on an aeroplane turning in a
     circle."""
-    g = spec["g_ft_per_s2"]
-    C = sum(w * k**2 for w, k in zip(spec["weights_lb"], spec["radii_of_gyration_ft"])) / g  # slug ft^2
-    A = spec["transverse_over_axial"] * C
+    C = sum(w * k**2 for w, k in zip(weights_lb, radii_of_gyration_ft)) / g  # slug ft^2
+    A = transverse_over_axial * C
     I = np.array([A, A, C])
-    n = 2.0 * np.pi * spec["spin_rev_per_s"]
-    Omega = 2.0 * np.pi / spec["turn_period_s"]
+    n = 2.0 * np.pi * spin_rev_per_s
+    Omega = 2.0 * np.pi / turn_period_s
     coefficients = rb.euler_coefficients(I)
     worst = 0.0
     for phase in np.linspace(0.0, 2.0 * np.pi, 7)[:-1]:
@@ -129,20 +191,25 @@ def gyroscope_couple(results, spec) -> None:
         rb.euler_free(0.0, omega, coefficients, free)
         couple = I * (omega_dot - free)
         worst = max(worst, float(np.linalg.norm(couple)))
+    return GyroscopeCouple(g, C, worst, C * n * Omega)
+
+
+def _record_gyroscope_couple(results, values: GyroscopeCouple):
+    g = values.g
     results.number(
         "gyroscope_axial_moment_slug_ft2",
-        C,
+        values.C,
         "1",
         note=f"$C = \\sum Wk^2/g$ in slug ft$^2$ (Lamb Ex. XI.1; $g$ = {g:g} ft s$^{{-2}}$)",
     )
     results.number(
         "gyroscope_couple_ft_lb",
-        worst,
+        values.couple,
         "ft-lb",
         note="the couple that keeps the rotor turning with the aeroplane, from Euler's equations "
         "(largest over the rotor's turn; the transverse moment does not enter)",
     )
-    results.number("gyroscope_couple_closed_form_ft_lb", C * n * Omega, "ft-lb", note="$Cn\\dot\\psi$")
+    results.number("gyroscope_couple_closed_form_ft_lb", values.closed_form, "ft-lb", note="$Cn\\dot\\psi$")
 
 
 # --- Lamb Ch. III-VII: the couple of a distant mass, and the moments of inertia -----------------------------
@@ -168,15 +235,23 @@ def _spheroid_couple(a, c, rho, s_hat, nodes=24):
     return np.einsum("i,ij->j", W, np.cross(pts, force))
 
 
-def couple_of_distant_mass(results, spec) -> None:
+class DistantMassCouple(NamedTuple):
+    c_over_a: float
+    distances: np.ndarray  # rho/a
+    far_difference: float  # quadrature against MacCullagh at the farthest distance (relative)
+    slope: float  # the difference's fitted log-log slope in rho
+    axial: float  # largest |N| about the symmetry axis over |N|
+
+
+def couple_of_distant_mass(c_over_a, axis_angle_deg, distances_radii) -> DistantMassCouple:
     """Lamb Art. 19, Ex. 2: MacCullagh's couple (3 gamma M/rho^3) s x I s depends on A, B, C only; A = B makes
     its component about the axis vanish. Quadrature over a uniform spheroid against that form."""
-    a, c = 1.0, spec["c_over_a"]
+    a, c = 1.0, c_over_a
     A, C = (a**2 + c**2) / 5.0, 2.0 * a**2 / 5.0  # uniform spheroid, mass 1: A = B about the equator
     I = np.array([A, A, C])
-    theta = np.radians(spec["axis_angle_deg"])
+    theta = np.radians(axis_angle_deg)
     s = np.array([np.sin(theta), 0.0, np.cos(theta)])
-    distances = np.asarray(spec["distances_radii"], float)
+    distances = np.asarray(distances_radii, float)
     errors, along = [], 0.0
     for rho in distances:
         N = _spheroid_couple(a, c, rho, s)
@@ -184,35 +259,47 @@ def couple_of_distant_mass(results, spec) -> None:
         errors.append(np.linalg.norm(N - mac) / np.linalg.norm(mac))
         along = max(along, abs(N[2]) / np.linalg.norm(N))
     slope = float(np.polyfit(np.log(distances), np.log(errors), 1)[0])
+    return DistantMassCouple(c, distances, float(errors[-1]), slope, float(along))
+
+
+def _record_couple_of_distant_mass(results, values: DistantMassCouple):
+    c, distances = values.c_over_a, values.distances
     results.number(
         "maccullagh_relative_difference_far",
-        float(errors[-1]),
+        values.far_difference,
         "1",
         note=f"quadrature couple against $(3\\gamma M/\\rho^3)\\hat{{\\mathbf s}}\\times I\\hat{{\\mathbf "
         f"s}}$ at $\\rho/a$ = {distances[-1]:g} (uniform spheroid, $c/a$ = {c:g})",
     )
     results.number(
         "maccullagh_difference_slope",
-        -slope,
+        -values.slope,
         "1",
         note=f"the difference falls as $(a/\\rho)^k$: $k$ fitted over $\\rho/a$ = {distances[0]:g} to "
         f"{distances[-1]:g}",
     )
     results.number(
         "maccullagh_axial_component",
-        float(along),
+        values.axial,
         "1",
         note="largest $|N|$ about the symmetry axis over the whole couple",
     )
 
 
-def least_axis_stable(results, spec) -> None:
+class LeastAxisStable(NamedTuple):
+    stable: int  # axis equilibria with a positive definite Hessian, of six
+    on_least_axis: int  # 1 if both lie on the axis of least moment
+    growth_least: float  # largest angle of OP from the least axis over the start's
+    growth_others: float  # the same about the mean and greatest axes (the smaller)
+
+
+def least_axis_stable(moments, start_offset_rad, span) -> LeastAxisStable:
     """Lamb Ex. VI.4: the potential (3 gamma M/2 rho^3) s.Is + const on the sphere of directions s of OP in
     the body; sympy's Hessian at the six axis equilibria, and a libration integrated about each
     (dop853)."""
     import sympy as sp
 
-    I = [sp.Rational(str(x)) for x in spec["moments"]]
+    I = [sp.Rational(str(x)) for x in moments]
     u, v = sp.symbols("u v", real=True)
     stable = []
     for i in range(3):
@@ -224,33 +311,20 @@ def least_axis_stable(results, spec) -> None:
             Hs = sp.hessian(V, (u, v)).subs({u: 0, v: 0})
             if all(ev > 0 for ev in Hs.eigenvals()):
                 stable.append(i)
-    least = int(np.argmin(spec["moments"]))
-    results.number(
-        "stable_equilibria",
-        len(stable),
-        "1",
-        note="axis equilibria with a positive definite Hessian of $\\hat{\\mathbf s}\\cdot I\\hat{"
-        "\\mathbf s}$ (sympy), of six",
-    )
-    results.number(
-        "stable_equilibria_on_least_axis",
-        int(len(stable) == 2 and set(stable) == {least}),
-        "1",
-        note="1 if both lie on the axis of least moment",
-    )
+    least = int(np.argmin(moments))
     # librations about each axis from rest (models.rigid_body.distant_attraction), sampled every 0.25 time
     # units: the angle of OP from the axis it started near
-    moments = np.asarray(spec["moments"], float)
-    t = np.linspace(0.0, spec["span"], int(np.ceil(spec["span"] / 0.25)) + 1)
+    moments = np.asarray(moments, float)
+    t = np.linspace(0.0, span, int(np.ceil(span / 0.25)) + 1)
     growth = []
-    kick = spec["start_offset_rad"]
+    kick = start_offset_rad
     for i in range(3):
         s0 = np.zeros(3)
         s0[i] = 1.0
         s0[(i + 1) % 3] = s0[(i + 2) % 3] = kick
         s0 /= np.linalg.norm(s0)
         sol = solve(
-            Problem(rb.distant_attraction, np.concatenate([np.zeros(3), s0]), (0.0, spec["span"]), moments),
+            Problem(rb.distant_attraction, np.concatenate([np.zeros(3), s0]), (0.0, span), moments),
             "dop853",
             rtol=1e-10,
             atol=1e-13,
@@ -258,21 +332,51 @@ def least_axis_stable(results, spec) -> None:
         )
         off = np.sqrt(np.maximum(1.0 - sol.y_eval[:, 3 + i] ** 2, 0.0))
         growth.append(float(np.max(off) / np.sqrt(1.0 - s0[i] ** 2)))
+    return LeastAxisStable(
+        len(stable),
+        int(len(stable) == 2 and set(stable) == {least}),
+        growth[least],
+        float(min(g for n, g in enumerate(growth) if n != least)),
+    )
+
+
+def _record_least_axis_stable(results, values: LeastAxisStable):
+    results.number(
+        "stable_equilibria",
+        values.stable,
+        "1",
+        note="axis equilibria with a positive definite Hessian of $\\hat{\\mathbf s}\\cdot I\\hat{"
+        "\\mathbf s}$ (sympy), of six",
+    )
+    results.number(
+        "stable_equilibria_on_least_axis",
+        values.on_least_axis,
+        "1",
+        note="1 if both lie on the axis of least moment",
+    )
     results.number(
         "libration_growth_least",
-        growth[least],
+        values.growth_least,
         "1",
         note="largest angle of $OP$ from the least axis over the start's angle",
     )
     results.number(
         "libration_growth_others",
-        float(min(g for n, g in enumerate(growth) if n != least)),
+        values.growth_others,
         "1",
         note="the same about the mean and greatest axes (the smaller)",
     )
 
 
-def whirling_helix(results, spec) -> None:
+class WhirlingHelix(NamedTuple):
+    sympy_holds: int  # 1 if sympy reduces the intrinsic equation to zero
+    slope_deg: float  # alpha
+    steps: np.ndarray  # the bead chains' angle steps (rad)
+    tension_difference: float  # at the finest step, relative
+    order: float  # of that difference in the step
+
+
+def whirling_helix(slope_deg, bead_steps_rad) -> WhirlingHelix:
     """Lamb Ex. IV.16: a helix (radius a, tangent at alpha to the axis) turning rigidly at omega about its
     axis is a relative equilibrium of a free chain with T = mu omega^2 a^2/sin^2 alpha. sympy on the intrinsic
     equation d(T t)/ds + mu omega^2 r_perp = 0; and a bead chain (equal beads at angle steps Delta) whose
@@ -286,15 +390,9 @@ def whirling_helix(results, spec) -> None:
     T = mu * w**2 * a**2 / sp.sin(al) ** 2
     residual = (T * t).diff(s) + mu * w**2 * sp.Matrix([r[0], r[1], 0])
     unit = sp.simplify(t.dot(t) - 1)
-    results.number(
-        "helix_sympy",
-        int(sp.simplify(residual) == sp.zeros(3, 1) and unit == 0),
-        "1",
-        note="sympy: $d(T\\mathbf t)/ds + \\mu\\omega^2\\mathbf r_\\perp = 0$ with $T = \\mu\\omega^2"
-        "a^2/\\sin^2\\alpha$, $s$ the arc (1 if it holds)",
-    )
-    alpha = np.radians(spec["slope_deg"])
-    steps = np.asarray(spec["bead_steps_rad"], float)
+    holds = int(sp.simplify(residual) == sp.zeros(3, 1) and unit == 0)
+    alpha = np.radians(slope_deg)
+    steps = np.asarray(bead_steps_rad, float)
     exact = 1.0 / np.sin(alpha) ** 2  # units mu = omega = a = 1
     diffs = []
     for D in steps:
@@ -303,30 +401,42 @@ def whirling_helix(results, spec) -> None:
         # radial balance of a bead: T |d+ + d-|/chord = bead * omega^2 a, |d+ + d-| = 2a(1 - cos D)
         tension = bead * chord / (2.0 * (1.0 - np.cos(D)))
         diffs.append(abs(tension / exact - 1.0))
+    order = float(np.polyfit(np.log(steps), np.log(diffs), 1)[0])
+    return WhirlingHelix(holds, slope_deg, steps, float(diffs[-1]), order)
+
+
+def _record_whirling_helix(results, values: WhirlingHelix):
+    results.number(
+        "helix_sympy",
+        values.sympy_holds,
+        "1",
+        note="sympy: $d(T\\mathbf t)/ds + \\mu\\omega^2\\mathbf r_\\perp = 0$ with $T = \\mu\\omega^2"
+        "a^2/\\sin^2\\alpha$, $s$ the arc (1 if it holds)",
+    )
     results.number(
         "helix_bead_tension_difference",
-        float(diffs[-1]),
+        values.tension_difference,
         "1",
-        note=f"bead chain at step {steps[-1]:g} rad, $\\alpha$ = {spec['slope_deg']:g}°: link tension "
+        note=f"bead chain at step {values.steps[-1]:g} rad, $\\alpha$ = {values.slope_deg:g}°: link tension "
         "against $\\mu\\omega^2a^2/\\sin^2\\alpha$ (relative)",
     )
-    results.number(
-        "helix_bead_order",
-        float(np.polyfit(np.log(steps), np.log(diffs), 1)[0]),
-        "1",
-        note="order of that difference in the step",
-    )
+    results.number("helix_bead_order", values.order, "1", note="order of that difference in the step")
 
 
-def added_mass(results, spec) -> None:
+class AddedMass(NamedTuple):
+    moment_order: float  # order in eps of the moments' error against the first-order moments
+    axis_order: float  # of the axis' error
+
+
+def added_mass(moments, seed, epsilons) -> AddedMass:
     """Lamb Ex. VII.15: diag(A, B, C) plus eps times a symmetric tensor (moments A', B', C', products F', G',
     H'): eigh against the first-order moments A + A', ... and the axis near Ox, (1, -H'/(A - B), -G'/(A - C))
     eps."""
-    A = np.asarray(spec["moments"], float)
-    rng = np.random.default_rng(spec["seed"])
+    A = np.asarray(moments, float)
+    rng = np.random.default_rng(seed)
     P = rng.normal(size=(3, 3))
     P = 0.5 * (P + P.T)  # diagonal A', B', C'; off-diagonal -H', -G', -F'
-    eps = np.asarray(spec["epsilons"], float)
+    eps = np.asarray(epsilons, float)
     e_mom, e_axis = [], []
     for e in eps:
         values, vectors = np.linalg.eigh(np.diag(A) + e * P)
@@ -334,21 +444,28 @@ def added_mass(results, spec) -> None:
         x = vectors[:, 0] * np.sign(vectors[0, 0])
         first = np.array([1.0, e * P[1, 0] / (A[0] - A[1]), e * P[2, 0] / (A[0] - A[2])])
         e_axis.append(float(np.linalg.norm(x - first / np.linalg.norm(first))))
+    return AddedMass(
+        float(np.polyfit(np.log(eps), np.log(e_mom), 1)[0]),
+        float(np.polyfit(np.log(eps), np.log(e_axis), 1)[0]),
+    )
+
+
+def _record_added_mass(results, values: AddedMass):
     results.number(
         "added_mass_moment_order",
-        float(np.polyfit(np.log(eps), np.log(e_mom), 1)[0]),
+        values.moment_order,
         "1",
         note="order in $\\epsilon$ of the moments' error against $A + A'$, $B + B'$, $C + C'$",
     )
     results.number(
         "added_mass_axis_order",
-        float(np.polyfit(np.log(eps), np.log(e_axis), 1)[0]),
+        values.axis_order,
         "1",
         note="order in $\\epsilon$ of the axis' error against $(1, -H'/(A - B), -G'/(A - C))$",
     )
 
 
-def uniaxal_products(results) -> None:
+def uniaxal_products() -> int:
     """Lamb Ex. VII.16: the tensor A 1 + (C - A) n n^T of a uniaxal body, axis (l, m, n): its products of
     inertia (sum m y z, ..., the negatives of the off-diagonal elements) are (A - C) m n, (A - C) n l, (A - C)
     l m."""
@@ -359,16 +476,33 @@ def uniaxal_products(results) -> None:
     tensor = A_ * sp.eye(3) + (C_ - A_) * u * u.T
     products = [-tensor[1, 2], -tensor[2, 0], -tensor[0, 1]]
     lamb = [(A_ - C_) * m * n, (A_ - C_) * n * l, (A_ - C_) * l * m]
+    return int(all(sp.expand(x - y) == 0 for x, y in zip(products, lamb)))  # 1 if all three agree
+
+
+def _record_uniaxal_products(results, agree: int):
     results.number(
         "uniaxal_products_sympy",
-        int(all(sp.expand(x - y) == 0 for x, y in zip(products, lamb))),
+        agree,
         "1",
         note="sympy: the products of $A\\mathbf 1 + (C - A)\\hat{\\mathbf n}\\hat{\\mathbf n}^T$ are "
         "Lamb's (1 if all three agree)",
     )
 
 
-def lamb_art61(results, model, spec) -> None:
+class LambArt61(NamedTuple):
+    solar_couple_residual: int  # 0: MacCullagh's couple with B = A is (4) identically
+    samples: int  # random longitudes of the Sun
+    torque_routine_deviation: float  # largest, over kappa sin(eps)
+    triangle_residual: int  # (13)-(15) that do not hold identically
+    mean_factor_residual: int  # 0: the mean over chi is (16)'s factor
+    inclination: float  # the lunar orbit's (rad)
+    mean_factor_quadrature: float  # over sin(eps) cos(eps)
+    mean_factor_relative_deviation: float
+    lunar_rate_arcsec_per_year: float  # with the factor by quadrature
+    lunar_rate_over_formula: float
+
+
+def lamb_art61(model, samples, seed) -> LambArt61:
     """Lamb Art. 61: the Sun's couple (4), the lunar triangle (13)-(15) and the mean factor (16).
 
     sympy: (4) from MacCullagh's couple (3 gamma S/r^3) s x I s with B = A, in Lamb's axes (x in the equator
@@ -391,15 +525,9 @@ def lamb_art61(results, model, spec) -> None:
         [kappa * sp.sin(e) * sp.sin(2 * l), kappa * sp.sin(e) * sp.cos(e) * (1 - sp.cos(2 * l)), 0]
     )
     residual = sp.simplify(sp.expand_trig(couple - lamb4))
-    results.number(
-        "sympy_solar_couple_residual",
-        0 if residual == sp.zeros(3, 1) else 1,
-        "1",
-        note="0: MacCullagh's couple with $B = A$ is Lamb's (4) identically in $l$, $\\varepsilon$",
-    )
     # the torque routine of the spin-resolved rung: the Sun fixed at longitude l on a circle, the figure axis
     # at the obliquity eps, body axes (equinox, in the equator, pole) = Lamb's (y, -x, z)
-    rng = np.random.default_rng(spec["seed"])
+    rng = np.random.default_rng(seed)
     eps = model.obliquity
     p = np.zeros(prec.N_PARAMS)
     p[prec.H_] = model.H
@@ -408,7 +536,7 @@ def lamb_art61(results, model, spec) -> None:
     worst = 0.0
     out = np.empty(3)
     kappa_over_C = 1.5 * model.H
-    for lon in rng.uniform(0.0, 2.0 * np.pi, spec["samples"]):
+    for lon in rng.uniform(0.0, 2.0 * np.pi, samples):
         p[prec.SUN_L0] = lon
         prec.torque_body(0.0, q, p, out)
         L, M, N = -out[1], out[0], out[2]
@@ -416,13 +544,6 @@ def lamb_art61(results, model, spec) -> None:
             [np.sin(eps) * np.sin(2 * lon), np.sin(eps) * np.cos(eps) * (1 - np.cos(2 * lon)), 0.0]
         )
         worst = max(worst, float(np.max(np.abs(np.array([L, M, N]) - ref)) / (kappa_over_C * np.sin(eps))))
-    results.number(
-        "solar_couple_torque_routine_deviation",
-        worst,
-        "1",
-        note=f"the full rung's torque routine against (4) at {spec['samples']} random longitudes "
-        "(largest difference over $\\kappa\\sin\\varepsilon$)",
-    )
     # (13)-(15): Z the ecliptic pole, C the figure pole at eps, M the lunar orbit's pole at i, angle MZC = chi
     Z = sp.Matrix([0, 0, 1])
     C = sp.Matrix([sp.sin(e), 0, sp.cos(e)])
@@ -433,51 +554,79 @@ def lamb_art61(results, model, spec) -> None:
     r14 = sp.simplify(cos_MC - (sp.cos(i) * sp.cos(e) + sp.sin(i) * sp.sin(e) * sp.cos(chi)))
     r15 = sp.simplify(sin_cos - (sp.cos(i) * sp.sin(e) - sp.sin(i) * sp.cos(e) * sp.cos(chi)))
     r13 = sp.simplify(cos_MC * sp.cos(e) + sp.sin(e) * sin_cos - sp.cos(i))
-    results.number(
-        "sympy_lunar_triangle_residual",
-        int(r13 != 0) + int(r14 != 0) + int(r15 != 0),
-        "1",
-        note="0: (13), (14) and (15) hold identically (the triangle built from unit vectors)",
-    )
     mean = sp.simplify(sp.integrate(sp.expand(cos_MC * sin_cos), (chi, 0, 2 * sp.pi)) / (2 * sp.pi))
     r16 = sp.simplify(sp.expand_trig(mean - sp.sin(e) * sp.cos(e) * (3 * sp.cos(i) ** 2 - 1) / 2))
-    results.number(
-        "sympy_lunar_mean_factor_residual",
-        0 if r16 == 0 else 1,
-        "1",
-        note="0: the mean over $\\chi$ of $\\cos MC\\sin MC\\cos ZCM$ is "
-        "$\\sin\\varepsilon\\cos\\varepsilon\\cdot\\tfrac12(3\\cos^2 i - 1)$",
-    )
     inc = model.orbits.moon_i_rad
     f = sp.lambdify(chi, (cos_MC * sin_cos).subs({e: eps, i: inc}), "numpy")
     quadrature = quad(f, 0.0, 2.0 * np.pi, epsabs=0.0, epsrel=1e-13)[0] / (2.0 * np.pi)
     closed = np.sin(eps) * np.cos(eps) * 0.5 * (3.0 * np.cos(inc) ** 2 - 1.0)
-    results.number(
-        "lunar_mean_factor_quadrature",
-        quadrature / (np.sin(eps) * np.cos(eps)),
-        "1",
-        note=f"the mean by quadrature over $\\chi$ at $i$ = {np.degrees(inc):.4g}°, over "
-        "$\\sin\\varepsilon\\cos\\varepsilon$",
-    )
-    results.number(
-        "lunar_mean_factor_relative_deviation",
-        quadrature / closed - 1.0,
-        "1",
-        note="against $\\tfrac12(3\\cos^2 i - 1)\\sin\\varepsilon\\cos\\varepsilon$",
-    )
     # the Moon's secular rate about the ecliptic pole: the rate about M (alpha cos MC) times sin MC cos ZCM
     # over sin eps, averaged over chi
     alpha_moon = model.alphas()[1]
     rate = alpha_moon * quadrature / np.sin(eps)
+    return LambArt61(
+        0 if residual == sp.zeros(3, 1) else 1,
+        samples,
+        worst,
+        int(r13 != 0) + int(r14 != 0) + int(r15 != 0),
+        0 if r16 == 0 else 1,
+        inc,
+        quadrature / (np.sin(eps) * np.cos(eps)),
+        quadrature / closed - 1.0,
+        rate * earth.JULIAN_YEAR_DAYS / earth.ARCSEC,
+        rate / model.lunar_rate(),
+    )
+
+
+def _record_lamb_art61(results, values: LambArt61):
+    results.number(
+        "sympy_solar_couple_residual",
+        values.solar_couple_residual,
+        "1",
+        note="0: MacCullagh's couple with $B = A$ is Lamb's (4) identically in $l$, $\\varepsilon$",
+    )
+    results.number(
+        "solar_couple_torque_routine_deviation",
+        values.torque_routine_deviation,
+        "1",
+        note=f"the full rung's torque routine against (4) at {values.samples} random longitudes "
+        "(largest difference over $\\kappa\\sin\\varepsilon$)",
+    )
+    results.number(
+        "sympy_lunar_triangle_residual",
+        values.triangle_residual,
+        "1",
+        note="0: (13), (14) and (15) hold identically (the triangle built from unit vectors)",
+    )
+    results.number(
+        "sympy_lunar_mean_factor_residual",
+        values.mean_factor_residual,
+        "1",
+        note="0: the mean over $\\chi$ of $\\cos MC\\sin MC\\cos ZCM$ is "
+        "$\\sin\\varepsilon\\cos\\varepsilon\\cdot\\tfrac12(3\\cos^2 i - 1)$",
+    )
+    results.number(
+        "lunar_mean_factor_quadrature",
+        values.mean_factor_quadrature,
+        "1",
+        note=f"the mean by quadrature over $\\chi$ at $i$ = {np.degrees(values.inclination):.4g}°, over "
+        "$\\sin\\varepsilon\\cos\\varepsilon$",
+    )
+    results.number(
+        "lunar_mean_factor_relative_deviation",
+        values.mean_factor_relative_deviation,
+        "1",
+        note="against $\\tfrac12(3\\cos^2 i - 1)\\sin\\varepsilon\\cos\\varepsilon$",
+    )
     results.number(
         "lunar_rate_from_quadrature_arcsec_per_year",
-        rate * earth.JULIAN_YEAR_DAYS / earth.ARCSEC,
+        values.lunar_rate_arcsec_per_year,
         "″/yr",
         note="the Moon's secular rate with the factor by quadrature",
     )
     results.number(
         "lunar_rate_quadrature_over_formula",
-        rate / model.lunar_rate(),
+        values.lunar_rate_over_formula,
         "1",
         note="over the secular rung's lunar rate (the factor (16) in closed form)",
     )

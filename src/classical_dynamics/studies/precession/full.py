@@ -8,6 +8,8 @@ reported).
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 import pandas as pd
 from matplotlib.ticker import MaxNLocator
@@ -65,14 +67,98 @@ def fit_series(model, t, psi, eps):
     return fitting.fit(t, psi, args), fitting.fit(t, eps, args), args
 
 
+class FullRun(NamedTuple):
+    span_years: float
+    step: float  # days
+    order: int  # of the splitting
+    steps: int
+    seconds: float  # the run, minimum of repeats
+    t: np.ndarray  # days, daily samples
+    ms: np.ndarray  # angular momentum in the body
+    qs: np.ndarray  # attitude quaternions
+    psi: np.ndarray  # precession angles of L
+    eps: np.ndarray
+    fp: fitting.Fit  # psi's rate and periodic terms
+    fe: fitting.Fit  # eps's
+    args: dict  # the periodic terms' arguments
+    averaged_rate: float  # the averaged equations' over the same span (rad/day)
+    first_order: tuple  # (name, closed_psi, closed_eps) of the 18.6-year and semi-annual closed forms
+    sidebands: tuple  # the Sun's annual and 122-day obliquity terms, first order in e' (() if e' = 0)
+    figure_axis_offset: float  # largest angle between L and the figure axis (rad)
+
+
+def full_run(model, span_years, step, order) -> FullRun:
+    """The spin-resolved run over span_years at a step of `step` days, read as precession and nutations."""
+    span = span_years * earth.JULIAN_YEAR_DAYS
+    seconds, (t, ms, qs), _ = min_time(lambda: integrate(model, span, step, order), repeats=3, budget_s=3.0)
+    steps = int(round(span / step))
+    L = angular_momentum_axis(ms, qs)
+    psi, eps = prec.precession_angles(L)
+    fp, fe, args = fit_series(model, t, psi, eps)
+    avg = averaged.integrate(model, span, t)
+    a_psi, _ = prec.precession_angles(avg.y_eval)
+    fa = fitting.fit(t, a_psi, args)
+    first_order = (("18p6yr", *model.nutation_18p6yr()), ("semiannual", *model.semiannual()))
+    sidebands = tuple(model.solar_obliquity_sidebands()) if model.sun_e else ()
+    e3 = rigid_body.rotate_to_space(qs, np.array([0.0, 0.0, 1.0]))
+    cosang = np.clip(np.sum(L * e3, axis=1) / np.linalg.norm(L, axis=1), -1.0, 1.0)
+    return FullRun(
+        span_years,
+        step,
+        order,
+        steps,
+        seconds,
+        t,
+        ms,
+        qs,
+        psi,
+        eps,
+        fp,
+        fe,
+        args,
+        fa.rate,
+        first_order,
+        sidebands,
+        float(np.max(np.arccos(cosang))),
+    )
+
+
 def run(scene, model, results, quick):
     analysis = scene.data["analysis"]
     span_years = min(analysis["span_years"], QUICK_SPAN_YEARS) if quick else analysis["span_years"]
-    span = span_years * earth.JULIAN_YEAR_DAYS
     step = analysis["step_hours"] / 24.0
     order = analysis.get("order", 2)
-    seconds, (t, ms, qs), _ = min_time(lambda: integrate(model, span, step, order), repeats=3, budget_s=3.0)
-    steps = int(round(span / step))
+    values = full_run(model, span_years, step, order)
+    t, psi, eps, args = values.t, values.psi, values.eps, values.args
+    _record_full_run(results, model, values)
+    if "18.6 yr" in args:
+        _record_node_period(results, node_period(t, eps, args))
+    _record_invariants(results, invariants(values.ms, values.fe), span_years)
+    results.number(
+        "figure_axis_offset_mas",
+        values.figure_axis_offset / earth.MAS,
+        "mas",
+        note="largest angle between $\\mathbf{L}$ and the figure axis (forced diurnal wobble, Oppolzer "
+        "terms)",
+    )
+    if analysis.get("compare_iau"):
+        _record_iau_nutation(results, iau_nutation(t, psi, eps, values.fp, values.fe, args))
+    spread = None  # the rate's relative spread over the aliasing windows, if any
+    if analysis.get("aliasing_windows_years"):
+        windows = aliasing(t, psi, analysis["aliasing_windows_years"], args)
+        _record_aliasing(results, windows)
+        spread = windows.spread_with_terms
+    if analysis.get("free_nutation"):
+        _record_free_nutation(results, free_nutation(model, order))
+    if analysis.get("effect_ladder"):
+        _record_effect_ladder(
+            results, effect_ladder(model, step, order, min(span_years, QUICK_SPAN_YEARS)), spread
+        )
+
+
+def _record_full_run(results, model, values: FullRun):
+    span_years, step, order, steps = values.span_years, values.step, values.order, values.steps
+    fp, fe, args = values.fp, values.fe, values.args
     results.timing_table(
         "cost",
         pd.DataFrame(
@@ -84,8 +170,8 @@ def run(scene, model, results, quick):
                     "step_hours": step * 24,
                     "order": order,
                     "steps": steps,
-                    "seconds": seconds,
-                    "ns_per_step": seconds / steps * 1e9,
+                    "seconds": values.seconds,
+                    "ns_per_step": values.seconds / steps * 1e9,
                 }
             ]
         ),
@@ -105,10 +191,6 @@ def run(scene, model, results, quick):
     results.number("span_years", span_years, "yr")
     results.number("step_hours", step * 24.0, "h")
     results.number("steps", steps, "1")
-
-    L = angular_momentum_axis(ms, qs)
-    psi, eps = prec.precession_angles(L)
-    fp, fe, args = fit_series(model, t, psi, eps)
     rate_y = fitting.per_year_arcsec(fp.rate)
     results.number(
         "precession_rate_arcsec_per_year",
@@ -118,16 +200,13 @@ def run(scene, model, results, quick):
     )
     results.number("precession_period_years", ARCSEC_PER_TURN / rate_y, "yr", note="360° / fitted rate")
     results.number("full_minus_secular_relative", fp.rate / model.secular_rate() - 1.0, "1")
-    avg = averaged.integrate(model, span, t)
-    a_psi, _ = prec.precession_angles(avg.y_eval)
-    fa = fitting.fit(t, a_psi, args)
     results.number(
         "averaged_rate_arcsec_per_year",
-        fitting.per_year_arcsec(fa.rate),
+        fitting.per_year_arcsec(values.averaged_rate),
         "″/yr",
         note="the averaged equations over the same span",
     )
-    results.number("full_minus_averaged_relative", fp.rate / fa.rate - 1.0, "1")
+    results.number("full_minus_averaged_relative", fp.rate / values.averaged_rate - 1.0, "1")
     results.hard_case(
         "retrograde", "The equinox moves westward (1 if it moves eastward)", 0.0 if fp.rate > 0 else 1.0, 0.0
     )
@@ -151,51 +230,31 @@ def run(scene, model, results, quick):
                 "″",
                 note=f"{term} term of $\\Delta\\varepsilon$, fitted",
             )
-    for name, (closed_psi, closed_eps) in (
-        ("18p6yr", model.nutation_18p6yr()),
-        ("semiannual", model.semiannual()),
-    ):
+    for name, closed_psi, closed_eps in values.first_order:
         if closed_psi:
             results.number(f"nutation_longitude_{name}_first_order_arcsec", closed_psi / earth.ARCSEC, "″")
             results.number(f"nutation_obliquity_{name}_first_order_arcsec", closed_eps / earth.ARCSEC, "″")
-    if model.sun_e:
-        for key, closed in zip(("annual", "122day"), model.solar_obliquity_sidebands()):
-            results.number(
-                f"nutation_obliquity_{key}_first_order_arcsec",
-                closed / earth.ARCSEC,
-                "″",
-                note="first order: e′ (annual) and 7e′/3 (122-day) times the semi-annual term",
-            )
+    for key, closed in zip(("annual", "122day"), values.sidebands):
+        results.number(
+            f"nutation_obliquity_{key}_first_order_arcsec",
+            closed / earth.ARCSEC,
+            "″",
+            note="first order: e′ (annual) and 7e′/3 (122-day) times the semi-annual term",
+        )
     results.number(
         "fit_residual_longitude_mas",
         fp.residual_rms / earth.MAS,
         "mas",
         note="rms of $\\psi$ after the line and the fitted terms",
     )
-    if "18.6 yr" in args:
-        _node_period(results, t, eps, args)
-
-    _invariants(results, ms, fe, span_years)
-    e3 = rigid_body.rotate_to_space(qs, np.array([0.0, 0.0, 1.0]))
-    cosang = np.clip(np.sum(L * e3, axis=1) / np.linalg.norm(L, axis=1), -1.0, 1.0)
-    results.number(
-        "figure_axis_offset_mas",
-        float(np.max(np.arccos(cosang))) / earth.MAS,
-        "mas",
-        note="largest angle between $\\mathbf{L}$ and the figure axis (forced diurnal wobble, Oppolzer "
-        "terms)",
-    )
-    if analysis.get("compare_iau"):
-        _iau_nutation(results, model, t, psi, eps, fp, fe, args)
-    if analysis.get("aliasing_windows_years"):
-        _aliasing(results, model, t, psi, analysis["aliasing_windows_years"], span_years, args)
-    if analysis.get("free_nutation"):
-        _free_nutation(results, model, order)
-    if analysis.get("effect_ladder"):
-        _effect_ladder(results, model, scene, step, order, min(span_years, QUICK_SPAN_YEARS))
 
 
-def _node_period(results, t, eps, args):
+class NodePeriod(NamedTuple):
+    fitted: float  # years
+    iau: float  # 2 pi/|Omega'|, IAU 2000 (years)
+
+
+def node_period(t, eps, args) -> NodePeriod:
     """Lamb Art. 61: "the angle chi goes through its phases in about 19 years". The period of the long
     nutation in obliquity fitted freely: the node's argument 2 pi t/P (and 2x it, and the 13.6-day term's
     2L_moon - node) with P found by least squares, the other terms at their own arguments; against the
@@ -223,6 +282,11 @@ def _node_period(results, t, eps, args):
     step = 1e-3  # Julian centuries
     omega = np.unwrap([erfa.faom03(-step), erfa.faom03(step)])
     iau = 2.0 * np.pi / abs(omega[1] - omega[0]) * 2.0 * step * 100.0
+    return NodePeriod(period, iau)
+
+
+def _record_node_period(results, values: NodePeriod):
+    period, iau = values
     results.number(
         "node_period_fitted_years",
         period,
@@ -235,9 +299,19 @@ def _node_period(results, t, eps, args):
     results.number("node_period_fitted_over_iau_minus_one", period / iau - 1.0, "1")
 
 
-def _invariants(results, ms, fe, span_years):
+class Invariants(NamedTuple):
+    angular_momentum_drift: float  # largest relative change of |L|
+    obliquity_rate_arcsec_per_century: float  # the fitted obliquity's secular part
+
+
+def invariants(ms, fe) -> Invariants:
     norms = np.linalg.norm(ms, axis=1)
     drift = float(np.max(np.abs(norms / norms[0] - 1.0)))
+    return Invariants(drift, fe.rate * 36525.0 / earth.ARCSEC)
+
+
+def _record_invariants(results, values: Invariants, span_years):
+    drift, rate_cy = values
     results.number(
         "angular_momentum_drift",
         drift,
@@ -251,7 +325,6 @@ def _invariants(results, ms, fe, span_years):
         drift,
         L_BOUND,
     )
-    rate_cy = fe.rate * 36525.0 / earth.ARCSEC
     results.number(
         "obliquity_rate_arcsec_per_century",
         rate_cy,
@@ -267,7 +340,18 @@ def _invariants(results, ms, fe, span_years):
     )
 
 
-def _iau_nutation(results, model, t, psi, eps, fp, fe, args):
+class IauNutation(NamedTuple):
+    rows: list  # per term: the full model's amplitudes and IAU 2000B's, fitted the same way (″)
+    t: np.ndarray
+    ours_psi: np.ndarray  # the full model's periodic parts, day by day (rad)
+    ours_eps: np.ndarray
+    d_psi: np.ndarray  # IAU 2000B's on the same days (rad)
+    d_eps: np.ndarray
+    rms_longitude_arcsec: float  # full model - IAU 2000B, day by day
+    rms_obliquity_arcsec: float
+
+
+def iau_nutation(t, psi, eps, fp, fe, args) -> IauNutation:
     """IAU 2000B nutation (pyerfa nut00b) on the same days, fitted with the IAU arguments, side by side."""
     import erfa
 
@@ -285,6 +369,24 @@ def _iau_nutation(results, model, t, psi, eps, fp, fe, args):
                 "obliquity_iau2000b_arcsec": fitting.amplitude(ie, term) / earth.ARCSEC,
             }
         )
+    # the periodic parts, day by day
+    ours_psi = psi - (fp.offset + fp.rate * t)
+    ours_eps = eps - (fe.offset + fe.rate * t)
+    return IauNutation(
+        rows,
+        t,
+        ours_psi,
+        ours_eps,
+        d_psi,
+        d_eps,
+        float(np.sqrt(np.mean((ours_psi - d_psi) ** 2))) / earth.ARCSEC,
+        float(np.sqrt(np.mean((ours_eps - d_eps) ** 2))) / earth.ARCSEC,
+    )
+
+
+def _record_iau_nutation(results, values: IauNutation):
+    rows, t = values.rows, values.t
+    ours_psi, ours_eps, d_psi, d_eps = values.ours_psi, values.ours_eps, values.d_psi, values.d_eps
     frame = pd.DataFrame(rows)
     results.table(
         "nutation",
@@ -316,20 +418,13 @@ def _iau_nutation(results, model, t, psi, eps, fp, fe, args):
             "1",
             note="full model / IAU 2000B − 1",
         )
-    # the periodic parts, day by day
-    ours_psi = psi - (fp.offset + fp.rate * t)
-    ours_eps = eps - (fe.offset + fe.rate * t)
     results.number(
         "nutation_difference_rms_longitude_arcsec",
-        float(np.sqrt(np.mean((ours_psi - d_psi) ** 2))) / earth.ARCSEC,
+        values.rms_longitude_arcsec,
         "″",
         note="full model − IAU 2000B, day by day (rms)",
     )
-    results.number(
-        "nutation_difference_rms_obliquity_arcsec",
-        float(np.sqrt(np.mean((ours_eps - d_eps) ** 2))) / earth.ARCSEC,
-        "″",
-    )
+    results.number("nutation_difference_rms_obliquity_arcsec", values.rms_obliquity_arcsec, "″")
     show = t <= 20.0 * earth.JULIAN_YEAR_DAYS
     years = 2000.0 + t[show] / earth.JULIAN_YEAR_DAYS
     fig, axes = subplots(
@@ -376,7 +471,13 @@ def _iau_nutation(results, model, t, psi, eps, fp, fe, args):
     )
 
 
-def _aliasing(results, model, t, psi, windows_years, span_years, args):
+class Aliasing(NamedTuple):
+    frame: pd.DataFrame  # per window: the bare line's rate and the rate with the periodic terms (″/yr)
+    spread_line_only: float  # (largest - smallest)/mean over the windows
+    spread_with_terms: float
+
+
+def aliasing(t, psi, windows_years, args) -> Aliasing:
     """The rate from windows of awkward lengths: a bare line against the line with the periodic terms."""
     rows = []
     for w in windows_years:
@@ -393,9 +494,14 @@ def _aliasing(results, model, t, psi, windows_years, span_years, args):
             }
         )
     frame = pd.DataFrame(rows)
+    spread = lambda col: float((frame[col].max() - frame[col].min()) / frame[col].mean())
+    return Aliasing(frame, spread("line_only_arcsec_per_year"), spread("with_periodic_terms_arcsec_per_year"))
+
+
+def _record_aliasing(results, values: Aliasing):
     results.table(
         "aliasing",
-        frame,
+        values.frame,
         "The secular rate fitted over windows that are not whole periods of the "
         "nutations: a bare straight line, and a line fitted together with the periodic terms. The bare "
         "line's rate depends on the window; with the periodic terms it does not.",
@@ -405,19 +511,18 @@ def _aliasing(results, model, t, psi, windows_years, span_years, args):
             "with_periodic_terms_arcsec_per_year": "rate, line and periodic terms (″/yr)",
         },
     )
-    spread = lambda col: float((frame[col].max() - frame[col].min()) / frame[col].mean())
     results.number(
         "aliasing_spread_line_only",
-        spread("line_only_arcsec_per_year"),
+        values.spread_line_only,
         "1",
         note="(largest − smallest)/mean of the bare line's rate over the windows",
     )
-    results.number("aliasing_spread_with_terms", spread("with_periodic_terms_arcsec_per_year"), "1")
+    results.number("aliasing_spread_with_terms", values.spread_with_terms, "1")
     results.hard_case(
         "aliasing",
         "The rate fitted with the periodic terms does not depend on the window (relative "
         "spread over the windows)",
-        spread("with_periodic_terms_arcsec_per_year"),
+        values.spread_with_terms,
         ALIASING_BOUND,
     )
 
@@ -434,7 +539,14 @@ def free_wobble_amplitude(model, step, order, forced, years=FREE_NUTATION_YEARS)
     return float(abs(np.mean(inner)))
 
 
-def _free_nutation(results, model, order):
+class FreeNutation(NamedTuple):
+    axis_start: float  # the free wobble left by starting on the figure axis (rad)
+    expected: float  # |e3 x N|/(C n^2) at the start
+    forced_start: float  # left by starting on the steady forced precession
+    bound: float  # the fastest couple's nu/n
+
+
+def free_nutation(model, order) -> FreeNutation:
     """The forced start e3 x N/(Cn) is first order: it neglects the couple's own rate of change, so it may
     leave a fraction of order nu/n of the axis start's wobble, nu the fastest couple (the Moon's fortnightly
     2 n1, or the Sun's semi-annual 2 n'): that fraction is the bound."""
@@ -444,6 +556,11 @@ def _free_nutation(results, model, order):
     fastest = 2.0 * (model.orbits.moon_n if model.moon else model.orbits.sun_n)
     _, q0 = prec.initial_state(model)
     expected = float(np.linalg.norm(prec.forced_offset(model, q0))) / model.n
+    return FreeNutation(axis, expected, forced, fastest / model.n)
+
+
+def _record_free_nutation(results, values: FreeNutation):
+    axis, expected, forced, bound = values
     results.number(
         "free_wobble_axis_start_mas",
         axis / earth.MAS,
@@ -468,7 +585,7 @@ def _free_nutation(results, model, order):
         f"one left by starting on the figure axis (bound: the fastest couple's $\\nu/n$; step "
         f"{shortest(FREE_NUTATION_STEP_HOURS)} h)",
         forced / axis,
-        fastest / model.n,
+        bound,
     )
 
 
@@ -483,7 +600,13 @@ LADDER = (
 )
 
 
-def _effect_ladder(results, model, scene, step, order, years):
+class EffectLadder(NamedTuple):
+    years: float  # the span of each run
+    frame: pd.DataFrame  # per rung: the fitted rate, the secular formula's, two nutations, the rate change
+    times: pd.DataFrame  # the same runs' wall times
+
+
+def effect_ladder(model, step, order, years) -> EffectLadder:
     """The listed effects switched on one at a time: what each changes in the headline numbers and costs."""
     span = years * earth.JULIAN_YEAR_DAYS
     rows, times = [], []
@@ -516,10 +639,16 @@ def _effect_ladder(results, model, scene, step, order, years):
         )
     frame = pd.DataFrame(rows)
     frame["rate_change"] = frame.rate.diff().fillna(frame.rate)
+    return EffectLadder(years, frame, pd.DataFrame(times))
+
+
+def _record_effect_ladder(results, values: EffectLadder, spread=None):
+    """spread: the rate's relative spread over the aliasing windows (aliasing(...).spread_with_terms), or
+    None without them."""
+    years, frame = values.years, values.frame
     # the change is printed to the decimals the fit resolves: its last place ten times the fit's own scatter
     # (the rate's spread over windows of awkward lengths) or more, so a change below the scatter reads 0.000
-    spread = results.numbers.get("aliasing_spread_with_terms")
-    scatter = spread["value"] * abs(float(frame.rate.iloc[-1])) if spread else None
+    scatter = spread * abs(float(frame.rate.iloc[-1])) if spread is not None else None
     decimals = int(np.floor(-np.log10(10.0 * scatter))) if scatter else LADDER_DECIMALS
     results.number(
         "effect_ladder_rate_change_decimals",
@@ -568,7 +697,7 @@ def _effect_ladder(results, model, scene, step, order, years):
     )
     results.timing_table(
         "effect_ladder",
-        pd.DataFrame(times),
+        values.times,
         "What each effect costs: the same runs, timed "
         "(minimum of repeats). An effect not listed is not evaluated.",
         headers={

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
 from ...models import earth
@@ -63,9 +65,23 @@ def iau2006_rates() -> dict:
     return {"psi_A": rate(1), "p_A": rate(12), "omega_A": rate(2), "eps0_arcsec": eps0 / earth.ARCSEC}
 
 
+class SecularRates(NamedTuple):
+    solar: float  # ″ per Julian year, Lamb Art. 61 (7)
+    lunar: float  # (16)
+    total: float  # westward, positive
+    per_orbit: float  # ″ per revolution round the Sun (Lamb's 'per annum')
+
+
+def secular_rates(model) -> SecularRates:
+    solar, lunar = per_year_arcsec(model.solar_rate()), per_year_arcsec(model.lunar_rate())
+    per_orbit = model.secular_rate() * model.orbits.year_days / earth.ARCSEC
+    return SecularRates(solar, lunar, solar + lunar, per_orbit)
+
+
 def run(scene, results) -> prec.PrecessionModel:
     model = setup(scene)
     data = scene.data
+    rates = secular_rates(model)
     results.number("H_over_C", model.H, "1", note=data["earth"]["H_source"])
     results.number("obliquity_deg", np.degrees(model.obliquity), "°", note=data["earth"]["obliquity_source"])
     results.number(
@@ -79,8 +95,7 @@ def run(scene, results) -> prec.PrecessionModel:
             f"Constants ({CONSTANTS_NAMES.get(model.orbits.name, model.orbits.name)}): "
             f"{typeset_source(line)}."
         )
-    solar, lunar = per_year_arcsec(model.solar_rate()), per_year_arcsec(model.lunar_rate())
-    total = solar + lunar
+    solar, lunar, total = rates.solar, rates.lunar, rates.total
     results.number(
         "secular_solar_rate_arcsec_per_year", solar, "″/yr", note="Lamb Art. 61 (7), per Julian year"
     )
@@ -97,10 +112,9 @@ def run(scene, results) -> prec.PrecessionModel:
         results.number(
             "lunar_to_solar_ratio", lunar / solar, "1", note="from the secular rates of the effects included"
         )
-    per_orbit = model.secular_rate() * model.orbits.year_days / earth.ARCSEC
     results.number(
         "secular_per_orbit_arcsec",
-        per_orbit,
+        rates.per_orbit,
         "″",
         note="per revolution of the Earth round the Sun (Lamb's 'per annum')",
     )
@@ -111,15 +125,23 @@ def run(scene, results) -> prec.PrecessionModel:
         )
     inverse = data.get("analysis", {}).get("inverse_problem")
     if inverse:
-        _inverse(results, model, inverse)
+        _record_inverse(
+            results, inverse_problem(model, inverse["observed_rate_arcsec_per_year"]), inverse["source"]
+        )
     if data["constants"] == "modern":
-        _iau(results, model, total)
+        _record_iau(results, iau_comparison(total))
     return model
 
 
-def _inverse(results, model, spec):
+class Inverse(NamedTuple):
+    observed: float  # the observed rate, as the scene gives it
+    H: float  # (C - A)/C that reproduces it
+    computed_over_observed_minus_one: float
+    C_minus_A_over_A: float  # the same H as (C - A)/A
+
+
+def inverse_problem(model, observed) -> Inverse:
     """Lamb's 'inverse process': the rate is proportional to H, so H = H_model x observed / computed."""
-    observed = spec["observed_rate_arcsec_per_year"]
     # Lamb's 'per annum' is per revolution; a modern rate is per Julian year: compare like with like
     rate = model.secular_rate()
     computed = (
@@ -128,19 +150,38 @@ def _inverse(results, model, spec):
         else per_year_arcsec(rate)
     )
     H = model.H * observed / computed
-    results.number("inverse_observed_rate_arcsec_per_year", observed, "″/yr", note=spec["source"])
+    return Inverse(observed, H, computed / observed - 1.0, H / (1.0 - H))
+
+
+def _record_inverse(results, values: Inverse, source):
+    H = values.H
+    results.number("inverse_observed_rate_arcsec_per_year", values.observed, "″/yr", note=source)
     results.number("H_from_observed_rate", H, "1", note="$(C - A)/C$ that reproduces the observed rate")
     results.number(
         "computed_over_observed_minus_one",
-        computed / observed - 1.0,
+        values.computed_over_observed_minus_one,
         "1",
         note="the formula's rate against the observed one",
     )
-    results.number("C_minus_A_over_A_from_observed_rate", H / (1.0 - H), "1", note="the same as $(C - A)/A$")
+    results.number(
+        "C_minus_A_over_A_from_observed_rate", values.C_minus_A_over_A, "1", note="the same as $(C - A)/A$"
+    )
 
 
-def _iau(results, model, total):
+class IauComparison(NamedTuple):
+    rates: dict  # iau2006_rates()
+    secular_minus_psi_A_relative: float
+    period_years: float  # 360°/p_A
+
+
+def iau_comparison(total) -> IauComparison:
+    """The IAU 2006 rates beside this scene's secular rate `total` (″/yr)."""
     iau = iau2006_rates()
+    return IauComparison(iau, total / iau["psi_A"] - 1.0, ARCSEC_PER_TURN / iau["p_A"])
+
+
+def _record_iau(results, values: IauComparison):
+    iau = values.rates
     results.number(
         "iau2006_psi_A_rate_arcsec_per_year",
         iau["psi_A"],
@@ -162,8 +203,8 @@ def _iau(results, model, total):
     results.number("iau2006_eps0_arcsec", iau["eps0_arcsec"], "″", note="obliquity at J2000 (pyerfa p06e)")
     results.number(
         "secular_minus_psi_A_relative",
-        total / iau["psi_A"] - 1.0,
+        values.secular_minus_psi_A_relative,
         "1",
         note="the first-order formula against the IAU 2006 luni-solar precession",
     )
-    results.number("iau2006_period_years", ARCSEC_PER_TURN / iau["p_A"], "yr", note="360°/$p_A$")
+    results.number("iau2006_period_years", values.period_years, "yr", note="360°/$p_A$")

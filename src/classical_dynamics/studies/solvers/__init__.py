@@ -42,7 +42,7 @@ def check(path: Path, data: dict) -> None:
         if C > 2 * A:
             raise SceneError(path, "top.C", f"C <= A + B = 2A = {2 * A:g} (a real body)", C)
         # steady precession at the top's inclination and at 30, 60, 120 degrees (heavy_top._general_start and
-        # _steady) needs (C n)^2 >= 4 A Mgh cos(alpha); the disturbed precession (_oscillation) runs at spin 6
+        # steady) needs (C n)^2 >= 4 A Mgh cos(alpha); the disturbed precession (oscillation) runs at spin 6
         cos_alpha = max(math.cos(math.radians(top["inclination_deg"])), math.cos(math.radians(30.0)))
         if (C * spin) ** 2 < 4 * A * Mgh * cos_alpha:
             raise SceneError(

@@ -35,7 +35,7 @@ SWEEP_METHODS = {
     "scipy:BDF": (23.0, 6, 69e-6, 1e-3),
     "scipy:RK23": (52.0, 3, 19e-6, 5e-4),
 }
-# The heavy top (heavy_top._work_precision, one method and rtol at a time, shipped top: 20 nutations = 46.1
+# The heavy top (heavy_top.work_precision, one method and rtol at a time, shipped top: 20 nutations = 46.1
 # time units at 7 rad a unit): steps a radian at rtol 1e-6 (dop853 5.92 steps a unit, dopri5 and RK45 28.6,
 # LSODA 78, Radau 63, BDF 67, RK23 271, over 7 rad, times 1.13 for the tops that took 5.4 steps a radian), the
 # same orders fitted (BDF 1598 -> 12853 steps from 1e-4 to 1e-10).
@@ -73,9 +73,9 @@ DOP853_MAX_STEPS = 1e8  # ode.solve stops there (status 'too many steps', NaN af
 LONG_FIXED_S = 3.0
 LONG_MEMORY_MB = 20001 * 15 * 8 / 1e6  # 20001 outputs: times, states, invariant errors
 
-# The heavy top (heavy_top's parts timed one by one): _general records every step and reads its integrals,
+# The heavy top (heavy_top's parts timed one by one): general records every step and reads its integrals,
 # rates and apses: 2.7 us and 134 bytes a step (20000 and 100000 nutations: 4.25 and 21.0 s, 249 and 1038 MB,
-# 1.55e6 and 7.75e6 steps); _steady's recorded runs and their angles 1.1 us and 193 bytes a step (2.65e6
+# 1.55e6 and 7.75e6 steps); steady's recorded runs and their angles 1.1 us and 193 bytes a step (2.65e6
 # steps: 2.9 s, 512 MB); the other compiled runs 1.5 us a step or less (the A/C = 200 top: gyroscope 4.6 s for
 # about 3e6 steps).
 TOP_RECORD_S_PER_STEP = 2.7e-6

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import mpmath
 import numpy as np
 import pandas as pd
@@ -25,16 +27,28 @@ def tenth_power(value) -> str:
 
 def run(scene, results, quick):
     numerics = scene.data.get("numerics", {})
-    _separatrix(results, numerics.get("separatrix_one_minus_m", 1e-10), quick)
-    _intermediate_axis(results)
-    _blow_up(results)
-    _lee_cases(results)
-    _numerical_damping(results)
-    _energy_kept(results)
-    _rotations(results)
+    _record_separatrix(results, separatrix(numerics.get("separatrix_one_minus_m", 1e-10), quick))
+    _record_intermediate_axis(results, intermediate_axis())
+    _record_blow_up(results, blow_up())
+    _record_lee_cases(results, lee_cases())
+    _record_numerical_damping(results, numerical_damping())
+    _record_energy_kept(results, energy_kept())
+    _record_rotations(results, rotations())
 
 
-def _separatrix(results, one_minus_m, quick):
+class Separatrix(NamedTuple):
+    one_minus_m: float
+    ellipj_error_ours: float  # over [0, 4K] against mpmath at 30 digits
+    ellipj_error_scipy: float  # scipy.special.ellipj as it is
+    period: float
+    dop853_energy_error: float  # rtol 1e-12, relative
+    splitting_energy_error: float  # order 4, h = 0.005
+    splitting_casimir_error: float
+    casimir_over_brouwer: float  # the Casimir error over 10 sqrt(N) eps, N exact rotations
+    reference_vs_dop853: float  # the reference against DOP853 at rtol 1e-13 over half a period (rad/s)
+
+
+def separatrix(one_minus_m, quick) -> Separatrix:
     """I = (1, 2, 3), omega0 = (x, 0, 1): m = x^2 / 3, so x = sqrt(3 m) puts m = 1 - one_minus_m."""
     m = 1.0 - one_minus_m
     I = np.array([1.0, 2.0, 3.0])
@@ -51,22 +65,6 @@ def _separatrix(results, one_minus_m, quick):
             ]
         )
     err_ours, err_raw = np.max(np.abs(ours - exact)), np.max(np.abs(raw - exact))
-    results.number("separatrix_one_minus_m", one_minus_m, "1")
-    results.number(
-        "separatrix_ellipj_error_ours", err_ours, "1", note="max over [0, 4K] against mpmath, 30 digits"
-    )
-    results.number(
-        "separatrix_ellipj_error_scipy", err_raw, "1", note="scipy.special.ellipj as it is (#8480)"
-    )
-    distance = shortest(one_minus_m).removeprefix("1 × ")  # 10⁻¹⁰, not 1 × 10⁻¹⁰
-    results.hard_case(
-        "separatrix_reference",
-        f"Jacobi's elliptic functions at $m$ = 1 − {distance} "
-        f"against mpmath at 30 digits, largest error over a period (SciPy's own ellipj is off by "
-        f"{format_number(err_raw, 2)} there)",
-        err_ours,
-        1e-13,
-    )
     # the body on the separatrix side: integrators stay on the energy surface over a few periods
     rate = np.sqrt((I[2] - I[1]) * (np.sum((I * w0) ** 2) - np.sum(I * w0 * w0) * I[0]) / np.prod(I))
     period = 4 * K / rate
@@ -87,7 +85,49 @@ def _separatrix(results, one_minus_m, quick):
     ).y_eval[:, :3]
     dC = np.max(np.abs(np.sum(ms * ms, axis=1) - C0)) / C0
     dHs = np.max(np.abs(0.5 * np.sum(ms * ms / I, axis=1) - H0)) / H0
-    results.number("separatrix_period", period, "time units")
+    rotations = 15 * int(T / 0.005)
+    # the reference itself against an independent integration, half a period (errors grow like e^{rate t})
+    t = np.linspace(0, period / 2, 9)
+    check = solve(
+        Problem(rhs.euler_free, w0, (0.0, t[-1]), rhs.euler_coefficients(I)),
+        "dop853",
+        rtol=1e-13,
+        atol=1e-16,
+        t_eval=t,
+    )
+    return Separatrix(
+        one_minus_m,
+        err_ours,
+        err_raw,
+        period,
+        dH,
+        dHs,
+        dC,
+        dC / (10 * np.sqrt(rotations) * np.finfo(float).eps),
+        float(np.max(np.abs(ref.free_rigid_body(I, I * w0, t) - check.y_eval))),
+    )
+
+
+def _record_separatrix(results, values: Separatrix):
+    one_minus_m, err_ours, err_raw = values.one_minus_m, values.ellipj_error_ours, values.ellipj_error_scipy
+    dH, dHs, dC = values.dop853_energy_error, values.splitting_energy_error, values.splitting_casimir_error
+    results.number("separatrix_one_minus_m", one_minus_m, "1")
+    results.number(
+        "separatrix_ellipj_error_ours", err_ours, "1", note="max over [0, 4K] against mpmath, 30 digits"
+    )
+    results.number(
+        "separatrix_ellipj_error_scipy", err_raw, "1", note="scipy.special.ellipj as it is (#8480)"
+    )
+    distance = shortest(one_minus_m).removeprefix("1 × ")  # 10⁻¹⁰, not 1 × 10⁻¹⁰
+    results.hard_case(
+        "separatrix_reference",
+        f"Jacobi's elliptic functions at $m$ = 1 − {distance} "
+        f"against mpmath at 30 digits, largest error over a period (SciPy's own ellipj is off by "
+        f"{format_number(err_raw, 2)} there)",
+        err_ours,
+        1e-13,
+    )
+    results.number("separatrix_period", values.period, "time units")
     results.number("separatrix_dop853_energy_error", dH, "1", note="rtol 1e-12")
     results.number("separatrix_splitting_energy_error", dHs, "1", note="order 4, h = 0.005")
     results.number("separatrix_splitting_casimir_error", dC, "1")
@@ -98,33 +138,28 @@ def _separatrix(results, one_minus_m, quick):
         dH,
         1e-10,
     )
-    rotations = 15 * int(T / 0.005)
     results.hard_case(
         "separatrix_casimir",
         "Near the separatrix the splitting keeps the Casimir $|\\mathbf{m}|^2$ "
         "to round-off: its relative error over $10\\sqrt{N}\\,\\varepsilon$ ($N$ exact rotations, "
         "$\\varepsilon$ the machine epsilon)",
-        dC / (10 * np.sqrt(rotations) * np.finfo(float).eps),
+        values.casimir_over_brouwer,
         1.0,
-    )
-    # the reference itself against an independent integration, half a period (errors grow like e^{rate t})
-    t = np.linspace(0, period / 2, 9)
-    check = solve(
-        Problem(rhs.euler_free, w0, (0.0, t[-1]), rhs.euler_coefficients(I)),
-        "dop853",
-        rtol=1e-13,
-        atol=1e-16,
-        t_eval=t,
     )
     results.number(
         "separatrix_reference_vs_dop853",
-        float(np.max(np.abs(ref.free_rigid_body(I, I * w0, t) - check.y_eval))),
+        values.reference_vs_dop853,
         "rad/s",
         note="half a period; the separatrix amplifies any error like e^{rate t}",
     )
 
 
-def _intermediate_axis(results):
+class IntermediateAxis(NamedTuple):
+    measured: float  # growth rate of a perturbation, fitted in the linear regime (1/time)
+    theory: float  # q0 sqrt((A - B)(B - C)/(AC))
+
+
+def intermediate_axis() -> IntermediateAxis:
     """Spin q0 about the middle axis: perturbations grow like exp(q0 sqrt((A-B)(B-C)/(AC)) t)."""
     A, B, C = 3.0, 2.0, 1.0
     q0 = 1.0
@@ -141,6 +176,11 @@ def _intermediate_axis(results):
     size = np.hypot(sol.y_eval[:, 0], sol.y_eval[:, 2])
     window = (size > 1e-8) & (size < 1e-3)
     measured = np.polyfit(t[window], np.log(size[window]), 1)[0]
+    return IntermediateAxis(measured, theory)
+
+
+def _record_intermediate_axis(results, values: IntermediateAxis):
+    measured, theory = values
     results.number(
         "intermediate_axis_growth_rate", measured, "1/time", note="fit of log|(w1, w3)| in the linear regime"
     )
@@ -154,7 +194,8 @@ def _intermediate_axis(results):
     )
 
 
-def _blow_up(results):
+def blow_up() -> pd.DataFrame:
+    """p' = m + mu p^2 from four starts: where the run stops against the closed-form blow-up time."""
     rows = []
     for m, mu, p0 in ((1.0, 1.0, 0.0), (0.5, -0.2, -2.0), (-0.3, -0.5, 0.4), (0.0, 0.7, 1.5)):
         exact = ref.riccati_blow_up_time(m, mu, p0)
@@ -170,7 +211,10 @@ def _blow_up(results):
                 "relative_difference": sol.t / exact - 1,
             }
         )
-    frame = pd.DataFrame(rows)
+    return pd.DataFrame(rows)
+
+
+def _record_blow_up(results, frame: pd.DataFrame):
     results.table(
         "blow_up",
         frame,
@@ -219,11 +263,21 @@ LEE_CASES = (
 LEE_CASE_SPAN = 3.0  # time units, or 0.9 t* where the case blows up sooner
 
 
-def _lee_cases(results):
+class LeeCase(NamedTuple):
+    name: str
+    m: float
+    mu: float
+    p0: float
+    span: float  # of the comparison
+    difference: float  # largest |p - closed form|/max(|p|, |p0|, k)
+    t_star: float | None  # where the run stops (inf if it does not blow up); None where p stays bounded
+
+
+def lee_cases() -> list[LeeCase]:
     """Each closed form of Lee (2.4) against DOP853 (relative tolerance 1e-12) on 31 times of [0, min(3, 0.9
     t*)], the difference relative to max(|p|, |p0|, k) (p may pass zero); and where p leaves every bound, the
     time the run stops (|p| passes 1e12, within 1e-12 of the pole) as the measured blow-up time."""
-    worst = 0.0
+    cases = []
     for name, m, mu, p0 in LEE_CASES:
         t_star = ref.riccati_blow_up_time(m, mu, p0)
         span = min(LEE_CASE_SPAN, 0.9 * t_star)
@@ -235,6 +289,19 @@ def _lee_cases(results):
         k = np.sqrt(abs(m / mu)) if m and mu else 0.0
         scale = np.maximum(np.abs(closed), max(abs(p0), k))
         difference = float(np.max(np.abs(sol.y_eval[:, 0] - closed) / scale))
+        stop = None
+        if np.isfinite(t_star):
+            run = solve(
+                Problem(rhs.riccati, [p0], (0.0, 2 * t_star), [m, mu]), "dop853", rtol=1e-12, atol=1e-14
+            )
+            stop = run.t if run.status == "blow-up" else np.inf
+        cases.append(LeeCase(name, m, mu, p0, span, difference, stop))
+    return cases
+
+
+def _record_lee_cases(results, cases: list[LeeCase]):
+    worst = 0.0
+    for name, m, mu, p0, span, difference, t_star in cases:
         worst = max(worst, difference)
         results.number(
             f"lee_case_{name}_closed_form_difference",
@@ -245,13 +312,10 @@ def _lee_cases(results):
                 f"{span:.4g}]"
             ),
         )
-        if np.isfinite(t_star):
-            run = solve(
-                Problem(rhs.riccati, [p0], (0.0, 2 * t_star), [m, mu]), "dop853", rtol=1e-12, atol=1e-14
-            )
+        if t_star is not None:
             results.number(
                 f"lee_case_{name}_t_star",
-                run.t if run.status == "blow-up" else np.inf,
+                t_star,
                 "time units",
                 note=f"m = {m}, mu = {mu}, p0 = {p0}: where the run stops, |p| past 10^12",
             )
@@ -273,7 +337,12 @@ def _apparent_q(change, periods):
     return -2 * np.pi * periods / change if change else np.inf
 
 
-def _numerical_damping(results, periods: int = 100):
+class Damping(NamedTuple):
+    periods: int
+    frame: pd.DataFrame  # per method and tolerance or step: the energy change and the Q it would be taken for
+
+
+def numerical_damping(periods: int = 100) -> Damping:
     """An undamped oscillator over `periods` periods: the energy each method loses, as a spurious Q."""
     T = periods * 2 * np.pi
     problem = Problem(rhs.oscillator, [1.0, 0.0], (0.0, T), [1.0])
@@ -313,7 +382,11 @@ def _numerical_damping(results, periods: int = 100):
                 "spurious_Q": np.nan,  # its energy error is bounded and oscillates: no decay, no Q
             }
         )
-    frame = pd.DataFrame(rows)
+    return Damping(periods, pd.DataFrame(rows))
+
+
+def _record_numerical_damping(results, values: Damping):
+    periods, frame = values
     results.table(
         "numerical_damping",
         frame,
@@ -377,7 +450,12 @@ def _numerical_damping(results, periods: int = 100):
     )
 
 
-def _energy_kept(results):
+class EnergyKept(NamedTuple):
+    hamilton_exact: int  # 1: sympy reduces Hamilton's equations to m x'' + k x = 0 and dH/dt = 0
+    midpoint_energy_change: dict  # lagrangian, hamiltonian -> largest relative change of E over 100 periods
+
+
+def energy_kept() -> EnergyKept:
     """The oscillator's energy is a first integral (notes: L has no t; handbook Ex. 2.5: H has no t). The
     implicit midpoint rule keeps every quadratic first integral of a linear system exactly (up to rounding),
     so E, kept by it over 100 periods, is one; sympy checks Hamilton's equations give m x'' + k x = 0, dH/dt =
@@ -389,13 +467,7 @@ def _energy_kept(results):
     xdot, pdot = sp.diff(H, p), -sp.diff(H, x)
     newton = sp.simplify(m * sp.diff(xdot, p) * pdot + k * x) == 0  # m x'' = m (d/dt)(p/m) = p' = -k x
     conserved = sp.simplify(sp.diff(H, x) * xdot + sp.diff(H, p) * pdot) == 0 and sp.diff(H, t) == 0
-    results.number(
-        "spring_hamilton_equations_exact",
-        int(newton and conserved),
-        "1",
-        note="1: Hamilton's equations of $H = p^2/2m + kx^2/2$ give $m\\ddot x + kx = 0$, and "
-        "$dH/dt = \\partial H/\\partial t = 0$ (sympy)",
-    )
+    changes = {}
     mass, stiffness = 2.0, 3.0
     omega = np.sqrt(stiffness / mass)
     for name, A, z0, energy in (
@@ -418,17 +490,39 @@ def _energy_kept(results):
         for _ in range(100 * 20):
             z = step @ z
             worst = max(worst, abs(energy(z) / e0 - 1))
+        changes[name] = float(worst)
+    return EnergyKept(int(newton and conserved), changes)
+
+
+def _record_energy_kept(results, values: EnergyKept):
+    results.number(
+        "spring_hamilton_equations_exact",
+        values.hamilton_exact,
+        "1",
+        note="1: Hamilton's equations of $H = p^2/2m + kx^2/2$ give $m\\ddot x + kx = 0$, and "
+        "$dH/dt = \\partial H/\\partial t = 0$ (sympy)",
+    )
+    for name, worst in values.midpoint_energy_change.items():
         variables = "$x$, $\\dot x$" if name == "lagrangian" else "$x$, $p$"
         results.number(
             f"oscillator_{name}_midpoint_energy_change",
-            float(worst),
+            worst,
             "1",
             note="largest relative change of $E$ over 100 periods, 20 implicit midpoint steps a period "
             f"({variables}; $m$ = 2, $k$ = 3)",
         )
 
 
-def _rotations(results, seed=22):
+class Rotations(NamedTuple):
+    trace_identity: float  # largest |Tr R - (1 + 2 cos phi)|, also after R -> B R B^T
+    orthogonality: float  # largest entry of R R^T - 1, the handbook's R (Ex. 2.2)
+    axis_misalignment: float  # 1 - |cos| of its eigenvector of eigenvalue 1 against (1, 0, 1)/sqrt2
+    rotvec_misalignment: float  # the same for scipy's rotation vector
+    angle_deg: float  # scipy's rotation angle
+    angle_from_trace_deg: float  # arccos((Tr R - 1)/2)
+
+
+def rotations(seed=22) -> Rotations:
     """Handbook 2.2.1.1: Tr A = 1 + 2 cos phi in any axes; Ex. 2.2: the printed R, its axis and its angle.
     scipy's Rotation (quaternions) is the reference for the angle and the axis."""
     from scipy.spatial.transform import Rotation
@@ -442,46 +536,54 @@ def _rotations(results, seed=22):
     worst = float(
         max(np.max(np.abs(trace - (1 + 2 * np.cos(phi)))), np.max(np.abs(similar - (1 + 2 * np.cos(phi)))))
     )
+    r6 = np.sqrt(6.0)
+    printed = np.array([[3, r6, 1], [-r6, 2, r6], [1, -r6, 3]]) / 4
+    lam, vectors = np.linalg.eig(printed)
+    axis = np.real(vectors[:, np.argmin(np.abs(lam - 1))])
+    expected = np.array([1.0, 0.0, 1.0]) / np.sqrt(2)
+    rotvec = Rotation.from_matrix(printed).as_rotvec()
+    return Rotations(
+        worst,
+        float(np.max(np.abs(printed @ printed.T - np.eye(3)))),
+        float(1 - abs(axis @ expected) / np.linalg.norm(axis)),
+        float(1 - abs(rotvec @ expected) / np.linalg.norm(rotvec)),
+        float(np.degrees(Rotation.from_matrix(printed).magnitude())),
+        float(np.degrees(np.arccos((np.trace(printed) - 1) / 2))),
+    )
+
+
+def _record_rotations(results, values: Rotations):
     results.number(
         "rotation_trace_identity",
-        worst,
+        values.trace_identity,
         "1",
         note="largest $|\\mathrm{Tr}\\,R - (1 + 2\\cos\\varphi)|$ over 1000 random rotations, also "
         "after $R \\to BRB^{\\mathsf T}$ ($\\varphi$ from scipy's quaternions)",
     )
-    r6 = np.sqrt(6.0)
-    printed = np.array([[3, r6, 1], [-r6, 2, r6], [1, -r6, 3]]) / 4
     results.number(
         "ex2_2_orthogonality",
-        float(np.max(np.abs(printed @ printed.T - np.eye(3)))),
+        values.orthogonality,
         "1",
         note="largest entry of $RR^{\\mathsf T} - 1$, the handbook's $R$",
     )
-    lam, vectors = np.linalg.eig(printed)
-    axis = np.real(vectors[:, np.argmin(np.abs(lam - 1))])
-    expected = np.array([1.0, 0.0, 1.0]) / np.sqrt(2)
     results.number(
         "ex2_2_axis_misalignment",
-        float(1 - abs(axis @ expected) / np.linalg.norm(axis)),
+        values.axis_misalignment,
         "1",
         note="$1 - |\\cos|$ of the angle between the eigenvector of eigenvalue 1 and $(1, 0, 1)/\\sqrt2$",
     )
-    rotvec = Rotation.from_matrix(printed).as_rotvec()
     results.number(
         "ex2_2_rotvec_misalignment",
-        float(1 - abs(rotvec @ expected) / np.linalg.norm(rotvec)),
+        values.rotvec_misalignment,
         "1",
         note="the same for scipy's rotation vector",
     )
     results.number(
-        "ex2_2_angle_deg",
-        float(np.degrees(Rotation.from_matrix(printed).magnitude())),
-        "°",
-        note="scipy's rotation angle of the handbook's $R$",
+        "ex2_2_angle_deg", values.angle_deg, "°", note="scipy's rotation angle of the handbook's $R$"
     )
     results.number(
         "ex2_2_angle_from_trace_deg",
-        float(np.degrees(np.arccos((np.trace(printed) - 1) / 2))),
+        values.angle_from_trace_deg,
         "°",
         note="$\\arccos((\\mathrm{Tr}\\,R - 1)/2)$",
     )

@@ -8,6 +8,8 @@ sources print (rod, disc, rectangle, sphere, cylinder, torus) and the two theore
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 import pandas as pd
 
@@ -80,9 +82,24 @@ def torus_square(a, c, n):
     return np.stack([R * np.cos(ph), R * np.sin(ph), z], axis=1), w * R
 
 
-def run(scene, results, quick):
-    n = int(scene.data.get("numerics", {}).get("nodes", 24))
-    rows = []
+class Moments(NamedTuple):
+    nodes: int  # Gauss-Legendre nodes a radius or length (twice as many trapezoidal an angle)
+    moments: list  # (number name, quadrature, closed form) per body and axis, in units of M (length)^2
+    frame: pd.DataFrame  # the same as the table: body, closed form's text, both values, relative difference
+    worst: float  # largest relative difference
+    cylinder_worst: float
+    torus_worst: float
+    perpendicular_axes: float  # I1 + I2 = I3 of the disc and the rectangle, relative residual
+    parallel_axes: float  # the rod about its end and the disc about its rim
+    parallel_axis_general: float  # the cylinder about a tilted, shifted axis
+    dumbbell_tensor: float  # largest difference from the lecture notes' printed tensor (m a^2)
+    dumbbell_J_angle_deg: float  # between J and omega
+    dumbbell_couple_z: float  # (m a^2 omega^2)
+
+
+def moments(n) -> Moments:
+    """The textbook bodies' moments by quadrature at n nodes, the two theorems and the notes' dumbbell."""
+    rows, numbers = [], []
 
     def moment(body, name, axis, value, closed, text):
         M, I = tensor(*body)
@@ -97,7 +114,7 @@ def run(scene, results, quick):
                 "relative_difference": computed / closed - 1,
             }
         )
-        results.number(value, computed, "1", note=f"in units of M (length)^2; closed form {closed:.15g}")
+        numbers.append((value, computed, closed))
         return M, I
 
     L, a, length = 1.0, 1.0, 2.0
@@ -144,9 +161,58 @@ def run(scene, results, quick):
         "$M(d^2 + c^2)$",
     )
     frame = pd.DataFrame(rows)
+    worst = float(frame.relative_difference.abs().max())
+
+    def worst_of(*names):
+        part = frame[frame.moment.isin(names) | frame.body.isin(names)]
+        return float(part.relative_difference.abs().max())
+
+    # perpendicular axes: a lamina has I1 + I2 = I3 (disc and rectangle)
+    perpendicular = max(
+        abs(Id[0, 0] + Id[1, 1] - Id[2, 2]) / Id[2, 2], abs(Ir[0, 0] + Ir[1, 1] - Ir[2, 2]) / Ir[2, 2]
+    )
+    # parallel axes: the rod about its end and the disc about its rim, and a tilted, shifted axis of the
+    # cylinder
+    end = abs(frame.quadrature[1] / (frame.quadrature[0] + 0.25) - 1)
+    rim = abs(frame.quadrature[4] / (frame.quadrature[2] + 1.0) - 1)
+    points, weights = cylinder(a, length, n)
+    nhat = np.array([np.sin(0.5), 0.0, np.cos(0.5)])
+    R = np.array([0.3, -0.7, 0.5])
+    direct = float(np.sum(weights * np.sum(np.cross(points - R, nhat) ** 2, axis=1)))
+    theorem = float(nhat @ Ic @ nhat + Mc * np.sum(np.cross(R, nhat) ** 2))
+    # the dumbbell of the lecture notes: masses m at +-(a/sqrt2, -a/sqrt2, 0), omega along e_y
+    s = 1 / np.sqrt(2)
+    _, Ib = tensor(np.array([[s, -s, 0.0], [-s, s, 0.0]]), np.array([1.0, 1.0]))
+    printed = np.array([[1.0, 1.0, 0.0], [1.0, 1.0, 0.0], [0.0, 0.0, 2.0]])
+    omega = np.array([0.0, 1.0, 0.0])
+    J = Ib @ omega
+    return Moments(
+        n,
+        numbers,
+        frame,
+        worst,
+        worst_of("cylinder, $l = 2a$", "cylinder, its axis"),
+        worst_of("torus, circular section", "torus, square section"),
+        float(perpendicular),
+        float(max(end, rim)),
+        abs(direct / theorem - 1),
+        float(np.max(np.abs(Ib - printed))),
+        float(np.degrees(np.arctan2(np.linalg.norm(np.cross(J, omega)), J @ omega))),
+        float(np.cross(omega, J)[2]),
+    )
+
+
+def run(scene, results, quick):
+    _record_moments(results, moments(int(scene.data.get("numerics", {}).get("nodes", 24))))
+
+
+def _record_moments(results, values: Moments):
+    n = values.nodes
+    for name, computed, closed in values.moments:
+        results.number(name, computed, "1", note=f"in units of M (length)^2; closed form {closed:.15g}")
     results.table(
         "moments",
-        frame,
+        values.frame,
         f"Moments of inertia by quadrature ({n} Gauss–Legendre nodes a radius or "
         f"length, {2 * n} trapezoidal nodes an angle) against the closed forms, in units of $M$ times "
         "the length squared ($l = 1$, $a = 1$; the tori: section radius $b = 1$ or half-side $c = 1$, its "
@@ -159,52 +225,19 @@ def run(scene, results, quick):
             "relative_difference": "relative difference",
         },
     )
-    worst = float(frame.relative_difference.abs().max())
-    results.number("moments_max_relative_difference", worst, "1")
-
-    def worst_of(*names):
-        part = frame[frame.moment.isin(names) | frame.body.isin(names)]
-        return float(part.relative_difference.abs().max())
-
+    results.number("moments_max_relative_difference", values.worst, "1")
+    results.number("cylinder_max_relative_difference", values.cylinder_worst, "1")
+    results.number("torus_max_relative_difference", values.torus_worst, "1")
+    results.number("perpendicular_axes_residual", values.perpendicular_axes, "1", note="disc and rectangle")
     results.number(
-        "cylinder_max_relative_difference", worst_of("cylinder, $l = 2a$", "cylinder, its axis"), "1"
+        "parallel_axes_residual", values.parallel_axes, "1", note="rod about its end, disc about its rim"
     )
-    results.number(
-        "torus_max_relative_difference", worst_of("torus, circular section", "torus, square section"), "1"
-    )
-    # perpendicular axes: a lamina has I1 + I2 = I3 (disc and rectangle)
-    perpendicular = max(
-        abs(Id[0, 0] + Id[1, 1] - Id[2, 2]) / Id[2, 2], abs(Ir[0, 0] + Ir[1, 1] - Ir[2, 2]) / Ir[2, 2]
-    )
-    results.number("perpendicular_axes_residual", float(perpendicular), "1", note="disc and rectangle")
-    # parallel axes: the rod about its end and the disc about its rim, and a tilted, shifted axis of the
-    # cylinder
-    end = abs(frame.quadrature[1] / (frame.quadrature[0] + 0.25) - 1)
-    rim = abs(frame.quadrature[4] / (frame.quadrature[2] + 1.0) - 1)
-    results.number(
-        "parallel_axes_residual", float(max(end, rim)), "1", note="rod about its end, disc about its rim"
-    )
-    points, weights = cylinder(a, length, n)
-    nhat = np.array([np.sin(0.5), 0.0, np.cos(0.5)])
-    R = np.array([0.3, -0.7, 0.5])
-    direct = float(np.sum(weights * np.sum(np.cross(points - R, nhat) ** 2, axis=1)))
-    theorem = float(nhat @ Ic @ nhat + Mc * np.sum(np.cross(R, nhat) ** 2))
     results.number(
         "parallel_axis_general_residual",
-        abs(direct / theorem - 1),
+        values.parallel_axis_general,
         "1",
         note="cylinder about a tilted axis through (0.3, -0.7, 0.5)",
     )
-    # the dumbbell of the lecture notes: masses m at +-(a/sqrt2, -a/sqrt2, 0), omega along e_y
-    s = 1 / np.sqrt(2)
-    _, Ib = tensor(np.array([[s, -s, 0.0], [-s, s, 0.0]]), np.array([1.0, 1.0]))
-    printed = np.array([[1.0, 1.0, 0.0], [1.0, 1.0, 0.0], [0.0, 0.0, 2.0]])
-    omega = np.array([0.0, 1.0, 0.0])
-    J = Ib @ omega
-    results.number("dumbbell_tensor_residual", float(np.max(np.abs(Ib - printed))), "1", note="in m a^2")
-    results.number(
-        "dumbbell_J_angle_deg",
-        float(np.degrees(np.arctan2(np.linalg.norm(np.cross(J, omega)), J @ omega))),
-        "°",
-    )
-    results.number("dumbbell_couple_z", float(np.cross(omega, J)[2]), "1", note="in m a^2 omega^2")
+    results.number("dumbbell_tensor_residual", values.dumbbell_tensor, "1", note="in m a^2")
+    results.number("dumbbell_J_angle_deg", values.dumbbell_J_angle_deg, "°")
+    results.number("dumbbell_couple_z", values.dumbbell_couple_z, "1", note="in m a^2 omega^2")

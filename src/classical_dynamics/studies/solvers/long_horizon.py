@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 import pandas as pd
 
@@ -17,23 +19,33 @@ from ...solvers.ode import Problem, solve
 EPS = np.finfo(float).eps
 
 
-def run(scene, results, quick):
-    numerics = scene.data["numerics"]
-    max_periods = min(numerics["max_periods"], 1e4) if quick else numerics["max_periods"]
+class LongHorizon(NamedTuple):
+    max_periods: float
+    step: float  # the splittings' h
+    rtol: float  # DOP853's
+    decades: np.ndarray  # the numbers of periods the table reads
+    curves: dict  # label -> (time in periods, energy error, Casimir error, steps per period)
+    frame: pd.DataFrame  # per method and decade: the largest energy and Casimir errors up to it
+    energy_growth: float  # the order-2 splitting's energy error up to the last decade over up to the first
+    casimir_over_brouwer: float  # its Casimir error over sqrt(N) eps, N steps
+    casimir_over_ten_brouwer: float  # the hard case's: over 10 sqrt(N) eps
+    dop853_drift_ratio: float  # DOP853's energy error, last decade over first
+
+
+def long_horizon(max_periods, h, rtol) -> LongHorizon:
+    """The HNW rigid body over max_periods: the splittings (order 2, 4) at step h and DOP853 at rtol."""
     I, m0 = ref.HNW_I, ref.HNW_I * ref.HNW_Y0
     period = ref.HNW_PERIOD
     H0, C0 = 0.5 * np.sum(m0 * m0 / I), np.sum(m0 * m0)
     decades = 10.0 ** np.arange(2, int(round(np.log10(max_periods))) + 1)
     rows = []
     curves = {}
-    h = numerics["step"]
     for order in (2, 4):
         n_steps = int(max_periods * period / h)
         block = max(1, n_steps // 20000)
         dH, dC = rigid_body.invariant_errors(I, m0, h, n_steps, order, block)
         t_periods = (np.arange(dH.size) + 1) * block * h / period  # end of each block
         curves[f"splitting, order {order}"] = (t_periods, dH, dC, block * h / period)
-    rtol = numerics["rtol"]
     t_eval = np.unique(np.concatenate([np.linspace(0, max_periods, 20001) * period]))
     sol = solve(
         Problem(rhs.euler_free, ref.HNW_Y0, (0.0, max_periods * period), rhs.euler_coefficients(I)),
@@ -61,6 +73,32 @@ def run(scene, results, quick):
                 }
             )
     frame = pd.DataFrame(rows)
+    s2 = frame[frame.method == "splitting, order 2"]
+    n_total = max_periods * period / h
+    d = frame[frame.method == "DOP853"]
+    return LongHorizon(
+        max_periods,
+        h,
+        rtol,
+        decades,
+        curves,
+        frame,
+        s2.energy_error_max.iloc[-1] / s2.energy_error_max.iloc[0],
+        s2.casimir_error_max.iloc[-1] / (np.sqrt(n_total) * EPS),
+        s2.casimir_error_max.iloc[-1] / (10 * np.sqrt(n_total) * EPS),
+        d.energy_error_max.iloc[-1] / d.energy_error_max.iloc[0],
+    )
+
+
+def run(scene, results, quick):
+    numerics = scene.data["numerics"]
+    max_periods = min(numerics["max_periods"], 1e4) if quick else numerics["max_periods"]
+    _record_long_horizon(results, long_horizon(max_periods, numerics["step"], numerics["rtol"]))
+
+
+def _record_long_horizon(results, values: LongHorizon):
+    max_periods, h, rtol, decades = values.max_periods, values.step, values.rtol, values.decades
+    curves, frame = values.curves, values.frame
     results.table(
         "long_horizon",
         frame,
@@ -94,7 +132,7 @@ def run(scene, results, quick):
                 color=method_colour(method),
                 label=f"Casimir, {label}",
             )
-    steps_per_period = period / h
+    steps_per_period = ref.HNW_PERIOD / h
     tt = np.logspace(0, np.log10(max_periods), 50)
     axes.loglog(
         tt,
@@ -131,19 +169,16 @@ def run(scene, results, quick):
         results.number(
             f"{key}_casimir_error_at_max", row.casimir_error_max, "1", note=f"{decades[-1]:g} periods"
         )
-    s2 = frame[frame.method == "splitting, order 2"]
-    first, final = s2.energy_error_max.iloc[0], s2.energy_error_max.iloc[-1]
-    n_total = max_periods * period / h
     results.number("max_periods", max_periods, "periods")
     results.number(
         "splitting2_energy_growth",
-        final / first,
+        values.energy_growth,
         "1",
         note=f"error up to {decades[-1]:g} periods / up to {decades[0]:g}",
     )
     results.number(
         "splitting2_casimir_over_brouwer",
-        s2.casimir_error_max.iloc[-1] / (np.sqrt(n_total) * EPS),
+        values.casimir_over_brouwer,
         "1",
         note="Casimir error / (sqrt(N) eps)",
     )
@@ -152,20 +187,19 @@ def run(scene, results, quick):
         "The second-order splitting's energy error does not grow from "
         f"{format_number(decades[0], 1)} to {format_number(decades[-1], 1)} periods: its largest value "
         "over the whole run against that over the first (ratio, at most 2)",
-        final / first,
+        values.energy_growth,
         2.0,
     )
     results.hard_case(
         "splitting_casimir_brouwer",
         "The second-order splitting's Casimir error over "
         "$10\\sqrt{N}\\,\\varepsilon$ after $N$ steps (round-off only)",
-        s2.casimir_error_max.iloc[-1] / (10 * np.sqrt(n_total) * EPS),
+        values.casimir_over_ten_brouwer,
         1.0,
     )
-    d = frame[frame.method == "DOP853"]
     results.number(
         "dop853_energy_drift_ratio",
-        d.energy_error_max.iloc[-1] / d.energy_error_max.iloc[0],
+        values.dop853_drift_ratio,
         "1",
         note=f"error up to {decades[-1]:g} periods / up to {decades[0]:g}: linear drift gives "
         f"{decades[-1] / decades[0]:g}",

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 import pandas as pd
 
@@ -64,14 +66,23 @@ def case_for(problem: str) -> tuple[wp.Case, np.ndarray | None]:
     return case, None
 
 
-def run(scene, results, quick):
-    numerics = scene.data["numerics"]
-    case, I = case_for(scene.data["problem"])
-    tolerances = [t for t in numerics["tolerances"] if not quick or t >= 1e-9]
-    steps = [h for h in numerics.get("steps", []) if not quick or h >= 0.02]
-    repeats = 3 if quick else numerics.get("repeats", 10)
+class Sweep(NamedTuple):
+    problem: str  # hnw_rigid_body or detest_b5
+    case_name: str
+    frame: pd.DataFrame  # wp.sweep's: per method and setting, errors, steps, evaluations, wall time
+    orders: dict  # the splittings' fitted orders
+    first_call_s: float  # the compiled integrator's first call over a warm one
+    invariant_drifts: dict  # (HNW only) energy, casimir -> largest relative drift along DOP853 at rtol 1e-12
+    tightest: dict  # dop853, scipy:DOP853 -> the row at the tightest tolerance
+    pair_difference: float | None  # largest |dop853/scipy - 1| of the error, rtol >= 1e-10; None without both
+    same_steps: bool | None  # the two take the same steps, rtol >= 1e-10
+
+
+def sweep(problem, methods, tolerances, steps, repeats, budget_s) -> Sweep:
+    """The work-precision sweep of one problem: each method at each tolerance (or step, for a splitting)."""
+    case, I = case_for(problem)
     entries = []
-    for method in numerics["methods"]:
+    for method in methods:
         if method.startswith("splitting"):
             entry = wp.splitting(case, I, 4 if method.endswith("4") else 2)
             entry.settings = steps
@@ -81,22 +92,56 @@ def run(scene, results, quick):
             entry.settings = [t for t in tolerances if not (slow and t < 1e-10)]  # minutes otherwise
         entries.append(entry)
     first_call_s = compile_time(case.problem, "dop853")  # one compiled loop serves both pairs
-    frame = wp.sweep(case, entries, repeats=repeats, budget_s=0.5 if quick else 2.0)
+    frame = wp.sweep(case, entries, repeats=repeats, budget_s=budget_s)
     orders = wp.fitted_orders(frame)
-    accuracy = frame.drop(columns=["seconds", "runs"])
     # handbook (2.154)-(2.155): T and L^2 kept, to DOP853's accuracy
-    if scene.data["problem"] == "hnw_rigid_body":
+    drifts = {}
+    if problem == "hnw_rigid_body":
         run = wp.adaptive(case, "dop853").run(1e-12, True)  # its own run: a quick build's sweep stops at 1e-9
-        for invariant, label in (("energy", "$T$"), ("casimir", "$L^2$")):
+        for invariant in ("energy", "casimir"):
             values = case.invariants[invariant](run.y_steps)
-            results.number(
-                f"dop853_rtol_1e-12_{invariant}_drift",
-                float(np.max(np.abs(values - values[0])) / abs(values[0])),
-                "1",
-                note=f"largest relative drift of {label} at the steps of DOP853, rtol $10^{{-12}}$",
-            )
-    headers = accuracy_headers(scene.data["problem"])
-    name = NAMES[case.name]
+            drifts[invariant] = float(np.max(np.abs(values - values[0])) / abs(values[0]))
+    # the error reached at each tolerance by the compiled pair and scipy's: the same step sequence
+    tightest = {}
+    for method in ("dop853", "scipy:DOP853"):
+        part = frame[(frame.method == method)]
+        if len(part):
+            tightest[method] = part[part.setting == part.setting.min()].iloc[0]
+    pair = frame[frame.method.isin(["dop853", "scipy:DOP853"]) & (frame.setting >= 1e-10)]
+    both = pair.pivot_table(index="setting", columns="method", values="error_final")
+    pair_steps = pair.pivot_table(index="setting", columns="method", values="steps")
+    difference = same = None
+    if both.shape[1] == 2:
+        # above round-off only: at rtol 1e-12 both errors are ~1e-13 and differ by round-off
+        difference = float(np.max(np.abs(both["dop853"] / both["scipy:DOP853"] - 1)))
+        same = bool((pair_steps["dop853"] == pair_steps["scipy:DOP853"]).all())
+    return Sweep(problem, case.name, frame, orders, first_call_s, drifts, tightest, difference, same)
+
+
+def run(scene, results, quick):
+    numerics = scene.data["numerics"]
+    tolerances = [t for t in numerics["tolerances"] if not quick or t >= 1e-9]
+    steps = [h for h in numerics.get("steps", []) if not quick or h >= 0.02]
+    repeats = 3 if quick else numerics.get("repeats", 10)
+    values = sweep(
+        scene.data["problem"], numerics["methods"], tolerances, steps, repeats, 0.5 if quick else 2.0
+    )
+    _record_sweep(results, values)
+
+
+def _record_sweep(results, values: Sweep):
+    frame, orders = values.frame, values.orders
+    accuracy = frame.drop(columns=["seconds", "runs"])
+    for invariant, drift in values.invariant_drifts.items():
+        label = {"energy": "$T$", "casimir": "$L^2$"}[invariant]
+        results.number(
+            f"dop853_rtol_1e-12_{invariant}_drift",
+            drift,
+            "1",
+            note=f"largest relative drift of {label} at the steps of DOP853, rtol $10^{{-12}}$",
+        )
+    headers = accuracy_headers(values.problem)
+    name = NAMES[values.case_name]
     results.table(
         "accuracy",
         accuracy,
@@ -155,38 +200,26 @@ def run(scene, results, quick):
     # A measured time belongs with the timings, not in summary.json (which two builds must write identically).
     results.timing_table(
         "first_call",
-        pd.DataFrame([{"first_call_extra_s": first_call_s}]),
+        pd.DataFrame([{"first_call_extra_s": values.first_call_s}]),
         f"The {name}: how much longer the first call of the compiled integrator for this right-hand "
         "side took than a warm call (compilation, or loading the cached machine code); it is kept "
         "out of the run times.",
         headers={"first_call_extra_s": "extra time of the first call (s)"},
     )
-    # the error reached at each tolerance by the compiled pair and scipy's: the same step sequence
-    for method in ("dop853", "scipy:DOP853"):
-        part = frame[(frame.method == method)]
-        if len(part):
-            tight = part[part.setting == part.setting.min()].iloc[0]
-            results.number(
-                f"{method.replace(':', '_').lower()}_error_at_tightest",
-                tight.error_final,
-                "1",
-                note=f"rtol = {tight.setting:g}",
-            )
-            results.number(f"{method.replace(':', '_').lower()}_steps_at_tightest", int(tight.steps), "steps")
-    pair = frame[frame.method.isin(["dop853", "scipy:DOP853"]) & (frame.setting >= 1e-10)]
-    both = pair.pivot_table(index="setting", columns="method", values="error_final")
-    steps = pair.pivot_table(index="setting", columns="method", values="steps")
-    if both.shape[1] == 2:
+    for method, tight in values.tightest.items():
+        results.number(
+            f"{method.replace(':', '_').lower()}_error_at_tightest",
+            tight.error_final,
+            "1",
+            note=f"rtol = {tight.setting:g}",
+        )
+        results.number(f"{method.replace(':', '_').lower()}_steps_at_tightest", int(tight.steps), "steps")
+    if values.pair_difference is not None:
         # above round-off only: at rtol 1e-12 both errors are ~1e-13 and differ by round-off
         results.number(
             "dop853_vs_scipy_max_relative_difference",
-            float(np.max(np.abs(both["dop853"] / both["scipy:DOP853"] - 1))),
+            values.pair_difference,
             "1",
             note="rtol >= 1e-10: the compiled DOP853 reproduces scipy's errors (same tableau and control)",
         )
-        results.number(
-            "dop853_same_steps_as_scipy",
-            bool((steps["dop853"] == steps["scipy:DOP853"]).all()),
-            "bool",
-            note="rtol >= 1e-10",
-        )
+        results.number("dop853_same_steps_as_scipy", values.same_steps, "bool", note="rtol >= 1e-10")
