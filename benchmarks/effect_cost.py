@@ -19,6 +19,7 @@ from numba import njit
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "src"))
 from classical_dynamics.models import chains, earth, wobble
+from classical_dynamics.models import heavy_top as top_model
 from classical_dynamics.models import precession as prec
 from classical_dynamics.models import self_excited as se
 from classical_dynamics.models.viscous_medium import viscous_symmetric
@@ -26,7 +27,6 @@ from classical_dynamics.provenance import software_stamp
 from classical_dynamics.solvers.ode import Problem, solve
 from classical_dynamics.solvers.timing import min_time
 from classical_dynamics.studies.self_excited import viscous
-from classical_dynamics.studies.solvers import top_model
 
 
 def _without(effects: dict, name: str | None) -> dict:

@@ -187,7 +187,8 @@ def test_rotation_checks_and_kept_energy():
 
 
 def test_reciprocal_theorem_needs_the_reversal():
-    from classical_dynamics.studies.solvers import heavy_top, top_model
+    from classical_dynamics.models import heavy_top as top_model
+    from classical_dynamics.studies.solvers import heavy_top
 
     r = heavy_top.reciprocal(top_model.Top(1.0, 0.5, 1.0), 6.0, np.radians(60.0))
     assert r.relative_difference < 1e-6

@@ -9,13 +9,13 @@ import numpy as np
 import pytest
 
 from classical_dynamics.models import chains, earth, wobble
+from classical_dynamics.models import heavy_top as top_model
 from classical_dynamics.models import precession as prec
 from classical_dynamics.models import self_excited as se
 from classical_dynamics.models.viscous_medium import viscous_symmetric
 from classical_dynamics.solvers.ode import Problem, solve
 from classical_dynamics.studies.self_excited import viscous
 from classical_dynamics.studies.solvers import EFFECTS as SOLVER_EFFECTS
-from classical_dynamics.studies.solvers import top_model
 
 
 # --- chains: a string of beads with springs beside its tension ------------------------------------------

@@ -7,7 +7,8 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from classical_dynamics.studies.solvers import heavy_top, top_model
+from classical_dynamics.models import heavy_top as top_model
+from classical_dynamics.studies.solvers import heavy_top
 
 TOP = top_model.Top(1.0, 0.5, 1.0)  # the scene's body: A = Mgh = 1, C = 1/2
 SPIN = 6.0

@@ -346,9 +346,9 @@ def test_batch_with_parameters_per_row():
         assert np.array_equal(solve(Problem(rhs.riccati, row, (0.0, 0.3), p), rtol=1e-10, atol=1e-12).y, y)
 
 
-# --- the heavy symmetric top (studies/solvers/top_model.py) against its closed forms ------------------------
+# --- the heavy symmetric top (models/heavy_top.py) against its closed forms ------------------------
 def test_heavy_top_steady_roots_solve_lambs_quadratic():
-    from classical_dynamics.studies.solvers import top_model as tm
+    from classical_dynamics.models import heavy_top as tm
 
     A, Mgh, J3 = 1.0, 1.0, 3.0
     for alpha in np.radians([20.0, 60.0, 89.0, 120.0]):
@@ -361,7 +361,7 @@ def test_heavy_top_steady_roots_solve_lambs_quadratic():
 
 
 def test_heavy_top_nutates_between_the_roots_of_the_cubic():
-    from classical_dynamics.studies.solvers import top_model as tm
+    from classical_dynamics.models import heavy_top as tm
 
     top = tm.Top(1.0, 0.5, 1.0)
     y0 = top.state(np.radians(50.0), 0.0, 0.1, 5.0)

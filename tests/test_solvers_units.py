@@ -13,8 +13,9 @@ import numpy as np
 import pytest
 from scipy.integrate import quad, solve_ivp
 
+from classical_dynamics.models import heavy_top as top_model
 from classical_dynamics.results import Results
-from classical_dynamics.studies.solvers import hard_cases, heavy_top, inertia, long_horizon, sweeps, top_model
+from classical_dynamics.studies.solvers import hard_cases, heavy_top, inertia, long_horizon, sweeps
 
 from .conftest import assert_refused
 

@@ -128,3 +128,12 @@ def euler_free_many(t, y, p, out):
         out[i] = (B - C) * w1 * w2 / A
         out[m + i] = (C - A) * w2 * w0 / B
         out[2 * m + i] = (A - B) * w0 * w1 / C
+
+
+@rhs_function
+def retarded_euler(t, w, p, out):
+    """p = (A/C, kappa/C): Euler's equations of the symmetric body with the couple -kappa omega (C = 1)."""
+    a, k = p[0], p[1]
+    out[0] = ((a - 1.0) * w[1] * w[2] - k * w[0]) / a
+    out[1] = ((1.0 - a) * w[2] * w[0] - k * w[1]) / a
+    out[2] = -k * w[2]

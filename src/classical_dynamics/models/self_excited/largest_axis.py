@@ -276,3 +276,17 @@ def limit_cycle_period(m1: float, nu: float) -> float:
 def nu_star(m1: float) -> float:
     """The drag at which the limit cycles F, F1 vanish (0 < m1 < 1): m1 / (2 sqrt(1 - m1^2))."""
     return m1 / (2.0 * np.sqrt(1.0 - m1**2))
+
+
+@rhs_function
+def euler_largest_angles(t, w, p, out):
+    """Lee (2.2) and the kinematic equations (1.2) solved for the angles: w = (p, q, r, psi, theta, phi)."""
+    out[0] = p[0] * w[1] * w[2] + p[3]
+    if p[4] != 0.0:
+        out[0] += p[4] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2])
+    out[1] = -p[1] * w[2] * w[0]
+    out[2] = p[2] * w[0] * w[1]
+    s, c = np.sin(w[5]), np.cos(w[5])
+    out[3] = (w[0] * s + w[1] * c) / np.sin(w[4])
+    out[4] = w[0] * c - w[1] * s
+    out[5] = w[2] - out[3] * np.cos(w[4])

@@ -321,3 +321,12 @@ def lyapunov_period(k_sq: float, beta2: float, beta3: float, mu1: float, eta: fl
     h2 = (5 * beta2**2 + 10 * beta2 * k_sq * mu1 + 3 * beta3 * k_sq + 8 * k_sq**2 * mu1**2) / (48 * k_sq**2)
     h3 = -(beta2 + 4 * k_sq * mu1) / (3 * k_sq) * h2
     return 2.0 * np.pi / np.sqrt(k_sq) * (1.0 + h2 * eta**2 + h3 * eta**3)
+
+
+@rhs_function
+def euler_middle_phase(t, w, p, out):
+    """Lee (3.1) with the phase phi = int q dt as a fourth state; p = (a, b, c, m, mu)."""
+    out[0] = p[0] * w[1] * w[2]
+    out[1] = -p[1] * w[2] * w[0] + p[3] + p[4] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2])
+    out[2] = p[2] * w[0] * w[1]
+    out[3] = w[1]

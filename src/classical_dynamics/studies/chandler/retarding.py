@@ -13,20 +13,11 @@ from __future__ import annotations
 import numpy as np
 
 from ...formatting import shortest
+from ...models import rigid_body
 from ...solvers.ode import Problem, solve
-from ...solvers.runge_kutta import rhs_function
 
 RTOL = 1e-12
 SAMPLES = 2001
-
-
-@rhs_function
-def retarded_euler(t, w, p, out):
-    """p = (A/C, kappa/C): Euler's equations of the symmetric body with the couple -kappa omega (C = 1)."""
-    a, k = p[0], p[1]
-    out[0] = ((a - 1.0) * w[1] * w[2] - k * w[0]) / a
-    out[1] = ((1.0 - a) * w[2] * w[0] - k * w[1]) / a
-    out[2] = -k * w[2]
 
 
 def decay_rate(a, kappa, tilt, span):
@@ -34,7 +25,7 @@ def decay_rate(a, kappa, tilt, span):
     w0 = np.array([np.sin(tilt), 0.0, np.cos(tilt)])
     t = np.linspace(0.0, span, SAMPLES)
     sol = solve(
-        Problem(retarded_euler, w0, (0.0, span), np.array([a, kappa]), name="retarded"),
+        Problem(rigid_body.retarded_euler, w0, (0.0, span), np.array([a, kappa]), name="retarded"),
         "dop853",
         rtol=RTOL,
         atol=1e-20,

@@ -26,15 +26,6 @@ from ...solvers.runge_kutta import rhs_function
 from . import portrait
 
 
-@rhs_function
-def euler_middle_phase(t, w, p, out):
-    """Lee (3.1) with the phase phi = int q dt as a fourth state; p = (a, b, c, m, mu)."""
-    out[0] = p[0] * w[1] * w[2]
-    out[1] = -p[1] * w[2] * w[0] + p[3] + p[4] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2])
-    out[2] = p[2] * w[0] * w[1]
-    out[3] = w[1]
-
-
 class GeneralSolution(NamedTuple):
     """Lee (3.3) and (3.8) along Euler's equations (relative errors)."""
 
@@ -49,7 +40,7 @@ def general_solution(M, w0, t_end) -> GeneralSolution:
     a, b, c = M.body.a, M.body.b, M.body.c
     t = np.linspace(0.0, t_end, 401)
     sol = solve(
-        Problem(euler_middle_phase, np.r_[w0, 0.0], (0.0, t_end), M.euler_parameters()),
+        Problem(se.euler_middle_phase, np.r_[w0, 0.0], (0.0, t_end), M.euler_parameters()),
         "dop853",
         rtol=1e-13,
         atol=1e-15,

@@ -19,27 +19,12 @@ import numpy as np
 
 from ...models import self_excited as se
 from ...solvers.ode import Events, Problem, solve
-from ...solvers.runge_kutta import rhs_function
 from . import motions
 
 RTOL, ATOL = 1e-13, 1e-15
 PERIODS = 4  # periods of omega drawn and checked
 START_ANGLES = (0.0, 1.2, 0.0)  # Euler's angles at t = 0: body z 1.2 rad from space Z, off the poles of (1.2)
 GAUSS_NODES = 8
-
-
-@rhs_function
-def euler_largest_angles(t, w, p, out):
-    """Lee (2.2) and the kinematic equations (1.2) solved for the angles: w = (p, q, r, psi, theta, phi)."""
-    out[0] = p[0] * w[1] * w[2] + p[3]
-    if p[4] != 0.0:
-        out[0] += p[4] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2])
-    out[1] = -p[1] * w[2] * w[0]
-    out[2] = p[2] * w[0] * w[1]
-    s, c = np.sin(w[5]), np.cos(w[5])
-    out[3] = (w[0] * s + w[1] * c) / np.sin(w[4])
-    out[4] = w[0] * c - w[1] * s
-    out[5] = w[2] - out[3] * np.cos(w[4])
 
 
 def _rz(a):
@@ -135,7 +120,7 @@ def motion(L: se.LargestAxis, body: se.Body, w0: np.ndarray) -> SpaceMotion:
         t_eval=t,
     )
     ang = solve(
-        Problem(euler_largest_angles, np.r_[w0, START_ANGLES], (0.0, span), P),
+        Problem(se.euler_largest_angles, np.r_[w0, START_ANGLES], (0.0, span), P),
         "dop853",
         rtol=RTOL,
         atol=ATOL,

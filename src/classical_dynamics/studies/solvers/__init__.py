@@ -11,11 +11,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ...models.heavy_top import EFFECTS  # the test problems have no effects; the heavy top has gravity
 from ...scenes import Scene, SceneError
 from ...scenes.cost import check_step
 from ...solvers.references import HNW_PERIOD
 from .cost import SWEEP_SPAN, cost
-from .top_model import EFFECTS  # the test problems have no effects; the heavy top has gravity
 
 __all__ = ["EFFECTS", "check", "cost", "run"]
 

@@ -193,7 +193,7 @@ def _long_horizon(numerics: dict) -> list[Work]:
 
 # --- the heavy top ------------------------------------------------------------------------------------------
 def steady_roots(A: float, J3: float, Mgh: float, alpha: float):
-    """top_model.steady_roots in plain floats: (slow, fast), or None below the threshold."""
+    """models.heavy_top.steady_roots in plain floats: (slow, fast), or None below the threshold."""
     c = math.cos(alpha)
     disc = J3 * J3 - 4.0 * A * Mgh * c
     if disc < 0:
@@ -207,7 +207,7 @@ def nutation_period(A: float, C: float, Mgh: float, spin: float, alpha: float) -
     the study's own closed form; inf where it has none."""
     import numpy as np
 
-    from .top_model import Nutation
+    from ...models.heavy_top import Nutation
 
     roots = steady_roots(A, C * spin, Mgh, alpha)
     if roots is None:

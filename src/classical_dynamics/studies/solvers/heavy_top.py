@@ -1,9 +1,10 @@
 """The heavy symmetric top (scene heavy_top): the body-frame integration against its closed forms.
 
-Every reference is a closed form of the integrals J3, Jz, E (top_model.Nutation: the roots of the cubic in cos
-theta, Jacobi's sn^2 for cos theta(t), the apsidal angle by quadrature), the quadratic of steady precession
-(Lamb Art. 54 (8)), Lamb's small-oscillation frequency (Art. 57 (13)) and the roots of the sleeping top (Art.
-79), never the integrator. Runs are DOP853 at the scene's relative tolerance; apses are events theta' = 0.
+Every reference is a closed form of the integrals J3, Jz, E (models/heavy_top.py, Nutation: the roots of the
+cubic in cos theta, Jacobi's sn^2 for cos theta(t), the apsidal angle by quadrature), the quadratic of steady
+precession (Lamb Art. 54 (8)), Lamb's small-oscillation frequency (Art. 57 (13)) and the roots of the sleeping
+top (Art. 79), never the integrator. Runs are DOP853 at the scene's relative tolerance; apses are events
+theta' = 0.
 """
 
 from __future__ import annotations
@@ -14,12 +15,12 @@ import numpy as np
 import pandas as pd
 
 from ...figure_style import PAIR_WIDTH_IN
+from ...models import heavy_top as tm
 from ...models import rigid_body
 from ...provenance import software_stamp
 from ...results import new_figure
 from ...solvers.ode import Events, Problem, solve
 from ...solvers.timing import min_time
-from . import top_model as tm
 
 
 def _run(top, y0, T, rtol, t_eval=None, events=True, record=False, method="dop853"):

@@ -1,5 +1,5 @@
-"""The heavy symmetric top in the body frame, and its closed forms (kept apart from the checks of
-heavy_top.py).
+"""The heavy symmetric top in the body frame, and its closed forms (the solvers study's
+studies/solvers/heavy_top.py checks them).
 
 Moments A, A, C about the fixed point, centre of gravity at h on the figure axis e3, weight Mg. The state is
 
@@ -32,8 +32,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import integrate, optimize, special
 
-from ...scenes import EffectRegistry
-from ...solvers.runge_kutta import rhs_function
+from ..scenes import EffectRegistry
+from ..solvers.runge_kutta import rhs_function
 
 EFFECTS = EffectRegistry("solvers")
 
@@ -244,7 +244,7 @@ class Nutation:
 
     def cos_theta(self, t, u0):
         """u(t) from the apse u0 (u1 or u2) at t = 0."""
-        from ...solvers.references import ellipj
+        from ..solvers.references import ellipj
 
         K = special.ellipk(self.m)
         shift = 0.0 if abs(u0 - self.u1) < abs(u0 - self.u2) else K
