@@ -49,6 +49,8 @@ def asked(dry_run: str) -> dict[str, dict]:
     return asks
 
 
+# the build's own budget (2400 s, below) is the guard: pytest-timeout's 900 s cut it first on 2 cores
+@pytest.mark.timeout(2400)
 def test_the_quick_build_on_slurm_is_the_local_one(cluster, built_repo, tmp_path):
     repo = copy_repository(tmp_path / "repo")
     done = snakemake(repo, *PROFILE, "--config", "quick=1", timeout=2400)
