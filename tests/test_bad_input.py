@@ -50,6 +50,9 @@ def test_a_bad_scene_is_refused_in_one_line_naming_its_field(tmp_path, case):
     message = refuse(case, tmp_path)
     assert "\n" not in message
     assert message.startswith(f"{tmp_path / case.name}: field '{_field(case)}"), message
+    # refused for its reason: a physical refusal says which consistency the scene broke
+    assert case.kind != "physics" or case.says, f"{case.id}: a physics case names what its refusal says"
+    assert case.says in message.split(": expected ", 1)[-1], message
 
 
 def _digest(folder: Path) -> str:

@@ -105,3 +105,37 @@ def test_the_top_level_is_the_layout_the_project_card_names():
     for name in ("templates/report.html.j2", "templates/print.css", "references.bib", "ledger/lee1964.yaml"):
         assert (root / "report" / name).is_file()
     assert assets.TEMPLATES == (root / "report/templates").resolve()
+
+
+# Test modules that import models/ or a study but read the tree itself (import graphs, digests, the package's
+# files, the built report): mutmut runs the tests in its rewritten copy, where they would fail for its sake
+READS_THE_TREE = {
+    "test_code_dependencies.py",
+    "test_code_layout.py",
+    "test_package.py",
+    "test_report_navigation.py",
+    "test_report_render.py",
+    "test_snakemake_report.py",
+    "test_report_units.py",
+    "test_io_and_report_units.py",
+}
+
+
+def test_mutation_testing_runs_every_test_of_the_code_it_mutates():
+    """`make mutants` scores the studies and models by pyproject's test selection: a test module that imports
+    them and is left out of it lets a mutant it would kill survive (test_bad_input.py was, and every refusal
+    message of check() survived)."""
+    import re
+    import tomllib
+
+    from .conftest import ROOT
+
+    selection = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["mutmut"]
+    selected = {path.removeprefix("tests/") for path in selection["pytest_add_cli_args_test_selection"]}
+    reaching = {
+        path.name
+        for path in (ROOT / "tests").glob("test_*.py")
+        if re.search(r"classical_dynamics(\.| import .*\b)(studies|models)\b", path.read_text())
+    }
+    assert reaching - READS_THE_TREE <= selected, sorted(reaching - READS_THE_TREE - selected)
+    assert not (selected & READS_THE_TREE)

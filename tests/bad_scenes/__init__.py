@@ -34,6 +34,7 @@ class BadScene:
     text: bytes | None = None  # the file's bytes instead of base + set
     make: Callable[[Path], None] | None = None  # makes the file itself (links, pipes); overrides the rest
     name: str = "bad_scene.yaml"
+    says: str = ""  # what the refusal must say was expected: the physical reason (every physics case)
 
     def write(self, folder: Path) -> Path:
         """The bad scene, written into folder; its path."""
@@ -62,8 +63,9 @@ class BadScene:
         return data
 
 
-def case(study: str, id_: str, kind: str, field: str, base: str, **set_) -> BadScene:
-    """A shipped scene of `study` with fields changed: a__b=v sets a.b, a__0=v the first item of a."""
+def case(study: str, id_: str, kind: str, field: str, base: str, says: str = "", **set_) -> BadScene:
+    """A shipped scene of `study` with fields changed: a__b=v sets a.b, a__0=v the first item of a; `says`
+    is what its refusal must give as expected."""
     return BadScene(
         f"{study}-{id_}",
         study,
@@ -71,6 +73,7 @@ def case(study: str, id_: str, kind: str, field: str, base: str, **set_) -> BadS
         field,
         base=base,
         set={key.replace("__", "."): value for key, value in set_.items()},
+        says=says,
     )
 
 

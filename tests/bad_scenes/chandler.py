@@ -121,15 +121,31 @@ CASES = [
         "effects.elastic_yielding.k2",
         DAMPED,
         effects__elastic_yielding__k2=2.0,
+        says="below the fluid value k_s",
     ),
-    _case("dissipation-rigid", "physics", "effects.dissipation", DAMPED, effects__elastic_yielding=DELETE),
-    _case("end-before-start", "physics", "observation.end_year", OBSERVED, observation__end_year=1960.0),
+    _case(
+        "dissipation-rigid",
+        "physics",
+        "effects.dissipation",
+        DAMPED,
+        effects__elastic_yielding=DELETE,
+        says="elastic_yielding as well",
+    ),
+    _case(
+        "end-before-start",
+        "physics",
+        "observation.end_year",
+        OBSERVED,
+        observation__end_year=1960.0,
+        says="a year after start_year",
+    ),
     _case(
         "window-longer-than-span",
         "physics",
         "observation.window_years",
         OBSERVED,
         observation__window_years=300.0,
+        says="no longer than the span",
     ),
     _case(
         "poinsot-order",
@@ -137,6 +153,7 @@ CASES = [
         "analysis.poinsot.moments",
         TRIAXIAL,
         analysis__poinsot__moments=[2.5, 2.0, 1.0],
+        says="A < B < C",
     ),
     _case(
         "two-kinds",
@@ -144,5 +161,6 @@ CASES = [
         "earth",
         OBSERVED,
         earth={"H": 0.00327, "H_definition": "(C-A)/C", "H_source": "s"},
+        says="one of `earth`",
     ),
 ]

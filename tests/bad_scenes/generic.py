@@ -71,7 +71,15 @@ def _cases(study: str) -> list[BadScene]:
             text=good + b"extra: !!python/object/apply:os.system ['true']\n",
         ),
         BadScene(f"{study}-broken", study, "yaml", "(YAML at", text=good + b"title: [unclosed\n"),
-        BadScene(f"{study}-nan-title", study, "range", "title", base=base, set={"title": float("nan")}),
+        BadScene(
+            f"{study}-nan-title",
+            study,
+            "range",
+            "title",
+            base=base,
+            set={"title": float("nan")},
+            says="a string",
+        ),
         BadScene(f"{study}-unknown-key", study, "schema", "colour", base=base, set={"colour": "red"}),
     ]
 

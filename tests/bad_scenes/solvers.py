@@ -56,6 +56,7 @@ CASES = [
         LONG,
         numerics__max_periods=1e7,
         numerics__step=0.001,
+        says="periods at rtol 1e-10",
     ),
     _case(
         "repeats-1000-thirty-tolerances",
@@ -151,7 +152,9 @@ CASES = [
         numerics__separatrix_one_minus_m=1e300,
     ),
     _case("too-many-tolerances", "range", "numerics.tolerances", DETEST, numerics__tolerances=[1e-6] * 31),
-    _case("title-too-long", "range", "title", INERTIA, title="t" * 201),
+    _case(
+        "title-too-long", "range", "title", INERTIA, title="t" * 201, says="a text of at most 200 characters"
+    ),
     # the schema's shape
     _case("problem-unknown", "schema", "problem", HNW, problem="kepler"),
     _case("method-unknown", "schema", "numerics.methods.0", HNW, numerics__methods=["euler"]),
@@ -162,14 +165,37 @@ CASES = [
     _case("long-missing-step", "schema", "numerics.step", LONG, numerics__step=DELETE),
     _case("sweep-missing-tolerances", "schema", "numerics.tolerances", HNW, numerics__tolerances=DELETE),
     # physics
-    _case("top-not-a-body", "physics", "top.C", TOP, top__C=3.0),
-    _case("top-without-gravity", "physics", "effects.gravity", TOP, effects=DELETE),
-    _case("top-below-steady-precession", "physics", "top.spin", TOP, top__spin=1.0),
-    _case("top-too-slender-at-spin-6", "physics", "top.C", TOP, top__C=0.2, top__spin=30.0),
+    _case("top-not-a-body", "physics", "top.C", TOP, top__C=3.0, says="C <= A + B"),
     _case(
-        "splitting-on-the-top", "physics", "numerics.methods", TOP, numerics__methods=["dop853", "splitting4"]
+        "top-without-gravity",
+        "physics",
+        "effects.gravity",
+        TOP,
+        effects=DELETE,
+        says="the heavy top's weight",
     ),
-    _case("effects-on-a-test-problem", "physics", "effects", HNW, effects={"gravity": {"Mgh": 1.0}}),
+    _case(
+        "top-below-steady-precession", "physics", "top.spin", TOP, top__spin=1.0, says="a spin of at least"
+    ),
+    _case(
+        "top-too-slender-at-spin-6", "physics", "top.C", TOP, top__C=0.2, top__spin=30.0, says="C of at least"
+    ),
+    _case(
+        "splitting-on-the-top",
+        "physics",
+        "numerics.methods",
+        TOP,
+        numerics__methods=["dop853", "splitting4"],
+        says="splitting needs a free rigid body",
+    ),
+    _case(
+        "effects-on-a-test-problem",
+        "physics",
+        "effects",
+        HNW,
+        effects={"gravity": {"Mgh": 1.0}},
+        says="no effects",
+    ),
     _case(
         "splitting-on-detest",
         "physics",
@@ -177,8 +203,16 @@ CASES = [
         DETEST,
         numerics__methods=["splitting2"],
         numerics__steps=[0.1, 0.05],
+        says="splitting needs a free rigid body",
     ),
-    _case("splitting-without-steps", "physics", "numerics.steps", HNW, numerics__steps=DELETE),
+    _case(
+        "splitting-without-steps",
+        "physics",
+        "numerics.steps",
+        HNW,
+        numerics__steps=DELETE,
+        says="step sizes for the splitting methods",
+    ),
     _case(
         "long-rtol-tight-1e7",
         "physics",
@@ -186,5 +220,6 @@ CASES = [
         LONG,
         numerics__max_periods=1e7,
         numerics__rtol=1e-13,
+        says="periods at rtol 1e-13",
     ),
 ]

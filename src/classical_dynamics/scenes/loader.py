@@ -152,9 +152,25 @@ def _expected_from(error: jsonschema.ValidationError) -> tuple[str, str, object,
         "minProperties": lambda: f"at least {value} " + ("entry" if value == 1 else "entries"),
         "maxProperties": lambda: f"at most {value} " + ("entry" if value == 1 else "entries"),
         "pattern": lambda: f"text matching {value}",
+        "minLength": lambda: f"a text of at least {value} characters",
+        "maxLength": lambda: f"a text of at most {value} characters",
+        "oneOf": lambda: " or ".join(_alternative_words(choice) for choice in value),
+        "anyOf": lambda: " or ".join(_alternative_words(choice) for choice in value),
     }
     expected = words[v]() if v in words else error.message
     return path, expected, error.instance, True
+
+
+def _alternative_words(schema: dict) -> str:
+    """One alternative of a oneOf as a reader says it: 'nu_c', a number from 0 to 100, a list."""
+    if "const" in schema:
+        return repr(schema["const"])
+    words = _type_words(schema.get("type", "value"))
+    low = schema.get("minimum", schema.get("exclusiveMinimum"))
+    high = schema.get("maximum", schema.get("exclusiveMaximum"))
+    if low is not None and high is not None:
+        return f"{words} from {low:g} to {high:g}"
+    return words
 
 
 def _reject_non_finite(data, path=""):
@@ -235,11 +251,6 @@ def load_scene(
     data = read_yaml(path, raw)
     if not isinstance(data, dict):
         raise SceneError(path, "(top level)", "a mapping of scene fields", data)
-    try:
-        _reject_non_finite(data)
-    except ValueError as exc:
-        field_name = str(exc)
-        raise SceneError(path, field_name, "a finite number", lookup(data, field_name)) from None
     known = sorted(known_effects)
     effects = data.get("effects")
     if isinstance(effects, dict):
@@ -253,6 +264,13 @@ def load_scene(
     if error is not None:
         field_name, expected, got, has_got = _expected_from(error)
         raise SceneError(path, field_name, expected, got, has_got=has_got)
+    # after the schema: a NaN where a text belongs is "a string", not "a finite number" (and NaN passes
+    # every minimum and maximum, so the schema alone would let it through)
+    try:
+        _reject_non_finite(data)
+    except ValueError as exc:
+        field_name = str(exc)
+        raise SceneError(path, field_name, "a finite number", lookup(data, field_name)) from None
     _check_math(path, data)
     if check is not None:
         try:
