@@ -27,7 +27,7 @@ def write_scene(results_dir, rows=2, study="chains", scene="toy"):
     r.number("pair", [1.5, 2.5], "1")
     frame = pd.DataFrame({"k": range(1, rows + 1), "period": [5.2254813 / k for k in range(1, rows + 1)]})
     frame["name"] = ["node_regression"] * rows
-    r.table("modes", frame, "The modes.", headers={"k": "$k$", "period": "period (s)"})
+    r.table("modes", frame, "The modes.", headers={"k": "$k$", "period": "period (s)", "name": "effect"})
     fig, ax = new_figure(3.0, 2.0)
     ax.plot([0.0, 1.0], [1.0, 0.5])
     r.figure("line", fig, "A line.")
@@ -334,3 +334,24 @@ def test_the_context_of_a_partial_build_sums_its_times_and_pins_the_results_arch
     finally:
         archive.unlink()
     assert report._benchmark("no_such_benchmark") is None
+
+
+def test_a_result_with_an_unregistered_unit_or_a_bare_column_stops_where_it_is_written():
+    """A unit the registry does not know, or a table whose headers leave a column out, would reach the
+    reader as code ('XX1XX', 'step_hours'): the run stops at the record that wrote it, not in the report."""
+    from classical_dynamics.units import UnknownUnit
+
+    r = Results("chains", "toy", "A toy scene")
+    with pytest.raises(UnknownUnit, match="furlongs"):
+        r.number("length", 1.0, "furlongs")
+    with pytest.raises(UnknownUnit, match="fortnights"):
+        r.hard_case("late", "a late case", 1.0, 2.0, unit="fortnights")
+    frame = pd.DataFrame({"k": [1, 2], "step_hours": [0.5, 0.25]})
+    with pytest.raises(ValueError, match="step_hours"):
+        r.table("steps", frame, "Steps.", headers={"k": "$k$", "STEP_HOURS": "step (h)"})
+    with pytest.raises(ValueError, match="step_hours"):
+        r.timing_table("steps", frame, "Steps.", headers={"k": "$k$"})
+    r.table("steps", frame, "Steps.", headers={"k": "$k$", "step_hours": "step (h)", "rtol": "rtol"})
+    r.table("bare", frame, "Steps, headed by their names.")
+    r.number("length", 1.0, "m")
+    assert set(r.tables) == {"steps", "bare"} and r.numbers["length"]["unit"] == "m"

@@ -14,7 +14,7 @@ from pathlib import Path
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from . import figure_style, io
+from . import figure_style, io, units
 from .figure_data import figure_data
 from .figure_style import TEXT_WIDTH_IN
 
@@ -52,6 +52,12 @@ def _share_math_parses() -> None:
 _share_math_parses()
 
 
+def _check_headers(name, frame, headers) -> None:
+    bare = [column for column in frame.columns if headers and column not in headers]
+    if bare:
+        raise ValueError(f"table {name!r}: no header for its columns {bare}")
+
+
 @dataclass
 class Results:
     study: str
@@ -68,7 +74,9 @@ class Results:
 
     def number(self, name, value, unit, *, reference=None, tolerance=None, note=None):
         """tolerance: how far a rebuild may move the value before `verify` fails, {"absolute": a},
-        {"relative": r} or a bare number (absolute, in `unit`); none: verify's tight default (verify.py)."""
+        {"relative": r} or a bare number (absolute, in `unit`); none: verify's tight default (verify.py).
+        A unit the registry does not know stops the run here, where it is written, not in the report."""
+        units.lookup(unit)
         entry = {"value": value, "unit": unit}
         if reference is not None:
             entry["reference"] = reference
@@ -79,13 +87,17 @@ class Results:
         self.numbers[name] = entry
 
     def table(self, name, frame, caption, headers=None):
-        """headers: column -> what the reader sees, "quantity (unit)" with $inline math$."""
+        """headers: column -> what the reader sees, "quantity (unit)" with $inline math$. Given, they head
+        every column (a column left out would reach the reader as its code name); more may be given (a study's
+        shared vocabulary)."""
+        _check_headers(name, frame, headers)
         self.tables[name] = (frame, caption, headers or {})
 
     def figure(self, name, fig, caption):
         self.figures[name] = (fig, caption)
 
     def timing_table(self, name, frame, caption, headers=None):
+        _check_headers(name, frame, headers)
         self.timing_tables[name] = (frame, caption, headers or {})
 
     def timing_figure(self, name, fig, caption):
@@ -93,6 +105,7 @@ class Results:
 
     def hard_case(self, name, description, measured, bound, unit=""):
         """A numerically hard case: what was measured against the bound it must meet."""
+        units.lookup(unit)
         self.stability.append(
             {
                 "name": name,

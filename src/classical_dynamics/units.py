@@ -59,6 +59,7 @@ REGISTRY: dict[str, Unit] = {
     "time": Unit("time units"),
     "time units": Unit("time units"),
     "1/time": Unit("per time unit"),
+    "rad/time": Unit("rad per time unit"),
     "1/time²": Unit("per time unit squared"),
     "g/l": Unit("$g/l$"),
     "√(g/l)": Unit("$\\sqrt{g/l}$"),
@@ -73,6 +74,9 @@ REGISTRY: dict[str, Unit] = {
     "1/(A n)": Unit("$1/An$"),
     "√(T/σ)/a": Unit("$\\sqrt{T/\\sigma}/a$"),
     "x/l from the free end": Unit("of the length from the free end"),
+    "ω": Unit("$\\omega$"),  # a whirling chain's frequencies, in units of its rate of turning
+    "(π/l)√(P/ρ)": Unit("$(\\pi/l)\\sqrt{P/\\rho}$"),  # a string's fundamental
+    "rad·time": Unit("rad × time units"),  # an angle times Lee's scaled time
     # counted things
     "particles": Unit("particles", word=True, singular="particle"),
     "links": Unit("links", word=True, singular="link"),

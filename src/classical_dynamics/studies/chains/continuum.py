@@ -112,7 +112,7 @@ def run(scene, results, quick):
 
 
 def _record_frequencies(results, values: Frequencies, gravity):
-    results.number("n", 0, "particles (0: the continuum)")
+    results.number("n", 0, "particles", note="0: the continuum")
     results.number(
         f"frequencies_{values.unit_name}",
         values.computed / values.unit,
