@@ -130,3 +130,79 @@ def test_lees_inertia_numbers_and_the_smallest_axis_swap():
     assert (body.a, body.b, body.c) == pytest.approx((1 / 3, 1.0, 1.0))
     swapped = body.swapped()
     assert (swapped.a, swapped.b, swapped.c) == pytest.approx((body.c, body.b, body.a))
+
+
+def test_the_elastic_wobbles_invariants_are_the_legendre_pair_of_its_K_by_sympy():
+    """wobble.invariants returns |l| and E = y.l - K with l = grad K, K = y.Jy/2 + beta(|y|^4/6 - y3^2/2
+    + |y|^2/6) (Lamb Art. 71's bulge, the docstring's K): K written out here, differentiated by sympy."""
+    import sympy as sp
+
+    from classical_dynamics.models import wobble
+
+    model = wobble.assemble(
+        0.0032738, {"triaxiality": {"b_minus_a_over_c": 2.2e-5}, "elastic_yielding": {"k2": 0.3}}
+    )
+    params = model.parameters()
+    a, b, beta = params[wobble.A_C], params[wobble.B_C], params[wobble.BETA]
+    assert params[wobble.ELASTIC] and beta > 0 and a != b
+    y1, y2, y3 = sp.symbols("y1:4")
+    w2 = y1**2 + y2**2 + y3**2
+    K = (a * y1**2 + b * y2**2 + y3**2) / 2 + beta * (w2**2 / 6 - y3**2 / 2 + w2 / 6)
+    grad = [sp.lambdify((y1, y2, y3), sp.diff(K, v)) for v in (y1, y2, y3)]
+    K_of = sp.lambdify((y1, y2, y3), K)
+    y = np.random.default_rng(71).normal(0.0, 0.6, (5, 3))
+    l = np.array([[g(*row) for g in grad] for row in y])
+    expected_E = np.sum(y * l, axis=1) - np.array([K_of(*row) for row in y])
+    size, E = wobble.invariants(y, params)
+    assert np.allclose(size, np.linalg.norm(l, axis=1), rtol=1e-13)
+    assert np.allclose(E, expected_E, rtol=1e-12)
+
+
+def test_the_moons_perigee_at_j2000_is_the_iers_delaunay_arguments():
+    """The modern orbits' lunar perigee longitude: F + Omega - l at J2000 from pyerfa's IERS 2003 Delaunay
+    arguments (varpi = L - l, L = F + Omega)."""
+    import erfa
+
+    from classical_dynamics.models import precession
+
+    varpi = (erfa.faf03(0.0) + erfa.faom03(0.0) - erfa.fal03(0.0)) % (2 * np.pi)
+    assert precession.modern().moon_varpi == pytest.approx(varpi, abs=1e-6)
+
+
+def test_a_viscous_body_settles_only_with_both_frictions_and_then_where_theorem_3_says():
+    """Lee Theorem 3: with nu > 0 and mu > 0 omega tends to a limit; with either zero (r' = m3 unchecked, or
+    p, q undamped) it has none. The limit is checked against scipy's integration of (5.49) to late times."""
+    from scipy.integrate import solve_ivp
+
+    from classical_dynamics.models.viscous_medium import ViscousMedium
+
+    m, w0 = (0.3, -0.2, 0.5), (0.4, 0.1, 1.0)
+    assert ViscousMedium.from_moments(1.0, 0.6, 0.5, 0.0, m, w0).limit() is None
+    assert ViscousMedium.from_moments(1.0, 0.6, 0.0, 0.7, m, w0).limit() is None
+    medium = ViscousMedium.from_moments(1.0, 0.6, 0.5, 0.7, m, w0)
+    h, nu, mu = medium.h, medium.nu, medium.mu
+
+    def f(t, w):
+        return [h * w[1] * w[2] + m[0] - nu * w[0], -h * w[0] * w[2] + m[1] - nu * w[1], m[2] - mu * w[2]]
+
+    late = solve_ivp(f, (0.0, 80.0), w0, rtol=1e-12, atol=1e-14).y[:, -1]
+    assert np.allclose(medium.limit(), late, atol=1e-9)
+
+
+def test_a_tops_turning_point_is_a_root_of_its_nutation_cubic():
+    """Started with theta' = 0, the top is at a turning point: u0 = cos(theta0) is u1 or u2 of the cubic
+    f(u) = (1 - u^2)(2/A)(E' - Mgh u) - (Jz - J3 u)^2/A^2 (written out here), and each root is one of f."""
+    from classical_dynamics.models.heavy_top import Nutation, Top
+
+    top = Top(A=1.3, C=0.5, Mgh=0.8)  # A != 1: no power of A may be lost unseen
+    theta0 = np.radians(40.0)
+    J3, Jz, E = (float(v[0]) for v in top.integrals(top.state(theta0, 0.0, 0.3, 6.0)))
+    nut = Nutation.from_integrals(top.A, top.C, top.Mgh, J3, Jz, E)
+    Ep = E - 0.5 * J3 * J3 / top.C
+
+    def f(u):
+        return (1 - u * u) * 2.0 / top.A * (Ep - top.Mgh * u) - (Jz - J3 * u) ** 2 / top.A**2
+
+    assert min(abs(nut.u1 - np.cos(theta0)), abs(nut.u2 - np.cos(theta0))) < 1e-12
+    assert nut.u1 < nut.u2 < 1.0 < nut.u3
+    assert all(abs(f(u)) < 1e-12 for u in (nut.u1, nut.u2, nut.u3))
