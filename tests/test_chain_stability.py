@@ -35,7 +35,8 @@ def test_sympy_references():
 def test_equal_roots_bounded_but_a_jordan_block_grows():
     rng = np.random.default_rng(0)
     L = np.array([[2.0, -1, -1], [-1, 2, -1], [-1, -1, 2]])
-    assert stability._bounded(np.eye(3) + L, np.eye(3), 2 * np.pi, 500, rng) - 1 < 1e-10
+    # roots 1 and 4: the motion has period 2 pi, no later period exceeds the first (ratio 1, any start)
+    assert abs(stability._bounded(np.eye(3) + L, np.eye(3), 2 * np.pi, 500, rng) - 1) < 1e-10
     growth = stability._bounded(np.array([[1.0, 1.0], [0.0, 1.0]]), np.eye(2), 2 * np.pi, 500, rng)
     assert growth > 100  # secular: the amplitude grows as t
 
@@ -101,6 +102,21 @@ def test_hamilton_chain_converges_at_order_two_to_the_j0_zeros():
     # finite elements); a wrong reference (j_0k/2.02) stops the convergence and fails the order
     assert abs(v.order - 2.0) < 0.02
     assert v.richardson_error < v.errors[-1] / 100
+
+
+def test_hamilton_chain_record_names_its_meshes_and_the_finest_error():
+    """The record of two meshes, 250 and 500 elements: the meshes as asked, and second order (the docstring's
+    linear elements) makes the finest mesh's error a quarter of the coarser one's; every unit registered."""
+    from classical_dynamics.results import Results
+    from classical_dynamics.units import lookup
+
+    results = Results("chains", "t", "t")
+    stability.record_hamilton_chain(results, stability.hamilton_chain([250, 500]))
+    got = {name: entry["value"] for name, entry in results.numbers.items()}
+    assert got["galerkin_elements"] == [250, 500]
+    assert got["galerkin_finest_error"] / got["galerkin_relative_errors"][0] == pytest.approx(0.25, rel=0.02)
+    for entry in results.numbers.values():
+        lookup(entry["unit"])  # raises UnknownUnit for a unit nobody registered
 
 
 def test_drum_collocation_finds_the_bessel_zeros_not_their_roots():

@@ -92,3 +92,83 @@ def test_many_links_tend_to_the_hanging_chain():
 
 def test_relative_leaves_zero_references_blank():
     assert discrete._relative([1.1, 5.0, 3.0], [1.0, 0.0, 4.0]) == pytest.approx([0.1, None, -0.25])
+
+
+def test_a_links_scene_records_the_lagrangian_frequencies_its_convergence_and_nothing_unasked():
+    """A scene of 3 rigid links with a convergence sweep, run as the study runs it: its frequencies are the
+    sympy Lagrangian's, its table calls it a chain of links, the sweep converges at second order and from
+    above (the scene file's Ritz bound, against scipy's j01/2), and the orthogonality it did not ask for is
+    absent."""
+    from types import SimpleNamespace
+
+    g, length = 9.81, 1.0
+    data = {
+        "chain": {"model": "links", "n": 3, "length_m": length, "mass_kg": 1.0},
+        "effects": {"gravity": {"g_m_per_s2": g}},
+        "analysis": {"modes": 3, "convergence": {"n_values": [4, 8, 16, 32, 64]}},
+    }
+    results = Results("chains", "t", "t")
+    discrete.run(SimpleNamespace(name="t", title="t", data=data), results, True)
+    got = {k: v["value"] for k, v in results.numbers.items()}
+    np.testing.assert_allclose(
+        got["frequencies_rad_per_s"], _links_by_sympy(3) * np.sqrt(g / length), rtol=1e-12
+    )
+    assert "3-link chain" in results.tables["frequencies"][1]
+    assert got["links_convergence_order"] == pytest.approx(2.0, abs=0.05)
+    assert got["links_all_above_continuum"]
+    # neither closed_form nor constraint asked: Art. 91's orthogonality is not computed
+    assert not any(name.startswith("orthogonality") for name in results.numbers)
+
+
+def test_closed_form_takes_the_printed_formula_below_one_rad_per_s():
+    """Two masses m between three springs k (the lecture notes' equal_springs): omega^2 = k/m and 3k/m written
+    out here, with k/m = 1/4 so that both omega^2 are below 1; the printed formula must give them."""
+    from classical_dynamics.models.chains import particle_chain
+
+    k, m = 0.25, 1.0
+    built = particle_chain(2, "fixed-fixed", 1.0, m, {"springs": {"k_n_per_m": [k, k, k]}})
+    exact = np.sqrt([k / m, 3 * k / m])
+    values = discrete.closed_form(
+        built.masses, built.segment_stiffness, "fixed-fixed", "equal_springs", exact
+    )
+    np.testing.assert_allclose(values.derived, exact, rtol=1e-14)
+    assert values.formula_exact
+    assert values.formula_vs_solver < 1e-14
+    assert values.solver_vs_derived < 1e-14
+
+
+def test_accuracy_cost_quick_keeps_small_sizes_and_records_each_solver():
+    """The solver sweep against scipy's Laguerre zero and Bessel zero: the quick run drops the sizes above
+    4096, every solver's lambda_1 at n = 16 is scipy's lowest zero of L_16, omega_1 end-corrected is (n + 1/2)
+    lambda_1 against j01/2, and the record has one worst error per solver."""
+    frame = discrete.accuracy_cost([16, 8192], 1, True)
+    assert set(frame.n) == {16}
+    lam1 = special.roots_laguerre(16)[0][0]
+    j1 = special.jn_zeros(0, 1)[0] / 2
+    np.testing.assert_allclose(frame.algebraic_relative_error, 0.0, atol=1e-12)
+    np.testing.assert_allclose(
+        frame.discretization_relative_error, abs(np.sqrt(16.5 * lam1) / j1 - 1), rtol=1e-8
+    )
+    results = Results("chains", "t", "t")
+    discrete._record_accuracy_cost(results, frame)
+    for method in frame.solver.unique():
+        assert results.numbers[f"{method}_worst_relative_error_lambda1"]["value"] < 1e-12
+    assert set(results.timing_figures) >= {"solver_cost"}
+
+
+def test_cost_to_target_richardson_reaches_a_target_with_fewer_particles():
+    """The quick sweep n = 2 ... 2^12 (pliability): the end-corrected error falls as 1/n^2 (Lamb Art. 90's
+    correction; scipy's j01 the reference), and Richardson's fourth order reaches 1e-6 with a smaller n; the
+    record's table is the sweep's frame."""
+    values = discrete.cost_to_target([1e-6], True)
+    assert values.top == 12
+    frame = values.frame.set_index("scheme")
+    end = frame.loc[discrete.END_CORRECTED]
+    rich = frame.loc[discrete.RICHARDSON]
+    assert end.measured and rich.measured
+    assert rich.n < end.n
+    assert end.error <= 1e-6 and rich.error <= 1e-6
+    results = Results("chains", "t", "t")
+    discrete._record_cost_to_target(results, values)
+    assert results.timing_tables["cost_to_target"][0] is values.frame
+    assert "work_precision" in results.timing_figures

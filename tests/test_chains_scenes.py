@@ -97,3 +97,19 @@ def test_the_triatomic_molecule_has_a_translation_and_the_textbook_stretches():
     w = got["frequencies_rad_per_s"][:3]
     assert abs(w[0]) < 1e-6
     np.testing.assert_allclose(w[1:], [np.sqrt(k / mO), np.sqrt(k / mO * (1 + 2 * mO / mC))], rtol=1e-10)
+
+
+# the sources' values, each naming the scene number it is compared with
+CLAIMS = yaml.safe_load((Path(discrete.__file__).parent / "claims.yaml").read_text(encoding="utf-8"))
+
+
+@pytest.mark.parametrize(
+    "name", ["three_particles_string", "triatomic_molecule", "three_particles_forced", "two_unequal_masses"]
+)
+def test_every_number_a_claim_compares_is_recorded(name):
+    """claims.yaml (the sources' printed values, written apart from the code) names a number of the scene for
+    each claim: the scene's run records every one of them (the small scenes, a second each)."""
+    wanted = {c["computed"]["number"] for c in CLAIMS if c.get("computed", {}).get("scene") == name}
+    assert wanted
+    _, results, _ = run(name)
+    assert sorted(wanted - set(results.numbers)) == []

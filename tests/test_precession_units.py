@@ -186,6 +186,11 @@ def test_full_run_over_a_few_years_against_iau_and_conservation(tmp_path, monkey
     # aliasing: the bare line's rate depends on the window, the line with the periodic terms does not
     assert value(r, "aliasing_spread_line_only") > 100 * value(r, "aliasing_spread_with_terms")
     assert "nutation" in r.tables and "nutation" in r.figures and "aliasing" in r.tables
+    assert value(r, "span_years") == 4  # the scene's span, as asked
+    # every table and figure says what it shows: a caption, not None or empty
+    for kind in (r.tables, r.figures, r.timing_tables, r.timing_figures):
+        for name, (_, caption, *_) in kind.items():
+            assert isinstance(caption, str) and caption.strip(), name
 
 
 def test_full_run_free_nutation_is_the_torque_over_n(tmp_path, monkeypatch):
@@ -225,6 +230,58 @@ def test_effect_ladder_adds_one_effect_a_row(monkeypatch):
     assert abs(frame.rate[3] - frame.secular_formula[3]) > 1.0
     assert frame.rate_change.sum() == pytest.approx(frame.rate[3], rel=1e-12)
     assert len(ladder.times) == 4
+    # Lamb Art. 61: the Sun's couple goes as 1 - cos 2l, so the Sun alone (circular orbit) adds to psi the
+    # semi-annual term of amplitude (secular rate)/(2 * 2 n_sun) = rate/(4 pi) per year, in arcsec
+    assert frame.dpsi_semiannual[0] == pytest.approx(
+        solar_closed_form(eccentric=False) / (4 * np.pi), rel=1e-4
+    )
+    # the record prints the rate change to d decimals, the largest d whose last place 10^-d is ten times the
+    # fit's scatter (spread times rate) or more
+    spread = 3e-5
+    scatter = spread * abs(frame.rate.iloc[-1])
+    r = Results("precession", "t", "t")
+    full._record_effect_ladder(r, ladder, spread)
+    d = value(r, "effect_ladder_rate_change_decimals")
+    assert 10.0**-d >= 10 * scatter > 10.0 ** -(d + 1)
+    assert value(r, "effect_ladder_rate_scatter_arcsec_per_year") == pytest.approx(scatter, rel=1e-12)
+
+
+def test_node_period_fits_a_known_period_and_records_the_iau_nodes():
+    """A synthetic obliquity with one term of period 18.0 years (40 years, daily): the free fit finds 18.0;
+    the IAU node period is the published 2 pi/|dOmega/dt|, 1 296 000″ over 6 962 890.5431″/cy (IERS
+    Conventions 2010, Table 5.2e's Omega), 18.613 years."""
+    t = np.arange(0.0, 40 * YEAR)
+    eps = EPS0 + 9.2 * earth.ARCSEC * np.cos(2 * np.pi * t / (18.0 * YEAR) + 0.3)
+    values = full.node_period(t, eps, {})
+    assert values.fitted == pytest.approx(18.0, rel=1e-6)
+    published = 1296000.0 / 6962890.5431 * 100.0
+    assert values.iau == pytest.approx(published, rel=1e-6)
+    r = Results("precession", "t", "t")
+    full._record_node_period(r, values)
+    assert value(r, "node_period_fitted_years") == values.fitted
+    assert value(r, "node_period_iau_years") == pytest.approx(published, rel=1e-6)
+    assert value(r, "node_period_fitted_over_iau_minus_one") == pytest.approx(18.0 / published - 1, rel=1e-5)
+
+
+# --- cost.py: what a scene costs, from its fields -----------------------------------------------------------
+
+
+def test_cost_blames_the_span_for_a_long_run_and_the_step_for_a_fine_one():
+    """scenes/cost.py names the field that costs most when a scene is refused: a millennium at 3-hour steps
+    is too long a span, a year at 0.01-hour steps too fine a step; the run's steps are span/step (written out
+    here) at the docstring's 4 us a step."""
+    from classical_dynamics.studies.precession.cost import cost  # the package's `cost` is this function
+
+    def run_work(span_years, step_hours):
+        data = {"fidelity": "full", "analysis": {"span_years": span_years, "step_hours": step_hours}}
+        works = cost(data)
+        return next(w for w in works if w.field.startswith("analysis."))
+
+    long = run_work(1000, 3.0)
+    assert long.field == "analysis.span_years"
+    assert long.seconds == pytest.approx(1000 * YEAR * 24 / 3.0 * 4e-6, rel=1e-12)
+    fine = run_work(1, 0.01)
+    assert fine.field == "analysis.step_hours"
 
 
 # --- what accuracy costs ------------------------------------------------------------------------------------
