@@ -4,14 +4,16 @@ from functools import partial
 
 from . import DELETE, case
 
-OBSERVED, RIGID, EXCITED, TRIAXIAL, RETARDING, DAMPED = (
+OBSERVED, RIGID, EXCITED, TRIAXIAL, RETARDING, DAMPED, RIGID_LAMB = (
     "observed.yaml",
     "rigid_modern.yaml",
     "excited.yaml",
     "triaxial.yaml",
     "retarding.yaml",
     "damped.yaml",
+    "rigid_lamb.yaml",
 )
+C22 = {"triaxiality": {"b_minus_a_over_c": "C22"}}  # today's Earth, triaxial
 
 
 _case = partial(case, "chandler")
@@ -162,5 +164,145 @@ CASES = [
         OBSERVED,
         earth={"H": 0.00327, "H_definition": "(C-A)/C", "H_source": "s"},
         says="one of `earth`",
+    ),
+    # every refusal of check() has a scene that meets it (issue 38)
+    _case(
+        "start-before-series",
+        "range",
+        "observation.start_year",
+        OBSERVED,
+        observation__start_year=1850.0,
+        says="a year inside the series",
+    ),
+    _case(
+        "compare-k2-past-fluid",
+        "physics",
+        "observation.compare.k2",
+        OBSERVED,
+        observation__compare__k2=2.0,
+        says="a Love number below k_s",
+    ),
+    _case(
+        "effects-on-observation",
+        "physics",
+        "effects",
+        OBSERVED,
+        effects=C22,
+        says="no effects for an observation scene",
+    ),
+    _case(
+        "analysis-on-observation",
+        "physics",
+        "analysis",
+        OBSERVED,
+        analysis={"cones": True},
+        says="no model analysis for an observation scene",
+    ),
+    _case(
+        "analysis-beside-body",
+        "physics",
+        "body",
+        RETARDING,
+        analysis={"cones": True},
+        says="no effects or analysis beside `body`",
+    ),
+    _case(
+        "oblate-not-oblate",
+        "physics",
+        "body",
+        RETARDING,
+        body__oblate_A_over_C=1.5,
+        says="oblate_A_over_C below 1 and prolate_A_over_C above 1",
+    ),
+    _case(
+        "oblate-not-a-body",
+        "physics",
+        "body.oblate_A_over_C",
+        RETARDING,
+        body__oblate_A_over_C=0.4,
+        says="at least 0.5 (2A ≥ C: a physical body)",
+    ),
+    _case(
+        "triaxiality-past-C",
+        "physics",
+        "effects.triaxiality.b_minus_a_over_c",
+        RIGID_LAMB,
+        effects={"triaxiality": {"b_minus_a_over_c": 0.01}},
+        # by hand: Lamb's H is (C - A)/A = 0.00327, so (C - A)/C = 0.00327/1.00327 = 0.00325934 and
+        # 2H = 0.00651868 (not 2 x 0.00327: the definition is converted)
+        says="a number below 2H = 0.00651868",
+    ),
+    _case(
+        "period-below-rigid",
+        "physics",
+        "effects.elastic_yielding.period_solar_days",
+        EXCITED,
+        effects__elastic_yielding__period_solar_days=300.0,
+        # by hand: H = (C - A)/C = 0.0032737949, A/(C - A) = (1 - H)/H = 304.4559 sidereal days,
+        # / 1.0027378119 sidereal days per solar day = 303.62 solar days
+        says="a period longer than the rigid Earth's 303.62 days",
+    ),
+    _case(
+        "random-periods-reversed",
+        "physics",
+        "effects.excitation.random.periods_days",
+        EXCITED,
+        effects__excitation__random__periods_days=[4000.0, 20.0],
+        says="shortest < longest",
+    ),
+    _case(
+        "accuracy-cost-elastic",
+        "physics",
+        "analysis.accuracy_cost",
+        RIGID,
+        effects={"elastic_yielding": {"k2": 0.30, "source": "IERS Conventions (2010)"}},
+        says="a free rigid body (no effects but triaxiality)",
+    ),
+    # on the rigid modern Earth made triaxial: each analysis of the symmetric Earth in turn is the first left
+    _case(
+        "cones-triaxial", "physics", "analysis.cones", RIGID, effects=C22, says="the rigid symmetric Earth"
+    ),
+    _case(
+        "cone-rates-triaxial",
+        "physics",
+        "analysis.cone_rates",
+        RIGID,
+        effects=C22,
+        analysis__cones=DELETE,
+        says="the rigid symmetric Earth",
+    ),
+    _case(
+        "lamb-symmetric-triaxial",
+        "physics",
+        "analysis.lamb_symmetric",
+        RIGID,
+        effects=C22,
+        analysis__cones=DELETE,
+        analysis__cone_rates=DELETE,
+        says="the rigid symmetric Earth",
+    ),
+    _case(
+        "poinsot-not-a-body",
+        "physics",
+        "analysis.poinsot.moments",
+        TRIAXIAL,
+        analysis__poinsot__moments=[1.0, 2.0, 3.5],
+        says="C ≤ A + B",
+    ),
+    _case(
+        "free-body-not-a-body",
+        "physics",
+        "analysis.lamb_free_body.moments",
+        TRIAXIAL,
+        analysis__lamb_free_body__moments=[1.0, 2.0, 3.5],
+        says="A < B < C with A + B ≥ C",
+    ),
+    _case(
+        "plate-sides-reversed",
+        "physics",
+        "analysis.lamb_free_body.plate_half_sides",
+        TRIAXIAL,
+        analysis__lamb_free_body__plate_half_sides=[1.0, 2.0],
+        says="[a, b] with a > b",
     ),
 ]

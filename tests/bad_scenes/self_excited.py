@@ -10,6 +10,7 @@ LARGEST, MIDDLE, VISCOUS = (
     "viscous_constant_torque.yaml",
 )
 EXCURSION = "middle_near_critical.yaml"
+UNPERTURBED, PLANE_ONE = "largest_unperturbed.yaml", "middle_plane_one.yaml"
 
 
 _case = partial(case, "self_excited")
@@ -160,5 +161,114 @@ CASES = [
         LARGEST,
         excursion={"q0": 1.0},
         says="torque_axis: middle",
+    ),
+    # every refusal of check() has a scene that meets it (issue 38)
+    _case(
+        "no-torque-axis",
+        "physics",
+        "torque_axis",
+        LARGEST,
+        torque_axis=DELETE,
+        says="torque_axis and plane (a phase-plane scene), or viscous",
+    ),
+    _case(
+        "nu-c-on-largest",
+        "physics",
+        "effects.quadratic_torque.nu",
+        LARGEST,
+        effects__quadratic_torque__nu="nu_c",
+        says="nu_c is the middle axis' critical drag",
+    ),
+    _case(
+        "motion-in-space-without-F",
+        "physics",
+        "analysis.motion_in_space",
+        LARGEST,
+        # no drag-like part: no limit cycle F to start on
+        effects__quadratic_torque=DELETE,
+        says="a plane with the limit cycle F",
+    ),
+    _case(
+        "motions-with-drag",
+        "physics",
+        "analysis.motions",
+        UNPERTURBED,
+        effects__quadratic_torque={"nu": 0.1},
+        says="no quadratic_torque",
+    ),
+    _case(
+        "zero-plane-torque",
+        "physics",
+        "effects.body_torque.m1",
+        UNPERTURBED,
+        # without the quadratic torque, m1 = 0 on the plane is M = 0 in the body
+        effects__body_torque__m1=0.0,
+        says="M = 0 here: leave it out",
+    ),
+    _case(
+        "plane-one-alpha-negative",
+        "physics",
+        "plane.alpha",
+        PLANE_ONE,
+        plane__alpha=[-0.6, 0.6],
+        says="alpha1 > 0 in the planes of the separating polhodes",
+    ),
+    _case(
+        "alpha-sum-negative",
+        "physics",
+        "plane.alpha",
+        MIDDLE,
+        plane__alpha=[-0.8, 0.3],
+        says="alpha1 + alpha2 > 0",
+    ),
+    _case(
+        "excursion-above-critical",
+        "physics",
+        "excursion",
+        EXCURSION,
+        # nu_c = 0.409 for this body (the scene's source): nu = 1 is above it
+        effects__quadratic_torque__nu=1.0,
+        says="a plane below the critical drag",
+    ),
+    _case(
+        "excursion-without-spin",
+        "physics",
+        "excursion.q0",
+        EXCURSION,
+        excursion__q0=0.0,
+        says="a spin q0 != 0",
+    ),
+    _case(
+        "quadratic-torque-in-medium",
+        "physics",
+        "effects.quadratic_torque",
+        VISCOUS,
+        effects__quadratic_torque={"nu": 0.1},
+        says="body_torque and drag only",
+    ),
+    _case(
+        "plane-in-medium",
+        "physics",
+        "torque_axis",
+        VISCOUS,
+        torque_axis="largest",
+        says="no phase plane in a viscous-medium scene",
+    ),
+    _case(
+        "no-axial-drag",
+        "physics",
+        "effects.drag.mu",
+        VISCOUS,
+        effects__drag__mu=0.0,
+        says="both drags positive",
+    ),
+    _case(
+        "drag-ratio-integer",
+        "physics",
+        "effects.drag.nu",
+        VISCOUS,
+        # nu/mu = 0.5/0.5 = 1 where Lee's generalized integrals are needed (h = 0.6, r0 = 2 != m3/mu = 0.6)
+        effects__drag__nu=0.5,
+        says="nu/mu not an integer",
     ),
 ]
