@@ -321,7 +321,7 @@ CASES = [
         "analysis.dispersion",
         LINKS,
         analysis__dispersion=True,
-        says="a particle chain",
+        says="a particle chain (chain.model: particles), got 'links'",
     ),
     _case(
         "rayleigh-on-particles",

@@ -163,7 +163,7 @@ CASES = [
         "earth",
         OBSERVED,
         earth={"H": 0.00327, "H_definition": "(C-A)/C", "H_source": "s"},
-        says="one of `earth`",
+        says="one of `earth` (a model), `observation` (the IERS series) or `body`",
     ),
     # every refusal of check() has a scene that meets it (issue 38)
     _case(
