@@ -641,6 +641,7 @@ def test_lee_section_2_motions_on_eulers_equations():
     assert n["closed_orbit_return"] < 1e-10
     assert n["first_kind_rate_over_m"] == pytest.approx(1.0, rel=1e-3)
     assert n["second_kind_closest"] < 1e-6
+    assert 0.0 < n["second_kind_time_closest"] < 60.0  # lambda t, within the run's 60/lambda
     assert n["saddle_growth_rate"] == pytest.approx(n["saddle_growth_rate_lee"], rel=1e-3)
     assert n["permanent_rotation_residual"] < 1e-14 and n["center_kick_largest"] < 1e-5
     assert n["permanent_rotation_groebner_remainders"] == 0
