@@ -415,3 +415,17 @@ def test_retarding_scene_needs_oblate_and_prolate(tmp_path):
     path.write_text(yaml.safe_dump(scene, allow_unicode=True))
     with pytest.raises(SceneError):
         validate("chandler", path)
+
+
+def test_excited_fit_beats_the_fitted_chandler_period_against_the_tropical_year():
+    """A series of known period 433 d fitted as the observations are: the beat is 1/|1/P_annual - 1/P_c| with
+    the tropical year (365.24219 d) and 433 d written out here, in Julian years; the resonance width 1/Q."""
+    t = np.arange(0.0, 40 * 365.25, 1.0)
+    m = 150 * np.exp(2j * np.pi * t / 433.0) + 90 * np.exp(2j * np.pi * t / 365.24219)
+    model = type("Model", (), {"Q": 100.0})()
+    excited = wobble_model.excited_fit(t, m, model, 433.0)
+    beat = 1.0 / abs(1.0 / 365.24219 - 1.0 / 433.0) / 365.25
+    assert excited.chandler_period_days == pytest.approx(433.0, rel=1e-6)
+    assert excited.beat_period_years == pytest.approx(beat, rel=1e-5)
+    assert excited.beat_period_closed_form_years == pytest.approx(beat, rel=1e-5)
+    assert abs(excited.period_relative_error) < 1e-6 and excited.bound == pytest.approx(0.01)

@@ -78,3 +78,23 @@ def test_the_iers_series_gives_the_published_period(tmp_path):
     # Vicente and Wilson (1997): 433.1 +- 1.7 d; three of their sigmas
     assert numbers["observed_chandler_period_days"] == pytest.approx(433.1, abs=3 * 1.7)
     assert numbers["first_year"] == pytest.approx(1994.0, abs=0.01)
+
+
+def test_without_path_years_the_polar_path_shows_the_last_13_years(monkeypatch, tmp_path):
+    """The scene's path_years is optional: without it the polar path shows the series' last 13 years (the
+    known series here ends in 2018, so from 2005); the sigma number names Vicente and Wilson's published
+    433.1 +- 1.7 d it is measured against."""
+    import yaml
+
+    t, m = _known_series()
+    monkeypatch.setattr(pm, "read_eop", lambda path, start, end: (t, m))
+    data = yaml.safe_load(SCENE.read_text())
+    del data["observation"]["path_years"]
+    (tmp_path / "observed.yaml").write_text(yaml.safe_dump(data))
+    _, results = run(validate("chandler", tmp_path / "observed.yaml"))
+    fig, _ = results.figures["polar_path"]
+    years = fig.axes[1].lines[0].get_xdata()
+    last = t[-1] + 2000
+    assert years[-1] == pytest.approx(last) and years[0] == pytest.approx(last - 13.0, abs=2 / 365.25)
+    note = results.numbers["difference_from_vicente_wilson_sigmas"]["note"]
+    assert "433.1 d" in note and "1.7 d" in note

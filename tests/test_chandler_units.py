@@ -308,6 +308,7 @@ def test_lamb_free_stable_axes_against_the_conserved_quantities():
     r = Results("chandler", "x", "x")
     lf._record_stable_axes(r, axes)
     assert value(r, "middle_axis_largest_angle_deg") == axes.middle_axis_largest_angle_deg
+    assert "1° off the middle axis" in r.numbers["middle_axis_largest_angle_deg"]["note"]  # the start
     assert value(r, "least_axis_conic_ratio") == axes.conic_ratio["least"]
 
 

@@ -26,7 +26,11 @@ def effective_sigma(A, Mgh, J3, alpha, omega):
     return np.sqrt(float(sp.diff(U, th, 2).subs(th, alpha)) / A)
 
 
-def test_steady_precession_rates_solve_lambs_quadratic_and_hold():
+def test_steady_precession_rates_solve_lambs_quadratic_and_hold(monkeypatch):
+    spans, run = [], heavy_top._run
+    monkeypatch.setattr(
+        heavy_top, "_run", lambda top, y0, T, *a, **k: spans.append(T) or run(top, y0, T, *a, **k)
+    )
     r = heavy_top.steady(TOP, SPIN, 1e-10)
     frame = r.frame
     J3 = TOP.C * SPIN
@@ -38,6 +42,10 @@ def test_steady_precession_rates_solve_lambs_quadratic_and_hold():
         assert abs(row.rate) < abs(other) if row.root == "slow" else abs(row.rate) > abs(other)
     assert (
         len(frame) == 6 and frame.theta_deviation.max() < 1e-8 and frame.rate_relative_difference.max() < 1e-8
+    )
+    # each run is the table caption's ten turns of its precession
+    assert np.array(spans[:6]) * np.abs(frame.rate.to_numpy()) == pytest.approx(
+        np.full(6, 20 * np.pi), rel=1e-14
     )
     # the conical pendulum (no spin) at 120 degrees: g/(l |cos a|) with A = M l^2, Mgh = M g l
     assert r.conical_rate == pytest.approx(np.sqrt(TOP.Mgh / (TOP.A * 0.5)), rel=1e-14)
@@ -78,6 +86,7 @@ def test_disturbed_precession_nutates_at_the_effective_potentials_frequency():
 def test_horizontal_gyroscope():
     g = heavy_top.gyroscope(TOP, 1e-10)
     J3 = 10.0 * np.sqrt(TOP.A * TOP.Mgh)
+    assert g.J3 == pytest.approx(J3, rel=1e-15)  # J3^2/(A Mgh) = 100
     rate = TOP.Mgh / J3  # theta = 90 degrees: the quadratic's only finite root
     assert g.rate_measured == pytest.approx(rate, rel=1e-7)
     sigma = effective_sigma(TOP.A, TOP.Mgh, J3, np.pi / 2, rate)

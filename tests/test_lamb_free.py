@@ -52,12 +52,13 @@ def test_polhode_period_against_the_integration_both_sides_of_the_separatrix():
 
 def test_criterion_10_agrees_with_the_integration_even_near_the_separatrix():
     side = lf.polhode_side(I, 300, 7)
-    assert side.agreements == 300
+    assert side.samples == 300 and side.agreements == 300
     assert 0 < side.round_least < 300
 
 
 def test_poinsot_geometry_holds_and_moves():
-    n = lf.poinsot_examples(I)._asdict()
+    examples = lf.poinsot_examples(I)
+    n = examples._asdict()
     # Each is measured on the attitude integrated from Euler's equations (which know nothing of sections,
     # gyration ellipsoids or planes) against Lamb's closed form of Exx. X.1, X.4, X.5, X.22 written from
     # A, B, C, T and H alone: a fault in the integration or in either formula breaks the agreement, and the
@@ -71,6 +72,9 @@ def test_poinsot_geometry_holds_and_moves():
     ):
         assert n[name] < 1e-11, name
     assert n["gyration_omega_range"] > 0.01 and n["plane_rate_range"] > 0.05  # the motion is not trivial
+    out = Numbers()
+    lf._record_poinsot(out, examples)
+    assert out.numbers["gyration_normal_angle_rad"] < 1e-11  # Ex. X.5: the normal there is along omega
     # the differenced azimuth agrees to the differences' own error (second order in the step)
     assert n["plane_rate_differences_max_relative_deviation"] < 1e-4
 
@@ -196,3 +200,28 @@ def test_node_period_is_fitted_not_assumed(period_years):
     fitted, iau = full.node_period(t, eps, args)
     assert fitted == pytest.approx(period_years, rel=1e-6)
     assert iau == pytest.approx(18.613, rel=1e-4)
+
+
+def test_a_free_body_needs_three_distinct_moments():
+    """Lamb's free body is A < B < C: two equal moments (a symmetric body) are refused before any work."""
+    spec = {"moments": [2.0, 2.0, 2.5], "samples": 10, "seed": 1, "tilt_deg": 1.0}
+    with pytest.raises(ValueError, match="A < B < C"):
+        lf.free_body(Numbers(), spec)
+
+
+def test_symmetric_earth_pole_turns_with_the_spin_at_euler_rate():
+    """The rigid oblate Earth: the pole turns about the figure axis in the spin's sense at (C - A)/A n
+    (Euler's free precession, Lamb Art. 50), n one turn a sidereal day; the recorded rate says its sign
+    convention."""
+    from classical_dynamics.models import earth, wobble
+    from classical_dynamics.results import Results
+
+    model = wobble.assemble(earth.H_MHB2000, {})
+    values = lf.symmetric_earth(model, 0.1 * earth.ARCSEC, days=2.0)
+    a = 1.0 - earth.H_MHB2000  # A/C
+    n = 2 * np.pi / earth.sidereal_to_solar_days(1.0)
+    assert values.body_rate == pytest.approx((1.0 - a) / a * n, rel=1e-6)
+    results = Results("chandler", "x", "x")
+    lf.record_symmetric_earth(results, values)
+    note = results.numbers["body_rate_measured_rad_per_s"]["note"]
+    assert "right-handed" in note and "positive" in note

@@ -6,6 +6,7 @@ import yaml
 from scipy.integrate import solve_ivp
 
 from classical_dynamics.models import earth, wobble
+from classical_dynamics.results import Results
 from classical_dynamics.scenes import SceneError
 from classical_dynamics.studies import validate
 from classical_dynamics.studies.chandler import poinsot
@@ -91,6 +92,10 @@ def test_poinsot_body_numbers():
     assert r.numbers["poinsot_plane_error"] == body.plane_error
     assert r.hard["poinsot_plane_fixed"] == (body.plane_error, 1e-11)
     assert "herpolhode" in r.figures and "$" in r.figures["herpolhode"]
+    # the count of half periods says whose sign changes it counts: the body component p of omega
+    results = Results("chandler", "x", "x")
+    poinsot.record_poinsot_body(results, body, "test")
+    assert "$p$" in results.numbers["poinsot_half_periods"]["note"]
 
 
 def test_cone_rates_signs_and_forms():
@@ -108,6 +113,10 @@ def test_cone_rates_signs_and_forms():
     assert rates.psi_dot_measured == pytest.approx(L / a, rel=1e-10)
     assert rates.chi_dot_measured == pytest.approx(-(1.0 - a) * spin / a, rel=1e-10)
     assert rates.no_slip_cones_ratio == pytest.approx(1.0, rel=1e-10)
+    r = Recorder()
+    poinsot.record_cone_rates(r, rates)
+    assert r.numbers["psi_dot_closed_form"] == pytest.approx(L / a, rel=1e-10)
+    assert r.numbers["chi_dot_closed_form"] == pytest.approx(-(1.0 - a) * spin / a, rel=1e-10)
 
 
 def _scene(tmp_path, moments):

@@ -641,6 +641,7 @@ def test_lee_section_2_motions_on_eulers_equations():
     assert n["closed_orbit_return"] < 1e-10
     assert n["first_kind_rate_over_m"] == pytest.approx(1.0, rel=1e-3)
     assert n["second_kind_closest"] < 1e-6
+    assert 0.0 < n["second_kind_time_closest"] < 60.0  # lambda t, within the run's 60/lambda
     assert n["saddle_growth_rate"] == pytest.approx(n["saddle_growth_rate_lee"], rel=1e-3)
     assert n["permanent_rotation_residual"] < 1e-14 and n["center_kick_largest"] < 1e-5
     assert n["permanent_rotation_groebner_remainders"] == 0
@@ -744,3 +745,30 @@ def test_next_to_the_separatrix_the_sign_of_the_energy_error_decides_the_side():
     assert len(inside) > 0 and (inside.energy_change < 0).all()  # large, but lowered: inside
     assert results.numbers["separatrix_large_errors_inside"]["value"] == len(inside)
     assert results.numbers["separatrix_runs_on_wrong_side"]["value"] == int(frame.wrong_side.sum())
+
+
+def test_a_middle_axis_portraits_table_holds_only_elements_the_gallery_can_draw():
+    """The gallery redraws a portrait from its table (portrait.draw styles each element of
+    portrait.ELEMENTS, the singular points by type, the window): an element it does not know would vanish
+    from the grid. The force-free plane I: its trajectories and Euler's dots."""
+    from classical_dynamics.studies import self_excited
+
+    scene = validate("self_excited", ROOT / "workflow/scenes/self_excited/middle_plane_one_force_free.yaml")
+    elements = set(self_excited.run(scene, quick=True).tables["portrait"][0].element)
+    assert elements <= set(portrait.ELEMENTS) | set(portrait.POINT_TYPES) | {"window"}
+    assert {"trajectory", "euler"} <= elements
+
+
+def test_the_largest_axis_time_scale_is_lees_and_says_what_tau_is():
+    """tau_per_t is Lee's sqrt(2d), d = delta^2 sqrt(bc) R / 2, R = sqrt(a^2 bc + mu^2 (b - c)^2) (written
+    out here from the recorded body, cylinder and mu), and its note defines tau, the time of the plane."""
+    from classical_dynamics.studies import self_excited
+
+    scene = validate("self_excited", ROOT / "workflow/scenes/self_excited/largest_unperturbed_strong.yaml")
+    numbers = self_excited.run(scene, quick=True).numbers
+    a, b, c, delta, mu = (
+        numbers[k]["value"] for k in ("body_a", "body_b", "body_c", "delta", "mu0_over_moment")
+    )
+    d = 0.5 * delta**2 * np.sqrt(b * c) * np.sqrt(a**2 * b * c + mu**2 * (b - c) ** 2)
+    assert numbers["tau_per_t"]["value"] == pytest.approx(np.sqrt(2 * d), rel=1e-14)
+    assert "τ =" in numbers["tau_per_t"].get("note", "")

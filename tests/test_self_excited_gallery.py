@@ -169,3 +169,31 @@ def test_a_taller_window_keeps_the_others_tick_step_and_the_caption_says_so():
     text = gallery.caption(group, found)
     assert "The window of (c) reaches $|q_1|$ = 6, that of the others 3" in text
     assert "reaches" not in gallery.caption(group, found[:2])  # windows alike: shared, nothing to say
+
+
+def test_a_zoom_panel_keeps_its_own_window_and_shows_its_upper_half():
+    """A zoom (one period of a plane) is drawn in its own window, not the portraits' shared one: its p1 axis
+    runs from -0.15 of its own window's height (the separatrices T1, T2 above the axis)."""
+    import matplotlib.pyplot as plt
+
+    group = next(g for g in gallery.GROUPS if any(entry.endswith("/zoom") for entry, _ in g.panels))
+    assert group.axis == "largest"
+
+    def panel(letter, kind, lo, hi, y_max):
+        frame = pd.DataFrame(
+            {
+                "element": ["trajectory", "trajectory", "window", "window"],
+                "curve": [0, 0, 1, 1],
+                "phi2": [lo, hi, lo, hi],
+                "p1": [-0.5 * y_max, 0.5 * y_max, -y_max, y_max],
+            }
+        )
+        return gallery.Panel(letter, f"scene_{letter}", kind, f"({letter})", "", frame, {})
+
+    found = [panel("a", "portrait", -4.0, 4.0, 3.0), panel("b", "portrait", -4.0, 4.0, 3.0)]
+    found.append(panel("c", "zoom", -1.0, 2.0, 0.8))
+    fig = gallery.grid_figure(group, found)
+    fig.canvas.draw()
+    zoom = next(ax for ax in fig.axes if ax.get_title(loc="left").startswith("(c)"))
+    assert zoom.get_ylim()[0] == pytest.approx(-0.15 * 0.8)
+    plt.close(fig)

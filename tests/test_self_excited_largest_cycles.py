@@ -9,6 +9,7 @@ import pytest
 import sympy as sp
 
 from classical_dynamics.models import self_excited as se
+from classical_dynamics.results import Results
 from classical_dynamics.solvers.ode import Problem, solve
 from classical_dynamics.studies.self_excited import largest_cycles as lc
 from classical_dynamics.studies.self_excited import portrait
@@ -117,6 +118,11 @@ def test_permanent_rotations_about_x_and_F_shrinking_onto_the_stable_one():
     assert v.drift < 1e-12
     assert v.plus_kicked < 1e-5
     assert v.minus_rate == pytest.approx(2 * np.sqrt(-L.m * L.mu), rel=1e-3)
+    results = Results("self_excited", "x", "x")
+    lc._record_permanent_rotations(results, v)
+    assert results.numbers["x_rotation_minus_rate"]["value"] == pytest.approx(
+        2 * np.sqrt(-L.m * L.mu), rel=1e-3
+    )
     ratio = v.limit.ratio.to_numpy()
     assert np.all(np.diff(np.abs(1 - ratio)) < 0) and abs(1 - ratio[-1]) < 0.01
 

@@ -309,6 +309,12 @@ def test_singular_points_appear_in_pairs_only_for_m1_within_one():
     # cos < 0) and none beyond: the figure's markers, counted here
     values = largest_axis.singular_point_bifurcation()
     assert values.wrong == 0
+    # each root to brentq's contract at xtol 1e-14: |x - x*| <= 1e-14 + 4 eps |x*|, x* = -arcsin(m1) (saddle)
+    # or pi + arcsin(m1) taken into (-pi, pi] (center)
+    for m1, x, kind in values.found:
+        exact = -np.arcsin(m1) if kind == "saddle" else np.pi + np.arcsin(m1)
+        exact = exact - 2 * np.pi if exact > np.pi else exact
+        assert abs(x - exact) <= 1e-14 + 4 * np.finfo(float).eps * abs(exact)
     results = _results()
     largest_axis._record_singular_point_bifurcation(results, values)
     assert results.stability[0]["measured"] == 0

@@ -192,6 +192,15 @@ def test_quadrature_masses_are_the_bodies_lengths_areas_and_volumes():
         assert np.allclose(I, I.T) and np.all(np.linalg.eigvalsh(I) > -1e-12)
 
 
+def test_the_discs_rule_has_the_captions_nodes():
+    """The moments table's caption: n Gauss-Legendre nodes a radius, 2n trapezoidal nodes an angle; the
+    weights sum to the area pi a^2."""
+    points, weights = inertia.disc(1.5, 6)
+    assert points.shape == (6 * 12, 3) and weights.sum() == pytest.approx(np.pi * 1.5**2, rel=1e-13)
+    angles = np.unique(np.round(np.arctan2(points[:, 1], points[:, 0]) % (2 * np.pi), 12))
+    assert angles.size == 12
+
+
 def test_every_moment_matches_the_textbook_closed_form_and_the_axis_theorems_hold():
     results = Results("solvers", "inertia", "t")
     inertia.run(scene(numerics={"nodes": 8}), results, True)
@@ -319,6 +328,9 @@ def test_the_spring_keeps_its_energy_and_the_handbooks_rotation_turns_60_degrees
     # the records write them under the report's names
     results = Results("solvers", "hard_cases", "t")
     hard_cases._record_energy_kept(results, spring)
+    # a flag of 1 or 0 says what 1 means, and by what it was found
+    flag = results.numbers["spring_hamilton_equations_exact"].get("note", "")
+    assert flag.startswith("1:") and "sympy" in flag
     hard_cases._record_rotations(results, turn)
     n = values(results)
     assert n["oscillator_hamiltonian_midpoint_energy_change"] == spring.midpoint_energy_change["hamiltonian"]
@@ -389,6 +401,46 @@ def test_the_tops_work_precision_errors_are_those_of_scipys_dop853_against_jacob
     tight = solve_ivp(rhs, t[[0, -1]], y0, "DOP853", t_eval=t, rtol=1e-13, atol=1e-15)
     assert np.max(np.abs(tight.y[5] - nut.cos_theta(t, y0[5]))) < 1e-9
     assert values(results)["top_dop853_error_at_tightest"] == pytest.approx(a.error[1])
+
+
+def test_a_heavy_top_scene_without_an_rtol_runs(monkeypatch):
+    """numerics.rtol is optional in the schema: without it every part is run at a relative tolerance in
+    (0, 1). The parts are replaced by recorders of their arguments: only the tolerance they get is tested."""
+    got = {}
+    for name in ("general", "steady", "gyroscope", "oscillation", "sleeping", "descent"):
+        monkeypatch.setattr(heavy_top, name, lambda *args, _name=name: got.setdefault(_name, args))
+    for name in ("roots_limits", "reciprocal", "work_precision"):
+        monkeypatch.setattr(heavy_top, name, lambda *args: None)
+    for name in dir(heavy_top):
+        if name.startswith("_record_"):
+            monkeypatch.setattr(heavy_top, name, lambda *args: None)
+    data = {
+        "top": {"A": 1.0, "C": 0.5, "spin": 6.0, "inclination_deg": 60.0},
+        "effects": {"gravity": {"Mgh": 1.0}},
+    }
+    heavy_top.run(scene(**data), Results("solvers", "heavy_top", "t"), True)
+    rtols = [got["general"][4], got["steady"][2], got["gyroscope"][1]]
+    rtols += [got["oscillation"][1], got["sleeping"][1], got["descent"][1]]
+    assert all(isinstance(r, float) and 0.0 < r < 1.0 for r in rtols)
+
+
+def test_the_sleeping_tops_bound_says_its_formula():
+    """The linear bound's note gives the formula it is: theta0 nu / sqrt(nu^2 - 4 A Mgh) (Lamb Art. 79)."""
+    values = heavy_top.Sleeping(
+        1e-4, 100, 1e-3, 1e-3, 0.5, 0.5, np.array([1.0, 2.0]), np.array([1.0, 2.0]), 1.0
+    )
+    results = Results("solvers", "heavy_top", "t")
+    heavy_top._record_sleeping(results, values)
+    note = results.numbers["sleeping_above_linear_bound"].get("note", "")
+    assert "theta0" in note and "nu^2 - 4AMgh" in note
+
+
+def test_the_work_precision_table_counts_each_methods_own_steps():
+    """DOPRI5 (order 5) takes more steps than DOP853 (order 8) to the same rtol on the same top (HNW vol. I,
+    II.10): each row's steps are its own method's."""
+    numerics = {"methods": ["dop853", "dopri5"], "tolerances": [1e-8], "repeats": 1}
+    frame = heavy_top.work_precision(TOP, 6.0, np.radians(60.0), numerics, True).set_index("method")
+    assert frame.steps["dopri5"] > 2 * frame.steps["dop853"]
 
 
 def test_the_heavy_top_run_records_the_top_and_every_part():
@@ -525,6 +577,39 @@ def test_the_cost_models_steady_roots_solve_lambs_quadratic_and_the_period_is_th
     split = next(w for w in sweep if w.field == "numerics.steps")
     assert "600 splitting steps" in split.what  # 20/0.1 + 20/0.05
     assert cost.cost({"problem": "hard_cases"})[0].seconds > 0
+
+
+def test_the_long_horizons_splitting_steps_scale_as_one_over_the_step():
+    """Halving numerics.step doubles the splitting's steps and their seconds (span/h steps)."""
+    cost = importlib.import_module("classical_dynamics.studies.solvers.cost")
+
+    def work(h):
+        data = {"problem": "long_horizon", "numerics": {"max_periods": 1000, "step": h, "rtol": 1e-8}}
+        return next(w for w in cost.cost(data) if w.field == "numerics.step")
+
+    assert work(0.025).seconds == pytest.approx(2 * work(0.05).seconds, rel=1e-12)
+
+
+def test_the_heavy_tops_fixed_checks_are_estimated_above_the_steps_they_take(monkeypatch):
+    """cost.py estimates above, not below: its count of the fixed checks' DOP853 steps (gyroscope,
+    disturbed precessions, sleeping top, descent; the reciprocal runs are scipy's, priced apart) is not below
+    the steps those runs take on the shipped top at its rtol 1e-12, counted here from each solution."""
+    cost = importlib.import_module("classical_dynamics.studies.solvers.cost")
+    steps, run = [], heavy_top._run
+
+    def counted(*args, **kw):
+        sol = run(*args, **kw)
+        steps.append(sol.n_steps)
+        return sol
+
+    monkeypatch.setattr(heavy_top, "_run", counted)
+    heavy_top.gyroscope(TOP, 1e-12)
+    heavy_top.oscillation(TOP, 1e-12)
+    heavy_top.sleeping(TOP, 1e-12, False)
+    heavy_top.descent(TOP, 1e-12)
+    data = {"problem": "heavy_top", "top": {"A": 1.0, "C": 0.5, "spin": 6.0, "inclination_deg": 60.0}}
+    what = next(w.what for w in cost.cost(data) if w.field == "top.C")
+    assert float(what.split()[0]) >= sum(steps) > 0
 
 
 def test_the_blow_up_times_the_claims_call_evaluated_are_lees_integral():

@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from classical_dynamics.models.viscous_medium import ViscousMedium, modulation, viscous_modulated
+from classical_dynamics.results import Results
 from classical_dynamics.solvers import sine_cosine_integrals as sc
 from classical_dynamics.solvers.ode import Problem, solve
 from classical_dynamics.studies.self_excited import section5 as s5
@@ -71,6 +72,10 @@ def test_spiral_rates_and_hyperbola():
     spiral = s5.spiral(V3)
     assert abs(spiral.decay_rate / V3.nu - 1) < 1e-8
     assert abs(spiral.turn_rate / V3.g1 - 1) < 1e-8
+    # started on the plane r = m3/mu, omega stays in it (r' = m3 - mu r for the equal moments A = B)
+    results = Results("self_excited", "x", "x")
+    s5._record_spiral(results, spiral)
+    assert results.numbers["spiral_plane_gap"]["value"] < 1e-12
     curve = s5.singular_curve(FREE2)
     panels, _ = s5.singular_curve_panels(curve)
     assert curve.drift < 1e-12
