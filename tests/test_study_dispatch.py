@@ -55,3 +55,82 @@ def test_a_fault_in_the_cost_model_is_not_taken_for_a_bad_scene(monkeypatch):
     monkeypatch.setattr(study_module("chains"), "cost", cost)
     with pytest.raises(RuntimeError, match="a bug in the cost model"):
         validate("chains", OZONE)
+
+
+def _spy(monkeypatch, module, name, calls):
+    """Replace module.name by a recorder of its arguments (the dispatch is under test, not the analysis)."""
+    monkeypatch.setattr(module, name, lambda *args: calls.append((f"{module.__name__}.{name}", args)))
+
+
+def test_the_chandler_study_sends_each_kind_of_scene_to_its_analysis(monkeypatch):
+    """A body to the retarding couple, an observation to the IERS fit, a model Earth to the model (then
+    Poinsot where asked, the accuracy sweep where asked), each with the scene, the one Results and quick."""
+    from types import SimpleNamespace
+
+    from classical_dynamics.studies import chandler
+    from classical_dynamics.studies.chandler import accuracy, model, observed, retarding
+
+    calls = []
+    for module in (accuracy, model, observed, retarding):
+        _spy(monkeypatch, module, "run", calls)
+    monkeypatch.setattr(chandler, "_poinsot", lambda *args: calls.append(("_poinsot", args)))
+    kinds = {
+        "body": ["classical_dynamics.studies.chandler.retarding.run"],
+        "observation": ["classical_dynamics.studies.chandler.observed.run"],
+        "earth": ["classical_dynamics.studies.chandler.model.run", "_poinsot"],
+        "accuracy": [
+            "classical_dynamics.studies.chandler.model.run",
+            "_poinsot",
+            "classical_dynamics.studies.chandler.accuracy.run",
+        ],
+    }
+    for kind, expected in kinds.items():
+        data = {"analysis": {"accuracy_cost": {}}, "earth": {}} if kind == "accuracy" else {kind: {}}
+        scene = SimpleNamespace(name="s", title="t", data=data)
+        calls.clear()
+        results = chandler.run(scene, quick=True)
+        assert [name for name, _ in calls] == expected, kind
+        for name, args in calls:
+            assert args[:2] == (scene, results) and (name == "_poinsot" or args[2] is True), (kind, name)
+
+
+def test_the_precession_study_runs_its_rung_and_compares_a_modern_rate_with_psi_A(monkeypatch):
+    """Every rung starts from the secular model and Lamb's examples; the averaged and full rungs add theirs
+    (the accuracy sweep where asked); with today's constants the rate is set against IAU 2006's psi_A as
+    rate/psi_A - 1, here of two numbers the spies record."""
+    from types import SimpleNamespace
+
+    from classical_dynamics.studies import precession
+    from classical_dynamics.studies.precession import accuracy, averaged, examples, full, secular
+
+    calls = []
+
+    def secular_run(scene, results):
+        calls.append(("secular", (scene, results)))
+        results.number("precession_rate_arcsec_per_year", 50.0, "″/yr")
+        results.number("iau2006_psi_A_rate_arcsec_per_year", 40.0, "″/yr")
+        return "the model"
+
+    monkeypatch.setattr(secular, "run", secular_run)
+    for module in (examples, averaged, full, accuracy):
+        _spy(monkeypatch, module, "run", calls)
+    for fidelity, constants, analysis, expected in (
+        ("secular", "lamb1920", {}, ["examples"]),
+        ("averaged", "modern", {}, ["examples", "averaged"]),
+        ("full", "modern", {"accuracy_cost": {}}, ["examples", "full", "accuracy"]),
+        ("full", "modern", {}, ["examples", "full"]),
+    ):
+        scene = SimpleNamespace(
+            name="s", title="t", data={"fidelity": fidelity, "constants": constants, "analysis": analysis}
+        )
+        calls.clear()
+        results = precession.run(scene, quick=True)
+        assert [name.rsplit(".")[-2] if "." in name else name for name, _ in calls] == ["secular", *expected]
+        assert all(args[0] is scene for _, args in calls) and calls[0][1][1] is results
+        assert all(args[1:3] == ("the model", results) for _, args in calls[1:])
+        assert all(args[3] is True for _, args in calls[2:])  # quick, where the rung takes it
+        relative = results.numbers.get("rate_minus_psi_A_relative")
+        assert (relative is None) == (constants == "lamb1920")
+        if relative:
+            assert relative["value"] == pytest.approx(50.0 / 40.0 - 1.0, rel=1e-15)
+            assert "IAU 2006" in relative["note"] and "luni-solar" in relative["note"]
