@@ -66,9 +66,6 @@ UNREACHABLE = {
     ("chandler", "one of k2 or period_solar_days"),
     # the schema's maximum of step_hours is 24, MAX_STEP_HOURS itself: no step above it reaches check()
     ("precession", "the full rung resolves the daily spin"),
-    # the loader refuses a NaN or an infinity after the schema, before check(), with the same words; an
-    # integer is always finite
-    ("self_excited", '"a finite number"'),
 }
 
 

@@ -394,3 +394,40 @@ def test_a_job_validates_under_the_budget_its_run_gives(tmp_path, capsys):
     done = main(base + [str(tmp_path / "b"), str(tmp_path / "tb"), "--quick", "--budget-seconds", "7200"])
     err = capsys.readouterr().err
     assert done == 0 and (tmp_path / "b/summary.json").is_file(), err
+
+
+def _first_number(data, path=()):
+    """The dotted path of the first number (not a bool) in a scene, depth first."""
+    items = data.items() if isinstance(data, dict) else enumerate(data) if isinstance(data, list) else ()
+    for key, value in items:
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            return (*path, key)
+        found = _first_number(value, (*path, key))
+        if found:
+            return found
+    return None
+
+
+@pytest.mark.parametrize("value", [float("nan"), float("inf"), float("-inf")])
+@pytest.mark.parametrize("study", ["chains", "chandler", "precession", "self_excited", "solvers"])
+def test_a_number_that_is_not_finite_is_refused_by_name_in_every_study(tmp_path, study, value):
+    """NaN passes every minimum and maximum of a schema: the loader refuses it by name, in every study,
+    before any check() of the study's sees it; an infinity too, or the schema's bound does first."""
+    scene = sorted((ROOT / "workflow/scenes" / study).glob("*.yaml"))[0]
+    data = yaml.safe_load(scene.read_text())
+    *parents, last = _first_number(data)
+    target = data
+    for key in parents:
+        target = target[key]
+    target[last] = value
+    path = write(tmp_path, data)
+    with pytest.raises(SceneError) as error:
+        validate(study, path)
+    field = ".".join(map(str, (*parents, last)))
+    assert str(error.value).startswith(f"{path}: field '{field}'"), str(error.value)
+    # a NaN is no number at all; an infinity is one past the schema's bound, where the field has one
+    said = str(error.value).split(": expected ", 1)[1]
+    if value != value:
+        assert said.startswith("a finite number, got nan"), said
+    else:
+        assert said.startswith(("a finite number", "a number <", "a number >")) and "inf" in said, said
