@@ -118,6 +118,7 @@ READS_THE_TREE = {
     "test_snakemake_report.py",
     "test_report_units.py",
     "test_io_and_report_units.py",
+    "test_check_sites.py",
 }
 
 
