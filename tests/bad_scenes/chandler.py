@@ -157,6 +157,15 @@ CASES = [
         analysis__poinsot__moments=[2.5, 2.0, 1.0],
         says="A < B < C",
     ),
+    # two moments equal: a symmetric body has no separatrix, the order must be strict
+    _case(
+        "poinsot-A-equals-B",
+        "physics",
+        "analysis.poinsot.moments",
+        TRIAXIAL,
+        analysis__poinsot__moments=[2.0, 2.0, 3.0],
+        says="A < B < C",
+    ),
     _case(
         "two-kinds",
         "physics",
@@ -240,7 +249,7 @@ CASES = [
         effects__elastic_yielding__period_solar_days=300.0,
         # by hand: H = (C - A)/C = 0.0032737949, A/(C - A) = (1 - H)/H = 304.4559 sidereal days,
         # / 1.0027378119 sidereal days per solar day = 303.62 solar days
-        says="a period longer than the rigid Earth's 303.62 days",
+        says="a period longer than the rigid Earth's 303.62 days (yielding lengthens it), got 300.0",
     ),
     _case(
         "random-periods-reversed",
@@ -256,7 +265,8 @@ CASES = [
         "analysis.accuracy_cost",
         RIGID,
         effects={"elastic_yielding": {"k2": 0.30, "source": "IERS Conventions (2010)"}},
-        says="a free rigid body (no effects but triaxiality)",
+        says="a free rigid body (no effects but triaxiality): the work-precision reference is the closed "
+        "form",
     ),
     # on the rigid modern Earth made triaxial: each analysis of the symmetric Earth in turn is the first left
     _case(

@@ -94,6 +94,14 @@ CASES = [
         says="nu != 0",
     ),
     _case(
+        "medium-torque-in-plane",
+        "physics",
+        "effects.body_torque.m",
+        LARGEST,
+        effects__body_torque={"m": [0.1, 0.0, 0.0]},
+        says="m1 in a phase-plane scene",
+    ),
+    _case(
         "plane-torque-in-medium",
         "physics",
         "effects.body_torque.m1",
@@ -244,7 +252,7 @@ CASES = [
         "effects.quadratic_torque",
         VISCOUS,
         effects__quadratic_torque={"nu": 0.1},
-        says="body_torque and drag only",
+        says="body_torque and drag only (Lee §5)",
     ),
     _case(
         "plane-in-medium",
@@ -260,7 +268,7 @@ CASES = [
         "effects.drag.mu",
         VISCOUS,
         effects__drag__mu=0.0,
-        says="both drags positive",
+        says="both drags positive (the medium resists equatorial and axial turning alike), got [0.3, 0.0]",
     ),
     _case(
         "drag-ratio-integer",

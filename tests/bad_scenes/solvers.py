@@ -178,7 +178,16 @@ CASES = [
         "top-below-steady-precession", "physics", "top.spin", TOP, top__spin=1.0, says="a spin of at least"
     ),
     _case(
-        "top-too-slender-at-spin-6", "physics", "top.C", TOP, top__C=0.2, top__spin=30.0, says="C of at least"
+        "top-too-slender-at-spin-6",
+        "physics",
+        "top.C",
+        TOP,
+        top__C=0.2,
+        top__spin=30.0,
+        effects__gravity__Mgh=2.0,
+        # by hand: sqrt(4 A Mgh cos 30°)/6 = sqrt(4 x 1 x 2 x 0.866025)/6 = 2.63215/6 = 0.4387 (Mgh != 1 and
+        # A = 1: a slip between A and Mgh shows)
+        says="C of at least sqrt(4 A Mgh cos 30)/6 = 0.4387",
     ),
     _case(
         "splitting-on-the-top",
