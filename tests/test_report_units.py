@@ -342,6 +342,10 @@ def test_a_result_with_an_unregistered_unit_or_a_bare_column_stops_where_it_is_w
     from classical_dynamics.units import UnknownUnit
 
     r = Results("chains", "toy", "A toy scene")
+    with pytest.raises(ValueError, match="a name and a value"):
+        r.number(None, 1.0, "m")
+    with pytest.raises(ValueError, match="a name and a value"):
+        r.number("length", None, "m")
     with pytest.raises(UnknownUnit, match="furlongs"):
         r.number("length", 1.0, "furlongs")
     with pytest.raises(UnknownUnit, match="fortnights"):

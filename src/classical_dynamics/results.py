@@ -76,6 +76,8 @@ class Results:
         """tolerance: how far a rebuild may move the value before `verify` fails, {"absolute": a},
         {"relative": r} or a bare number (absolute, in `unit`); none: verify's tight default (verify.py).
         A unit the registry does not know stops the run here, where it is written, not in the report."""
+        if not (isinstance(name, str) and name) or value is None:
+            raise ValueError(f"a result needs a name and a value, not {name!r} = {value!r}")
         units.lookup(unit)
         entry = {"value": value, "unit": unit}
         if reference is not None:
