@@ -367,6 +367,20 @@ def test_the_modes_of_a_long_particle_chain_cost_at_least_the_measured_time_and_
     assert seconds(10) > seconds(5)
 
 
+@pytest.mark.parametrize("name", ["convergence", "continuum_limit"])
+def test_a_links_sweep_is_priced_at_least_its_dense_matrix(name):
+    """A chain of n links is a dense generalized eigenproblem: at least one n x n matrix of doubles, 8 n^2
+    bytes, whichever sweep asks for it; a particle chain's tridiagonal one grows only like n."""
+    from classical_dynamics.studies.chains.cost import cost
+
+    def memory_mb(model, n):
+        data = {"chain": {"model": model, "n": 10}, "analysis": {name: {"n_values": [10, n]}}}
+        return next(w.memory_mb for w in cost(data) if w.field == f"analysis.{name}.n_values")
+
+    assert memory_mb("links", 3000) >= 8 * 3000**2 / 1e6
+    assert memory_mb("particles", 3000) < 8 * 3000**2 / 1e6 / 10
+
+
 # --- planar.py: the rotating ring (Lamb Art. 98) ---------------------------------------------------------
 
 
