@@ -139,9 +139,10 @@ def test_closed_form_takes_the_printed_formula_below_one_rad_per_s():
 
 def test_accuracy_cost_quick_keeps_small_sizes_and_records_each_solver():
     """The solver sweep against scipy's Laguerre zero and Bessel zero: the quick run drops the sizes above
-    4096, every solver's lambda_1 at n = 16 is scipy's lowest zero of L_16, omega_1 end-corrected is (n + 1/2)
-    lambda_1 against j01/2, and the record has one worst error per solver."""
-    frame = discrete.accuracy_cost([16, 8192], 1, True)
+    QUICK_MAX_N, every solver's lambda_1 at n = 16 is scipy's lowest zero of L_16, omega_1 end-corrected is
+    (n + 1/2) lambda_1 against j01/2, and the record has one worst error per solver."""
+    frame = discrete.accuracy_cost([16, 2048], 1, True)
+    assert 16 <= discrete.QUICK_MAX_N < 2048
     assert set(frame.n) == {16}
     lam1 = special.roots_laguerre(16)[0][0]
     j1 = special.jn_zeros(0, 1)[0] / 2

@@ -30,6 +30,7 @@ symbolic = lazy_module(f"{__package__}.symbolic")  # sympy, for the scenes that 
 
 
 SOLVER_LIMITS = chain_eigen.SOLVER_LIMITS
+QUICK_MAX_N = 1024  # a quick run's sweeps stop here: past it a dense solver takes seconds a size
 
 # What the reader sees: each frequency unit typeset, each solver and scheme by name and in one colour in
 # every figure (Okabe-Ito).
@@ -516,7 +517,7 @@ class Convergence(NamedTuple):
 def convergence(model, n_values, quick) -> Convergence:
     """The gravest frequency against n: rigid links, or particles with l = na, l = (n + 1/2)a and
     Richardson's extrapolation from n/2 and n, against the continuum."""
-    n_values = [n for n in n_values if not quick or n <= 1024]
+    n_values = [n for n in n_values if not quick or n <= QUICK_MAX_N]
     exact = bessel_j0_zeros(1)[0] / 2  # omega_1 / sqrt(g/l)
     rows = []
     if model == "links":
@@ -720,7 +721,7 @@ def exact_lambda1(n: int) -> float:
 def accuracy_cost(n_values, repeats, quick) -> pd.DataFrame:
     """Each solver's time for the lowest five eigenvalues of the hanging chain, its error in lambda_1 against
     the exact Laguerre zero, and the end-corrected omega_1's against the continuum."""
-    n_values = [n for n in n_values if not quick or n <= 4096]
+    n_values = [n for n in n_values if not quick or n <= QUICK_MAX_N]
     repeats = 3 if quick else repeats
     j1 = bessel_j0_zeros(1)[0] / 2
     rows = []
