@@ -1,7 +1,7 @@
 """Speed of the solver layer, side by side in one run (printed, not asserted).
 
 solve() runs the final-state loop when no dense output, events or step record is asked for;
-specialize=True compiles that loop for the one right-hand side (a second or so, reported apart).
+specialize=True compiles that loop for the one right-hand side (seconds, reported apart).
 
 1. HNW rigid body, time to reach error 1e-10 at t = 20: this library's best adaptive method against
    scipy's solve_ivp DOP853, and against a hand-written compiled fixed-step order-8 loop (the RHS

@@ -320,11 +320,10 @@ def test_blow_up_is_located_without_dense_output_asked_for():
     assert sol.t == pytest.approx(ref.riccati_blow_up_time(m, mu, p0), rel=1e-6)
 
 
-def test_the_specialized_loops_take_the_plain_loops_steps():
-    """specialize=True compiles the final-state loop, and the batch's over rows, for one right-hand side: the
-    same steps and the same numbers as the plain loops, for both methods, to the end and to a blow-up (at
-    riccati_blow_up_time, a closed form). One right-hand side for every case: each compilation takes
-    seconds."""
+def test_the_specialized_loop_takes_the_plain_loops_steps():
+    """specialize=True compiles the final-state loop for one right-hand side: the same steps and the same
+    numbers as the plain loop, for both methods, to the end and to a blow-up (at riccati_blow_up_time, a
+    closed form). One right-hand side for every case: each compilation takes seconds."""
     m, mu = 1.0, 1.0  # p' = 1 + p^2
     for method in ("dop853", "dopri5"):
         for t1 in (1.0, 3.0):  # p = tan t: whole to t = 1, a blow-up at pi/2 before t = 3
@@ -340,6 +339,13 @@ def test_the_specialized_loops_take_the_plain_loops_steps():
             )
         assert fast.status == "blow-up"
         assert fast.t == pytest.approx(ref.riccati_blow_up_time(m, mu, 0.0), rel=1e-6)
+
+
+def test_the_specialized_batch_is_the_plain_batch():
+    """specialize=True compiles the batch's loop over rows (shared out over the cores) for one right-hand
+    side: the same numbers as the plain batch, row by row, a blow-up among them located at its closed-form
+    time."""
+    m, mu = 1.0, 1.0
     Y0 = np.array([[0.0], [0.5], [-0.3], [1.5]])  # the last blows up at pi/2 - atan(1.5) = 0.59 < 1
     plain = solve_batch(rhs.riccati, Y0, (0.0, 1.0), [m, mu], rtol=1e-10, atol=1e-12)
     fast = solve_batch(rhs.riccati, Y0, (0.0, 1.0), [m, mu], rtol=1e-10, atol=1e-12, specialize=True)

@@ -613,8 +613,8 @@ def specialized_final_state(rhs):
 
     The right-hand side is a constant of the compiled code, so its calls are direct (not through a function
     pointer) and the call from Python carries no function argument to type: about twice as fast again, for
-    about a second of compilation on the first call in a process. Numba cannot cache it on disk (its cache
-    is keyed by the function object), so it is opt-in.
+    several seconds of compilation (6 to 10 s on 2 cores) on the first call in a process. Numba cannot
+    cache it on disk (its cache is keyed by the function object), so it is opt-in.
     """
     if rhs not in _SPECIALIZED:
 
