@@ -105,6 +105,14 @@ def test_the_hnw_sweep_measures_errors_against_an_independent_integration_and_th
     assert set(results.timing_tables) == {"work_precision", "first_call"} and "work_precision" in (
         results.timing_figures
     )
+    # two legends below the panels: the adaptive methods under the work-precision panel, the splittings under
+    # their convergence panel, each method once
+    fig = results.timing_figures["work_precision"][0]
+    left, right = ([t.get_text() for t in legend.get_texts()] for legend in fig.legends)
+    assert sorted(left) == ["dop853", "scipy:DOP853"], left
+    assert [label for label in right if label.startswith("splitting, order")] == [
+        f"splitting, order {k} (fitted order {n[f'fitted_order_splitting_order_{k}']:.2f})" for k in (2, 4)
+    ]
 
 
 def test_the_detest_sweep_without_steps_has_one_panel_and_scipys_errors():
@@ -265,6 +273,17 @@ def test_numerical_damping_figure_names_each_method_as_its_table_does():
     # the grey line stands between this library's pairs and SciPy's integrators
     (line,) = [v for v in ax.lines if v.get_xdata()[0] == v.get_xdata()[-1]]
     assert line.get_xdata()[0] == names.index("scipy:RK45") - 0.5
+    # every point drawn inside the axes, and each series of markers named by its tolerance, as in the table
+    lo, hi = ax.get_xlim()
+    points = [v for v in ax.lines if v is not line]
+    assert all(lo < x < hi for v in points for x in v.get_xdata())
+    assert lo < 0 and hi > len(names) - 1
+    rtols = sorted(set(frame[frame.method != "Störmer–Verlet"].setting), reverse=True)
+    superscript = str.maketrans(
+        "-0123456789", "\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079"
+    )
+    expected = [f"relative tolerance 10{str(round(math.log10(r))).translate(superscript)}" for r in rtols]
+    assert [v.get_label() for v in points] == expected
     plt.close(fig)
 
 

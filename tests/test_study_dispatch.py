@@ -134,3 +134,29 @@ def test_the_precession_study_runs_its_rung_and_compares_a_modern_rate_with_psi_
         if relative:
             assert relative["value"] == pytest.approx(50.0 / 40.0 - 1.0, rel=1e-15)
             assert "IAU 2006" in relative["note"] and "luni-solar" in relative["note"]
+
+
+def test_the_solvers_study_sends_each_problem_to_its_analysis(monkeypatch):
+    """Each problem to its module (the two test problems to the sweeps, anything else to the hard cases),
+    with the scene, the one Results and quick."""
+    from types import SimpleNamespace
+
+    from classical_dynamics.studies import solvers
+    from classical_dynamics.studies.solvers import hard_cases, heavy_top, inertia, long_horizon, sweeps
+
+    calls = []
+    for module in (hard_cases, heavy_top, inertia, long_horizon, sweeps):
+        _spy(monkeypatch, module, "run", calls)
+    for problem, expected in (
+        ("hnw_rigid_body", "sweeps"),
+        ("detest_b5", "sweeps"),
+        ("heavy_top", "heavy_top"),
+        ("inertia", "inertia"),
+        ("long_horizon", "long_horizon"),
+        ("hard_cases", "hard_cases"),
+    ):
+        scene = SimpleNamespace(name="s", title="t", data={"problem": problem})
+        calls.clear()
+        results = solvers.run(scene, quick=True)
+        assert [name for name, _ in calls] == [f"classical_dynamics.studies.solvers.{expected}.run"], problem
+        assert calls[0][1][0] is scene and calls[0][1][1] is results and calls[0][1][2] is True, problem

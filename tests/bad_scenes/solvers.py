@@ -190,6 +190,19 @@ CASES = [
         says="C of at least sqrt(4 A Mgh cos 30)/6 = 0.4387",
     ),
     _case(
+        "top-too-slender-at-spin-6-A-2",
+        "physics",
+        "top.C",
+        TOP,
+        top__A=2.0,
+        top__C=0.2,
+        top__spin=30.0,
+        effects__gravity__Mgh=2.0,
+        # by hand: sqrt(4 x 2 x 2 x 0.866025)/6 = sqrt(13.8564)/6 = 3.72242/6 = 0.6204 (A != 1: a slip of
+        # 4 A into 4/A shows as 0.3102)
+        says="C of at least sqrt(4 A Mgh cos 30)/6 = 0.6204",
+    ),
+    _case(
         "splitting-on-the-top",
         "physics",
         "numerics.methods",
