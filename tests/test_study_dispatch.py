@@ -119,10 +119,10 @@ def test_the_precession_study_runs_its_rung_and_compares_a_modern_rate_with_psi_
         ("averaged", "modern", {}, ["examples", "averaged"]),
         ("full", "modern", {"accuracy_cost": {}}, ["examples", "full", "accuracy"]),
         ("full", "modern", {}, ["examples", "full"]),
+        ("full", "modern", None, ["examples", "full"]),  # no analysis block (the schema makes it optional)
     ):
-        scene = SimpleNamespace(
-            name="s", title="t", data={"fidelity": fidelity, "constants": constants, "analysis": analysis}
-        )
+        data = {"fidelity": fidelity, "constants": constants, "analysis": analysis}
+        scene = SimpleNamespace(name="s", title="t", data={k: v for k, v in data.items() if v is not None})
         calls.clear()
         results = precession.run(scene, quick=True)
         assert [name.rsplit(".")[-2] if "." in name else name for name, _ in calls] == ["secular", *expected]
