@@ -117,3 +117,23 @@ def test_every_number_a_claim_compares_is_recorded(name):
     assert wanted
     _, results, _ = run(name)
     assert sorted(wanted - set(results.numbers)) == []
+
+
+def test_a_chain_without_ends_hangs_from_its_top():
+    """'ends' left out is fixed-free, a chain hanging from its top: sigma^2 a/g are the zeros of L_n."""
+    data = yaml.safe_load((SCENES / "hanging_particles.yaml").read_text())
+    chain = {k: v for k, v in data["chain"].items() if k != "ends"}
+    n, g, length = chain["n"], data["effects"]["gravity"]["g_m_per_s2"], chain["length_m"]
+    values = discrete.spectrum(chain, data["effects"], 5).values
+    np.testing.assert_allclose(values, np.sqrt(roots_laguerre(n)[0][:5] * g / (length / n)), rtol=1e-10)
+
+
+def test_the_equal_springs_scene_and_its_indefinite_neighbour():
+    """Lamb Arts. 85-89 from the scene's k and m: two masses on three springs k have lambda = k/m and 3k/m
+    (the smallest 1 in k/m); springs k, -k, k give K the eigenvalues -k and k, and the state matrix the real
+    root sqrt(k/m), at which a small start grows (fitted over lambda t = 15 to 30)."""
+    _, _, got = run("two_masses_equal_springs")
+    assert got["scene_smallest_stiffness_eigenvalue"] == pytest.approx(1.0, rel=1e-12)
+    np.testing.assert_allclose(sorted(got["indefinite_V_eigenvalues_over_k"]), [-1.0, 1.0], rtol=1e-14)
+    assert abs(got["indefinite_real_root_vs_exact"]) < 1e-12
+    assert got["indefinite_growth_rate_over_root"] == pytest.approx(1.0, abs=1e-3)

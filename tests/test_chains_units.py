@@ -94,6 +94,15 @@ def test_continuum_run_records_bernoullis_frequencies_node_and_rayleigh_bound():
     # the run's own hard-case verdicts as the report prints them, not a reference (the other asserts are)
     assert all(case["holds"] for case in results.stability)
     assert {"mode_shapes", "rayleigh"} <= set(results.figures)
+    # the mode shapes drawn: J0(j_s sqrt(x/l)) against the height x/l, each scaled to a largest swing of 1
+    # (the free end's, J0(0) = 1)
+    fig, _ = results.figures["mode_shapes"]
+    modes = [line for line in fig.axes[0].lines if line.get_label().startswith("mode")]
+    assert len(modes) == 3
+    for s, line in enumerate(modes):
+        x, swing = line.get_ydata(), line.get_xdata()
+        np.testing.assert_allclose(swing, special.j0(j[s] * np.sqrt(x)), atol=1e-12)
+        assert swing[np.argmin(x)] == pytest.approx(1.0, rel=1e-15)
 
 
 def test_continuum_string_without_gravity_stops_at_its_harmonics():

@@ -438,3 +438,17 @@ def _poinsot(moments):
 )
 def test_inconsistent_scenes_name_the_field(tmp_path, data, field):
     assert_refused(tmp_path, "chandler", data, field)
+
+
+def test_the_cost_of_a_model_earth_follows_its_tolerance_as_an_eighth_order_method_does():
+    """DOP853's steps grow as rtol^(-1/8): a tolerance 2^8 times tighter doubles the steps (the description
+    counts them); without rtol the scene runs at 1e-12."""
+    from classical_dynamics.studies.chandler.cost import cost
+
+    def steps(analysis):
+        (work,) = [w for w in cost({"earth": {}, "analysis": analysis}) if w.field.startswith("analysis.")]
+        return float(work.what.split()[0].replace(",", "").replace("\u2009", ""))
+
+    loose, tight = steps({"span_years": 50.0, "rtol": 2.56e-10}), steps({"span_years": 50.0, "rtol": 1e-12})
+    assert tight / loose == pytest.approx(2.0, rel=1e-3)
+    assert steps({"span_years": 50.0}) == tight

@@ -244,7 +244,7 @@ CASES = [
         chain__ends="free-free",
         chain__n=1,
         analysis={"modes": 1},
-        says="at least 2 particles for a free-free chain",
+        says="at least 2 particles for a free-free chain, got 1",
     ),
     _case(
         "masses-on-links",
@@ -313,7 +313,7 @@ CASES = [
         "analysis.rayleigh_symmetric",
         STR3,
         chain__n=4,
-        says="three particles, both ends fixed",
+        says="three particles, both ends fixed (Lamb Art. 94 Ex. 1), got 4",
     ),
     _case(
         "dispersion-on-links",
