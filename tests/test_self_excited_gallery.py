@@ -197,3 +197,42 @@ def test_a_zoom_panel_keeps_its_own_window_and_shows_its_upper_half():
     zoom = next(ax for ax in fig.axes if ax.get_title(loc="left").startswith("(c)"))
     assert zoom.get_ylim()[0] == pytest.approx(-0.15 * 0.8)
     plt.close(fig)
+
+
+def test_closed_form_panels_are_titled_with_the_parameters_their_curves_are_drawn_for():
+    """Lee's closed-form figures: each panel's title names its parameter, and its curves are Lee's formulas,
+    written out here, for that parameter: V = -m1 phi2 + cos phi2 (2.20) in (a), (b); k1, k2 (3.50), (3.51)
+    against |mu| (mu = -|mu|, a drag) in (c), (d), for alpha1 and the moments the caption states, crossing at
+    mu_c = b sqrt(ac)/(a + c)."""
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    from classical_dynamics.results import Results
+
+    results = Results("self_excited", "t", "t")
+    gallery._record_closed_forms(results, gallery.closed_form_data())
+    fig, caption = results.figures["closed_forms"]
+    A, B, C = (float(v) for v in re.search(r"for the moments ([\d.]+), ([\d.]+), ([\d.]+)", caption).groups())
+    alpha1 = float(re.search(r"\$\\alpha_1 = ([\d.]+)\$", caption).group(1))
+    a, b, c = (B - C) / A, (A - C) / B, (A - B) / C
+    titles = [ax.get_title(loc="left") for ax in fig.axes[:4]]
+    shown = [re.fullmatch(r"\(([a-d])\) \$(m_1|\\alpha_2)\$ = (\S+)", t) for t in titles]
+    assert all(shown), titles
+    assert [s.group(1) for s in shown] == list("abcd")
+    value = [float(s.group(3).replace("\u2212", "-")) for s in shown]
+    for ax, m1 in zip(fig.axes[:2], value[:2]):
+        x, y = ax.lines[0].get_data()
+        np.testing.assert_allclose(y, -m1 * x + np.cos(x), atol=1e-12)
+    mu_c = b * np.sqrt(a * c) / (a + c)
+    for ax, alpha2 in zip(fig.axes[2:4], value[2:]):
+        (size, k1), (_, k2) = (line.get_data() for line in ax.lines[:2])
+        mu, s = -np.asarray(size), alpha1**2 + alpha2**2
+        np.testing.assert_allclose(
+            k1, mu * (a + c) * alpha1 * alpha2 - 0.5 * b * np.sqrt(a * c) * s, atol=1e-12
+        )
+        np.testing.assert_allclose(
+            k2, 0.5 * mu * (a + c) * s - b * np.sqrt(a * c) * alpha1 * alpha2, atol=1e-12
+        )
+        assert ax.lines[2].get_xdata()[0] == pytest.approx(mu_c, rel=1e-14)  # the dotted line
+    assert value[2] == -value[3] != 0  # Lee's Figures 3.6 and 3.7: alpha2 of either sign
+    plt.close(fig)

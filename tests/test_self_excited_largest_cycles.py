@@ -8,6 +8,7 @@ import pandas as pd
 import pytest
 import sympy as sp
 
+from classical_dynamics import units
 from classical_dynamics.models import self_excited as se
 from classical_dynamics.results import Results
 from classical_dynamics.solvers.ode import Problem, solve
@@ -36,7 +37,12 @@ def test_c1_of_2_29_is_zero_at_lees_start_symbolically():
 
 
 def test_start_with_c1_zero_closes_and_a_start_just_off_it_does_not():
-    assert abs(lc.c1_zero_start(0.5, 0.1)) < 1e-9
+    closure = lc.c1_zero_start(0.5, 0.1)
+    assert abs(closure) < 1e-9
+    results = Results("self_excited", "t", "t")
+    lc._record_c1_zero_start(results, closure)
+    recorded = results.numbers["c1_zero_start_closure"]
+    assert recorded["value"] == closure and units.lookup(recorded["unit"]) is None  # a difference of p1
     sigma3 = np.arctan(-1.0 / 0.2)
     start = np.sqrt(5.0) + 1e-3  # C1 != 0: the term C1 e^{2 nu phi2} grows over the turn
     sol = solve(
@@ -100,7 +106,56 @@ def test_figure_2_12_numbers_and_zoom_table_against_the_closed_form():
     crossing = zoom[zoom.element == "crossing"].sort_values("curve")
     assert list(crossing.curve) == [1, 2, 3, 4]
     assert crossing.p1.iloc[0] == pytest.approx(v.crossings["f1"], abs=1e-5)
-    assert set(zoom.element) >= {"separatrix_T", "limit_cycle_F", "saddle", "center", "window"}
+    assert set(zoom.element) >= {
+        "separatrix_T",
+        "limit_cycle_F",
+        "limit_cycle_F1",
+        "saddle",
+        "center",
+        "window",
+    }
+    # every element is one the gallery's panel styles (portrait.draw): another would vanish from the grid
+    assert set(zoom.element) <= set(portrait.ELEMENTS) | set(portrait.POINT_TYPES) | {"window"}
+    # F and its mirror F1 of (2.30), written out here: p1^2 = m1/nu + 2 sin(phi2 + sigma3)/sqrt(1 + 4 nu^2)
+    sigma3 = np.arctan(-1 / 0.2)
+    for element, sign in (("limit_cycle_F", 1.0), ("limit_cycle_F1", -1.0)):
+        rows = zoom[zoom.element == element]
+        closed = sign * np.sqrt(5.0 + 2 * np.sin(rows.phi2 + sigma3) / np.sqrt(1.04))
+        np.testing.assert_allclose(rows.p1, closed, atol=1e-4)  # the table keeps five decimals
+
+
+def _separatrix_p1_squared(phi, m1, nu, saddle):
+    """Lee (2.13) solved here: with u = p1^2, (2.10) is du/dphi2 + 2 nu u = 2 (m1 + sin phi2), so
+    u = m1/nu + (4 nu sin phi2 - 2 cos phi2)/(1 + 4 nu^2) + C e^(-2 nu phi2), C fixed by u = 0 at the
+    saddle."""
+    g = lambda x: m1 / nu + (4 * nu * np.sin(x) - 2 * np.cos(x)) / (1 + 4 * nu**2)  # noqa: E731
+    return g(phi) - g(saddle) * np.exp(-2 * nu * (phi - saddle))
+
+
+def test_figure_2_12_records_the_heights_of_the_closed_form_and_where_t1_ends():
+    m1, nu = 0.5, 0.1
+    values = lc.figure_2_12(m1, nu)
+    zoom = lc.zoom_table(m1, nu, values.crossings)
+    results = Results("self_excited", "t", "t")
+    lc._record_figure_2_12(results, values, zoom)
+    got = {name: entry["value"] for name, entry in results.numbers.items()}
+    s1 = np.arcsin(-m1)
+    center, s2 = np.pi - s1, s1 + 2 * np.pi
+    f1, f2 = (np.sqrt(_separatrix_p1_squared(center, m1, nu, s)) for s in (s1, s2))
+    assert got["f1_height"] == pytest.approx(f1, abs=1e-8) and got["f2_height"] == pytest.approx(f2, abs=1e-8)
+    # below Lee's nu* = m1/(2 sqrt(1 - m1^2)) (0.289 here) f1 lies above f2
+    assert nu < m1 / (2 * np.sqrt(1 - m1**2)) and got["f1_minus_f2"] == pytest.approx(f1 - f2, abs=2e-8)
+    assert got["f1_minus_f2"] > 0
+    # T1 reaches the vertical through S2 (g1 on it, above the axis by the closed form's height there); T2,
+    # traced back, falls to the phi2-axis (g2) between the saddles
+    assert got["g1_kind_vertical"] == 1 and got["g1_phi2"] == pytest.approx(s2, abs=1e-10)
+    assert got["g1_p1"] == pytest.approx(np.sqrt(_separatrix_p1_squared(s2, m1, nu, s1)), abs=1e-7)
+    assert got["g2_kind_axis"] == 1 and s1 < got["g2_phi2"] < s2
+    assert got["crossing_closed_deviation"] == pytest.approx(
+        max(abs(got["f1_height"] - f1), abs(got["f2_height"] - f2)), abs=1e-12
+    )
+    assert results.stability[0]["measured"] == got["crossing_closed_deviation"]
+    assert results.tables["zoom"][0] is zoom
 
 
 def test_omega_on_F_returns_after_two_turns_of_phi2_not_one():

@@ -73,6 +73,25 @@ def test_viscous_run_with_friction_tends_to_theorem_3s_rotation():
     assert "solution" in results.figures
 
 
+@pytest.mark.parametrize("m3", [0.0, 0.3])
+def test_the_limit_of_a_viscous_run_is_a_node_or_a_focus_as_its_linearization_says(m3):
+    # (5.49) linearized at the limit (p*, q*, r* = m3/mu): [[-nu, h r*, h q*], [-h r*, -nu, -h p*],
+    # [0, 0, -mu]]; eigenvalues -nu +- i h r* and -mu: a stable focus when they are complex, a node when all
+    # are real
+    block = {"nu": 0.3, "mu": 0.5, "torque": [0.4, -0.2, m3], "omega0": [0.5, 0.8, 2.0], "t_max": 8}
+    results = _results()
+    viscous.run(_viscous_scene(block), results, True)
+    point = _values(results)["singular_points"][0]
+    h, nu, mu = 0.6, 0.3, 0.5
+    p, q, r = point["p"], point["q"], point["r"]
+    assert r == pytest.approx(m3 / mu, abs=1e-15)
+    jacobian = np.array([[-nu, h * r, h * q], [-h * r, -nu, -h * p], [0.0, 0.0, -mu]])
+    eigenvalues = np.linalg.eigvals(jacobian)
+    assert (eigenvalues.real < 0).all()
+    assert point["type"] == ("stable focus" if np.any(eigenvalues.imag != 0) else "stable node")
+    plt.close(results.figures["solution"][0])
+
+
 def test_viscous_run_without_friction_circles_about_theorem_2s_center():
     block = {"torque": [0.4, -0.2, 0.0], "omega0": [0.5, 0.8, 2.0], "t_max": 10}
     results = _results()
@@ -222,6 +241,51 @@ def test_limit_cycle_runs_end_where_the_closed_form_puts_them(small_accuracy):
     assert (frame[frame.setting == 1e-6].error.to_numpy() > tight.error.to_numpy()).all()
 
 
+def test_excursion_runs_measure_the_return_to_the_start_after_ten_periods(small_accuracy):
+    """Lee (3.1) written out here and integrated by scipy: from the excursion's start, omega is back after
+    EXCURSION_PERIODS of the closed form's periods; each run's error is its distance from the start there,
+    relative to the largest |omega|, reached where q = 0 (the plane's turning points)."""
+    from classical_dynamics.models import self_excited as se
+    from classical_dynamics.studies.self_excited import excursions
+    from classical_dynamics.studies.self_excited.bounds import EXCURSION_PERIODS
+
+    A, B, C = 3.0, 2.2, 1.2
+    a, b, c = (B - C) / A, (A - C) / B, (A - B) / C
+    M = se.MiddleAxis.with_plane_parameters(se.Body.from_moments([A, B, C]), 0.5, -0.3, 0.8, 0.3)
+    start = excursions.excursion_start(M, 10.0)
+    w0, T = start[0], start[1]
+    m, mu = M.m, M.mu
+
+    def rhs(_, w):
+        p, q, r = w
+        return [a * q * r, -b * r * p + m + mu * (p * p + q * q + r * r), c * p * q]
+
+    def q_zero(_, w):
+        return w[1]
+
+    span = (0.0, EXCURSION_PERIODS * T)
+    runs = {
+        rtol: solve_ivp(rhs, span, w0, method="DOP853", rtol=rtol, atol=rtol * 1e-2, events=q_zero)
+        for rtol in (1e-6, 1e-10)
+    }
+    largest = max(np.hypot(y[0], y[2]) for y in runs[1e-10].y_events[0])
+    assert largest > 100 * np.linalg.norm(w0)  # a huge excursion
+    # the orbit closes, to the rounding of numbers of its size (a few thousand)
+    assert np.linalg.norm(runs[1e-10].y[:, -1] - w0) / largest < 1e-8
+    frame = small_accuracy.excursion_runs(M, start, True)
+    assert sorted(zip(frame.method, frame.setting)) == sorted(
+        (method, rtol) for method in ("dop853", "scipy:DOP853") for rtol in (1e-6, 1e-10)
+    )
+    # scipy's rows are the runs above, at the rows' tolerances (the events do not change scipy's steps)
+    for rtol, run in runs.items():
+        row = frame[(frame.method == "scipy:DOP853") & (frame.setting == rtol)]
+        error = np.linalg.norm(run.y[:, -1] - w0) / largest
+        assert float(row.error.iloc[0]) == pytest.approx(error, rel=1e-3)
+    for method in ("dop853", "scipy:DOP853"):
+        runs = frame[frame.method == method].sort_values("setting")
+        assert runs.error.iloc[0] < min(1e-8, runs.error.iloc[1])  # the tighter tolerance, the smaller error
+
+
 # --- space.py: the attitude's geometry ----------------------------------------------------------------------
 
 
@@ -325,6 +389,29 @@ def test_singular_points_appear_in_pairs_only_for_m1_within_one():
     for kind in ("saddles", "centers"):
         np.testing.assert_allclose(np.sort(markers[f"{kind}, found numerically"]), inside)
     plt.close(fig)
+
+
+def test_limit_cycle_grid_counts_the_cells_where_the_fate_disagrees_with_lees_nu_star():
+    from classical_dynamics.studies.self_excited import largest_axis
+
+    # F of (2.30) exists where m1/nu + 2 sin(.)/sqrt(1 + 4 nu^2) > 0 everywhere: m1/nu > 2/sqrt(1 + 4 nu^2),
+    # which is nu < nu* = m1/(2 sqrt(1 - m1^2)) for m1 < 1 and every nu for m1 >= 1 (Lee §2.5). A start above
+    # F stays bounded exactly where F exists; the cells within 2 % of nu* are not held to it
+    values = largest_axis.limit_cycle_bifurcation()
+    M, N = values.m1, values.nu
+    exists = M / N > 2 / np.sqrt(1 + 4 * N**2)
+    star = np.full(M.shape, np.inf)
+    star[M < 1] = M[M < 1] / (2 * np.sqrt(1 - M[M < 1] ** 2))
+    np.testing.assert_array_equal(exists, N < star)
+    clear = np.abs(N / star - 1) > 0.02
+    assert exists.any() and (~exists).any()  # the grid straddles nu*
+    np.testing.assert_array_equal(values.bounded[clear], exists[clear])
+    assert values.wrong == int(np.sum((values.bounded != exists) & clear)) == 0
+    results = _results()
+    largest_axis._record_limit_cycle_bifurcation(results, values, 0.5, 0.1)
+    assert results.numbers["limit_cycle_grid_cells"]["value"] == M.size
+    assert results.stability[0]["measured"] == values.wrong
+    plt.close(results.figures["bifurcation_nu"][0])
 
 
 def test_cylinder_draws_f_and_its_mirror_and_a_start_that_winds_onto_f():

@@ -9,6 +9,7 @@ import mpmath
 import numpy as np
 import pytest
 
+from classical_dynamics import units
 from classical_dynamics.models.viscous_medium import ViscousMedium, modulation, viscous_modulated
 from classical_dynamics.results import Results
 from classical_dynamics.solvers import sine_cosine_integrals as sc
@@ -59,6 +60,29 @@ def test_case_one_and_four_are_straight_and_reach_the_point():
     assert four.linear.line_space > 0.1  # nu != mu: curved in space
 
 
+def test_case_four_records_its_checks_under_their_names():
+    four = s5.case_four(V3)
+    results = Results("self_excited", "t", "t")
+    s5._record_case_four(results, four)
+    got = {name: entry["value"] for name, entry in results.numbers.items()}
+    assert got == {
+        "case_four_lee_vs_ode": four.linear.lee,
+        "case_four_model_vs_ode": four.linear.model,
+        "case_four_line_distance": four.linear.line_pq,
+        "case_four_space_line_distance": four.linear.line_space,
+        "case_four_limit_gap": four.linear.gap,
+        "case_four_frictionless_gap": four.linear.frictionless,
+        "case_four_space_line_distance_equal_drags": four.line_equal_drags,
+    }
+    # distances of angular velocities: rates, per time unit
+    assert {entry["unit"] for entry in results.numbers.values()} == {"1/time"}
+    # h = 0 (C = A) is Lee's Case IV: Euler's equations are linear, and the model's solution of that case
+    # follows them
+    assert four.linear.case == "IV" and four.linear.model < 1e-11
+    # a note names what it checks: no label left out as None
+    assert not any("None" in entry.get("note", "") for entry in results.numbers.values())
+
+
 def test_lee_linear_formula_is_not_the_integrator():
     """A wrong drag in Lee's (5.18) must be caught: the check compares two independent things."""
     t = np.linspace(0.0, 10.0, 11)
@@ -106,6 +130,20 @@ def test_reduction_formulas_and_the_printed_sign(K, x):
 def test_reduction_a_b_and_re_w():
     reduction = s5.reduction_formulas(V3)
     assert reduction.a_b_error < 1e-25 and reduction.relative_error < 1e-30
+    # w' = w - floor(Re w), w = 1 + (nu + i g1)/mu (5.27), g1 = h m3/mu, h = (A - C)/A: the fractional order
+    # the formulas run at
+    w = 1 + (0.3 + 1j * 0.6 * 0.3 / 0.5) / 0.5
+    assert reduction.w1 == pytest.approx(w - np.floor(w.real), rel=1e-14)
+    results = Results("self_excited", "t", "t")
+    s5._record_reduction_formulas(results, reduction)
+    recorded = results.numbers
+    assert {name: entry["value"] for name, entry in recorded.items()} == {
+        "reduction_relative_error": reduction.relative_error,
+        "reduction_ocr_sign_error": reduction.ocr_sign_error,
+        "reduction_A_B_error": reduction.a_b_error,
+    }
+    assert all(units.lookup(entry["unit"]) is None for entry in recorded.values())  # relative errors
+    assert reduction.ocr_sign_error > 1e-3  # the OCR's +P cos x in si (K = 3) is wrong
     re_w = s5.re_w(V3)
     assert re_w.formula == pytest.approx(1.6, rel=1e-15)
     assert 1.0 < min(re_w.elongated) < max(re_w.elongated) < 2.0 < min(re_w.disc)
