@@ -365,6 +365,16 @@ def test_batch_with_parameters_per_row():
 
 
 # --- the heavy symmetric top (models/heavy_top.py) against its closed forms ------------------------
+def test_heavy_top_nutation_frequency_is_lambs_art57_with_a_not_one():
+    """Lamb Art. 57 (13), sigma^2 = omega^2 sin^2 alpha + (J3 - 2 A omega cos alpha)^2 / A^2, written out here
+    with A = 2.5 (A = 1 would hide a slip of A into 1/A)."""
+    from classical_dynamics.models import heavy_top as tm
+
+    A, J3, alpha, omega = 2.5, 3.0, np.radians(50.0), 0.7
+    sigma2 = omega**2 * np.sin(alpha) ** 2 + (J3 - 2 * A * omega * np.cos(alpha)) ** 2 / A**2
+    assert tm.nutation_frequency(A, J3, alpha, omega) == pytest.approx(np.sqrt(sigma2), rel=1e-15)
+
+
 def test_heavy_top_steady_roots_solve_lambs_quadratic():
     from classical_dynamics.models import heavy_top as tm
 
