@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 import yaml
 
+from classical_dynamics.results import Results
 from classical_dynamics.scenes import SceneError
 from classical_dynamics.studies import validate
 from classical_dynamics.studies.chandler import lamb_free as lf
@@ -72,9 +73,14 @@ def test_poinsot_geometry_holds_and_moves():
     ):
         assert n[name] < 1e-11, name
     assert n["gyration_omega_range"] > 0.01 and n["plane_rate_range"] > 0.05  # the motion is not trivial
-    out = Numbers()
+    out = Results("chandler", "t", "t")  # the real record: a value lost to None is refused where written
     lf._record_poinsot(out, examples)
-    assert out.numbers["gyration_normal_angle_rad"] < 1e-11  # Ex. X.5: the normal there is along omega
+    assert (
+        out.numbers["gyration_normal_angle_rad"]["value"] < 1e-11
+    )  # Ex. X.5: the normal there is along omega
+    recorded = {k: v["value"] for k, v in out.numbers.items()}
+    assert recorded.pop("poinsot_modulus_squared") == n["modulus_squared"] and 0 < n["modulus_squared"] < 1
+    assert recorded == {k: n[k] for k in recorded}  # every other number under its own name
     # the differenced azimuth agrees to the differences' own error (second order in the step)
     assert n["plane_rate_differences_max_relative_deviation"] < 1e-4
 
