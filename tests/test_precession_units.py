@@ -60,6 +60,22 @@ def held(results):
     return {case["name"]: case["holds"] for case in results.stability}
 
 
+# a name that ends in a unit carries that unit (the report prints the unit beside the number)
+UNIT_OF_SUFFIX = {"_years": "yr", "_mas": "mas", "_arcsec_per_year": "″/yr", "_arcsec": "″", "_days": "d"}
+
+
+def assert_units_follow_names(results):
+    named = [(k, v["unit"]) for k, v in results.numbers.items()]
+    named += [(c["name"], c.get("unit")) for c in results.stability]
+    checked = 0
+    for key, unit in named:
+        suffix = next((s for s in UNIT_OF_SUFFIX if key.endswith(s)), None)
+        if suffix:
+            assert unit == UNIT_OF_SUFFIX[suffix], (key, unit)
+            checked += 1
+    assert checked, "no number named with its unit"
+
+
 def psi_A_per_year():
     """IAU 2006 luni-solar precession at J2000, the linear coefficient of P03 (digest: 5038.481507"/cy)."""
     return 5038.481507 / 100.0
@@ -91,6 +107,7 @@ def test_averaged_run_sun_only_gives_lambs_rate_and_a_constant_obliquity(tmp_pat
     # the modern constants' comparison with IAU 2006, formed here from pyerfa: the Sun alone is about 1/3
     assert value(r, "rate_minus_psi_A_relative") == pytest.approx(rate / psi_A_per_year() - 1, rel=1e-6)
     assert "cone" in r.figures and "cost" in r.timing_tables
+    assert_units_follow_names(r)
 
 
 def test_averaged_run_over_a_whole_cycle_against_iau_and_the_first_order_nutation(tmp_path, monkeypatch):
@@ -315,6 +332,10 @@ def test_accuracy_run_orders_and_two_implementations_of_dop853(tmp_path, monkeyp
     assert ours.error_mas == pytest.approx(peer.error_mas, rel=0.02)
     assert value(r, "resolution_mas") >= value(r, "reference_agreement_mas")
     assert set(frame.steps[frame.kind == "step"]) == {73, 146, 292}  # 36.5 days / h
+    # the hard case is the same measurement as the number: the same value in the same unit
+    (case,) = [c for c in r.stability if c["name"] == "reference_agreement"]
+    assert case["measured"] == value(r, "reference_agreement_mas") and case["unit"] == "mas"
+    assert_units_follow_names(r)
 
 
 def test_reference_axis_against_scipy_on_the_same_rhs():
