@@ -665,3 +665,18 @@ def test_an_apparent_q_is_negative_where_the_method_pumps_energy_in():
     assert _apparent_q(-2 * math.pi * 1e-6, 1) == pytest.approx(1e6)
     assert _apparent_q(2 * math.pi * 1e-6, 1) == pytest.approx(-1e6)
     assert _apparent_q(0.0, 100) == math.inf
+
+
+def test_the_general_top_starts_at_rest_in_theta_and_at_three_tenths_of_the_slow_steady_rate():
+    """heavy_top.general's start: theta = alpha, theta' = 0 and phi' = 0.3 of the slower root of Lamb's
+    A w^2 cos(alpha) - C n w + Mgh = 0 (numpy's roots here); phi' read off the state itself: with theta' = 0,
+    omega's part across the axis is phi' times the vertical's, so phi' = (w1 g1 + w2 g2)/sin^2(alpha)."""
+    A, C, Mgh, n, alpha = 1.0, 0.5, 1.0, 6.0, np.radians(60.0)
+    y = heavy_top._general_start(top_model.Top(A, C, Mgh), n, alpha)
+    w, g = y[:3], y[3:6]
+    slow = min(np.roots([A * np.cos(alpha), -C * n, Mgh]).real)
+    assert g[2] == pytest.approx(np.cos(alpha), rel=1e-14) and w[2] == pytest.approx(n, rel=1e-14)
+    assert (w[0] * g[0] + w[1] * g[1]) / np.sin(alpha) ** 2 == pytest.approx(0.3 * slow, rel=1e-12)
+    assert w[0] * g[1] - w[1] * g[0] == pytest.approx(
+        0.0, abs=1e-14
+    )  # no theta': omega's cross part along g's
