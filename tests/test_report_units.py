@@ -12,6 +12,7 @@ from pathlib import Path
 import pandas as pd
 import pytest
 from markupsafe import Markup
+from matplotlib.figure import Figure
 
 from classical_dynamics import io
 from classical_dynamics.report import assets, build, claims, dist
@@ -357,5 +358,16 @@ def test_a_result_with_an_unregistered_unit_or_a_bare_column_stops_where_it_is_w
         r.timing_table("steps", frame, "Steps.", headers={"k": "$k$"})
     r.table("steps", frame, "Steps.", headers={"k": "$k$", "step_hours": "step (h)", "rtol": "rtol"})
     r.table("bare", frame, "Steps, headed by their names.")
+    # a caption or a figure lost stops the record too: the report shows nothing without its caption
+    for caption in (None, "", "  "):
+        with pytest.raises(ValueError, match="needs a caption"):
+            r.table("uncaptioned", frame, caption)
+        with pytest.raises(ValueError, match="needs a caption"):
+            r.timing_figure("uncaptioned", Figure(), caption)
+    with pytest.raises(ValueError, match="needs a matplotlib figure, not NoneType"):
+        r.figure("lost", None, "A figure.")
+    with pytest.raises(ValueError, match="needs a caption"):
+        r.timing_table("uncaptioned", frame, None)
+    assert not {"uncaptioned", "lost"} & {*r.tables, *r.figures, *r.timing_tables, *r.timing_figures}
     r.number("length", 1.0, "m")
     assert set(r.tables) == {"steps", "bare"} and r.numbers["length"]["unit"] == "m"

@@ -58,6 +58,15 @@ def _check_headers(name, frame, headers) -> None:
         raise ValueError(f"table {name!r}: no header for its columns {bare}")
 
 
+def _check_shown(kind, name, caption, fig=None) -> None:
+    """Every table and figure reaches the reader with a caption, and a figure is a figure: a caption or a
+    figure lost (None) stops the run where it was written, not in the report."""
+    if not (isinstance(caption, str) and caption.strip()):
+        raise ValueError(f"{kind} {name!r} needs a caption, not {caption!r}")
+    if kind.endswith("figure") and not isinstance(fig, Figure):
+        raise ValueError(f"{kind} {name!r} needs a matplotlib figure, not {type(fig).__name__}")
+
+
 @dataclass
 class Results:
     study: str
@@ -93,16 +102,20 @@ class Results:
         every column (a column left out would reach the reader as its code name); more may be given (a study's
         shared vocabulary)."""
         _check_headers(name, frame, headers)
+        _check_shown("table", name, caption)
         self.tables[name] = (frame, caption, headers or {})
 
     def figure(self, name, fig, caption):
+        _check_shown("figure", name, caption, fig)
         self.figures[name] = (fig, caption)
 
     def timing_table(self, name, frame, caption, headers=None):
         _check_headers(name, frame, headers)
+        _check_shown("timing table", name, caption)
         self.timing_tables[name] = (frame, caption, headers or {})
 
     def timing_figure(self, name, fig, caption):
+        _check_shown("timing figure", name, caption, fig)
         self.timing_figures[name] = (fig, caption)
 
     def hard_case(self, name, description, measured, bound, unit=""):
