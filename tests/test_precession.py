@@ -453,6 +453,7 @@ def test_lamb_examples_from_the_model():
     assert gyro.C == pytest.approx(C, rel=1e-14)
     # C n psi' with n = 2 pi 20 /s, psi' = 2 pi/10 /s
     assert gyro.couple == pytest.approx(C * 40 * np.pi * 0.2 * np.pi, rel=1e-13)
+    assert gyro.closed_form == pytest.approx(C * 40 * np.pi * 0.2 * np.pi, rel=1e-14)  # the module's C n psi'
     assert gyro.couple == pytest.approx(1270, rel=0.005)  # Lamb: [1270 ft.-lbs.]
 
 

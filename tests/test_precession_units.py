@@ -487,17 +487,3 @@ def test_the_secular_rates_per_julian_year_and_per_orbit_are_one_rate_in_two_uni
     assert rates.total == pytest.approx(rates.solar + rates.lunar, rel=1e-14)
     assert rates.per_orbit == pytest.approx(rates.total * m.orbits.year_days / 365.25, rel=1e-14)
     assert 45 < rates.per_orbit < 60  # of the order of the observed 50″ a year, in arcseconds
-
-
-def test_the_gyroscopes_closed_form_is_c_n_psi_dot():
-    """Lamb Ex. XI.1's closed form C n psi', with C, n and psi' written out here from the example's data."""
-    gyro = examples.gyroscope_couple(
-        weights_lb=[300, 35],
-        radii_of_gyration_ft=[1.0, 2.5],
-        spin_rev_per_s=20,
-        turn_period_s=10,
-        g=32.2,
-        transverse_over_axial=0.3,
-    )
-    C = (300 * 1.0**2 + 35 * 2.5**2) / 32.2
-    assert gyro.closed_form == pytest.approx(C * (2 * np.pi * 20) * (2 * np.pi / 10), rel=1e-14)
