@@ -340,6 +340,27 @@ def test_starting_on_the_forced_state_leaves_no_free_wobble():
     assert forced / axis < 2 * m.orbits.moon_n / m.n
 
 
+def test_the_start_puts_the_figure_axis_on_the_start_angles_and_the_spin_on_it():
+    """initial_state's attitude, read by scipy's Rotation: the figure axis e3 at obliquity eps, turned by psi
+    about the ecliptic pole, (sin eps sin psi, sin eps cos psi, cos eps); without the forced start the body
+    spins about e3 alone, m = (0, 0, n) (C = 1); with it, m_perp = A omega_perp, omega_perp = e3 x N/(Cn)."""
+    from scipy.spatial.transform import Rotation
+
+    m = model()
+    psi, eps = prec.start(m)
+    for forced in (False, True):
+        m_body, q = prec.initial_state(m, forced=forced)
+        e3 = Rotation.from_quat([*q[1:], q[0]]).apply([0.0, 0.0, 1.0])
+        assert e3 == pytest.approx(
+            [np.sin(eps) * np.sin(psi), np.sin(eps) * np.cos(psi), np.cos(eps)], abs=1e-15
+        )
+        assert m_body[2] == m.n
+        expected = (1.0 - m.H) * prec.forced_offset(m, q) if forced else [0.0, 0.0]
+        assert m_body[:2] == pytest.approx(expected, rel=1e-15, abs=0.0)
+    assert np.linalg.norm(m_body[:2]) > 0.0
+    assert np.array_equal(prec.initial_state(m)[0], m_body)  # forced is the default
+
+
 def test_ellipticity_enters_as_H_never_as_a_difference():
     """C - A from A and C in kg m^2 loses ~2.5 digits; the model carries H itself."""
     rng = np.random.default_rng(0)

@@ -487,3 +487,25 @@ def test_the_secular_rates_per_julian_year_and_per_orbit_are_one_rate_in_two_uni
     assert rates.total == pytest.approx(rates.solar + rates.lunar, rel=1e-14)
     assert rates.per_orbit == pytest.approx(rates.total * m.orbits.year_days / 365.25, rel=1e-14)
     assert 45 < rates.per_orbit < 60  # of the order of the observed 50″ a year, in arcseconds
+
+
+def test_the_nutation_figure_names_each_line_it_draws():
+    """The IAU figure's one legend above its panels: each entry's name and colour are those of the line that
+    draws that series (made-up series told apart by size), so a name cannot slide onto another line."""
+    t = np.linspace(0.0, 5.0 * earth.JULIAN_YEAR_DAYS, 200)
+    wave = np.sin(2 * np.pi * t / 6798.4) * earth.ARCSEC
+    series = {"IAU 2000B": (1.0, 0), "full model": (1.1, 0), "difference, $\\Delta\\psi$": (0.1, 2)}
+    series["difference, $\\Delta\\varepsilon$"] = (0.05, 2)
+    values = full.IauNutation([], t, 1.1 * wave, 0.55 * wave, wave, 0.5 * wave, 0.0, 0.0)
+    results = Results("precession", "t", "t")
+    full._record_iau_nutation(results, values)
+    fig = results.figures["nutation"][0]
+    (legend,) = fig.legends
+    names = [text.get_text() for text in legend.get_texts()]
+    assert names == list(series)
+    for name, handle in zip(names, legend.legend_handles):
+        size, panel = series[name]
+        (line,) = [
+            ln for ln in fig.axes[panel].get_lines() if np.isclose(np.max(ln.get_ydata()), size, rtol=1e-3)
+        ]
+        assert handle.get_color() == line.get_color(), name

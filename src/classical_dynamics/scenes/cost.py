@@ -50,13 +50,7 @@ class Budget:
         config = config or {}
         unknown = set(config) - {"seconds", "memory_mb"}
         if unknown:
-            raise SceneError(
-                "workflow/config.yaml",
-                f"budget.{sorted(unknown)[0]}",
-                "seconds or memory_mb",
-                None,
-                has_got=False,
-            )
+            raise SceneError("workflow/config.yaml", f"budget.{sorted(unknown)[0]}", "seconds or memory_mb")
         values = {}
         for key, value in config.items():
             try:

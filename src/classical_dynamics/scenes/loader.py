@@ -38,13 +38,17 @@ def is_leftover(path: Path) -> bool:
     return bool(LEFTOVER.search(Path(path).name))
 
 
-class SceneError(ValueError):
-    """A scene that cannot be run. str(error) is the one-line message shown to the user."""
+NOTHING = object()  # a refusal with nothing to show as what it got: a missing field, a file that is no file
 
-    def __init__(self, path, field_name: str, expected: str, got=None, *, has_got: bool = True):
+
+class SceneError(ValueError):
+    """A scene that cannot be run. str(error) is the one-line message shown to the user; it ends with what the
+    scene gave ("got ...") unless there is nothing to show."""
+
+    def __init__(self, path, field_name: str, expected: str, got=NOTHING):
         self.path, self.field, self.expected = str(path), field_name, expected
         message = f"{path}: field '{field_name}': expected {expected}"
-        if has_got:
+        if got is not NOTHING:
             message += f", got {_show(got)}"
         super().__init__(message)
 
@@ -122,22 +126,22 @@ def _type_words(kind) -> str:
     return " or ".join(_TYPE_WORDS.get(k, k) for k in kinds)
 
 
-def _expected_from(error: jsonschema.ValidationError) -> tuple[str, str, object, bool]:
-    """(field, expected, got, has_got) for the user, from a jsonschema error."""
+def _expected_from(error: jsonschema.ValidationError) -> tuple[str, str, object]:
+    """(field, expected, got) for the user, from a jsonschema error (got NOTHING: nothing to show)."""
     path = ".".join(str(p) for p in error.absolute_path) or "(top level)"
     v, value = error.validator, error.validator_value
     if v == "required":
         missing = next((name for name in value if name not in error.instance), value[0])
         where = f"{path}.{missing}" if error.absolute_path else missing
-        return where, "a value (this field is required)", None, False
+        return where, "a value (this field is required)", NOTHING
     if v == "additionalProperties":
         allowed = sorted(error.schema.get("properties", {}))
         extra = sorted(set(error.instance) - set(allowed))
         where = f"{path}.{extra[0]}" if error.absolute_path else extra[0]
         moved = error.schema.get("x-moved", {})  # a field an older scene format had here
         if extra[0] in moved:
-            return where, f"no such key here: it moved to {moved[extra[0]]}", extra[0], False
-        return where, "no such key; known keys: " + ", ".join(allowed), extra[0], False
+            return where, f"no such key here: it moved to {moved[extra[0]]}", NOTHING
+        return where, "no such key; known keys: " + ", ".join(allowed), NOTHING
     words = {
         "type": lambda: _type_words(value),
         "minimum": lambda: f"a number >= {value}",
@@ -158,7 +162,7 @@ def _expected_from(error: jsonschema.ValidationError) -> tuple[str, str, object,
         "anyOf": lambda: " or ".join(_alternative_words(choice) for choice in value),
     }
     expected = words[v]() if v in words else error.message
-    return path, expected, error.instance, True
+    return path, expected, error.instance
 
 
 def _alternative_words(schema: dict) -> str:
@@ -195,7 +199,7 @@ def read_bytes(path: Path) -> bytes:
             path, "(file)", "a regular file, not a symbolic link (copy the scene instead)", os.readlink(path)
         )
     if not stat.S_ISREG(info.st_mode):
-        raise SceneError(path, "(file)", "a regular file, not a device, pipe or folder", None, has_got=False)
+        raise SceneError(path, "(file)", "a regular file, not a device, pipe or folder")
     if info.st_size > MAX_BYTES:
         raise SceneError(path, "(file)", f"at most {MAX_BYTES // 1000} kB of YAML", f"{info.st_size} bytes")
     try:
@@ -224,9 +228,7 @@ def read_yaml(path: Path, data: bytes | None = None) -> object:
         problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
         raise SceneError(path, f"(YAML at {where})", "valid YAML", problem) from None
     except RecursionError:  # belt and braces: MAX_DEPTH stops nesting first
-        raise SceneError(
-            path, "(YAML)", f"nesting of at most {MAX_DEPTH} levels", None, has_got=False
-        ) from None
+        raise SceneError(path, "(YAML)", f"nesting of at most {MAX_DEPTH} levels") from None
 
 
 def load_scene(
@@ -256,14 +258,11 @@ def load_scene(
     if isinstance(effects, dict):
         for effect in effects:
             if effect not in known:
-                raise SceneError(
-                    path, f"effects.{effect}", "a known effect: " + ", ".join(known), effect, has_got=False
-                )
+                raise SceneError(path, f"effects.{effect}", "a known effect: " + ", ".join(known))
     validator = _Validator(schema)
     error = jsonschema.exceptions.best_match(validator.iter_errors(data), key=_depth_first)
     if error is not None:
-        field_name, expected, got, has_got = _expected_from(error)
-        raise SceneError(path, field_name, expected, got, has_got=has_got)
+        raise SceneError(path, *_expected_from(error))
     # after the schema: a NaN where a text belongs is "a string", not "a finite number" (and NaN passes
     # every minimum and maximum, so the schema alone would let it through)
     try:

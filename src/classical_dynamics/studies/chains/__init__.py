@@ -67,7 +67,7 @@ def check(path: Path, data: dict) -> None:
                 path, "chain.n", "no n for a continuum (n is for particles or links)", chain["n"]
             )
     elif "n" not in chain:
-        raise SceneError(path, "chain.n", f"a number of {model} (integer >= 1)", None, has_got=False)
+        raise SceneError(path, "chain.n", f"a number of {model} (integer >= 1)")
     n = chain.get("n")
     for effect in effects:
         allowed = _EFFECT_ENDS.get(effect)
@@ -95,9 +95,7 @@ def check(path: Path, data: dict) -> None:
         if len(masses) != n:
             raise SceneError(path, "chain.masses_kg", f"a list of n = {n} masses", f"{len(masses)} masses")
     elif "mass_kg" not in chain:
-        raise SceneError(
-            path, "chain.mass_kg", "the total mass (or masses_kg, one per particle)", None, has_got=False
-        )
+        raise SceneError(path, "chain.mass_kg", "the total mass (or masses_kg, one per particle)")
     springs = effects.get("springs")
     if springs is not None and isinstance(springs["k_n_per_m"], list) and n is not None:
         want = segments_for(n, ends)
@@ -120,9 +118,7 @@ def check(path: Path, data: dict) -> None:
             raise SceneError(path, f"effects.{name}", "a particle chain (chain.model: particles)", model)
     for name, effect in _ANALYSIS_NEEDS.items():
         if name in analysis and effect not in effects:
-            raise SceneError(
-                path, f"analysis.{name}", f"the effect {effect} listed under effects", None, has_got=False
-            )
+            raise SceneError(path, f"analysis.{name}", f"the effect {effect} listed under effects")
     for name, field in (("friction", "b_kg_per_s"), ("forcing", "newton")):
         values = effects.get(name, {}).get(field)
         if isinstance(values, list) and n is not None and len(values) != n:

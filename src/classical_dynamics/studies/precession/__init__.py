@@ -53,13 +53,11 @@ def check(path: Path, data: dict) -> None:
             sorted(effects),
         )
     if fidelity != "secular" and "span_years" not in analysis:
-        raise SceneError(path, "analysis.span_years", f"a span in years for the {fidelity} rung", None)
+        raise SceneError(path, "analysis.span_years", f"a span in years for the {fidelity} rung")
     if fidelity == "full":
         step = analysis.get("step_hours")
         if step is None:
-            raise SceneError(
-                path, "analysis.step_hours", "a step in hours for the full (spin-resolved) rung", None
-            )
+            raise SceneError(path, "analysis.step_hours", "a step in hours for the full (spin-resolved) rung")
         check_step(path, "analysis.step_hours", step, analysis["span_years"] * JULIAN_YEAR_DAYS * 24.0)
         if step > MAX_STEP_HOURS:
             raise SceneError(

@@ -451,10 +451,16 @@ def _record_iau_nutation(results, values: IauNutation):
     )
     axes[2].set_ylabel("model − IAU (″)")
     axes[2].grid(True, alpha=0.25)
-    # one legend above the panels, off the data (the curves fill each panel's width)
-    handles = axes[0].get_legend_handles_labels()[0] + axes[2].get_legend_handles_labels()[0]
-    labels = ["IAU 2000B", "full model", r"difference, $\Delta\psi$", r"difference, $\Delta\varepsilon$"]
-    fig.legend(handles, labels, loc="outside upper center", ncol=4)
+    # one legend above the panels, off the data (the curves fill each panel's width); each entry's name is its
+    # line's own label, so that a name cannot slide onto another line
+    handles, labels = axes[0].get_legend_handles_labels()
+    differences = axes[2].get_legend_handles_labels()
+    fig.legend(
+        handles + differences[0],
+        labels + [f"difference, {label}" for label in differences[1]],
+        loc="outside upper center",
+        ncol=4,
+    )
     axes[2].set_xlabel("year")
     axes[2].xaxis.set_major_locator(MaxNLocator(integer=True, steps=[1, 2, 5, 10]))  # calendar years
     axes[2].xaxis.set_major_formatter("{x:.0f}")

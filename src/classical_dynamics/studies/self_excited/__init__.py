@@ -56,9 +56,7 @@ def check(path: Path, data: dict) -> None:
         )
     for field in ("torque_axis", "plane"):
         if field not in data:
-            raise SceneError(
-                path, field, "torque_axis and plane (a phase-plane scene), or viscous (Lee §5)", None
-            )
+            raise SceneError(path, field, "torque_axis and plane (a phase-plane scene), or viscous (Lee §5)")
     axis = data["torque_axis"]
     if not A > B > C:
         raise SceneError(
@@ -78,7 +76,6 @@ def check(path: Path, data: dict) -> None:
             "the elliptic cylinder delta (torque along the largest or the smallest axis)"
             if shape == "delta"
             else "alpha: [alpha1, alpha2], the hyperbolic cylinder (middle axis)",
-            None,
         )
     if axis == "middle":
         _check_middle(path, Body(A, B, C), data, effects)
@@ -127,7 +124,9 @@ def _check_listed_terms(path, effects, viscous: bool):
             path, "effects.quadratic_torque.nu", "nu != 0 (leave quadratic_torque out for none)", 0.0
         )
     if viscous and "quadratic_torque" in effects:
-        raise SceneError(path, "effects.quadratic_torque", "body_torque and drag only (Lee §5)", None)
+        raise SceneError(
+            path, "effects.quadratic_torque", "body_torque and drag only (Lee §5)", sorted(effects)
+        )
 
 
 def _check_constant_torque(path, m, m1):

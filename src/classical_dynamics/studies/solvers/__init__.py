@@ -32,11 +32,9 @@ def check(path: Path, data: dict) -> None:
         raise SceneError(path, "effects", "no effects (a test problem has none)", sorted(effects))
     if problem == "heavy_top":
         if "gravity" not in effects:
-            raise SceneError(
-                path, "effects.gravity", "the heavy top's weight: gravity: {Mgh: ...}", None, has_got=False
-            )
+            raise SceneError(path, "effects.gravity", "the heavy top's weight: gravity: {Mgh: ...}")
         if "top" not in data:
-            raise SceneError(path, "top", "the top's moments A, C and its spin", None, has_got=False)
+            raise SceneError(path, "top", "the top's moments A, C and its spin")
         top = data["top"]
         A, C, spin, Mgh = top["A"], top["C"], top["spin"], effects["gravity"]["Mgh"]
         if C > 2 * A:
@@ -80,7 +78,7 @@ def check(path: Path, data: dict) -> None:
             ("rtol", "DOP853's rtol"),
         ):
             if key not in numerics:
-                raise SceneError(path, f"numerics.{key}", f"a number ({what})", None, has_got=False)
+                raise SceneError(path, f"numerics.{key}", f"a number ({what})")
         check_step(path, "numerics.step", numerics["step"], numerics["max_periods"] * HNW_PERIOD)
         # DOP853's steps (1 % from the measured law): past ode.solve's limit it stops and leaves NaN behind
         per_period = HNW_PERIOD * LONG_DOP853_PER_TIME * (1e-6 / numerics["rtol"]) ** (1 / 8)
@@ -96,11 +94,9 @@ def check(path: Path, data: dict) -> None:
     if problem in ("hnw_rigid_body", "detest_b5"):
         for key in ("methods", "tolerances"):
             if key not in numerics:
-                raise SceneError(path, f"numerics.{key}", "a list (the sweep)", None, has_got=False)
+                raise SceneError(path, f"numerics.{key}", "a list (the sweep)")
         if any(m.startswith("splitting") for m in numerics["methods"]) and "steps" not in numerics:
-            raise SceneError(
-                path, "numerics.steps", "step sizes for the splitting methods", None, has_got=False
-            )
+            raise SceneError(path, "numerics.steps", "step sizes for the splitting methods")
 
 
 def run(scene: Scene, quick: bool = False):
