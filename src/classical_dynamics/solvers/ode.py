@@ -26,6 +26,17 @@ _NO_TIMES = np.zeros(0)
 _NO_TIMES.flags.writeable = False
 _NO_EVENTS = np.zeros(0, dtype=np.int64)
 _NO_EVENTS.flags.writeable = False
+_NO_ROWS: dict = {}
+
+
+def _no_rows(n: int) -> np.ndarray:
+    """An empty (0, n) array, read-only and shared: the final-state path's empty outputs, unallocated."""
+    if n not in _NO_ROWS:
+        _NO_ROWS[n] = np.zeros((0, n))
+        _NO_ROWS[n].flags.writeable = False
+    return _NO_ROWS[n]
+
+
 RTOL_FLOOR = 100 * EPS  # below this a double cannot honour rtol (scipy clamps it silently)
 COMPILED = ("dopri5", "dop853")
 PEERS = ("scipy:RK45", "scipy:DOP853", "scipy:Radau", "scipy:BDF", "scipy:LSODA", "scipy:RK23")
@@ -133,15 +144,19 @@ def solve(
         raise ValueError(f"unknown method {method!r}; known: {', '.join(COMPILED + PEERS)}")
     if t_eval is None and events is None and not record_steps and method in rk.TABLEAUS:
         # the final state only: the lean loop, and as little Python around it as possible
-        start = (problem.params, t0, t1, problem.y0)
         control = (float(rtol), float(atol), int(max_steps), float(bound))
-        steps = rk.TABLEAUS[method].steps
         if specialize:
-            status, t, y, nfev, nacc, nrej = rk.specialized_final_state(problem.rhs)(start, steps, control)
+            run = rk.specialized_final_state(problem.rhs)
+            status, t, y, nfev, nacc, nrej = run(
+                rk.METHOD_INDEX[method], problem.params, t0, t1, problem.y0, *control
+            )
         else:
-            status, t, y, nfev, nacc, nrej = rk.final_state(problem.rhs, start, steps, control)
+            start = (problem.params, t0, t1, problem.y0)
+            status, t, y, nfev, nacc, nrej = rk.final_state(
+                problem.rhs, start, rk.TABLEAUS[method].steps, control
+            )
         if status != rk.BLOW_UP:  # a blow-up is located on the dense output by the full loop below
-            rows = np.zeros((0, y.size))
+            rows = _no_rows(y.size)
             return Solution(
                 rk.STATUS[status],
                 t,

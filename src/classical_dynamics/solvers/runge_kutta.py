@@ -571,6 +571,7 @@ def _final_state_loop(f, problem, steps, control):
 
 final_state = njit((FUNC, PROBLEM, STEPS, CONTROL), cache=True)(_final_state_loop)
 _SPECIALIZED: dict = {}
+METHOD_INDEX = {name: i for i, name in enumerate(TABLEAUS)}  # a method as specialized loops take it
 _SPECIALIZED_ROWS: dict = {}
 _final_state_any = njit(_final_state_loop)
 
@@ -609,17 +610,21 @@ def specialized_final_state_rows(rhs):
 
 
 def specialized_final_state(rhs):
-    """The final-state loop compiled for this right-hand side alone, run(problem, steps, control) without f.
+    """The final-state loop compiled for this right-hand side alone:
+    run(which, p, t0, t1, y0, rtol, atol, max_steps, bound) -> (status, t, y, nfev, naccept, nreject), with
+    which = METHOD_INDEX[method].
 
-    The right-hand side is a constant of the compiled code, so its calls are direct (not through a function
-    pointer) and the call from Python carries no function argument to type: about twice as fast again, for
-    several seconds of compilation (6 to 10 s on 2 cores) on the first call in a process. Numba cannot
-    cache it on disk (its cache is keyed by the function object), so it is opt-in.
+    The right-hand side and the tableaus are constants of the compiled code, so its calls are direct (not
+    through a function pointer), and the call from Python passes plain numbers and arrays (a tuple argument
+    costs numba about a microsecond per call to type): about twice as fast again, for several seconds of
+    compilation (6 to 10 s on 2 cores) on the first call in a process. Numba cannot cache it on disk (the
+    right-hand side is a dynamic global), so it is opt-in.
     """
     if rhs not in _SPECIALIZED:
+        tableaus = tuple(tableau.steps for tableau in TABLEAUS.values())
 
-        def run(problem, steps, control):
-            return _final_state_any(rhs, problem, steps, control)
+        def run(which, p, t0, t1, y0, rtol, atol, max_steps, bound):
+            return _final_state_any(rhs, (p, t0, t1, y0), tableaus[which], (rtol, atol, max_steps, bound))
 
         _SPECIALIZED[rhs] = njit(run)
     return _SPECIALIZED[rhs]
