@@ -197,6 +197,8 @@ def test_full_run_over_a_few_years_against_iau_and_conservation(tmp_path, monkey
     iau = value(r, "iau2000b_longitude_semiannual_arcsec")
     assert 0.9 < value(r, "nutation_longitude_semiannual_arcsec") / iau < 1.0
     assert iau == pytest.approx(1.3187, rel=0.02)  # IAU 2000 semi-annual term, -1.3187" sin 2L (digest)
+    assert -0.1 < value(r, "obliquity_semiannual_over_iau_minus_one") < 0.0  # in obliquity too, in ″ both
+    assert value(r, "step_hours") == 3  # the scene's step, as asked
     # the forced diurnal wobble: L and the figure axis part by |N|/(C n^2), at most (3/2)(K_s + K_m)H/n^2
     bound = 1.5 * (m.orbits.sun_gm_over_a3 * 1.07 + m.orbits.moon_gm_over_a3 * 1.2) * m.H / m.n**2
     assert 0 < value(r, "figure_axis_offset_mas") < bound / earth.MAS

@@ -349,6 +349,8 @@ def test_a_result_with_an_unregistered_unit_or_a_bare_column_stops_where_it_is_w
         r.number("length", None, "m")
     with pytest.raises(UnknownUnit, match="furlongs"):
         r.number("length", 1.0, "furlongs")
+    with pytest.raises(ValueError, match="needs its unit"):  # lost, it would read as a pure number
+        r.number("omega_squared_over_k_per_m", 3.0, None)
     with pytest.raises(UnknownUnit, match="fortnights"):
         r.hard_case("late", "a late case", 1.0, 2.0, unit="fortnights")
     frame = pd.DataFrame({"k": [1, 2], "step_hours": [0.5, 0.25]})

@@ -84,9 +84,12 @@ class Results:
     def number(self, name, value, unit, *, reference=None, tolerance=None, note=None):
         """tolerance: how far a rebuild may move the value before `verify` fails, {"absolute": a},
         {"relative": r} or a bare number (absolute, in `unit`); none: verify's tight default (verify.py).
-        A unit the registry does not know stops the run here, where it is written, not in the report."""
+        A unit the registry does not know, or none given, stops the run here, where it is written, not in the
+        report."""
         if not (isinstance(name, str) and name) or value is None:
             raise ValueError(f"a result needs a name and a value, not {name!r} = {value!r}")
+        if unit is None:  # said, never left out: a lost unit would pass as a pure number
+            raise ValueError(f"result {name!r} needs its unit ('1' for a pure number), not None")
         units.lookup(unit)
         entry = {"value": value, "unit": unit}
         if reference is not None:

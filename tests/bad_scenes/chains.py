@@ -329,7 +329,7 @@ CASES = [
         "analysis.rayleigh",
         HP,
         analysis={"modes": 5, "rayleigh": {"beta_min": -3.0, "beta_max": 3.0}},
-        says="a continuous hanging chain",
+        says="a continuous hanging chain (model continuum, gravity)",
     ),
     _case(
         "accuracy-cost-on-springs",

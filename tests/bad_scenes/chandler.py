@@ -155,7 +155,7 @@ CASES = [
         "analysis.poinsot.moments",
         TRIAXIAL,
         analysis__poinsot__moments=[2.5, 2.0, 1.0],
-        says="A < B < C",
+        says="A < B < C (Lamb Art. 48's order)",
     ),
     # two moments equal: a symmetric body has no separatrix, the order must be strict
     _case(

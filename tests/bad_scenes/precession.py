@@ -158,6 +158,14 @@ CASES = [
         says="lunar_torque as well",
     ),
     _case(
+        "perigee-without-moon",
+        "physics",
+        "effects.lunar_perigee_advance",
+        SUN,
+        effects={"solar_torque": None, "orbit_eccentricity": None, "lunar_perigee_advance": None},
+        says="lunar_torque as well",
+    ),
+    _case(
         "perigee-on-averaged",
         "physics",
         "effects.lunar_perigee_advance",

@@ -165,7 +165,7 @@ CASES = [
     _case("long-missing-step", "schema", "numerics.step", LONG, numerics__step=DELETE),
     _case("sweep-missing-tolerances", "schema", "numerics.tolerances", HNW, numerics__tolerances=DELETE),
     # physics
-    _case("top-not-a-body", "physics", "top.C", TOP, top__C=3.0, says="C <= A + B"),
+    _case("top-not-a-body", "physics", "top.C", TOP, top__C=3.0, says="C <= A + B = 2A = 2 (a real body)"),
     _case(
         "top-without-gravity",
         "physics",
