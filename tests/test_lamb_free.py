@@ -215,6 +215,27 @@ def test_a_free_body_needs_three_distinct_moments():
         lf.free_body(Numbers(), spec)
 
 
+def test_the_free_body_records_every_part_of_lambs_chapter_with_its_numbers():
+    """free_body with the triaxial scene's body (fewer random starts): every part recorded through a real
+    Results, each checked where a closed form says what it must be: sympy's residuals 0, Art. 52's (10)
+    deciding the side of every start, a modulus of Poinsot's example inside (0, 1)."""
+    spec = yaml.safe_load((ROOT / "workflow/scenes/chandler/triaxial.yaml").read_text())["analysis"]
+    spec = {**spec["lamb_free_body"], "samples": 200}
+    results = Results("chandler", "t", "t")
+    lf.free_body(results, spec)
+    got = {name: entry["value"] for name, entry in results.numbers.items()}
+    assert all(got[name] == 0 for name in got if name.startswith("sympy_"))
+    assert got["polhode_side_agreements"] == got["polhode_side_samples"] == 200
+    assert 0.0 < got["poinsot_modulus_squared"] < 1.0 and 0.0 < got["plate_modulus_squared"] < 1.0
+    assert {name.split("_")[0] for name in got} >= {
+        "constraining",
+        "cylinder",
+        "plate",
+        "separatrix",
+        "poinsot",
+    }
+
+
 def test_symmetric_earth_pole_turns_with_the_spin_at_euler_rate():
     """The rigid oblate Earth: the pole turns about the figure axis in the spin's sense at (C - A)/A n
     (Euler's free precession, Lamb Art. 50), n one turn a sidereal day; the recorded rate says its sign

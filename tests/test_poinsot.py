@@ -164,3 +164,52 @@ def test_inertia_examples():
         r.numbers["helix_bead_order"] == helix.order
         and r.numbers["added_mass_axis_order"] == added.axis_order
     )
+
+
+def test_the_herpolhode_curvature_takes_omega_double_dot_from_the_motion():
+    """_curvature forms omega'' by differentiating Euler's equations; here omega'' is a central difference of
+    omega' along a solve_ivp run (omega' from Euler's equations, the physics itself): the curvatures agree."""
+    I = np.array([1.0, 2.0, 3.0])
+    A, B, C = I
+
+    def euler(t, w):
+        return [(B - C) / A * w[1] * w[2], (C - A) / B * w[2] * w[0], (A - B) / C * w[0] * w[1]]
+
+    run = solve_ivp(
+        euler, (0.0, 8.0), [1.0, 0.3, 0.5], method="DOP853", rtol=1e-13, atol=1e-13, dense_output=True
+    )
+    t, h = np.linspace(0.5, 7.5, 41), 1e-4
+    w = run.sol(t).T
+    wd = np.array(euler(0.0, w.T)).T
+    wdd = (np.array(euler(0.0, run.sol(t + h))).T - np.array(euler(0.0, run.sol(t - h))).T) / (2 * h)
+    L_hat = w * I / np.linalg.norm(w * I, axis=1)[:, None]
+    acc = np.cross(w, wd) + wdd  # the space acceleration R(omega x omega' + omega''), in the body frame
+    expected = np.einsum("ij,ij->i", L_hat, np.cross(wd, acc)) / np.linalg.norm(wd, axis=1) ** 3
+    assert np.ptp(expected) > 0.1 * np.max(np.abs(expected))  # a curve whose curvature changes along it
+    assert poinsot._curvature(I, w) == pytest.approx(expected, rel=1e-6, abs=1e-9 * np.max(np.abs(expected)))
+
+
+def test_a_scene_asking_for_poinsot_gets_each_of_its_records(tmp_path):
+    """The study's dispatcher (chandler._poinsot) reads analysis.poinsot and records the body's run with the
+    scene's own moments, the conjugate plane, the triangle inequality and the invariable cone; a scene
+    without it gets none of them."""
+    import classical_dynamics.studies.chandler as study
+
+    data = yaml.safe_load((ROOT / "workflow" / "scenes" / "chandler" / "triaxial.yaml").read_text())
+    data["analysis"] = {
+        "poinsot": {**data["analysis"]["poinsot"], "moments": [1.0, 1.5, 2.0], "samples": 2001}
+    }
+    path = tmp_path / "poinsot_only.yaml"
+    path.write_text(yaml.safe_dump(data, allow_unicode=True))
+    results = Results("chandler", "t", "t")
+    study._poinsot(validate("chandler", path), results)
+    got = {name: entry["value"] for name, entry in results.numbers.items()}
+    assert [got["poinsot_A"], got["poinsot_B"], got["poinsot_C"]] == [1.0, 1.5, 2.0]
+    assert got["poinsot_plane_distance_error"] < 1e-8  # the plane stays put: the run is the body's
+    for name in ("conjugate_midplane_error", "triangle_least_margin", "invariable_cone_sympy"):
+        assert name in got
+    del data["analysis"]
+    path.write_text(yaml.safe_dump(data, allow_unicode=True))
+    none = Results("chandler", "t", "t")
+    study._poinsot(validate("chandler", path), none)
+    assert not none.numbers

@@ -81,7 +81,8 @@ def test_singular_points_and_their_types():
     # permanent rotations in physical terms (digest §6, item 14): p = 0, q r = -m/a
     L = se.LargestAxis.with_plane_parameters(BODY, 0.5, 0.0, 1.0)
     for pt in se.singular_points(0.5, 0.0, -np.pi, np.pi):
-        p, q, r = L.from_plane(pt["phi2"], 0.0)
+        assert pt["p1"] == 0.0  # on the phi2 axis: phi2' = p1 vanishes there
+        p, q, r = L.from_plane(pt["phi2"], pt["p1"])
         assert q * r == pytest.approx(-L.m / BODY.a, rel=1e-12)
         assert (q**2 / BODY.b < r**2 / BODY.c) == (pt["type"] == "center")  # stable iff nearer the z-axis
 

@@ -2,6 +2,7 @@
 the scenes save. A few real scenes are run (quick) into a scratch results folder; the others of their groups
 are absent."""
 
+import dataclasses
 import json
 import re
 
@@ -169,6 +170,18 @@ def test_a_taller_window_keeps_the_others_tick_step_and_the_caption_says_so():
     text = gallery.caption(group, found)
     assert "The window of (c) reaches $|q_1|$ = 6, that of the others 3" in text
     assert "reaches" not in gallery.caption(group, found[:2])  # windows alike: shared, nothing to say
+
+
+def test_only_the_middle_axis_captions_explain_the_lone_dots_on_the_window_edge():
+    """Lee's middle-axis planes start Euler integrations on the window's edge too (a lone dot where one leaves
+    at once): their captions say so after the sentence on the dots; the other axes' do not."""
+    middle = [_panel("a", -4.0, 4.0, 3.0)]
+    other = [dataclasses.replace(middle[0], frame=middle[0].frame.rename(columns={"q1": "p1"}))]
+    for group in gallery.GROUPS:
+        text = gallery.caption(group, middle if group.axis == "middle" else other)
+        if gallery.EULER in group.lead:
+            assert (gallery.EULER + gallery.EDGE in text) == (group.axis == "middle"), group.name
+    assert any(g.axis == "middle" and gallery.EULER in g.lead for g in gallery.GROUPS)
 
 
 def test_a_zoom_panel_keeps_its_own_window_and_shows_its_upper_half():
