@@ -334,6 +334,9 @@ def test_accuracy_run_orders_and_two_implementations_of_dop853(tmp_path, monkeyp
     assert ours.error_mas == pytest.approx(peer.error_mas, rel=0.02)
     assert value(r, "resolution_mas") >= value(r, "reference_agreement_mas")
     assert set(frame.steps[frame.kind == "step"]) == {73, 146, 292}  # 36.5 days / h
+    # the table shows a step in hours and a tolerance each in its own column, as the scene asked for them
+    shown = r.tables["accuracy"][0]
+    assert set(shown.step_hours.dropna()) == {12, 6, 3} and set(shown.rtol.dropna()) == {1e-8}
     # the hard case is the same measurement as the number: the same value in the same unit
     (case,) = [c for c in r.stability if c["name"] == "reference_agreement"]
     assert case["measured"] == value(r, "reference_agreement_mas") and case["unit"] == "mas"

@@ -6,6 +6,7 @@ import pytest
 import yaml
 
 from classical_dynamics.models import self_excited as se
+from classical_dynamics.results import Results
 from classical_dynamics.solvers import references as ref
 from classical_dynamics.solvers.ode import Events, Problem, solve
 from classical_dynamics.studies import validate
@@ -484,7 +485,6 @@ def test_rare_case_without_torque_line_of_rest_points():
     """Lee's Figure 3.18(b), m0 = 0: every point of q1 = 0 is a permanent rotation, above it q1 = q10/(1 + nu
     q10 tau) and omega -> 0 along +y (slope of ln|q| against ln|(p, r)| exactly b/(a + c) < 1), below it the
     blow-up time is 1/(nu |q10|) up to the bound. The scene's check no longer refuses it."""
-    from classical_dynamics.results import Results
     from classical_dynamics.studies.self_excited import middle_axis, rare_case
 
     body = se.Body.from_moments([3.0, 2.2, 1.2])
@@ -589,7 +589,6 @@ def test_unperturbed_plane_one_without_torque_levels_off():
 def test_huge_excursion_below_the_critical_drag_closes():
     """Digest §7.5: below mu_c a fast spin about the torque axis swings |omega| out by hundreds and back; the
     orbit closes on the closed form's period, turns where the closed form says, and stays on its cylinder."""
-    from classical_dynamics.results import Results
     from classical_dynamics.studies.self_excited import excursions
 
     M = se.MiddleAxis.with_plane_parameters(se.Body.from_moments([3.0, 2.2, 1.2]), 0.5, -0.3, 0.8, 0.3)
@@ -614,15 +613,9 @@ def test_inverse_map_keeps_its_digits_far_from_the_start():
         assert M.to_plane(M.from_plane(phi2, 0.3))[0] == pytest.approx([phi2, 0.3], abs=1e-12)
 
 
-class _Numbers:
-    def __init__(self):
-        self.numbers, self.cases = {}, {}
-
-    def number(self, name, value, unit, **kw):
-        self.numbers[name] = value
-
-    def hard_case(self, name, description, measured, bound, unit=""):
-        self.cases[name] = (measured, bound)
+def _values(results):
+    """A real Results' numbers (units checked where written) as plain values."""
+    return {name: entry["value"] for name, entry in results.numbers.items()}
 
 
 def test_lee_section_2_motions_on_eulers_equations():
@@ -630,9 +623,9 @@ def test_lee_section_2_motions_on_eulers_equations():
 
     m1 = 0.5
     L = se.LargestAxis.with_plane_parameters(BODY, m1, 0.0, 1.0)
-    r = _Numbers()
+    r = Results("self_excited", "t", "t")
     motions.run(r, L, m1, se.singular_points(m1, 0.0, -3 * np.pi, 3 * np.pi))
-    n = r.numbers
+    n = _values(r)
     # each pair is Euler's equations integrated against a closed form or quadrature that calls no integrator
     # (Lee's (2.x) solution, the time as a quadrature in phi, the period as a line integral, the saddle's rate
     # (1 - m1^2)^(1/4) sqrt(2d)); a rate with exponent 0.3 for 1/4 fails it
@@ -664,12 +657,12 @@ def test_beyond_one_the_x_axis_attracts_and_the_threshold_gives_m1_one():
     from classical_dynamics.studies.self_excited import motions
 
     L = se.LargestAxis.with_plane_parameters(BODY, 1.5, 0.0, 1.0)
-    r = _Numbers()
+    r = Results("self_excited", "t", "t")
     motions.run(r, L, 1.5, [])
-    threshold = r.numbers["x_axis_delta_threshold"]
-    assert se.LargestAxis(BODY, L.m, 0.0, threshold).m1 == pytest.approx(1.0, rel=1e-12)
-    assert r.numbers["x_axis_angle_ratio_t100"] < 0.1
-    assert "closed_orbit_period_euler" not in r.numbers  # no centers beyond |m1| = 1
+    n = _values(r)
+    assert se.LargestAxis(BODY, L.m, 0.0, n["x_axis_delta_threshold"]).m1 == pytest.approx(1.0, rel=1e-12)
+    assert n["x_axis_angle_ratio_t100"] < 0.1
+    assert "closed_orbit_period_euler" not in n  # no centers beyond |m1| = 1
 
 
 def test_the_groebner_check_can_fail():
@@ -731,7 +724,6 @@ def test_next_to_the_separatrix_the_sign_of_the_energy_error_decides_the_side():
     energy keep the motion inside; an energy raised past the separatrix's always means a crossing."""
     import pandas as pd
 
-    from classical_dynamics.results import Results
     from classical_dynamics.studies.self_excited import accuracy
 
     runs = accuracy.separatrix(0.5, quick=True)
