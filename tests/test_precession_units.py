@@ -263,6 +263,16 @@ def test_effect_ladder_adds_one_effect_a_row(monkeypatch):
     d = value(r, "effect_ladder_rate_change_decimals")
     assert 10.0**-d >= 10 * scatter > 10.0 ** -(d + 1)
     assert value(r, "effect_ladder_rate_scatter_arcsec_per_year") == pytest.approx(scatter, rel=1e-12)
+    # the caption names the effects whose change reads as zero at those decimals (below half the last place),
+    # and no other (the eccentricity's 0.16″/yr reads 0.2 at one decimal: printed, not called zero)
+    for spread in (3e-5, 3e-8):
+        r = Results("precession", "t", "t")
+        full._record_effect_ladder(r, ladder, spread)
+        d = value(r, "effect_ladder_rate_change_decimals")
+        caption = r.tables["effect_ladder"][1]
+        for name, change in zip(frame.adds, frame.rate_change):
+            shown = name.removeprefix("+ ").replace("_", " ") + ", "
+            assert (shown in caption) == (abs(change) < 0.5 * 10.0**-d), (spread, name, change, d)
 
 
 def test_node_period_fits_a_known_period_and_records_the_iau_nodes():
