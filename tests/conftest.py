@@ -107,6 +107,11 @@ def pytest_collection_modifyitems(items):
     items.sort(key=needs_build)  # stable: the order within each group is kept
 
 
+def values(results) -> dict:
+    """A real Results' numbers (units checked where they were recorded) as plain values, by name."""
+    return {name: entry["value"] for name, entry in results.numbers.items()}
+
+
 def assert_refused(tmp_path: Path, study: str, data: dict, field: str) -> None:
     """Writing `data` as a scene of `study` is refused with one line that names the file and `field`."""
     import yaml

@@ -11,6 +11,8 @@ from classical_dynamics.scenes import SceneError
 from classical_dynamics.studies import validate
 from classical_dynamics.studies.chains import stability, symbolic
 
+from .conftest import values
+
 
 class Recorder:
     def __init__(self):
@@ -112,7 +114,7 @@ def test_hamilton_chain_record_names_its_meshes_and_the_finest_error():
 
     results = Results("chains", "t", "t")
     stability.record_hamilton_chain(results, stability.hamilton_chain([250, 500]))
-    got = {name: entry["value"] for name, entry in results.numbers.items()}
+    got = values(results)
     assert got["galerkin_elements"] == [250, 500]
     assert got["galerkin_finest_error"] / got["galerkin_relative_errors"][0] == pytest.approx(0.25, rel=0.02)
     for entry in results.numbers.values():

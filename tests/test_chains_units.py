@@ -17,15 +17,13 @@ from classical_dynamics.results import Results
 from classical_dynamics.solvers import rattle
 from classical_dynamics.studies.chains import continuum, small_oscillations, time_domain
 
+from .conftest import values
+
 G = 9.81
 
 
 def _results():
     return Results("chains", "test", "test")
-
-
-def _values(results):
-    return {name: entry["value"] for name, entry in results.numbers.items()}
 
 
 def _string(m=1.0, P=1.0, **more):
@@ -63,7 +61,7 @@ def test_continuum_run_records_bernoullis_frequencies_node_and_rayleigh_bound():
         "rayleigh": {"beta_min": -1.0, "beta_max": 1.0},
     }
     continuum.run(_continuum_scene(analysis), results, True)
-    got = _values(results)
+    got = values(results)
     # D. Bernoulli: omega_k = (j_0k / 2) sqrt(g / l), the zeros of J0 from scipy
     j = special.jn_zeros(0, 4)
     exact = j / 2 * np.sqrt(G / 2.0)
@@ -114,7 +112,7 @@ def test_continuum_string_without_gravity_stops_at_its_harmonics():
         chain={"model": "continuum", "length_m": 2.0, "mass_kg": 0.5, "ends": "fixed-fixed"},
     )
     continuum.run(scene, results, True)
-    got = _values(results)
+    got = values(results)
     np.testing.assert_allclose(
         got["frequencies_rad_per_s"], np.arange(1, 4) * np.pi / 2.0 * np.sqrt(4.0 / 0.25)
     )
@@ -162,15 +160,15 @@ def test_forced_response_by_normal_coordinates_matches_a_direct_solve_and_the_st
     # m = 3 so that sigma_1 is no simple binary number: the 50-digit reference must be exact for it too
     built = _string(m=3.0, forcing={"newton": [1.0, 0.0, 0.0]})
     spec = {"sigma_max_over_lowest": 3.0, "points": 31, "transient_detuning": 1e-12, "transient_periods": 2}
-    values = small_oscillations.forced(built, spec)
-    assert values.direct_vs_normal < 1e-12  # a term dropped from Lamb's sum: O(1)
-    assert values.static_limit < 1e-12
-    assert values.residue_slope == pytest.approx(1.0, abs=0.01)  # the deviation is O(delta)
-    assert values.transient.integrator_vs_closed_form < 1e-8
+    forced = small_oscillations.forced(built, spec)
+    assert forced.direct_vs_normal < 1e-12  # a term dropped from Lamb's sum: O(1)
+    assert forced.static_limit < 1e-12
+    assert forced.residue_slope == pytest.approx(1.0, abs=0.01)  # the deviation is O(delta)
+    assert forced.transient.integrator_vs_closed_form < 1e-8
     # the record's hard-case verdicts as the report prints them, not a reference (the other asserts are)
     results = _results()
-    small_oscillations.record_forced(results, values)
-    assert _values(results)["forced_direct_vs_normal"] == values.direct_vs_normal
+    small_oscillations.record_forced(results, forced)
+    assert values(results)["forced_direct_vs_normal"] == forced.direct_vs_normal
     assert all(case["holds"] for case in results.stability), results.stability
     # the reader sees a header for every column (not the code's name), and the detuning as the caption's delta
     table, caption, headers = results.tables["resonance"]
@@ -179,7 +177,7 @@ def test_forced_response_by_normal_coordinates_matches_a_direct_solve_and_the_st
     # the table's amplitudes against numpy's solve on the matrices written out here, at delta = 1e-2
     K, M = _string_matrices(3.0, 1.0)
     F = np.array([1.0, 0.0, 0.0])
-    frame = values.resonance
+    frame = forced.resonance
     row = frame[frame.detuning == 1e-2].iloc[0]
     s = np.sqrt((2 - np.sqrt(2)) / 3.0) * (1 - 1e-2)
     expected = np.linalg.norm(np.linalg.solve(K - s**2 * M, F)) / np.linalg.norm(np.linalg.solve(K, F))
@@ -325,7 +323,7 @@ def test_time_domain_run_on_two_particles_reads_the_laguerre_frequencies():
     }
     results = _results()
     time_domain.run(SimpleNamespace(name="t", title="t", data=data), results, True)
-    got = _values(results)
+    got = values(results)
     # omega^2 a/g are the zeros of L_2 (Lamb Ex. XIV.11), 2 -+ sqrt 2, a = l/2
     frame = results.tables["time_domain_small_amplitude"][0]
     expected = np.sqrt(np.array([2 - np.sqrt(2), 2 + np.sqrt(2)]) * 2)
@@ -357,7 +355,7 @@ def test_a_full_time_domain_run_takes_the_periods_the_scene_asks_for():
     }
     results = _results()
     time_domain.run(SimpleNamespace(name="t", title="t", data=data), results, False)
-    assert _values(results)["time_domain_periods"] == 1001
+    assert values(results)["time_domain_periods"] == 1001
 
 
 # --- cost.py: what a scene costs ----------------------------------------------------------------------------
@@ -406,7 +404,7 @@ def test_ring_run_records_lambs_tension_and_wave_speeds_for_a_small_ring(monkeyp
     }
     results = _results()
     planar.run_ring(SimpleNamespace(name="r", title="r", data=data), results, True)
-    got = _values(results)
+    got = values(results)
     # each bead m = rho 2 pi a/n is held by two tensions T at the angle 2 pi/n: 2 T sin(pi/n) = m omega^2 a,
     # so T/(rho omega^2 a^2) = (pi/n)/sin(pi/n), Lamb's 1 as n grows
     assert got["tension_over_rho_omega2_a2"] == pytest.approx((np.pi / n) / np.sin(np.pi / n), rel=1e-12)

@@ -10,7 +10,7 @@ from classical_dynamics.scenes import SceneError
 from classical_dynamics.studies import validate
 from classical_dynamics.studies.chandler import lamb_free as lf
 
-from .conftest import ROOT
+from .conftest import ROOT, values
 
 I = np.array([1.0, 2.0, 2.5])
 
@@ -223,7 +223,7 @@ def test_the_free_body_records_every_part_of_lambs_chapter_with_its_numbers():
     spec = {**spec["lamb_free_body"], "samples": 200}
     results = Results("chandler", "t", "t")
     lf.free_body(results, spec)
-    got = {name: entry["value"] for name, entry in results.numbers.items()}
+    got = values(results)
     assert all(got[name] == 0 for name in got if name.startswith("sympy_"))
     assert got["polhode_side_agreements"] == got["polhode_side_samples"] == 200
     assert 0.0 < got["poinsot_modulus_squared"] < 1.0 and 0.0 < got["plate_modulus_squared"] < 1.0

@@ -12,7 +12,7 @@ from classical_dynamics.studies import validate
 from classical_dynamics.studies.chandler import poinsot
 from classical_dynamics.studies.precession import examples
 
-from .conftest import ROOT
+from .conftest import ROOT, values
 
 
 class Recorder:
@@ -203,7 +203,7 @@ def test_a_scene_asking_for_poinsot_gets_each_of_its_records(tmp_path):
     path.write_text(yaml.safe_dump(data, allow_unicode=True))
     results = Results("chandler", "t", "t")
     study._poinsot(validate("chandler", path), results)
-    got = {name: entry["value"] for name, entry in results.numbers.items()}
+    got = values(results)
     assert [got["poinsot_A"], got["poinsot_B"], got["poinsot_C"]] == [1.0, 1.5, 2.0]
     assert got["poinsot_plane_distance_error"] < 1e-8  # the plane stays put: the run is the body's
     for name in ("conjugate_midplane_error", "triangle_least_margin", "invariable_cone_sympy"):

@@ -12,7 +12,7 @@ from classical_dynamics.solvers.ode import Events, Problem, solve
 from classical_dynamics.studies import validate
 from classical_dynamics.studies.self_excited import largest_axis, portrait
 
-from .conftest import ROOT, assert_refused
+from .conftest import ROOT, assert_refused, values
 
 BODY = se.Body.from_moments([3.0, 2.2, 1.2])
 
@@ -613,11 +613,6 @@ def test_inverse_map_keeps_its_digits_far_from_the_start():
         assert M.to_plane(M.from_plane(phi2, 0.3))[0] == pytest.approx([phi2, 0.3], abs=1e-12)
 
 
-def _values(results):
-    """A real Results' numbers (units checked where written) as plain values."""
-    return {name: entry["value"] for name, entry in results.numbers.items()}
-
-
 def test_lee_section_2_motions_on_eulers_equations():
     from classical_dynamics.studies.self_excited import motions
 
@@ -625,7 +620,7 @@ def test_lee_section_2_motions_on_eulers_equations():
     L = se.LargestAxis.with_plane_parameters(BODY, m1, 0.0, 1.0)
     r = Results("self_excited", "t", "t")
     motions.run(r, L, m1, se.singular_points(m1, 0.0, -3 * np.pi, 3 * np.pi))
-    n = _values(r)
+    n = values(r)
     # each pair is Euler's equations integrated against a closed form or quadrature that calls no integrator
     # (Lee's (2.x) solution, the time as a quadrature in phi, the period as a line integral, the saddle's rate
     # (1 - m1^2)^(1/4) sqrt(2d)); a rate with exponent 0.3 for 1/4 fails it
@@ -659,7 +654,7 @@ def test_beyond_one_the_x_axis_attracts_and_the_threshold_gives_m1_one():
     L = se.LargestAxis.with_plane_parameters(BODY, 1.5, 0.0, 1.0)
     r = Results("self_excited", "t", "t")
     motions.run(r, L, 1.5, [])
-    n = _values(r)
+    n = values(r)
     assert se.LargestAxis(BODY, L.m, 0.0, n["x_axis_delta_threshold"]).m1 == pytest.approx(1.0, rel=1e-12)
     assert n["x_axis_angle_ratio_t100"] < 0.1
     assert "closed_orbit_period_euler" not in n  # no centers beyond |m1| = 1

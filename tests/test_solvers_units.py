@@ -17,15 +17,11 @@ from classical_dynamics.models import heavy_top as top_model
 from classical_dynamics.results import Results
 from classical_dynamics.studies.solvers import hard_cases, heavy_top, inertia, long_horizon, sweeps
 
-from .conftest import assert_refused
+from .conftest import assert_refused, values
 
 HNW_I = np.array([0.5, 2.0, 3.0])  # Hairer, Nørsett and Wanner vol. I p. 244
 HNW_W0 = np.array([1.0, 0.0, 0.9])
 TOP = top_model.Top(1.0, 0.5, 1.0)  # the shipped scene's top: A = Mgh = 1, C = 1/2
-
-
-def values(results):
-    return {k: v["value"] for k, v in results.numbers.items()}
 
 
 def euler_free(_, w, I=HNW_I):
