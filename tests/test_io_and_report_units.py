@@ -375,7 +375,7 @@ def test_the_rigid_series_values_are_the_explanatory_supplements():
     for cid, value in printed.items():
         for row, field in ((rows[cid], "expected"), (rows["woolard_" + cid], "source")):
             assert row[field]["value"] == value, cid
-            assert row[field]["cite"] == "explsupp1961", cid
+            assert row[field]["cite"] == "plan9astro", cid
             assert not row[field].get("evaluated"), cid
         assert rows["woolard_" + cid]["computed"] == rows[cid]["computed"], cid
     assert not any(c.get("expected") for c in rows.values() if c["id"].startswith("nutation_18p6"))

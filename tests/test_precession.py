@@ -105,6 +105,30 @@ def test_modern_secular_rate_against_iau2006():
     assert secular.iau2006_rates()["psi_A"] == pytest.approx(5038.481507 / 100, rel=1e-9)
 
 
+def test_first_order_rate_is_set_beside_p03_r0_and_the_moon_distance_convention_sized():
+    """The like quantity of a first-order formula is P03's r0 (psi_A plus Table 3's 2.223176″/cy); the Moon at
+    Kepler's distance for its sidereal month changes only the lunar part, as a^-3."""
+    from classical_dynamics.results import Results
+
+    scene = validate("precession", ROOT / "workflow/scenes/precession/secular_modern.yaml")
+    results = Results("precession", scene.name, scene.title)
+    secular.run(scene, results)
+    n = {k: v["value"] for k, v in results.numbers.items()}
+    assert n["p03_first_order_rate_arcsec_per_year"] == pytest.approx(
+        (5038.481507 + 2.223176) / 100, rel=1e-9
+    )
+    month_s = 27.321662 * 86400.0  # the sidereal month, IERS GM_E and M/E: Kepler's third law by hand
+    a = (3.986004418e14 * (1.0 + 0.0123000371) * month_s**2 / (4.0 * np.pi**2)) ** (1.0 / 3.0)
+    assert n["kepler_moon_distance_km"] == pytest.approx(a / 1e3, rel=1e-12)
+    assert n["kepler_moon_distance_km"] == pytest.approx(384748.0, abs=1.0)
+    lunar, total = n["secular_lunar_rate_arcsec_per_year"], n["secular_rate_arcsec_per_year"]
+    expected = lunar / total * ((384400.0e3 / a) ** 3 - 1.0)
+    assert n["kepler_moon_distance_rate_change_relative"] == pytest.approx(expected, rel=1e-9)
+    assert n["secular_rate_kepler_moon_distance_arcsec_per_year"] == pytest.approx(
+        total * (1 + expected), rel=1e-12
+    )
+
+
 # --- rung 2: the averaged equations ---------------------------------------------------------------------
 
 

@@ -97,7 +97,7 @@ def test_the_chandler_study_sends_each_kind_of_scene_to_its_analysis(monkeypatch
 def test_the_precession_study_runs_its_rung_and_compares_a_modern_rate_with_psi_A(monkeypatch):
     """Every rung starts from the secular model and Lamb's examples; the averaged and full rungs add theirs
     (the accuracy sweep where asked); with today's constants the rate is set against IAU 2006's psi_A as
-    rate/psi_A - 1, here of two numbers the spies record."""
+    rate/psi_A - 1 and against P03's first-order term r0 as rate/r0 - 1, here of numbers the spies record."""
     from types import SimpleNamespace
 
     from classical_dynamics.studies import precession
@@ -109,6 +109,7 @@ def test_the_precession_study_runs_its_rung_and_compares_a_modern_rate_with_psi_
         calls.append(("secular", (scene, results)))
         results.number("precession_rate_arcsec_per_year", 50.0, "″/yr")
         results.number("iau2006_psi_A_rate_arcsec_per_year", 40.0, "″/yr")
+        results.number("p03_first_order_rate_arcsec_per_year", 45.0, "″/yr")
         return "the model"
 
     monkeypatch.setattr(secular, "run", secular_run)
@@ -134,6 +135,11 @@ def test_the_precession_study_runs_its_rung_and_compares_a_modern_rate_with_psi_
         if relative:
             assert relative["value"] == pytest.approx(50.0 / 40.0 - 1.0, rel=1e-15)
             assert "IAU 2006" in relative["note"] and "luni-solar" in relative["note"]
+            against_r0 = results.numbers["rate_minus_r0_relative"]
+            assert against_r0["value"] == pytest.approx(50.0 / 45.0 - 1.0, rel=1e-15)
+            assert "$r_0$" in against_r0["note"]
+        else:
+            assert "rate_minus_r0_relative" not in results.numbers
 
 
 def test_the_solvers_study_sends_each_problem_to_its_analysis(monkeypatch):

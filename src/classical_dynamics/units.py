@@ -33,7 +33,7 @@ REGISTRY: dict[str, Unit] = {
     "d": Unit("d"),
     "yr": Unit("yr"),
     "cy": Unit("cy"),
-    "sidereal days": Unit("sid. d"),
+    "sidereal days": Unit("sid.\u00a0d"),
     # angle and angular rates
     "rad": Unit("rad"),
     "°": Unit("°", close_up=True),

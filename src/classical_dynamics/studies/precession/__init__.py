@@ -139,4 +139,11 @@ def run(scene: Scene, quick: bool = False):
             "1",
             note="this rung's rate against the IAU 2006 luni-solar precession",
         )
+        r0 = results.numbers["p03_first_order_rate_arcsec_per_year"]["value"]
+        results.number(
+            "rate_minus_r0_relative",
+            rate / r0 - 1.0,
+            "1",
+            note="this rung's rate against P03's first-order luni-solar term $r_0$, the like quantity",
+        )
     return results

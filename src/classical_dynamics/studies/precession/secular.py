@@ -11,6 +11,10 @@ from ...models import precession as prec
 from .fitting import per_year_arcsec
 
 ARCSEC_PER_TURN = 1296000.0
+# Capitaine, Wallace & Chapront (2003), Table 3: psi_A's rate is r0 - 2.223176″/cy, r0 the first-order
+# luni-solar term (the quantity a first-order formula computes) and 2.223176″/cy the second-order, planetary,
+# J4, non-linear and geodesic terms P03 adds to it.
+P03_CORRECTIONS_ARCSEC_PER_YEAR = 2.223176 / 100.0
 
 
 CONSTANTS_NAMES = {"lamb1920": "Lamb 1920", "modern": "modern values"}
@@ -62,7 +66,8 @@ def iau2006_rates() -> dict:
     before, after = erfa.p06e(2451545.0, -365.25), erfa.p06e(2451545.0, 365.25)
     eps0 = erfa.p06e(2451545.0, 0.0)[0]
     rate = lambda k: (after[k] - before[k]) / 2.0 / earth.ARCSEC
-    return {"psi_A": rate(1), "p_A": rate(12), "omega_A": rate(2), "eps0_arcsec": eps0 / earth.ARCSEC}
+    rates = {"psi_A": rate(1), "p_A": rate(12), "omega_A": rate(2), "eps0_arcsec": eps0 / earth.ARCSEC}
+    return rates | {"r0": rates["psi_A"] + P03_CORRECTIONS_ARCSEC_PER_YEAR}
 
 
 class SecularRates(NamedTuple):
@@ -130,7 +135,44 @@ def run(scene, results) -> prec.PrecessionModel:
         )
     if data["constants"] == "modern":
         _record_iau(results, iau_comparison(total))
+        _record_kepler_distance(results, model, data.get("effects") or {})
     return model
+
+
+def kepler_moon_distance_m(orbits) -> float:
+    """The Moon's semi-major axis from Kepler's third law with its sidereal mean motion,
+    a^3 = G(E + M)/n^2: the convention some theories adopt in place of the mean distance."""
+    n = orbits.moon_n / earth.SECONDS_PER_DAY
+    return (earth.GM_M3_PER_S2 * (1.0 + prec.MOON_OVER_EARTH) / n**2) ** (1.0 / 3.0)
+
+
+def _record_kepler_distance(results, model, effects):
+    """The first-order rate with the Moon at Kepler's distance: how much the lunar distance convention moves
+    it (the size of one input's convention, set beside the residual against P03's r0)."""
+    from dataclasses import replace
+
+    a = kepler_moon_distance_m(model.orbits)
+    gm_moon = model.orbits.moon_gm_over_a3 * prec.MOON_DISTANCE_M**3
+    kepler = replace(model.orbits, moon_gm_over_a3=gm_moon / a**3)
+    total = secular_rates(prec.assemble(model.H, model.obliquity, kepler, effects)).total
+    results.number(
+        "kepler_moon_distance_km",
+        a / 1e3,
+        "km",
+        note="the Moon's semi-major axis from Kepler's third law, $a^3 = G(E + M)/n^2$, sidereal month",
+    )
+    results.number(
+        "secular_rate_kepler_moon_distance_arcsec_per_year",
+        total,
+        "″/yr",
+        note="the secular formula with the Moon at Kepler's distance in place of 384 400 km",
+    )
+    results.number(
+        "kepler_moon_distance_rate_change_relative",
+        total / results.numbers["secular_rate_arcsec_per_year"]["value"] - 1.0,
+        "1",
+        note="what the lunar distance convention alone does to the rate",
+    )
 
 
 class Inverse(NamedTuple):
@@ -201,6 +243,13 @@ def _record_iau(results, values: IauComparison):
         note="obliquity against the J2000 ecliptic, IAU 2006 (pyerfa p06e)",
     )
     results.number("iau2006_eps0_arcsec", iau["eps0_arcsec"], "″", note="obliquity at J2000 (pyerfa p06e)")
+    results.number(
+        "p03_first_order_rate_arcsec_per_year",
+        iau["r0"],
+        "″/yr",
+        note="P03's first-order luni-solar term $r_0$: $\\psi_\\mathrm{A}$ + 2.223176″/cy "
+        "(Capitaine et al. 2003, Table 3)",
+    )
     results.number(
         "secular_minus_psi_A_relative",
         values.secular_minus_psi_A_relative,

@@ -181,6 +181,7 @@ def record_separatrix(results, values: SeparatrixRuns):
             "energy_change": "change of $E$",
             "wrong_side": "crossed the separatrix",
         },
+        crossed="wrong_side",
     )
 
 
@@ -254,9 +255,10 @@ HEADERS = {
 }
 
 
-def publish(results, frame, name, error, caption, xlabel, headers=None, floor=1e-16):
+def publish(results, frame, name, error, caption, xlabel, headers=None, floor=1e-16, crossed=None):
     """A work-precision frame as table, timing table, figure and best error per method. headers: those of the
-    columns particular to this frame (the error's); the common ones are HEADERS."""
+    columns particular to this frame (the error's); the common ones are HEADERS. crossed: a column of flags,
+    marked on the figure by a ring (the table says the rest: a figure's caption says only what it draws)."""
     headers = {**HEADERS, **(headers or {})}
     results.table(f"accuracy_{name}", frame.drop(columns=["seconds"]), caption, headers=headers)
     results.timing_table(
@@ -267,6 +269,24 @@ def publish(results, frame, name, error, caption, xlabel, headers=None, floor=1e
     )
     fig, ax = new_figure(height=2.7)  # with its caption, at most 40 % of a page
     wp.plot(frame, ax, error=error, floor=floor, xlabel=xlabel)
+    figure_caption = caption
+    if crossed:
+        hit = frame[frame[crossed].astype(bool)]
+        ax.loglog(
+            np.maximum(hit[error], floor),
+            hit.seconds,
+            "o",
+            ms=8,
+            mfc="none",
+            mec="black",
+            mew=0.8,
+            label="crossed the separatrix",
+        )
+        figure_caption = (
+            caption.split(": the error")[0] + f": the {xlabel}; a black ring marks each run that crossed the "
+            "separatrix (it ends past the saddle, running away). The sign of each change of $E$ is in the "
+            "table of the same runs."
+        )
     fig.legend(loc="outside right upper")
     styles = ["solid: this library's methods"]
     if frame.method.str.startswith("scipy:").any():
@@ -276,7 +296,7 @@ def publish(results, frame, name, error, caption, xlabel, headers=None, floor=1e
     results.timing_figure(
         f"work_precision_{name}",
         fig,
-        caption + " Wall time against the error, one line per method "
+        figure_caption + " Wall time against the error, one line per method "
         f"({'; '.join(styles)}); accuracy grows to the right, and errors below "
         f"{power_of_ten(round(np.log10(floor)))} are drawn at that floor.",
     )
