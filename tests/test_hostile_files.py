@@ -51,8 +51,9 @@ def test_a_hostile_file_is_refused_in_one_line(tmp_path, case):
     assert hf.digest(base) == before and list(tmp.iterdir()) == []  # nothing touched, nothing left
 
 
-def test_verify_refuses_an_archive_over_the_total_limit_before_unpacking_more(tmp_path, monkeypatch):
-    """Members each within the size limit, over the total: refused at the member that passes it."""
+def test_verify_refuses_an_archive_over_the_total_limit_before_unpacking_any(tmp_path, monkeypatch):
+    """Members each within the size limit, over the total: refused from the headers, before a byte is
+    written (the headers are all read first)."""
     monkeypatch.setattr(limits, "MAX_ARCHIVE_BYTES", 3000)
     buffer = io.BytesIO()
     with tarfile.open(fileobj=buffer, mode="w") as tar:
@@ -64,7 +65,7 @@ def test_verify_refuses_an_archive_over_the_total_limit_before_unpacking_more(tm
     archive.write_bytes(gzip.compress(buffer.getvalue()))
     with pytest.raises(VerifyError, match="in all, over the limit") as error:
         unpack_archive(archive, tmp_path / "into")
-    assert sorted(p.name for p in (tmp_path / "into").rglob("*.csv")) == ["m0.csv", "m1.csv"]
+    assert not (tmp_path / "into").exists() or not any((tmp_path / "into").rglob("*"))
     assert "\n" not in str(error.value)
 
 

@@ -279,43 +279,61 @@ def _not_an_archive(given: Path) -> str | None:
     return f"{given}: not a regular file (a device, pipe or socket), not a dist archive"
 
 
+def _checked_members(archive: Path, tar):
+    """The archive's members, each refused with one line from its header alone: past the member count, the
+    size of one or of all (limits.py), not a plain file, leaving the one top folder, or named twice."""
+    names, prefix, total = set(), None, 0
+    while (member := tar.next()) is not None:
+        tar.members.clear()  # one header held at a time, not every one read
+        if len(names) >= limits.MAX_MEMBERS:
+            raise VerifyError(
+                f"{archive}: more than {limits.MAX_MEMBERS} members (limits.MAX_MEMBERS); not unpacked"
+            )
+        path = PurePosixPath(member.name)
+        top = path.parts[0] if path.parts else ""
+        if prefix is None:
+            prefix = top
+            if not PREFIX.match(prefix):
+                raise VerifyError(f"{archive}: not a classical-dynamics archive (top folder {top[:60]!r})")
+        if path.is_absolute() or ".." in path.parts or top != prefix or len(path.parts) < 2:
+            raise VerifyError(f"{archive}: member {member.name[:80]!r} is outside {prefix}/")
+        if not member.isfile():
+            raise VerifyError(f"{archive}: member {member.name!r} is not a plain file")
+        if member.name in names:
+            raise VerifyError(f"{archive}: member {member.name!r} appears twice")
+        if member.size > limits.MAX_MEMBER_BYTES:
+            raise VerifyError(
+                f"{archive}: member {member.name!r} is {io._size(member.size)}, over the limit of "
+                f"{io._size(limits.MAX_MEMBER_BYTES)} (limits.MAX_MEMBER_BYTES); not unpacked"
+            )
+        total += member.size
+        if total > limits.MAX_ARCHIVE_BYTES:
+            raise VerifyError(
+                f"{archive}: members of more than {io._size(limits.MAX_ARCHIVE_BYTES)} in all, over the "
+                "limit (limits.MAX_ARCHIVE_BYTES); not unpacked"
+            )
+        names.add(member.name)
+        yield prefix, path, member
+    if prefix is None:
+        raise VerifyError(f"{archive}: empty archive")
+
+
+@contextlib.contextmanager
+def _tar(archive: Path):
+    with gzip.open(archive, "rb") as raw, tarfile.open(fileobj=_CappedReads(raw, archive), mode="r:") as tar:
+        yield tar
+
+
 def _unpack_members(archive: Path, into: Path) -> tuple[str, dict[str, str]]:
     """Stream the archive's members into `into`, each hashed as it is written, none held whole in memory:
-    (its one top folder, {member name: sha256}). Refused with one line: a member count, a member's size or
-    the total over limits.py's, a member that is not a plain file or leaves the one top folder."""
-    digests, prefix, total = {}, None, 0
-    with gzip.open(archive, "rb") as raw, tarfile.open(fileobj=_CappedReads(raw, archive), mode="r:") as tar:
-        while (member := tar.next()) is not None:
-            tar.members.clear()  # one header held at a time, not every one read
-            if len(digests) >= limits.MAX_MEMBERS:
-                raise VerifyError(
-                    f"{archive}: more than {limits.MAX_MEMBERS} members (limits.MAX_MEMBERS); not unpacked"
-                )
-            path = PurePosixPath(member.name)
-            top = path.parts[0] if path.parts else ""
-            if prefix is None:
-                prefix = top
-                if not PREFIX.match(prefix):
-                    raise VerifyError(
-                        f"{archive}: not a classical-dynamics archive (top folder {top[:60]!r})"
-                    )
-            if path.is_absolute() or ".." in path.parts or top != prefix or len(path.parts) < 2:
-                raise VerifyError(f"{archive}: member {member.name[:80]!r} is outside {prefix}/")
-            if not member.isfile():
-                raise VerifyError(f"{archive}: member {member.name!r} is not a plain file")
-            if member.name in digests:
-                raise VerifyError(f"{archive}: member {member.name!r} appears twice")
-            if member.size > limits.MAX_MEMBER_BYTES:  # refused from its header, before a byte is unpacked
-                raise VerifyError(
-                    f"{archive}: member {member.name!r} is {io._size(member.size)}, over the limit of "
-                    f"{io._size(limits.MAX_MEMBER_BYTES)} (limits.MAX_MEMBER_BYTES); not unpacked"
-                )
-            total += member.size
-            if total > limits.MAX_ARCHIVE_BYTES:
-                raise VerifyError(
-                    f"{archive}: members of more than {io._size(limits.MAX_ARCHIVE_BYTES)} in all, over the "
-                    "limit (limits.MAX_ARCHIVE_BYTES); not unpacked"
-                )
+    (its one top folder, {member name: sha256}). Every header is read and checked first (_checked_members,
+    about 0.3 s for a full build's archive), so that a hostile archive is refused before a byte is written."""
+    with _tar(archive) as tar:
+        for _ in _checked_members(archive, tar):
+            pass
+    digests, prefix = {}, None
+    with _tar(archive) as tar:  # checked again as it is unpacked: the file may have changed since
+        for prefix, path, member in _checked_members(archive, tar):
             target = Path(into, *path.parts)
             target.parent.mkdir(parents=True, exist_ok=True)
             digest, source = hashlib.sha256(), tar.extractfile(member)
@@ -324,8 +342,6 @@ def _unpack_members(archive: Path, into: Path) -> tuple[str, dict[str, str]]:
                     digest.update(chunk)
                     out.write(chunk)
             digests[member.name] = digest.hexdigest()
-    if prefix is None:
-        raise VerifyError(f"{archive}: empty archive")
     return prefix, digests
 
 

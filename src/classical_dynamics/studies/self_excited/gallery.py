@@ -45,8 +45,9 @@ GROUPS = (
         (
             (
                 "largest_unperturbed",
-                "Grammel's problem (Lee's Figure 2.2; Grammel is Lee's reference 13, not in this report's "
-                "list): "
+                "Grammel's problem (Lee's Figure 2.2; Grammel is Lee's reference 13, which this report "
+                "cannot cite: the copy of the thesis consulted breaks off after its bibliography's first "
+                "entry): "
                 "closed orbits inside the homoclinic "
                 "loops are periodic motions about permanent axes in the $yz$-plane; outside them "
                 "$\\boldsymbol{\\omega}$ runs to the positive $x$-axis.",
