@@ -516,7 +516,8 @@ class Report:
         img = f'<img class="math" src="{uri}" style="--em: {height_em:.3f}em" alt="{html.escape(latex)}">'
         tag = f'<span class="eqno">({number})</span>' if number else ""
         anchor = f' id="{label}"' if label else ""
-        return Markup(f'<div class="equation"{anchor}>{img}{tag}</div>')
+        numbered = " numbered" if number else ""
+        return Markup(f'<div class="equation{numbered}"{anchor}>{img}{tag}</div>')
 
     def cite(self, *keys):
         # a claim's source may cite several: cite: [a, b]
