@@ -221,6 +221,43 @@ def test_separatrix_energy_gap_and_the_runs_that_cross_it(small_accuracy):
     assert "work_precision_separatrix" in results.timing_figures
 
 
+def test_the_separatrix_figure_rings_exactly_the_runs_that_crossed_and_says_only_that(small_accuracy):
+    """A figure's caption says what it draws: a ring on each crossed run (placed at that run's error and time),
+    none on the others; the sign of each change of E, which it does not draw, is left to the table."""
+    import pandas as pd
+
+    frame = pd.DataFrame(
+        {
+            "method": ["dop853", "dop853", "splitting, order 2", "splitting, order 2"],
+            "kind": ["tolerance", "tolerance", "step", "step"],
+            "setting": [1e-6, 1e-10, 0.1, 0.02],
+            "energy_error": [1e-5, 1e-10, 3.0, 2e-1],
+            "energy_change": [-1e-5, -1e-10, 3.0, -2e-1],
+            "wrong_side": [False, False, True, True],
+            "steps": [10, 20, 30, 40],
+            "seconds": [1e-3, 2e-3, 3e-4, 4e-4],
+        }
+    )
+    results = _results()
+    small_accuracy.publish(
+        results,
+        frame,
+        "separatrix",
+        "energy_error",
+        "Runs: the error of the energy at the end, its sign.",
+        "error of the energy at the end",
+        {"energy_error": "energy error", "energy_change": "change", "wrong_side": "crossed"},
+        crossed="wrong_side",
+    )
+    fig, caption = results.timing_figures["work_precision_separatrix"]
+    (rings,) = [line for line in fig.axes[0].lines if line.get_label() == "crossed the separatrix"]
+    assert sorted(rings.get_xdata()) == [2e-1, 3.0] and sorted(rings.get_ydata()) == [3e-4, 4e-4]
+    assert rings.get_markerfacecolor() == "none"
+    assert "a black ring marks each run that crossed" in caption and "its sign" not in caption
+    assert results.tables["accuracy_separatrix"][1] == "Runs: the error of the energy at the end, its sign."
+    plt.close(fig)
+
+
 def test_limit_cycle_runs_end_where_the_closed_form_puts_them(small_accuracy):
     # F of (2.30): after two of Jacobi's periods 4K(k)/sqrt(alpha + beta), phi2 has advanced 4 pi and p1 is
     # back; scipy's ellipk gives the period, and a run of solve_ivp on (2.10) written here must agree
