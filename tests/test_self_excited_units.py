@@ -222,7 +222,7 @@ def test_separatrix_energy_gap_and_the_runs_that_cross_it(small_accuracy):
 
 
 def test_the_separatrix_figure_rings_exactly_the_runs_that_crossed_and_says_only_that(small_accuracy):
-    """A figure's caption says what it draws: a ring on each crossed run (placed at that run's error and time),
+    """A figure's caption says what it draws: a ring on each crossed run (at its error and time),
     none on the others; the sign of each change of E, which it does not draw, is left to the table."""
     import pandas as pd
 
