@@ -218,7 +218,14 @@ def test_separatrix_energy_gap_and_the_runs_that_cross_it(small_accuracy):
     loose = frame[(frame.kind == "tolerance") & (frame.setting == 1e-6)]
     assert (loose.energy_error.to_numpy() > tight.energy_error.to_numpy()).all()
     assert got["separatrix_runs_on_wrong_side"] == int(frame.wrong_side.sum())
-    assert "work_precision_separatrix" in results.timing_figures
+    # the figure's caption names the rings it draws and leaves the sign to the table, whose "crossed" column
+    # comes before the change of E (in view on a phone)
+    fig, caption = results.timing_figures["work_precision_separatrix"]
+    assert "a black ring marks each run that crossed" in caption and "its sign" not in caption
+    table, table_caption, _ = results.tables["accuracy_separatrix"]
+    assert list(table.columns[:5]) == ["method", "kind", "setting", "wrong_side", "energy_change"]
+    assert "change of the energy" in table_caption and "crossed the separatrix" in table_caption
+    plt.close(fig)
 
 
 def test_the_separatrix_figure_rings_exactly_the_runs_that_crossed_and_says_only_that(small_accuracy):
@@ -248,6 +255,7 @@ def test_the_separatrix_figure_rings_exactly_the_runs_that_crossed_and_says_only
         "error of the energy at the end",
         {"energy_error": "energy error", "energy_change": "change", "wrong_side": "crossed"},
         crossed="wrong_side",
+        figure_caption="Runs: the error of the energy at the end; a black ring marks each run that crossed.",
     )
     fig, caption = results.timing_figures["work_precision_separatrix"]
     (rings,) = [line for line in fig.axes[0].lines if line.get_label() == "crossed the separatrix"]

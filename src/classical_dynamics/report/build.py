@@ -193,8 +193,8 @@ class Report:
         )
         self.env.filters["fmt"] = lambda v, sig=4: format_number(v, sig)
         # a column of deviations in one notation, relative or absolute: 2.4 × 10⁻³ beside 3.0 × 10⁻⁴ and
-        # 1.7 d or −0.19 d, never 0.0024 beside them
-        self.env.filters["fmt_power"] = lambda v, sig=2: format_number(v, sig, fixed_range=(-1, 1))
+        # 1.7 d, 22 mas or −0.19 d, never 0.0024 beside them
+        self.env.filters["fmt_power"] = lambda v, sig=2: format_number(v, sig, fixed_range=(-1, 3))
         # "ours" that is not a result of our model: a source's value set beside today's (an input or a
         # reference's value) stands in the modern column; a fit to observed data stays ours
         self.env.globals["BESIDE"] = ("input", "reference")

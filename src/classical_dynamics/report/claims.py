@@ -180,7 +180,7 @@ def shown_digits(claim: ClaimResult) -> int:
             while (
                 digits < min(supported + 3, 8)
                 and not (agrees and _rounded(value, digits) == _rounded(reference, digits))
-                and not _reads_back(claim, _rounded(value, digits))
+                and not _reads_back(claim, _rounded(value, digits), digits)
             ):
                 digits += 1
         else:
@@ -195,14 +195,18 @@ def shown_digits(claim: ClaimResult) -> int:
     return digits
 
 
-def _reads_back(claim: ClaimResult, shown: float) -> bool:
-    """The deviation a reader computes from ours as shown and the source's value is the deviation column's
-    to its first figure (within half a unit there), in the column's sense: relative or absolute."""
+def _reads_back(claim: ClaimResult, shown: float, digits: int) -> bool:
+    """The deviation a reader computes from ours as shown and the source's value as shown (one we evaluated is
+    shown to as many figures as ours, four at least: evaluated_text) is the deviation column's to its first
+    figure (within half a unit there), in the column's sense: relative or absolute."""
     reference, deviation = claim.source["value"], claim.deviation
+    source = reference
+    if claim.evaluated:
+        source = _rounded(reference, min(max(digits, 4), exact_figures(float(reference))))
     if "relative" in claim.check:
-        deviation, read = deviation / reference, shown / reference - 1.0
+        deviation, read = deviation / reference, shown / source - 1.0
     else:
-        read = shown - reference
+        read = shown - source
     return deviation == 0 or abs(read - deviation) <= 0.5 * 10.0 ** math.floor(math.log10(abs(deviation)))
 
 

@@ -165,16 +165,22 @@ def record_separatrix(results, values: SeparatrixRuns):
         "1",
         note="adaptive settings that crossed",
     )
+    runs = (
+        f"{PERIODS} periods of a closed orbit of Lee (2.10) a relative "
+        f"{power_of_ten(round(np.log10(SEPARATRIX_OFFSET)))} inside the separatrix ($m_1$ = {shortest(m1)}, "
+        "$\\nu = 0$), by method and relative tolerance or step $h$"
+    )
+    # "crossed" first: the column the figure and the text are about stays on a phone's screen
+    lead = ["method", "kind", "setting", "wrong_side", "energy_change"]
+    frame = frame[lead + [c for c in frame.columns if c not in lead]]
     publish(
         results,
         frame,
         "separatrix",
         "energy_error",
-        f"{PERIODS} periods of a closed orbit of Lee (2.10) a "
-        f"relative {power_of_ten(round(np.log10(SEPARATRIX_OFFSET)))} inside the separatrix ($m_1$ = "
-        f"{shortest(m1)}, $\\nu = 0$), by method and relative tolerance or step $h$: the error of the energy "
-        "$E$ at the end, its sign (the change of $E$), and whether the motion crossed the separatrix (it "
-        "ends past the saddle, running away).",
+        runs + ": whether the motion crossed the separatrix (it ends past the saddle, running away) and the "
+        "change of the energy $E = p_1^2/2 - m_1\\varphi_2 + \\cos\\varphi_2$ at the end (absolute; its "
+        "magnitude is the energy error).",
         "error of the energy $E$ at the end",
         {
             "energy_error": "energy error",
@@ -182,6 +188,9 @@ def record_separatrix(results, values: SeparatrixRuns):
             "wrong_side": "crossed the separatrix",
         },
         crossed="wrong_side",
+        figure_caption=runs + ": the error of the energy $E$ at the end; a black ring marks each run that "
+        "crossed the separatrix (it ends past the saddle, running away). The sign of each change of $E$ is "
+        "in the table of the same runs.",
     )
 
 
@@ -255,10 +264,13 @@ HEADERS = {
 }
 
 
-def publish(results, frame, name, error, caption, xlabel, headers=None, floor=1e-16, crossed=None):
+def publish(
+    results, frame, name, error, caption, xlabel, headers=None, floor=1e-16, crossed=None, figure_caption=None
+):
     """A work-precision frame as table, timing table, figure and best error per method. headers: those of the
     columns particular to this frame (the error's); the common ones are HEADERS. crossed: a column of flags,
-    marked on the figure by a ring (the table says the rest: a figure's caption says only what it draws)."""
+    marked on the figure by a ring; figure_caption: the figure's own, where it draws less than the table holds
+    (a caption says only what its figure draws)."""
     headers = {**HEADERS, **(headers or {})}
     results.table(f"accuracy_{name}", frame.drop(columns=["seconds"]), caption, headers=headers)
     results.timing_table(
@@ -269,7 +281,6 @@ def publish(results, frame, name, error, caption, xlabel, headers=None, floor=1e
     )
     fig, ax = new_figure(height=2.7)  # with its caption, at most 40 % of a page
     wp.plot(frame, ax, error=error, floor=floor, xlabel=xlabel)
-    figure_caption = caption
     if crossed:
         hit = frame[frame[crossed].astype(bool)]
         ax.loglog(
@@ -282,11 +293,6 @@ def publish(results, frame, name, error, caption, xlabel, headers=None, floor=1e
             mew=0.8,
             label="crossed the separatrix",
         )
-        figure_caption = (
-            caption.split(": the error")[0] + f": the {xlabel}; a black ring marks each run that crossed the "
-            "separatrix (it ends past the saddle, running away). The sign of each change of $E$ is in the "
-            "table of the same runs."
-        )
     fig.legend(loc="outside right upper")
     styles = ["solid: this library's methods"]
     if frame.method.str.startswith("scipy:").any():
@@ -296,7 +302,7 @@ def publish(results, frame, name, error, caption, xlabel, headers=None, floor=1e
     results.timing_figure(
         f"work_precision_{name}",
         fig,
-        figure_caption + " Wall time against the error, one line per method "
+        (figure_caption or caption) + " Wall time against the error, one line per method "
         f"({'; '.join(styles)}); accuracy grows to the right, and errors below "
         f"{power_of_ten(round(np.log10(floor)))} are drawn at that floor.",
     )
