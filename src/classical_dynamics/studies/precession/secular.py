@@ -198,12 +198,17 @@ def inverse_problem(model, observed) -> Inverse:
 def _record_inverse(results, values: Inverse, source):
     H = values.H
     results.number("inverse_observed_rate_arcsec_per_year", values.observed, "″/yr", note=source)
-    results.number("H_from_observed_rate", H, "1", note="$(C - A)/C$ that reproduces the observed rate")
+    results.number(
+        "H_from_observed_rate",
+        H,
+        "1",
+        note="$(C - A)/C$ that reproduces the rate inverted (the scene's source)",
+    )
     results.number(
         "computed_over_observed_minus_one",
         values.computed_over_observed_minus_one,
         "1",
-        note="the formula's rate against the observed one",
+        note="the formula's rate against the rate inverted",
     )
     results.number(
         "C_minus_A_over_A_from_observed_rate", values.C_minus_A_over_A, "1", note="the same as $(C - A)/A$"
