@@ -98,3 +98,23 @@ def test_without_path_years_the_polar_path_shows_the_last_13_years(monkeypatch, 
     assert years[-1] == pytest.approx(last) and years[0] == pytest.approx(last - 13.0, abs=2 / 365.25)
     note = results.numbers["difference_from_vicente_wilson_sigmas"]["note"]
     assert "433.1 d" in note and "1.7 d" in note
+
+
+def test_the_grid_costs_are_the_least_squares_residuals_a_full_fit_leaves():
+    """The projection shortcut against the plain route: at each frequency, lstsq of the whole design (numpy's,
+    not the projection), its squared residual summed."""
+    rng = np.random.default_rng(5)
+    t = np.linspace(0.0, 12.0, 900)
+    m = 0.2 * np.exp(2j * np.pi * 0.845 * t) + 0.08 * np.exp(2j * np.pi * t) + 0.01 * (1 + t)
+    m = m + 0.01 * (rng.standard_normal(t.size) + 1j * rng.standard_normal(t.size))
+    grid = np.linspace(0.75, 0.95, 11)
+    plain = []
+    for f in grid:
+        X = pm._design(t, f)
+        coef, *_ = np.linalg.lstsq(X, m, rcond=None)
+        plain.append(np.sum(np.abs(m - X @ coef) ** 2))
+    assert pm._grid_costs(t, m, grid, chunk=4) == pytest.approx(plain, rel=1e-9)
+
+
+def test_an_epoch_prints_whole_or_to_a_hundredth():
+    assert observed._year(1990.0) == "1990" and observed._year(2013.7412) == "2013.74"

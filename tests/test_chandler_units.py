@@ -76,6 +76,7 @@ def test_rigid_run_gives_eulers_period_the_cones_and_the_invariants(tmp_path, mo
     assert value(r, "wobble_invariant_drift") < 1e-8
     # Lamb Art. 47: tan(beta) = (C/A) tan(alpha); the herpolhode is about H times the polhode (digest)
     assert value(r, "tan_beta_over_tan_alpha") == pytest.approx(1 / (1 - H), rel=1e-9)
+    assert value(r, "C_over_A") == pytest.approx(1 / (1 - H), rel=1e-15)  # the ratio the measured one meets
     assert value(r, "herpolhode_over_polhode") == pytest.approx(H, rel=2e-3)
     # the plane of omega and the figure axis turns about L at |L|/A: once in (1 - H) sidereal days
     assert value(r, "space_cone_period_sidereal_days") == pytest.approx(1 - H, rel=1e-9)
