@@ -388,6 +388,18 @@ def test_a_links_sweep_is_priced_at_least_its_dense_matrix(name):
     assert memory_mb("particles", 3000) < 8 * 3000**2 / 1e6 / 10
 
 
+@pytest.mark.parametrize(("model", "order"), [("ring", 4), ("links", 1), ("particles", 1)])
+def test_a_dense_eigenproblem_is_priced_at_least_its_matrix(model, order):
+    """A dense eigenproblem of order N holds at least one N x N matrix of doubles, 8 N^2 bytes: the ring's of
+    order 4n (its state), a links chain's of order n, a particle chain's dense analyses of order n."""
+    from classical_dynamics.studies.chains.cost import cost
+
+    n = 1500
+    data = {"chain": {"model": model, "n": n}, "analysis": {"closed_form": True}}
+    (dense,) = [w.memory_mb for w in cost(data) if w.field == "chain.n" and w.what != f"{n} particles"]
+    assert dense >= 8 * (order * n) ** 2 / 1e6  # in MB of 10^6 bytes, cost.py's unit
+
+
 # --- planar.py: the rotating ring (Lamb Art. 98) ---------------------------------------------------------
 
 

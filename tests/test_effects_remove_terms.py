@@ -194,3 +194,16 @@ def test_solvers_removing_gravity_leaves_a_free_top():
         Problem(top_model.top_gravity, y0, (0.0, 3.0), [A, C, 0.8]), rtol=1e-12, atol=1e-14, t_eval=t
     )
     assert np.max(np.abs(heavy.y_eval[:, 0] + 1j * heavy.y_eval[:, 1] - z)) > 1e-2
+
+
+def test_a_scene_without_a_constant_torque_reduces_by_lees_definitions():
+    """Lee §2: without body_torque m = 0, and mu1 = mu/(2 sqrt(bc)), m1 = mu delta^2 (b + c)/(delta^2 R),
+    R = sqrt(a^2 bc + mu^2 (b - c)^2), with a, b, c = (B - C)/A, (A - C)/B, (A - B)/C written out here."""
+    A, B, C = 3.0, 2.2, 1.2
+    a, b, c = (B - C) / A, (A - C) / B, (A - B) / C
+    mu1, delta = -0.15, 0.8
+    L = se.LargestAxis.for_scene(se.Body(A, B, C), None, mu1, delta)
+    mu = 2.0 * np.sqrt(b * c) * mu1
+    R = np.sqrt(a**2 * b * c + mu**2 * (b - c) ** 2)
+    assert L.m == 0.0 and L.mu == pytest.approx(mu, rel=1e-15)
+    assert L.m1 == pytest.approx(mu * delta**2 * (b + c) / (delta**2 * R), rel=1e-14)

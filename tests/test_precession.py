@@ -79,6 +79,10 @@ def test_lamb_ratio_and_the_mass_convention():
         orbits=corrected,
     )
     assert m.lunar_rate() / m.solar_rate() == pytest.approx(2.153, abs=0.005)
+    # Lamb's ratios as he gives them (Art. 61): n1/n' = 13.4 Moon's months a year, n/n' = 366.25, E/M = 81.4
+    assert o.moon_n / o.sun_n == pytest.approx(13.4, rel=1e-15)
+    assert o.spin_turns_per_year == 366.25 and o.sun_n == pytest.approx(2 * np.pi / 365.256363, rel=1e-15)
+    assert o.moon_gm_over_a3 / o.moon_n**2 == pytest.approx(1 / 81.4, rel=1e-15)
 
 
 def test_inverse_problem_returns_lamb_ellipticity(tmp_path):

@@ -254,6 +254,16 @@ def test_next_to_the_separatrix_each_side_keeps_its_fate(m1, nu, passages):
     assert sides.slope == pytest.approx(expected, rel=0.01)
 
 
+def test_a_separatrix_drawn_too_small_is_caught_on_the_outside(monkeypatch):
+    """Negative control: with the separatrix's p1 10 % too small, every start "outside" it is still inside the
+    loop and turns back: each offset counts as wrong once (the inside starts stay inside)."""
+    true = largest_axis.se.separatrix_p1_squared
+    monkeypatch.setattr(largest_axis.se, "separatrix_p1_squared", lambda *args: 0.81 * true(*args))
+    sides = largest_axis.separatrix_sides(0.5, 0.0)
+    assert sides.wrong == len(largest_axis.SEPARATRIX_OFFSETS)
+    assert sides.frame.outside_turns_back.all()
+
+
 @pytest.mark.parametrize(
     "m1,nu,alpha", [(0.5, 0.0, (0.8, 0.3)), (0.5, 0.2, (0.8, 0.3)), (-0.5, 0.1, (0.5, -0.2))]
 )

@@ -94,6 +94,39 @@ def test_the_chandler_study_sends_each_kind_of_scene_to_its_analysis(monkeypatch
             assert args[:2] == (scene, results) and (name == "_poinsot" or args[2] is True), (kind, name)
 
 
+def test_the_chains_study_sends_each_model_to_its_analysis(monkeypatch):
+    """The continuum to its module, a ring or a triangle to the planar one, any discrete chain to the discrete
+    one and, where asked, to the time domain after it: each with the scene, the one Results and quick."""
+    from types import SimpleNamespace
+
+    from classical_dynamics.studies import chains
+    from classical_dynamics.studies.chains import continuum, discrete, planar, time_domain
+
+    calls = []
+    for module, name in (
+        (continuum, "run"),
+        (discrete, "run"),
+        (time_domain, "run"),
+        (planar, "run_ring"),
+        (planar, "run_triangle"),
+    ):
+        _spy(monkeypatch, module, name, calls)
+    expected = {
+        ("continuum", None): ["continuum.run"],
+        ("ring", None): ["planar.run_ring"],
+        ("triangle", None): ["planar.run_triangle"],
+        ("particles", None): ["discrete.run"],
+        ("particles", "time_domain"): ["discrete.run", "time_domain.run"],
+    }
+    for (model, analysis), names in expected.items():
+        data = {"chain": {"model": model}} | ({"analysis": {analysis: {}}} if analysis else {})
+        scene = SimpleNamespace(name="s", title="t", data=data)
+        calls.clear()
+        results = chains.run(scene, quick=True)
+        assert [name.split(".", 3)[-1] for name, _ in calls] == names, model
+        assert all(args == (scene, results, True) for _, args in calls), model
+
+
 def test_the_precession_study_runs_its_rung_and_compares_a_modern_rate_with_psi_A(monkeypatch):
     """Every rung starts from the secular model and Lamb's examples; the averaged and full rungs add theirs
     (the accuracy sweep where asked); with today's constants the rate is set against IAU 2006's psi_A as
