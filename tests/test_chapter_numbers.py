@@ -1,7 +1,8 @@
-"""Every number a chapter cites by name is one its study records: a key renamed in the code (or misspelt in the
-template) shows here in a second, not only when the full build renders the chapter. Read statically: each name
-of a num(...) or value(...) call in the templates must be a string its study's modules write, literally or
-through an f-string's pattern (f"best_{error}_{name}" as best_.+_.+)."""
+"""Every number a chapter cites by name is one its study records: a key renamed in the code (or misspelt in
+the template) shows here in a second, not only when the full build renders the chapter. Read statically: each
+name of a num(...) or value(...) call in a chapter must be one its study's modules pass to results.number,
+literally or through an f-string's pattern (f"best_{error}_{name}" as best_.+_.+). Per study, not per scene:
+a name two modules record passes even if one of them stops."""
 
 import ast
 import re
