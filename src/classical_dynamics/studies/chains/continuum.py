@@ -95,6 +95,9 @@ def run(scene, results, quick):
         return
     modes = hanging_modes(k, chain["length_m"], effects["gravity"]["g_m_per_s2"], values.relative_error)
     _record_hanging_modes(results, modes, values.sigma)
+    # the inputs of the period in seconds, so that the text can say what it is for
+    results.number("length_m", chain["length_m"], "m", note="the scene's chain")
+    results.number("g_m_per_s2", effects["gravity"]["g_m_per_s2"], "m/s²", note="the scene's gravity")
     _mode_shape_figure(results, modes.j)
     if "rayleigh" in analysis:
         spec = analysis["rayleigh"]
