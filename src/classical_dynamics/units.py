@@ -49,7 +49,7 @@ REGISTRY: dict[str, Unit] = {
     "cycles/yr": Unit("cycles/yr"),
     # lengths
     "m": Unit("m"),
-    "m/s²": Unit("m s$^{-2}$"),
+    "m/s²": Unit("m s⁻²"),
     "km": Unit("km"),
     "cm": Unit("cm"),
     "ft": Unit("ft"),
