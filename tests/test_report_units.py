@@ -373,3 +373,15 @@ def test_a_result_with_an_unregistered_unit_or_a_bare_column_stops_where_it_is_w
     assert not {"uncaptioned", "lost"} & {*r.tables, *r.figures, *r.timing_tables, *r.timing_figures}
     r.number("length", 1.0, "m")
     assert set(r.tables) == {"steps", "bare"} and r.numbers["length"]["unit"] == "m"
+
+
+def test_every_unit_of_the_registry_typesets_with_any_value():
+    """A unit is typeset wherever a number carries it: one whose math does not parse (rad s$^{-1}$: a
+    superscript with nothing before it) would stop the HTML build, which no other fast test renders."""
+    from classical_dynamics.report.build import unit_html
+    from classical_dynamics.units import REGISTRY
+
+    for key in REGISTRY:
+        for value in (None, 1, 2.5):
+            html = str(unit_html(key, value))
+            assert "$" not in html and html.strip(), (key, html)

@@ -44,8 +44,8 @@ REGISTRY: dict[str, Unit] = {
     "mas/yr": Unit("mas/yr"),
     "mas/cy": Unit("mas/cy"),
     "″/cy": Unit("″/cy", close_up=True),
-    "rad/s": Unit("rad s$^{-1}$"),
-    "rad/d": Unit("rad d$^{-1}$"),
+    "rad/s": Unit("rad s⁻¹"),
+    "rad/d": Unit("rad d⁻¹"),
     "cycles/yr": Unit("cycles/yr"),
     # lengths
     "m": Unit("m"),
