@@ -132,18 +132,18 @@ def run(scene: Scene, quick: bool = False):
             accuracy.run(scene, model, results, quick)
     if scene.data["constants"] == "modern":
         rate = results.numbers["precession_rate_arcsec_per_year"]["value"]
-        psi_A = results.numbers["iau2006_psi_A_rate_arcsec_per_year"]["value"]
-        results.number(
-            "rate_minus_psi_A_relative",
-            rate / psi_A - 1.0,
-            "1",
-            note="this rung's rate against the IAU 2006 luni-solar precession",
-        )
-        r0 = results.numbers["p03_first_order_rate_arcsec_per_year"]["value"]
-        results.number(
-            "rate_minus_r0_relative",
-            rate / r0 - 1.0,
-            "1",
-            note="this rung's rate against P03's first-order luni-solar term $r_0$, the like quantity",
-        )
+        for key, reference, against in (
+            ("psi_A", "iau2006_psi_A_rate_arcsec_per_year", "the IAU 2006 luni-solar precession"),
+            (
+                "r0",
+                "p03_first_order_rate_arcsec_per_year",
+                "P03's first-order luni-solar term $r_0$, the like one",
+            ),
+        ):
+            results.number(
+                f"rate_minus_{key}_relative",
+                rate / results.numbers[reference]["value"] - 1.0,
+                "1",
+                note=f"this rung's rate against {against}",
+            )
     return results

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import NamedTuple
 
 import numpy as np
@@ -148,9 +149,7 @@ def kepler_moon_distance_m(orbits) -> float:
 
 def _record_kepler_distance(results, model, effects):
     """The first-order rate with the Moon at Kepler's distance: how much the lunar distance convention moves
-    it (the size of one input's convention, set beside the residual against P03's r0)."""
-    from dataclasses import replace
-
+    it (the size of one input's choice, set beside the residual against P03's r0)."""
     a = kepler_moon_distance_m(model.orbits)
     gm_moon = model.orbits.moon_gm_over_a3 * prec.MOON_DISTANCE_M**3
     kepler = replace(model.orbits, moon_gm_over_a3=gm_moon / a**3)
