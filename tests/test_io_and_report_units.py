@@ -94,6 +94,10 @@ def test_a_count_from_numpy_prints_exactly():
         (-1e-300, 2, "−1.0 × 10⁻³⁰⁰"),
         (12345.67, 6, "12\u202f345.7"),
         (-9.99999, 3, "−10.0"),
+        # no figure beyond those asked for: 33 787 at two figures is 34 000 (a referee read "33 787")
+        (33787.0, 2, "34\u202f000"),
+        (5917.0, 2, "5900"),
+        (-447.3, 2, "−450"),
         (float("inf"), 3, "∞"),
         (-7, 4, "−7"),
     ],

@@ -33,7 +33,8 @@ def format_number(value, sig: int = 4, *, fixed_range=FIXED_RANGE) -> str:
 
     The value is rounded first and its notation chosen from the rounded value, so 99 999.6 at five
     figures is 1.0000 × 10⁵, never 100000, and 9.9996 at four is 10.00. Integers (counts) print
-    exactly. None prints as an em dash, booleans as yes/no, strings unchanged.
+    exactly; a float with more integer digits than figures is rounded (33 787 at two figures is 34 000).
+    None prints as an em dash, booleans as yes/no, strings unchanged.
     """
     if value is None:
         return "—"
@@ -59,7 +60,8 @@ def format_number(value, sig: int = 4, *, fixed_range=FIXED_RANGE) -> str:
     low, high = fixed_range
     if low <= exponent < high:
         decimals = max(sig - 1 - exponent, 0)
-        return sign + _group(f"{abs(value):.{decimals}f}")
+        # digits beyond the figures asked for are zeros: 33 787 at two figures is 34 000, not 33 787
+        return sign + _group(f"{float(mantissa + 'e' + exp):.{decimals}f}")
     return f"{sign}{mantissa}{TIMES}{power_of_ten(exponent)}"
 
 
