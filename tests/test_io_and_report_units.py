@@ -463,6 +463,22 @@ def test_the_count_by_kind_says_how_many_set_a_sources_value_beside_todays():
     )
 
 
+def test_a_consistency_check_is_counted_apart_from_its_kind():
+    """A reference row whose input was fitted to the observable it matches is no independent comparison: the
+    counts (abstract, ledger) set it apart, so "external references" counts only independent ones."""
+    rows = [a_claim(1.0, {"value": 1.0}, {"relative": 0.1}) for _ in range(3)]
+    rows[0].kind = rows[1].kind = "reference"
+    rows[1].consistency = "the input was fitted to this observable"
+    rows[1].ours_is = "reference"
+    rows[2].kind = "copy"  # a slip where the copy is damaged: the copy's, not the author's
+    assert claims.counted_kind(rows[1]) == "consistency" and claims.counted_kind(rows[0]) == "reference"
+    assert claims.count_by_kind(rows) == (
+        "1 possible error of the copy consulted (print or OCR, where it is damaged), "
+        "1 comparison with an external reference, 1 consistency check (an input fitted to what it is "
+        "compared with; it sets a source's value beside today's, with no result of our model)"
+    )
+
+
 def test_a_ledger_maps_each_statement_to_one_thing_and_counts_them(tmp_path):
     """A tiny ledger written here: what it counts, and each way a statement can be mis-mapped refused."""
     import yaml

@@ -91,7 +91,12 @@ def test_inverse_problem_returns_lamb_ellipticity(tmp_path):
     scene = validate("precession", ROOT / "workflow/scenes/precession/lamb_1920.yaml")
     results = Results("precession", scene.name, scene.title)
     secular.run(scene, results)
-    assert results.numbers["H_from_observed_rate"]["value"] == pytest.approx(0.00327, rel=0.005)
+    # Art. 47 prints .00327 as (C - A)/A: from 50″.5 the formula must return it to Lamb's three figures
+    # (read as (C - A)/C the round trip gives 0.003262, which would print as .00326)
+    assert round(results.numbers["C_minus_A_over_A_from_observed_rate"]["value"], 5) == 0.00327
+    assert round(results.numbers["H_from_observed_rate"]["value"], 5) == 0.00326
+    # forward, with .00327 as (C - A)/A, the total is Lamb's 50″.5 to his three figures
+    assert round(results.numbers["secular_per_orbit_arcsec"]["value"], 1) == 50.5
     # and with today's constants, from IAU 2006's psi_A: within 0.1 % of P03's H
     scene = validate("precession", ROOT / "workflow/scenes/precession/secular_modern.yaml")
     results = Results("precession", scene.name, scene.title)

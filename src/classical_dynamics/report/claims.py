@@ -38,32 +38,53 @@ KINDS = {
         "checks of the sources' statements and formulas",
     ),
     "erratum": ("erratum of a source", "errata of the sources"),
+    # a slip found where the copy consulted is damaged is charged to the copy, not to its author
+    "copy": ("possible error of the copy consulted", "possible errors of the copies consulted"),
     "limit": ("limit of the model", "limits of the model"),
     "reference": ("comparison with an external reference", "comparisons with external references"),
 }
+# A claim whose input was fitted to the observable it is compared with tests consistency, not physics: the
+# counts set it apart from its kind, so a reader never takes it for an independent check.
+COUNTED = KINDS | {"consistency": ("consistency check", "consistency checks")}
+# what a count's label leaves to be said, for one and for many
+GLOSSES = {
+    "copy": ("print or OCR, where it is damaged", "print or OCR, where they are damaged"),
+    "consistency": (
+        "an input fitted to what it is compared with",
+        "an input fitted to what they are compared with",
+    ),
+}
+
+
+def counted_kind(claim) -> str:
+    """The kind a claim is counted under: its own, or "consistency" where an input was fitted to its match."""
+    return "consistency" if claim.consistency else claim.kind
 
 
 def count_by_kind(claims) -> str:
     """ "330 checks of the sources' statements and formulas, 5 errata of the sources, ...": the kinds
-    present."""
+    present, consistency checks counted apart, what each count needs said in one parenthesis."""
     parts = []
-    for kind, (one, many) in KINDS.items():
-        n = sum(1 for claim in claims if claim.kind == kind)
-        if n:
-            parts.append(f"{n} {one if n == 1 else many}")
-        derived = sum(1 for claim in claims if claim.kind == kind and claim.source.get("derived"))
+    for kind, (one, many) in COUNTED.items():
+        of_kind = [claim for claim in claims if counted_kind(claim) == kind]
+        n = len(of_kind)
+        if not n:
+            continue
+        notes = [GLOSSES[kind][n > 1]] if kind in GLOSSES else []
+        derived = sum(1 for claim in of_kind if claim.source.get("derived"))
         if derived:  # the source's own value or form is lost or was never printed: we derived what it implies
-            parts[-1] += (
-                f" ({derived} of them against a value or form derived here, the source's own being lost or "
-                "never printed)"
+            notes.append(
+                f"{derived} of them against a value or form derived here, the source's own being lost or "
+                "never printed"
             )
         # a source's value set beside today's (ours_is: input or reference) checks no result of ours: say so
-        beside = sum(1 for claim in claims if claim.kind == kind and claim.ours_is)
+        beside = sum(1 for claim in of_kind if claim.ours_is)
         if beside:
             who = "it sets" if n == 1 else "they set" if beside == n else f"{beside} of them set"
             if beside == 1 and n > 1:
                 who += "s"
-            parts[-1] += f" ({who} a source's value beside today's, with no result of our model)"
+            notes.append(f"{who} a source's value beside today's, with no result of our model")
+        parts.append(f"{n} {one if n == 1 else many}" + (f" ({'; '.join(notes)})" if notes else ""))
     return ", ".join(parts)
 
 
