@@ -107,6 +107,9 @@ def browser_texts(built_repo):
                 "eqno_off_screen": page.evaluate("""() => Array.from(document.querySelectorAll(
                       '.equation .eqno')).filter(e => { const r = e.getBoundingClientRect();
                       return r.left < -1 || r.right > window.innerWidth + 1; }).map(e => e.textContent)"""),
+                # display equations that scroll sideways (on a phone, formulas side by side stack instead)
+                "equations_scrolling": page.evaluate("""() => Array.from(document.querySelectorAll(
+                      '.equation')).filter(e => e.scrollWidth > e.clientWidth + 1).map(e => e.id)"""),
                 # boxes wider than the page that are not inside a box that scrolls on its own
                 "loose": page.evaluate("""() => Array.from(document.querySelectorAll(
                       'table, figure, img, .equation, pre, p')).filter(e => {
@@ -194,6 +197,14 @@ def test_a_claim_reads_on_a_phone_without_scrolling_sideways(browser_texts):
 def test_an_equation_number_is_in_view_however_wide_its_equation(browser_texts):
     assert browser_texts["phone"]["eqno_off_screen"] == []
     assert browser_texts["laptop"]["eqno_off_screen"] == []
+
+
+@pytest.mark.slow
+def test_a_display_equation_reads_whole_on_a_phone(browser_texts):
+    """Formulas set side by side stand one under the other at 390 px, at the body text's size: none scrolls
+    (a referee found Eqs. (1) and (2) cut at the screen's edge with nothing saying they scroll)."""
+    assert browser_texts["phone"]["equations_scrolling"] == []
+    assert browser_texts["laptop"]["equations_scrolling"] == []
 
 
 def test_nothing_wider_than_a_phone_without_its_own_scroll_box(browser_texts):

@@ -385,3 +385,19 @@ def test_every_unit_of_the_registry_typesets_with_any_value():
         for value in (None, 1, 2.5):
             html = str(unit_html(key, value))
             assert "$" not in html and html.strip(), (key, html)
+
+
+def test_a_wide_display_stacks_its_side_by_side_formulas_for_a_phone():
+    """Only a top-level \\qquad separates formulas: one inside braces or a nested environment stays."""
+    from classical_dynamics.report.math import stacked
+
+    assert (
+        stacked(r"a = 1,\qquad b = \frac{1}{2}") == r"\begin{gathered}a = 1, \\ b = \frac{1}{2}\end{gathered}"
+    )
+    assert (
+        stacked(r"\begin{gathered}a,\qquad b,\\ c\end{gathered}")
+        == r"\begin{gathered}a, \\ b,\\ c\end{gathered}"
+    )
+    assert stacked(r"\frac{a\qquad b}{c}") is None
+    assert stacked(r"\begin{cases}a\qquad b\end{cases}") is None
+    assert stacked(r"a + b") is None

@@ -38,7 +38,7 @@ from .bib import Citations, format_entry, read_bib
 from .citation import citation, commit_date
 from .dist import results_archive_name
 from .ledger import read_ledger, require_figures
-from .math import latex_image
+from .math import PHONE_EM, latex_image, stacked, width_em
 from .navigation import add_navigation
 from .numbering import NAMES, Numbering
 
@@ -514,10 +514,15 @@ class Report:
         uri, height_em = latex_image(latex)
         # --em: the screen sets the image's height in em of the text (screen.css); print keeps its own size
         img = f'<img class="math" src="{uri}" style="--em: {height_em:.3f}em" alt="{html.escape(latex)}">'
+        # too wide for a phone and made of formulas side by side: a phone shows them one under the other
+        narrow = stacked(latex) if width_em(latex) > PHONE_EM else None
+        if narrow:
+            uri, height_em = latex_image(narrow)
+            img += f'<img class="math phone" src="{uri}" style="--em: {height_em:.3f}em" alt="">'
         tag = f'<span class="eqno">({number})</span>' if number else ""
         anchor = f' id="{label}"' if label else ""
-        numbered = " numbered" if number else ""
-        return Markup(f'<div class="equation{numbered}"{anchor}>{img}{tag}</div>')
+        kinds = (" numbered" if number else "") + (" stacks" if narrow else "")
+        return Markup(f'<div class="equation{kinds}"{anchor}>{img}{tag}</div>')
 
     def cite(self, *keys):
         # a claim's source may cite several: cite: [a, b]

@@ -19,3 +19,40 @@ def latex_image(latex: str, size: float = SIZE_PX) -> tuple[str, float]:
     height = float(re.search(r'height="([0-9.]+)"', svg).group(1))
     uri = "data:image/svg+xml;base64," + base64.b64encode(svg.encode("utf-8")).decode("ascii")
     return uri, height / size
+
+
+PHONE_EM = 22.0  # the widest display a 390 px phone shows whole (its text column, in em of the body text)
+
+
+def stacked(latex: str) -> str | None:
+    """The display with its side-by-side parts (separated by \\qquad at the top level) set one under the
+    other, for a phone; None where there is nothing to stack. Only top-level \\qquad counts: one inside
+    braces or a nested environment belongs to a single formula."""
+    m = re.fullmatch(r"\\begin\{gathered\}(.*)\\end\{gathered\}", latex.strip(), re.S)
+    body = m.group(1) if m else latex
+    parts, depth, start, i = [], 0, 0, 0
+    while i < len(body):
+        if body.startswith("\\begin{", i):
+            depth += 1
+        elif body.startswith("\\end{", i):
+            depth -= 1
+        elif body[i] == "{" and (i == 0 or body[i - 1] != "\\"):
+            depth += 1
+        elif body[i] == "}" and (i == 0 or body[i - 1] != "\\"):
+            depth -= 1
+        elif depth == 0 and body.startswith("\\qquad", i):
+            parts.append(body[start:i])
+            start = i = i + len("\\qquad")
+            continue
+        i += 1
+    if not parts:
+        return None
+    parts.append(body[start:])
+    joined = r" \\ ".join(p.strip() for p in parts)
+    return rf"\begin{{gathered}}{joined}\end{{gathered}}"
+
+
+def width_em(latex: str, size: float = SIZE_PX) -> float:
+    """The display's width in em of the text it is set for."""
+    svg = ziamath.Latex(latex, size=size).svg()
+    return float(re.search(r'width="([0-9.]+)"', svg).group(1)) / size

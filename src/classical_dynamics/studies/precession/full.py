@@ -439,8 +439,10 @@ def _record_iau_nutation(results, values: IauNutation):
         (axes[0], ours_psi, d_psi, r"$\Delta\psi$ (″)"),
         (axes[1], ours_eps, d_eps, r"$\Delta\varepsilon$ (″)"),
     ):
-        ax.plot(years, iau[show] / earth.ARCSEC, color="0.65", lw=1.8, label="IAU 2000B")
-        ax.plot(years, ours[show] / earth.ARCSEC, lw=0.5, color="C0", label="full model")
+        # the model broad underneath, IAU 2000B thin on top: where they agree both stay visible (a broad grey
+        # curve under the model was hidden by it everywhere)
+        ax.plot(years, ours[show] / earth.ARCSEC, lw=1.8, color="C3", alpha=0.6, label="full model")
+        ax.plot(years, iau[show] / earth.ARCSEC, color="k", lw=0.45, label="IAU 2000B")
         ax.set_ylabel(name)
         ax.margins(y=0.22)
         ax.grid(True, alpha=0.25)
@@ -470,10 +472,11 @@ def _record_iau_nutation(results, values: IauNutation):
         fig,
         "Nutation in longitude ($\\Delta\\psi$, top) and obliquity "
         "($\\Delta\\varepsilon$, bottom) from J2000: the full model's $\\psi$ and $\\varepsilon$ of "
-        "$\\mathbf{L}$ less their fitted lines (thin) over the IAU 2000B series (grey) for the first "
-        f"{format_number(shown)} {plural(shown, 'year')}, and below, their difference. The 18.6-year term "
-        "dominates and the two curves lie on each other; the difference is what the rigid Earth lacks, "
-        "mostly the semi-annual and fortnightly terms that the real Earth's non-rigid response amplifies.",
+        "$\\mathbf{L}$ less their fitted lines (broad, green) under the IAU 2000B series (thin, black) for "
+        f"the first {format_number(shown)} {plural(shown, 'year')}, and below, their difference. The "
+        "18.6-year term dominates and the black curve runs inside the green one; the difference is what the "
+        "rigid Earth lacks, mostly the semi-annual and fortnightly terms that the real Earth's non-rigid "
+        "response amplifies.",
     )
 
 

@@ -113,10 +113,16 @@ def _record_separatrix(results, values: Separatrix):
     dH, dHs, dC = values.dop853_energy_error, values.splitting_energy_error, values.splitting_casimir_error
     results.number("separatrix_one_minus_m", one_minus_m, "1")
     results.number(
-        "separatrix_ellipj_error_ours", err_ours, "1", note="max over [0, 4K] against mpmath, 30 digits"
+        "separatrix_ellipj_error_ours",
+        err_ours,
+        "1",
+        note="largest absolute error of sn, cn, dn over [0, 4K] against mpmath, 30 digits",
     )
     results.number(
-        "separatrix_ellipj_error_scipy", err_raw, "1", note="scipy.special.ellipj as it is (#8480)"
+        "separatrix_ellipj_error_scipy",
+        err_raw,
+        "1",
+        note="scipy.special.ellipj as it is (#8480): largest absolute error of sn, cn, dn",
     )
     distance = shortest(one_minus_m).removeprefix("1 × ")  # 10⁻¹⁰, not 1 × 10⁻¹⁰
     results.hard_case(
