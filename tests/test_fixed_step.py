@@ -358,3 +358,17 @@ def test_no_study_calls_a_fixed_step_kernel():
     assert len(files) > 20
     calls = {str(f.relative_to(root)): kernel_calls(f.read_text()) for f in files}
     assert {f: c for f, c in calls.items() if c} == {}
+
+
+def test_one_compiled_verlet_loop_serves_every_acceleration():
+    """The accelerations reach the loop typed by their signature: one compiled loop, cached once on disk.
+    Typed by each dispatcher, numba keyed a new cache entry in every process, and the index grew until
+    saving it failed ("underlying object has vanished")."""
+    from classical_dynamics.models.self_excited import largest_axis
+
+    one = np.array([1.0])
+    for force in (linear.harmonic_force, largest_axis.plane_largest_force):
+        symplectic.integrate(force, one, one.copy(), one.copy(), 0.1, 3, 2, 1)
+    # a plain dispatcher is compiled to the signature, and the loop stays the one loop
+    symplectic.integrate(njit(lambda q, p, out: None), one, one.copy(), one.copy(), 0.1, 3, 2, 1)
+    assert len(symplectic.integrate.overloads) == 1 and len(symplectic._verlet.overloads) == 1

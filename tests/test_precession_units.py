@@ -510,7 +510,7 @@ def test_the_nutation_figure_names_each_line_it_draws():
     draws that series (made-up series told apart by size), so a name cannot slide onto another line."""
     t = np.linspace(0.0, 5.0 * earth.JULIAN_YEAR_DAYS, 200)
     wave = np.sin(2 * np.pi * t / 6798.4) * earth.ARCSEC
-    series = {"IAU 2000B": (1.0, 0), "full model": (1.1, 0), "difference, $\\Delta\\psi$": (0.1, 2)}
+    series = {"full model": (1.1, 0), "IAU 2000B": (1.0, 0), "difference, $\\Delta\\psi$": (0.1, 2)}
     series["difference, $\\Delta\\varepsilon$"] = (0.05, 2)
     values = full.IauNutation([], t, 1.1 * wave, 0.55 * wave, wave, 0.5 * wave, 0.0, 0.0)
     results = Results("precession", "t", "t")

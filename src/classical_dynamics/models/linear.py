@@ -11,9 +11,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
 from ..solvers.runge_kutta import rhs_function
+from ..solvers.symplectic import accel_function
 
 
 def pack(A, force=None, s: float = 0.0, work=None) -> np.ndarray:
@@ -46,7 +46,7 @@ def linear_system(t, y, p, out):
         out[m] = quadratic
 
 
-@njit(cache=True)
+@accel_function
 def harmonic_force(q, p, out):
     """q'' = -omega^2 q, p = (omega,): the oscillator as an acceleration, for the Stormer-Verlet methods."""
     out[0] = -p[0] * p[0] * q[0]

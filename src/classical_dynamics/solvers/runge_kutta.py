@@ -272,7 +272,7 @@ def _dense_eval(kind, coeffs, h, y_old, x):
     return out
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _initial_step(f, p, t0, y0, f0, order, control):
     """Hairer's starting step (scipy's select_initial_step), without temporaries."""
     rtol, atol, _, _ = control

@@ -1,19 +1,33 @@
 """Stormer-Verlet for separable systems q'' = a(q) (compiled), and Yoshida's fourth-order composition.
 
 Symplectic and time-reversible: the energy error of a fixed step stays bounded over long times.
-The acceleration is a numba function a(q, p, out). Constrained chains use rattle.py. The loop here is the
-kernel of the methods "stormer-verlet" and "yoshida4": call them through fixed_step.solve_fixed.
+The acceleration is a numba function a(q, p, out), compiled by `accel_function`. Constrained chains use
+rattle.py. The loop here is the kernel of the methods "stormer-verlet" and "yoshida4": call them through
+fixed_step.solve_fixed.
 """
 
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from numba import njit, types
 
 from .rigid_body import YOSHIDA
 
+F64, I64, VEC = types.float64, types.int64, types.float64[::1]
+ACCEL_SIG = types.void(VEC, VEC, VEC)  # accel(q, p, out)
+# The acceleration reaches the loop as a first-class function typed by its signature, so the loop is compiled
+# once and cached on disk for every acceleration. Typed by the dispatcher itself, it would be keyed by that
+# dispatcher's identity: a new cache entry in every process, an index that grows without end (130 entries
+# were seen), and at last numba failing to save it ("underlying object has vanished").
+ACCEL = types.FunctionType(ACCEL_SIG)
 
-@njit(cache=True)
+
+def accel_function(func):
+    """Compile a(q, p, out) for the Stormer-Verlet methods (cached on disk)."""
+    return njit(ACCEL_SIG, cache=True)(func)
+
+
+@njit((ACCEL, VEC, VEC, VEC, F64, VEC), cache=True)
 def _verlet(accel, p, q, v, h, a):
     for j in range(q.size):
         v[j] += 0.5 * h * a[j]
@@ -32,7 +46,7 @@ def _save(out, base, q, v):
         out[base + d + j] = v[j]
 
 
-@njit(cache=True)
+@njit((ACCEL, VEC, VEC, VEC, F64, I64, I64, I64), cache=True)
 def integrate(accel, p, q0, v0, h, n_steps, order, sample_every):
     """The kernel: the rows of the state (q, v) at steps 0, sample_every, 2 sample_every, ...; the final
     state. The rows go into one flat buffer, written in the loop itself: through a 2-d array, or through a

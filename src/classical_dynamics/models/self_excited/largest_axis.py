@@ -24,9 +24,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
 
 from ...solvers.runge_kutta import rhs_function
+from ...solvers.symplectic import accel_function
 from .body import Body, InertiaNumbers
 
 
@@ -168,7 +168,7 @@ def plane_largest(t, y, p, out):
         out[1] += p[2] * p[1] * y[1] * y[1]
 
 
-@njit(cache=True)
+@accel_function
 def plane_largest_force(q, p, out):
     """The unperturbed (2.10) as phi2'' = a(phi2) = m1 + sin(phi2), p = (m1,), for stormer-verlet."""
     out[0] = p[0] + np.sin(q[0])
