@@ -55,6 +55,7 @@ REGISTRY: dict[str, Unit] = {
     "ft": Unit("ft"),
     # a couple in the British engineering units of Lamb's examples (foot-pound force)
     "ft-lb": Unit("ft·lb"),
+    "slug ft²": Unit("slug ft²"),  # a moment of inertia in the same units
     # natural units of scaled problems
     "σ": Unit("$\\sigma$"),
     "time": Unit("time units"),

@@ -199,8 +199,8 @@ def _record_gyroscope_couple(results, values: GyroscopeCouple):
     results.number(
         "gyroscope_axial_moment_slug_ft2",
         values.C,
-        "1",
-        note=f"$C = \\sum Wk^2/g$ in slug ft$^2$ (Lamb Ex. XI.1; $g$ = {g:g} ft s$^{{-2}}$)",
+        "slug ft²",
+        note=f"$C = \\sum Wk^2/g$ (Lamb Ex. XI.1; $g$ = {g:g} ft s$^{{-2}}$)",
     )
     results.number(
         "gyroscope_couple_ft_lb",

@@ -134,6 +134,20 @@ def run(scene, results) -> prec.PrecessionModel:
         _record_inverse(
             results, inverse_problem(model, inverse["observed_rate_arcsec_per_year"]), inverse["source"]
         )
+    if data["earth"]["H_definition"] == "(C-A)/A":  # the other reading of the same printed number, beside it
+        other = secular_rates(replace(model, H=data["earth"]["H"]))
+        results.number(
+            "secular_solar_rate_read_as_H_over_C_arcsec_per_year",
+            other.solar,
+            "″/yr",
+            note="the printed constant read as $(C - A)/C$ instead",
+        )
+        results.number(
+            "secular_per_orbit_read_as_H_over_C_arcsec",
+            other.per_orbit,
+            "″",
+            note="the printed constant read as $(C - A)/C$ instead; per revolution round the Sun",
+        )
     if data["constants"] == "modern":
         _record_iau(results, iau_comparison(total))
         _record_kepler_distance(results, model, data.get("effects") or {})
