@@ -539,3 +539,16 @@ def test_a_ledger_maps_each_statement_to_one_thing_and_counts_them(tmp_path):
 def test_a_flag_for_words_is_no_printed_value(source, printed):
     """Rows whose source states in words or a formula go to the formula tables, not beside printed values."""
     assert a_claim(1.0, source, {"relative": 0.1}).compares_a_printed_value is printed
+
+
+def test_a_limit_without_an_expected_size_is_shown_but_not_judged():
+    """A limit row whose bound is ours (no source gives the size of what the model leaves out) neither holds
+    nor fails for a reader: its verdict is n/a. With a source's expected size, it is judged."""
+    row = a_claim(1.0, {"value": 1.0}, {"relative": 0.1})
+    assert row.judged and row.verdict == "pass"
+    row.kind = "limit"
+    assert not row.judged and row.verdict == "na"
+    row.expected = {"value": 0.9, "cite": "x", "what": "a rigid series"}
+    assert row.judged and row.verdict == "pass"
+    row.passed = False
+    assert row.verdict == "fail"

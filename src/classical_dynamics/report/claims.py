@@ -124,6 +124,17 @@ class ClaimResult:
         return (self.expected["value"] - self.source["value"]) / self.source["value"]
 
     @property
+    def judged(self) -> bool:
+        """Whether its check decides anything: a limit whose expected size no source gives is shown with our
+        bound (a guard against regressions) but neither holds nor fails for a reader."""
+        return not (self.kind == "limit" and not self.expected)
+
+    @property
+    def verdict(self) -> str:
+        """The row's class: pass, fail, or na (a limit not judged)."""
+        return "na" if not self.judged else "pass" if self.passed else "fail"
+
+    @property
     def anchor(self) -> str:
         return f"claim-{self.study}-{self.id}"
 
