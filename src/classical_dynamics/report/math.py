@@ -12,10 +12,16 @@ SIZE_PX = 15.0  # the font size the SVG is set at
 
 
 @lru_cache(maxsize=None)
+def _svg(latex: str, size: float) -> str:
+    """The equation set once: its image and its width are read from the same SVG."""
+    return ziamath.Latex(latex, size=size).svg()
+
+
+@lru_cache(maxsize=None)
 def latex_image(latex: str, size: float = SIZE_PX) -> tuple[str, float]:
     """(data URI, height in em of the text it is set for): the screen scales the image with the text, so a
     display equation is as large as the body text around it (its own size is 15 px against 16 px)."""
-    svg = ziamath.Latex(latex, size=size).svg()
+    svg = _svg(latex, size)
     height = float(re.search(r'height="([0-9.]+)"', svg).group(1))
     uri = "data:image/svg+xml;base64," + base64.b64encode(svg.encode("utf-8")).decode("ascii")
     return uri, height / size
@@ -54,5 +60,4 @@ def stacked(latex: str) -> str | None:
 
 def width_em(latex: str, size: float = SIZE_PX) -> float:
     """The display's width in em of the text it is set for."""
-    svg = ziamath.Latex(latex, size=size).svg()
-    return float(re.search(r'width="([0-9.]+)"', svg).group(1)) / size
+    return float(re.search(r'width="([0-9.]+)"', _svg(latex, size)).group(1)) / size

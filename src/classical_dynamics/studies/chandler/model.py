@@ -160,13 +160,13 @@ def run(scene, results, quick):
     if "elastic_yielding" in effects:
         _record_elastic(results, model, elastic(model, H, effects["elastic_yielding"]))
     if "dissipation" in effects and "excitation" not in effects:
-        _record_damped(results, t, model, damped(t, m, model, measured))
+        decay = damped(t, m, model, measured)
+        _record_damped(results, t, model, decay)
         if "e_folding_at" in analysis:  # the measured Q at another period: the Earth's, not the model's
             at = analysis["e_folding_at"]
-            Q_fit = results.numbers["Q_recovered"]["value"]
             results.number(
                 "amplitude_e_folding_years_at_period",
-                Q_fit * at["period_days"] / np.pi / earth.JULIAN_YEAR_DAYS,
+                decay.Q_recovered * at["period_days"] / np.pi / earth.JULIAN_YEAR_DAYS,
                 "yr",
                 note=f"$QP/\\pi$, the measured $Q$ at $P$ = {shortest(at['period_days'])} d ({at['source']})",
             )
