@@ -573,6 +573,8 @@ def grid_figure(group, found):
                 ax.sharex(shared[0])
             if share_y:
                 ax.sharey(shared[0])
+    if zoom and columns * rows - len(found) >= 2 and columns >= 3:
+        axes = _widened_last(fig, axes, len(found))  # a zoom takes the slot beside it: its labels stand apart
     elements = set()
     for k, (ax, panel) in enumerate(zip(axes.flat, found)):
         ax.grid(True, which="both", alpha=0.25, linewidth=0.6)
@@ -612,6 +614,22 @@ def grid_figure(group, found):
     else:
         legend_below(fig, handles, labels, ncol=3)
     return fig
+
+
+def _widened_last(fig, axes, count):
+    """The grid's axes with the last panel (slot count - 1) spread over its own slot and the next one, which
+    is removed; the axes after it shift back by one, so the spare slots stay last."""
+    import numpy as np
+
+    columns = axes.shape[1]
+    row, column = divmod(count - 1, columns)
+    spec = axes[row, column].get_subplotspec()
+    axes[row, column].remove()
+    axes[row, column + 1].remove()
+    wide = fig.add_subplot(spec.get_gridspec()[row, column : column + 2])
+    flat = list(axes.flat)
+    flat[count - 1 : count + 1] = [wide]
+    return np.array(flat, dtype=object).reshape(1, -1)
 
 
 def grid_table(group, found):

@@ -230,8 +230,9 @@ ELEMENTS = {  # element: (plot keywords, legend label); the singular points are 
     ),
 }
 CROSSING_NAMES = {1: "$f_1$", 2: "$f_2$", 3: "$g_1$", 4: "$g_2$"}  # the curve numbers of the crossings
-# their names' places (points): f2 straight under its point, inside T2's arch and clear of both its sides
-CROSSING_OFFSETS = {1: (-11, -9), 2: (-4, -13), 3: (-12, -9), 4: (3, 2)}
+# their names' places (points): f2 straight under its point, inside T2's arch and clear of both its sides;
+# g2 left of its point, clear of T2 rising from it
+CROSSING_OFFSETS = {1: (-11, -9), 2: (-4, -13), 3: (-12, -9), 4: (-13, 2)}
 POINT_TYPES = ("saddle", "center", "degenerate")
 DIGITS = 5  # decimals kept in the table: far below what a printed portrait resolves
 
