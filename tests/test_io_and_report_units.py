@@ -552,3 +552,53 @@ def test_a_limit_without_an_expected_size_is_shown_but_not_judged():
     assert row.judged and row.verdict == "pass"
     row.passed = False
     assert row.verdict == "fail"
+
+
+def test_a_claim_too_uncertain_to_judge_says_why_and_counts_as_neither(tmp_path):
+    """not_judged: a claim whose reference cannot decide anything is n/a with its reason; one that must hold
+    cannot be so (it would hide a failure), and the reason must be words."""
+    import yaml
+
+    row = a_claim(1.0, {"value": 1.0}, {"relative": 0.1})
+    row.not_judged = "the reference is known within a factor of three"
+    assert not row.judged and row.verdict == "na" and row.why_not_judged == row.not_judged
+    row.not_judged, row.kind = "", "limit"
+    assert row.why_not_judged.startswith("no source gives the expected size")
+
+    def evaluated(tmp_path, **extra):
+        base = {"id": "x", "statement": "s", "kind": "statement", "source": {"value": 1.0}}
+        base |= {"computed": {"scene": "a", "number": "n"}, "check": {"relative": 0.1}} | extra
+        path = tmp_path / "claims.yaml"
+        path.write_text(yaml.safe_dump([base]))
+        return claims.evaluate("chains", path, lambda *_: {"value": 1.0, "unit": "1"})
+
+    (ok,) = evaluated(tmp_path, must_hold=False, not_judged="why")
+    assert ok.verdict == "na"
+    for extra in ({"must_hold": True, "not_judged": "why"}, {"must_hold": False, "not_judged": 3}):
+        with pytest.raises(claims.ClaimFailure, match="not_judged"):
+            evaluated(tmp_path, **extra)
+
+
+def test_the_ledger_by_kind_and_the_independent_checks():
+    """Each kind with its hold/fail/n-a; the part that checks a derived value or no result of ours indented
+    under it; the independent checks counted apart: a result of ours against a printed value, judged, and no
+    consistency check, erratum or reading not taken."""
+    rows = [a_claim(1.0, {"value": 1.0}, {"relative": 0.1}) for _ in range(7)]
+    rows[1].source = {"value": 1.0, "derived": True}
+    rows[2].kind, rows[2].passed = "erratum", False
+    rows[3].kind, rows[3].ours_is = "reference", "input"
+    rows[4].kind = "reference"
+    rows[5].consistency = "fitted"
+    rows[6].kind, rows[6].passed = "reading", False
+    table = {
+        (r["label"], r["role"]): (r["claims"], r["pass"], r["fail"], r["na"]) for r in claims.by_kind(rows)
+    }
+    many = {kind: plural for kind, (_, plural) in claims.COUNTED.items()}
+    assert table[(many["statement"], "")] == (2, 2, 0, 0)
+    assert table[("of them against a value or form derived here", "part")] == (1, 1, 0, 0)
+    assert table[(many["erratum"], "")] == (1, 0, 1, 0) and table[(many["reading"], "")] == (1, 0, 1, 0)
+    assert table[(many["reference"], "")] == (2, 2, 0, 0) and table[(many["consistency"], "")] == (1, 1, 0, 0)
+    assert table[("all kinds", "total")] == (7, 5, 2, 0)
+    assert [r for r in rows if claims.independent(r)] == [rows[0], rows[4]]
+    assert claims.shown_not_met(rows) == "The erratum and the reading not taken are shown, not met"
+    assert claims.shown_not_met(rows[:2]) == ""

@@ -163,3 +163,42 @@ def test_provenance_outside_git_and_without_proc(monkeypatch, tmp_path):
         monkeypatch.undo()
         provenance.cpu_model.cache_clear()
     assert provenance.cpu_model() in open("/proc/cpuinfo").read()
+
+
+def test_a_result_is_marked_dirty_only_where_its_own_inputs_changed(tmp_path):
+    """A scene job's provenance says dirty where its scene or the code it runs differs from the commit, not
+    where the tree changed elsewhere (a template, another study): git itself, in a committed copy, decides."""
+    import sys
+
+    from .conftest import copy_repository, run_env
+
+    repo = copy_repository(tmp_path / "repo")
+    quiet = {"cwd": repo, "check": True, "capture_output": True}
+    subprocess.run(["git", "init", "-q"], **quiet)
+    subprocess.run(["git", "add", "-A"], **quiet)
+    subprocess.run(["git", "-c", "user.name=t", "-c", "user.email=t@t", "commit", "-qm", "x"], **quiet)
+    scene = "workflow/scenes/chains/loaded_string.yaml"
+    probe = (
+        "from types import SimpleNamespace; from classical_dynamics import scene_job; "
+        f"print(scene_job._git_state(SimpleNamespace(study='chains', scene={scene!r}))['dirty'])"
+    )
+
+    def dirty():
+        out = subprocess.run([sys.executable, "-c", probe], env=run_env(repo), text=True, **quiet).stdout
+        return out.strip() == "True"
+
+    assert not dirty()
+    for elsewhere in ("report/templates/report.css", "src/classical_dynamics/studies/precession/secular.py"):
+        with open(repo / elsewhere, "a") as f:
+            f.write("\n")
+    assert not dirty()  # the tree is dirty, this result's inputs are not
+    with open(repo / "src/classical_dynamics/studies/chains/discrete.py", "a") as f:
+        f.write("\n# changed\n")
+    assert dirty()
+    subprocess.run(
+        ["git", "checkout", "-q", "--", "src/classical_dynamics/studies/chains/discrete.py"], **quiet
+    )
+    assert not dirty()
+    with open(repo / scene, "a") as f:
+        f.write("\n")
+    assert dirty()

@@ -1,5 +1,5 @@
 // The report's only script: the contents menu on small screens, a figure shown at print size on a phone's tap,
-// and the provenance panel that a number opens on click, tap or keyboard. Without it every number still links
+// a hint above a table wider than the screen, and the provenance panel that a number opens on click, tap or keyboard. Without it every number still links
 // to its appendix row.
 (function () {
   "use strict";
@@ -90,6 +90,15 @@
     var link = event.target.closest && event.target.closest("a.num");
     if (link && event.key === " ") { event.preventDefault(); open(link); }   // a button opens on Space too
   });
+
+  // A table wider than the screen says so above it (its side shadows alone were missed on a phone).
+  function markWide() {
+    document.querySelectorAll(".scroll").forEach(function (box) {
+      box.classList.toggle("overflows", box.scrollWidth > box.clientWidth + 1);
+    });
+  }
+  window.addEventListener("load", markWide);
+  window.addEventListener("resize", markWide);
 
   var toggle = document.querySelector(".menu-toggle");
   toggle.addEventListener("click", function () {

@@ -181,6 +181,12 @@ def digest_of(
     return digest.hexdigest()
 
 
+def files(*entries: str) -> list[Path]:
+    """The source files of every module that the entry modules reach: the code a job's result depends on."""
+    graph, paths, _ = _graph()
+    return sorted(paths[name] for name in reached(graph, entries))
+
+
 @lru_cache(maxsize=None)  # a parse asks for each study's digest once per job
 def code_digest(*entries: str) -> str:
     """SHA-256 of the sources of every module that the entry modules (dotted names) reach: what a job's result

@@ -59,14 +59,19 @@ def git(root: Path | str, *args: str) -> str | None:
         return None
 
 
-@lru_cache(maxsize=1)
-def git_state() -> dict[str, object]:
-    """Commit and dirty flag of the checkout the code runs from ('unknown' outside git)."""
+@lru_cache(maxsize=8)  # inputs: a tuple (hashable)
+def git_state(inputs=None) -> dict[str, object]:
+    """Commit and dirty flag of the checkout the code runs from ('unknown' outside git). inputs: the files a
+    result depends on (its code and scene); then dirty says whether any of them differs from the commit or is
+    not in it, so a result is marked only where the commit does not rebuild it. Without: the whole tree."""
     root = Path(__file__).resolve().parents[2]
     commit = git(root, "rev-parse", "HEAD")
     if commit is None:
         return {"commit": "unknown", "dirty": None}
-    return {"commit": commit, "dirty": bool(git(root, "status", "--porcelain", "--untracked-files=no"))}
+    if inputs is None:
+        return {"commit": commit, "dirty": bool(git(root, "status", "--porcelain", "--untracked-files=no"))}
+    changed = git(root, "status", "--porcelain", "--untracked-files=all", "--", *map(str, inputs))
+    return {"commit": commit, "dirty": bool(changed)}
 
 
 @lru_cache(maxsize=1)

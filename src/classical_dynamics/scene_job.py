@@ -101,6 +101,25 @@ def guarded(func, args) -> int:
         return 3
 
 
+def _git_state(args) -> dict:
+    """The commit, and whether this result's own inputs (its scene, the code the job runs: the rule's
+    job_code) differ from it: a tree with changes elsewhere leaves a result the commit rebuilds unmarked."""
+    from . import code_graph, provenance
+
+    state = provenance.git_state()
+    if not state["dirty"]:
+        return state
+    cache = Path(".snakemake/code-graph.json")  # the workflow's parse, when run from it: no second parse
+    if cache.exists():
+        code_graph.cache_parses_in(cache)
+    entries = (
+        "classical_dynamics.jobserver",
+        "classical_dynamics.scene_job",
+        f"classical_dynamics.studies.{args.study}",
+    )
+    return provenance.git_state((Path(args.scene), *code_graph.files(*entries)))
+
+
 def _run(args) -> int:
     import hashlib
     import resource
@@ -128,7 +147,7 @@ def _run(args) -> int:
             for name in sorted(scene.effects)
         },
         "quick": bool(args.quick),
-        **provenance.git_state(),
+        **_git_state(args),
         "packages": provenance.package_versions(),
         "machine": provenance.machine(),
         "started": started,

@@ -40,15 +40,20 @@ KINDS = {
     "erratum": ("erratum of a source", "errata of the sources"),
     # a slip found where the copy consulted is damaged is charged to the copy, not to its author
     "copy": ("possible error of the copy consulted", "possible errors of the copies consulted"),
+    # a damaged or ambiguous passage read two ways: the reading not taken is shown failing beside the other
+    "reading": ("reading of a source not taken", "readings of the sources not taken"),
     "limit": ("limit of the model", "limits of the model"),
     "reference": ("comparison with an external reference", "comparisons with external references"),
 }
+# kinds shown and expected not to be met: the source's slip, the copy's, or the reading not taken
+SHOWN_NOT_MET = ("erratum", "copy", "reading")
 # A claim whose input was fitted to the observable it is compared with tests consistency, not physics: the
 # counts set it apart from its kind, so a reader never takes it for an independent check.
 COUNTED = KINDS | {"consistency": ("consistency check", "consistency checks")}
 # what a count's label leaves to be said, for one and for many
 GLOSSES = {
     "copy": ("print or OCR, where it is damaged", "print or OCR, where they are damaged"),
+    "reading": ("shown failing: why the other is taken", "shown failing: why the others are taken"),
     "consistency": (
         "an input fitted to what it is compared with",
         "an input fitted to what they are compared with",
@@ -88,6 +93,79 @@ def count_by_kind(claims) -> str:
     return ", ".join(parts)
 
 
+def independent(claim) -> bool:
+    """An independent check: a result of ours (not a source's value beside today's) against a value the source
+    prints (not one derived here), judged, and no consistency check, erratum or reading shown."""
+    return (
+        counted_kind(claim) in ("statement", "limit", "reference")
+        and not claim.source.get("derived")
+        and not claim.ours_is
+        and claim.judged
+    )
+
+
+def independent_checks(claims) -> list:
+    return [claim for claim in claims if independent(claim)]
+
+
+# what the abstract calls each kind shown and not met, for one and for many
+SHOWN_NAMES = {
+    "erratum": ("erratum", "errata"),
+    "copy": ("possible error of a copy", "possible errors of the copies"),
+    "reading": ("reading not taken", "readings not taken"),
+}
+
+
+def shown_not_met(claims) -> str:
+    """ "The errata, the possible errors of the copies and the reading not taken are shown, not met" for the
+    kinds present ("" if none)."""
+    counts = [(kind, sum(1 for claim in claims if claim.kind == kind)) for kind in SHOWN_NOT_MET]
+    names = [SHOWN_NAMES[kind][n > 1] for kind, n in counts if n]
+    if not names:
+        return ""
+    names = [f"the {name}" for name in names]
+    listed = names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+    many = len(names) > 1 or any(n > 1 for _, n in counts)
+    return f"{listed[0].upper()}{listed[1:]} {'are' if many else 'is'} shown, not met"
+
+
+def by_kind(claims) -> list[dict]:
+    """The ledger's rows by kind: each counted kind, then what part of it checks no result of ours or a value
+    derived here; each row with its claims, how many hold, fail or are not judged."""
+
+    def row(label, group, role=""):
+        verdicts = [claim.verdict for claim in group]
+        return {
+            "label": label,
+            "role": role,  # "part" (of the row above), "total", "independent" or "" (a kind)
+            "claims": len(group),
+            **{v: verdicts.count(v) for v in ("pass", "fail", "na")},
+        }
+
+    rows = []
+    for kind, (one, many) in COUNTED.items():
+        group = [claim for claim in claims if counted_kind(claim) == kind]
+        if not group:
+            continue
+        rows.append(row(many, group))
+        derived = [claim for claim in group if claim.source.get("derived")]
+        if derived:
+            rows.append(row("of them against a value or form derived here", derived, "part"))
+        beside = [claim for claim in group if claim.ours_is]
+        if beside:
+            rows.append(row("of them a source's value beside today's, no result of ours", beside, "part"))
+    rows.append(row("all kinds", list(claims), "total"))
+    independents = [claim for claim in claims if independent(claim)]
+    rows.append(
+        row(
+            "independent checks: a result of ours against a value a source prints",
+            independents,
+            "independent",
+        )
+    )
+    return rows
+
+
 @dataclass
 class ClaimResult:
     id: str
@@ -114,6 +192,9 @@ class ClaimResult:
         ""  # "input", "reference" or "data": a model input, the reference's value or our fit to observed data
     )
     expected: dict | None = None  # a limit: a reference that leaves out what the model leaves out
+    not_judged: str = (
+        ""  # why a claim is shown and not judged: its reference too uncertain to decide anything
+    )
 
     @property
     def expected_size(self) -> float | None:
@@ -126,8 +207,15 @@ class ClaimResult:
     @property
     def judged(self) -> bool:
         """Whether its check decides anything: a limit whose expected size no source gives is shown with our
-        bound (a guard against regressions) but neither holds nor fails for a reader."""
-        return not (self.kind == "limit" and not self.expected)
+        bound (a guard against regressions) but neither holds nor fails for a reader; nor does a claim whose
+        reference is too uncertain to decide anything (not_judged: says why)."""
+        return not (self.kind == "limit" and not self.expected) and not self.not_judged
+
+    @property
+    def why_not_judged(self) -> str:
+        return self.not_judged or (
+            "" if self.judged else "no source gives the expected size: the bound is ours"
+        )
 
     @property
     def verdict(self) -> str:
@@ -378,6 +466,7 @@ def evaluate(study: str, claims_file: Path, lookup) -> list[ClaimResult]:
                 consistency=claim.get("consistency", ""),
                 ours_is=claim.get("ours_is", ""),
                 expected=claim.get("expected"),
+                not_judged=claim.get("not_judged", ""),
             )
         )
     return results
@@ -391,6 +480,10 @@ def _kind(claim: dict) -> str:
         raise ClaimFailure(f"claim {claim.get('id')}: ours_is is input, reference or data")
     if kind == "limit" and not claim.get("omits"):
         raise ClaimFailure(f"claim {claim.get('id')}: a limit of the model says what it omits (omits:)")
+    if claim.get("not_judged") is not None and (
+        claim["must_hold"] or not isinstance(claim["not_judged"], str)
+    ):
+        raise ClaimFailure(f"claim {claim.get('id')}: not_judged: says why, on a claim that need not hold")
     expected = claim.get("expected")
     if expected is not None and (kind != "limit" or not {"value", "cite", "what"} <= set(expected)):
         raise ClaimFailure(

@@ -156,6 +156,7 @@ def run(scene, results, quick):
         "cycles/yr",
         note="positive: prograde (counterclockwise seen from above the North Pole, as the spin)",
     )
+    results.number("periodogram_step_cpy", float(f[1] - f[0]), "cycles/yr", note="the periodogram's grid")
     results.hard_case(
         "observed_prograde",
         "The observed Chandler peak is prograde, at positive frequency of $x - iy$ (1 if not)",
