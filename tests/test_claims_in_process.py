@@ -1,8 +1,10 @@
 """Every light scene's claims hold when the scene runs in this process: the sources' printed values (Lamb,
 Routh, Lee, the notes, IAU, IERS) are the reference, not anything the study computed, so a wrong number a
-study records fails here in seconds, not only in the quick build. A light scene is one the cost model
+study records fails here in seconds, not only in the quick build. And every number, figure and table its
+chapter cites from it is recorded under the name the chapter uses. A light scene is one the cost model
 estimates at LIGHT_SECONDS or less on one core; the heavy ones are checked by the pipeline tests' build."""
 
+import re
 from pathlib import Path
 
 import pytest
@@ -25,28 +27,61 @@ def _claims(study, numbers=None, scene=None):
     return claims.evaluate(study, STUDIES[study].file("claims.yaml"), lookup)
 
 
+# what a chapter cites of a scene: {% set X = S ~ "/scene" %}, then num(X, "key"), fig(X, "name"), ...
+BINDING = re.compile(r'\{%-?\s*set\s+(\w+)\s*=\s*S\s*~\s*"/(\w+)"\s*-?%\}')
+USE = re.compile(r'\b(num|rel|value|fig|table)\((\w+),\s*"(\w+)"(?:,\s*"(\w+)")?')
+SUMMARY = re.compile(r'summary\(S,\s*"(\w+)"\)\.(numbers|figures)(?:\.(\w+)|\[\s*"(\w+)"\s*\])')
+KIND = {"num": "numbers", "rel": "numbers", "value": "numbers", "fig": "figures", "table": "tables"}
+
+
+def cited(study) -> set[tuple[str, str, str]]:
+    """(scene, numbers/figures/tables, name) of everything the study's chapter cites by a scene's name."""
+    text = STUDIES[study].file("chapter.html.j2").read_text(encoding="utf-8")
+    found, bound = set(), {}
+    marks = [(m.start(), m) for pattern in (BINDING, USE, SUMMARY) for m in pattern.finditer(text)]
+    for _, m in sorted(marks, key=lambda mark: mark[0]):
+        if m.re is BINDING:
+            bound[m[1]] = m[2]  # a name is bound again further on: the latest binding counts
+        elif m.re is USE and m[2] in bound:
+            found |= {(bound[m[2]], KIND[m[1]], name) for name in (m[3], m[4]) if name}
+        elif m.re is SUMMARY:
+            found.add((m[1], m[2], m[3] or m[4]))
+    return found
+
+
 def _light_scenes_with_claims():
     cases = []
     for study in sorted(STUDIES):
-        required = {c.scene for c in _claims(study) if c.must_hold}
+        required = {c.scene for c in _claims(study) if c.must_hold} | {scene for scene, *_ in cited(study)}
         for path in sorted((SCENES / study).glob("*.yaml")):
             if path.stem in required and validate(study, path).estimate.seconds <= LIGHT_SECONDS:
                 cases.append(pytest.param(study, path.stem, id=f"{study}/{path.stem}"))
     return cases
 
 
-def test_light_scenes_cover_every_study():
+def test_light_scenes_cover_every_study_and_the_chapters_are_read():
     studies = {case.values[0] for case in _light_scenes_with_claims()}
     assert studies == set(STUDIES), f"no light scene with a claim in {set(STUDIES) - studies}"
+    # the chapter's citations are found (a pattern that stopped matching would check nothing)
+    assert ("lamb_1920", "numbers", "secular_per_orbit_arcsec") in cited("precession")
+    assert ("observed", "figures", "periodogram") in cited("chandler")
 
 
 @pytest.mark.parametrize("study,scene", _light_scenes_with_claims())
-def test_a_light_scenes_claims_hold(study, scene):
+def test_a_light_scenes_claims_hold_and_what_its_chapter_cites_is_recorded(study, scene):
     """The scene runs quick, as in the quick build; its numbers as its summary.json would record them."""
     validated = validate(study, SCENES / study / f"{scene}.yaml")
-    numbers = study_module(study).run(validated, quick=True).numbers
-    required = [r for r in _claims(study, numbers, scene) if r.scene == scene and r.must_hold]
-    assert required, f"{study}/{scene}: no must-hold claim"
+    results = study_module(study).run(validated, quick=True)
+    recorded = {
+        "numbers": set(results.numbers),
+        "figures": set(results.figures) | set(results.timing_figures),
+        "tables": set(results.tables) | set(results.timing_tables),
+    }
+    missing = sorted(
+        (kind, name) for of, kind, name in cited(study) if of == scene and name not in recorded[kind]
+    )
+    assert not missing, f"{study}/{scene}: its chapter cites what the run did not record: {missing}"
+    required = [r for r in _claims(study, results.numbers, scene) if r.scene == scene and r.must_hold]
     failed = [
         f"{r.id}: {r.number} = {r.computed}, the source's {r.source.get('value')} ({r.check}) {r.problem}"
         for r in required

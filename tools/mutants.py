@@ -14,6 +14,7 @@ estimate, printed with its 95 % interval (Wilson's).
 from __future__ import annotations
 
 import argparse
+import functools
 import os
 import re
 import subprocess
@@ -62,6 +63,67 @@ def drawing(mutant: str) -> bool:
     return bool(DRAWING.search(re.split(r"[ǁ.]", function_of(mutant))[-1].removeprefix("x_")))
 
 
+def _function_source(mutant: str, which: str) -> str | None:
+    """The source of a mutant's function (which: the mutant's own name, or its function's __mutmut_orig) in
+    mutmut's copy of the module."""
+    module = re.split(r"\.x[_ǁ]", mutant, maxsplit=1)[0]
+    path = ROOT / "mutants" / "src" / (module.replace(".", "/") + ".py")
+    if not path.exists():
+        path = path.with_suffix("") / "__init__.py"
+    return _functions(path).get(which.rsplit(".", 1)[-1])
+
+
+@functools.lru_cache(maxsize=None)
+def _functions(path: Path) -> dict[str, str]:
+    """{name: source} of every function (and method) in one of mutmut's module copies."""
+    lines, found = path.read_text(encoding="utf-8").splitlines(), {}
+    for i, line in enumerate(lines):
+        head = re.match(r"\s*def (\w+)\(", line)
+        if head:
+            indent = len(line) - len(line.lstrip())
+            end = i + 1
+            while end < len(lines) and (
+                not lines[end].strip() or len(lines[end]) - len(lines[end].lstrip()) > indent
+            ):
+                end += 1
+            found[head[1]] = "\n".join(lines[i:end])
+    return found
+
+
+@functools.lru_cache(maxsize=4096)
+def _shape(source: str) -> str:
+    """The syntax tree with every string that holds a space (prose: a note, caption, title, label) and every
+    None made one placeholder, and the function's name dropped."""
+    import ast
+    import textwrap
+
+    tree = ast.parse(textwrap.dedent(source))
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Constant) and (
+            node.value is None or (isinstance(node.value, str) and " " in node.value)
+        ):
+            node.value = "·"
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            node.name = "f"
+    return ast.dump(tree)
+
+
+def prose_only(mutant: str) -> bool:
+    """The mutant changes only prose a reader sees (a string with a space, or it to None): text no test can
+    check against a reference. A changed key (no space: a number's or a table's name) is scored."""
+    try:
+        original = _function_source(mutant, mutant.rsplit("__mutmut_", 1)[0] + "__mutmut_orig")
+        changed = _function_source(mutant, mutant)
+        return bool(original and changed) and _shape(original) == _shape(changed)
+    except (OSError, SyntaxError):
+        return False
+
+
+def set_apart(mutant: str) -> str:
+    """Why a mutant is not scored ("" if it is): it sits in a function that draws, or changes prose only."""
+    return "draws a figure" if drawing(mutant) else "changes prose only" if prose_only(mutant) else ""
+
+
 def drawn(found: dict[str, str], per_package: int, seed: int) -> list[str]:
     """`per_package` mutant names of each package, drawn at random with `seed` (all of a smaller package),
     from the computing functions only."""
@@ -69,7 +131,7 @@ def drawn(found: dict[str, str], per_package: int, seed: int) -> list[str]:
 
     by_package = defaultdict(list)
     for name in sorted(found):
-        if not drawing(name):
+        if not set_apart(name):
             by_package[package_of(name)].append(name)
     draw = random.Random(seed)
     return [
@@ -116,8 +178,8 @@ def main(argv=None) -> int:
             run += drawn(statuses(), args.sample, args.seed)
         subprocess.run(run, cwd=ROOT, env=environment(), check=True)
     found = statuses()
-    drawing_mutants = Counter(package_of(name) for name in found if drawing(name))
-    found = {name: status for name, status in found.items() if not drawing(name)}
+    apart = {name: set_apart(name) for name in found}
+    found = {name: status for name, status in found.items() if not apart[name]}
     if args.sample:
         found = {name: status for name, status in found.items() if status != "not checked"}
     by_package: dict[str, Counter] = defaultdict(Counter)
@@ -141,11 +203,10 @@ def main(argv=None) -> int:
         row = (n, checked, killed, c["survived"], c["no tests"])
         interval = f"{low:6.0%}–{high:<6.0%}" if checked else ""
         print(f"{package:40} " + " ".join(f"{v:9d}" for v in row) + " " + score + f" {interval:>13}")
-    print(
-        f"\nNot scored: {sum(drawing_mutants.values())} mutants in functions that draw figures ("
-        + ", ".join(f"{package.rsplit('.', 1)[-1]} {n}" for package, n in sorted(drawing_mutants.items()))
-        + ")."
-    )
+    for why in ("draws a figure", "changes prose only"):
+        counts = Counter(package_of(name) for name, reason in apart.items() if reason == why)
+        listed = ", ".join(f"{package.rsplit('.', 1)[-1]} {n}" for package, n in sorted(counts.items()))
+        print(f"\nNot scored, {why}: {sum(counts.values())} mutants ({listed or 'none'}).")
     print("\nSurviving mutants by function (mutmut show <name>__mutmut_<k> prints one change):")
     for package in sorted(survivors):
         listed = ", ".join(f"{name} {count}" for name, count in survivors[package].most_common())
