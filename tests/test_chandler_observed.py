@@ -66,6 +66,16 @@ def test_a_series_of_known_terms_comes_back(monkeypatch):
     assert numbers["difference_from_vicente_wilson_sigmas"] == pytest.approx((433.0 - 433.1) / 1.7, abs=0.05)
     thirds = results.tables["period_by_thirds"][0]
     np.testing.assert_allclose(thirds.chandler_period_days, period_days, atol=0.5)
+    # the thirds tile the series: each from where the last ended (a sample on), the first at its first
+    # year, the last at its last, and about a third of its span each (t is in years from 2000)
+    span = t[-1] - t[0]
+    assert thirds.from_year.iloc[0] == pytest.approx(t[0] + 2000) and thirds.to_year.iloc[
+        -1
+    ] == pytest.approx(t[-1] + 2000)
+    np.testing.assert_allclose(thirds.to_year - thirds.from_year, span / 3, rtol=0.01)
+    np.testing.assert_allclose(
+        thirds.from_year.iloc[1:].values, thirds.to_year.iloc[:-1].values, atol=2 * (t[1] - t[0])
+    )
 
 
 def test_the_iers_series_gives_the_published_period(tmp_path):

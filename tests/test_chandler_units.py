@@ -78,6 +78,11 @@ def test_rigid_run_gives_eulers_period_the_cones_and_the_invariants(tmp_path, mo
     assert value(r, "tan_beta_over_tan_alpha") == pytest.approx(1 / (1 - H), rel=1e-9)
     assert value(r, "C_over_A") == pytest.approx(1 / (1 - H), rel=1e-15)  # the ratio the measured one meets
     assert value(r, "herpolhode_over_polhode") == pytest.approx(H, rel=2e-3)
+    # exactly: the angles of omega from L and from the figure axis, sin(beta - alpha)/sin(beta), where
+    # omega = n(amplitude, 0, 1) and L = I omega put the figure axis at beta from omega and alpha from L
+    alpha, beta = np.arctan((1 - H) * AMP), np.arctan(AMP)
+    exact = np.sin(beta - alpha) / np.sin(beta)
+    assert value(r, "herpolhode_over_polhode") == pytest.approx(exact, rel=1e-9)
     # the plane of omega and the figure axis turns about L at |L|/A: once in (1 - H) sidereal days
     assert value(r, "space_cone_period_sidereal_days") == pytest.approx(1 - H, rel=1e-9)
     assert value(r, "symmetric_T_L2_recovery") < 1e-9

@@ -75,7 +75,9 @@ def test_a_configuration_file_that_is_not_yaml_is_refused(tmp_path):
 def write_tiny(tmp_path, scene_bytes=b"title: t\n", quick=True):
     r = Results("chains", "toy", "t")
     r.number("x", 0.1, "1")
-    r.table("rows", pd.DataFrame({"a": [1, 2], "b": [0.5, float("nan")]}), "Rows.")
+    r.table(
+        "rows", pd.DataFrame({"a": [1, 2], "b": [0.5, float("nan")]}), "Rows.", headers={"a": "a", "b": "b"}
+    )
     folder = tmp_path / "results" / "chains" / "toy"
     r.write(
         folder,

@@ -359,20 +359,25 @@ def test_a_result_with_an_unregistered_unit_or_a_bare_column_stops_where_it_is_w
     with pytest.raises(ValueError, match="step_hours"):
         r.timing_table("steps", frame, "Steps.", headers={"k": "$k$"})
     r.table("steps", frame, "Steps.", headers={"k": "$k$", "step_hours": "step (h)", "rtol": "rtol"})
-    r.table("bare", frame, "Steps, headed by their names.")
+    with pytest.raises(ValueError, match="no header for its columns"):  # a code name never reaches a reader
+        r.table("bare", frame, "Steps, headed by their names.")
+    headed = {"k": "$k$", "step_hours": "step (h)"}
+    for name, description in ((None, "a case"), ("case", ""), ("case", None)):  # a hard case says what it is
+        with pytest.raises(ValueError, match="a name and a description"):
+            r.hard_case(name, description, 1.0, 2.0)
     # a caption or a figure lost stops the record too: the report shows nothing without its caption
     for caption in (None, "", "  "):
         with pytest.raises(ValueError, match="needs a caption"):
-            r.table("uncaptioned", frame, caption)
+            r.table("uncaptioned", frame, caption, headers=headed)
         with pytest.raises(ValueError, match="needs a caption"):
             r.timing_figure("uncaptioned", Figure(), caption)
     with pytest.raises(ValueError, match="needs a matplotlib figure, not NoneType"):
         r.figure("lost", None, "A figure.")
     with pytest.raises(ValueError, match="needs a caption"):
-        r.timing_table("uncaptioned", frame, None)
+        r.timing_table("uncaptioned", frame, None, headers=headed)
     assert not {"uncaptioned", "lost"} & {*r.tables, *r.figures, *r.timing_tables, *r.timing_figures}
     r.number("length", 1.0, "m")
-    assert set(r.tables) == {"steps", "bare"} and r.numbers["length"]["unit"] == "m"
+    assert set(r.tables) == {"steps"} and r.numbers["length"]["unit"] == "m"
 
 
 def test_every_unit_of_the_registry_typesets_with_any_value():

@@ -71,3 +71,20 @@ def test_plane_one_large_q0_has_no_exceptions():
 def test_plane_departure_is_rounding_in_plane_two():
     M = se.MiddleAxis.with_plane_parameters(BODY, -0.5, -0.1, 0.6, -0.6)
     assert mc.plane_departure(M, M.from_plane(0.5, 0.0), 12.0 / M.time_scale) < 1e-12
+
+
+def test_a_middle_plane_with_a_saddle_draws_its_separatrix_through_it():
+    """The curve drawn through a saddle of a middle-axis plane is its separatrix: named so in the portrait's
+    table, and it meets q1 = 0 at the saddle's phi2 (geometry of the drawing, not the module's own label)."""
+    from pathlib import Path
+
+    from classical_dynamics.studies import study_module, validate
+
+    scenes = Path(__file__).resolve().parents[1] / "workflow" / "scenes" / "self_excited"
+    scene = validate("self_excited", scenes / "middle_plane_two_saddle.yaml")
+    portrait = study_module("self_excited").run(scene, quick=True).tables["portrait"][0]
+    (saddle,) = portrait.phi2[portrait.element == "saddle"]
+    separatrix = portrait[portrait.element == "separatrix"]
+    assert not separatrix.empty and "curve_C0" not in set(portrait.element)
+    near = separatrix.iloc[np.argsort(np.abs(separatrix.phi2.values - saddle))[:4]]
+    assert np.min(np.abs(near.phi2 - saddle)) < 1e-3 and np.min(np.abs(near.q1)) < 1e-3  # the drawn grid

@@ -90,27 +90,48 @@ def _functions(path: Path) -> dict[str, str]:
     return found
 
 
+def _prose(node) -> bool:
+    """A string a reader sees: it holds a space or a $ (a formula), as no key or name of ours does; an
+    f-string with such a part."""
+    import ast
+
+    if isinstance(node, ast.JoinedStr):
+        return any(_prose(part) for part in node.values)
+    return (
+        isinstance(node, ast.Constant)
+        and isinstance(node.value, str)
+        and bool(re.search(r"[ $]", node.value))
+    )
+
+
 @functools.lru_cache(maxsize=4096)
 def _shape(source: str) -> str:
-    """The syntax tree with every string that holds a space (prose: a note, caption, title, label) and every
-    None made one placeholder, and the function's name dropped."""
+    """The syntax tree with every prose string (a note, caption, title, label) and every None made one
+    placeholder, every note= dropped (prose for the reader, None by default), and the function's name."""
     import ast
     import textwrap
 
-    tree = ast.parse(textwrap.dedent(source))
+    class Placeholders(ast.NodeTransformer):
+        def visit_JoinedStr(self, node):
+            return ast.Constant("·") if _prose(node) else self.generic_visit(node)
+
+        def visit_Constant(self, node):
+            return ast.Constant("·") if node.value is None or _prose(node) else node
+
+        def visit_Call(self, node):
+            node.keywords = [k for k in node.keywords if k.arg != "note"]
+            return self.generic_visit(node)
+
+    tree = Placeholders().visit(ast.parse(textwrap.dedent(source)))
     for node in ast.walk(tree):
-        if isinstance(node, ast.Constant) and (
-            node.value is None or (isinstance(node.value, str) and " " in node.value)
-        ):
-            node.value = "·"
         if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
             node.name = "f"
     return ast.dump(tree)
 
 
 def prose_only(mutant: str) -> bool:
-    """The mutant changes only prose a reader sees (a string with a space, or it to None): text no test can
-    check against a reference. A changed key (no space: a number's or a table's name) is scored."""
+    """The mutant changes only prose a reader sees (a string with a space or a $, or it to None, or a note):
+    text no test can check against a reference. A changed key (a number's or a table's name) is scored."""
     try:
         original = _function_source(mutant, mutant.rsplit("__mutmut_", 1)[0] + "__mutmut_orig")
         changed = _function_source(mutant, mutant)

@@ -53,7 +53,8 @@ _share_math_parses()
 
 
 def _check_headers(name, frame, headers) -> None:
-    bare = [column for column in frame.columns if headers and column not in headers]
+    """Every column reaches the reader under a header: one left out would show its code name."""
+    bare = [column for column in frame.columns if not headers or column not in headers]
     if bare:
         raise ValueError(f"table {name!r}: no header for its columns {bare}")
 
@@ -123,6 +124,8 @@ class Results:
 
     def hard_case(self, name, description, measured, bound, unit=""):
         """A numerically hard case: what was measured against the bound it must meet."""
+        if not (isinstance(name, str) and name and isinstance(description, str) and description):
+            raise ValueError(f"a hard case needs a name and a description, not {name!r}: {description!r}")
         units.lookup(unit)
         self.stability.append(
             {

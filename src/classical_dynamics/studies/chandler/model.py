@@ -329,7 +329,8 @@ def symmetric_integrals(model, tilt_deg=10.0, periods=20) -> SymmetricIntegrals:
     A = np.sqrt((2 * T * I3 - L2) / (I1 * (I3 - I1)))  # (2.162)-(2.163) solved for A and w3
     w3 = np.sqrt((L2 - 2 * T * I1) / (I3 * (I3 - I1)))
     wobble_speed = np.hypot(y[:, 0], y[:, 1])
-    deviation = max(float(np.max(np.abs(wobble_speed / A - 1))), float(np.max(np.abs(y[:, 2] / w3 - 1))))
+    # np.max, not max(): a NaN (a root of a negative) must come through, not lose to the other term
+    deviation = float(np.max(np.abs(np.concatenate([wobble_speed / A - 1, y[:, 2] / w3 - 1]))))
     return SymmetricIntegrals(tilt_deg, periods, deviation)
 
 

@@ -454,7 +454,7 @@ def singular_curve(V: ViscousMedium) -> SingularCurve:
     rs = np.concatenate([-np.linspace(4.0, 0.5, 8), np.linspace(0.5, 4.0, 8)])
     points = np.column_stack([m2 / (h * rs), -m1 / (h * rs), rs])
     t = np.linspace(0.0, 30.0, 61)
-    drift = max(float(np.max(np.abs(_euler(V, pt, t) - pt))) for pt in points)
+    drift = float(np.max([np.max(np.abs(_euler(V, pt, t) - pt)) for pt in points]))  # a NaN comes through
     theta = np.arctan(-m2 / m1)  # Lee: the turn about r, (5.52)
     p_rot = points[:, 0] * np.cos(theta) - points[:, 1] * np.sin(theta)
     q_rot = points[:, 0] * np.sin(theta) + points[:, 1] * np.cos(theta)

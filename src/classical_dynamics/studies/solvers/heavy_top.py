@@ -738,7 +738,10 @@ def work_precision(top, n, alpha, numerics, quick) -> pd.DataFrame:
             )
             sol = solve(problem, method, rtol=rtol, atol=rtol * 1e-3, t_eval=t)
             steps = solve(problem, method, rtol=rtol, atol=rtol * 1e-3, record_steps=True)
-            drift = max(float(np.max(np.abs(v - v[0])) / abs(v[0])) for v in top.integrals(steps.y_steps)[1:])
+            # np.max over all: a NaN comes through (max() drops one that is not first)
+            drift = float(
+                np.max([np.max(np.abs(v - v[0])) / abs(v[0]) for v in top.integrals(steps.y_steps)[1:]])
+            )
             rows.append(
                 {
                     "method": method,
