@@ -602,3 +602,10 @@ def test_the_ledger_by_kind_and_the_independent_checks():
     assert [r for r in rows if claims.independent(r)] == [rows[0], rows[4]]
     assert claims.shown_not_met(rows) == "The erratum and the reading not taken are shown, not met"
     assert claims.shown_not_met(rows[:2]) == ""
+
+
+def test_the_ledger_counts_each_chapter_in_a_few_words():
+    rows = [a_claim(1.0, {"value": 1.0}, {"relative": 0.1}) for _ in range(4)]
+    rows[1].kind, rows[2].kind, rows[3].consistency = "limit", "limit", "fitted"
+    assert claims.count_briefly(rows) == "1 statement, 2 limits, 1 consistency check"
+    assert claims.count_briefly([]) == ""

@@ -227,6 +227,7 @@ class Report:
             claims=self.claims,
             count_by_kind=claims_mod.count_by_kind,
             by_kind=claims_mod.by_kind,
+            count_briefly=claims_mod.count_briefly,
             shown_not_met=claims_mod.shown_not_met,
             shown_kinds=claims_mod.SHOWN_NOT_MET,
             independent_checks=claims_mod.independent_checks,

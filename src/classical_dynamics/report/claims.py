@@ -61,6 +61,24 @@ GLOSSES = {
 }
 
 
+# each counted kind in a word or two, for the ledger's columns (Table "by kind" says what each is)
+SHORT = {
+    "statement": ("statement", "statements"),
+    "erratum": ("erratum", "errata"),
+    "copy": ("copy's error", "copies' errors"),
+    "reading": ("reading not taken", "readings not taken"),
+    "limit": ("limit", "limits"),
+    "reference": ("reference", "references"),
+    "consistency": ("consistency check", "consistency checks"),
+}
+
+
+def count_briefly(claims) -> str:
+    """ "21 statements, 6 limits, 5 references, 9 consistency checks": the kinds present, in a few words."""
+    counts = [(kind, sum(1 for claim in claims if counted_kind(claim) == kind)) for kind in COUNTED]
+    return ", ".join(f"{n} {SHORT[kind][n > 1]}" for kind, n in counts if n)
+
+
 def counted_kind(claim) -> str:
     """The kind a claim is counted under: its own, or "consistency" where an input was fitted to its match."""
     return "consistency" if claim.consistency else claim.kind
