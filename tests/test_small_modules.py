@@ -178,14 +178,28 @@ def test_a_result_is_marked_dirty_only_where_its_own_inputs_changed(tmp_path):
     subprocess.run(["git", "add", "-A"], **quiet)
     subprocess.run(["git", "-c", "user.name=t", "-c", "user.email=t@t", "commit", "-qm", "x"], **quiet)
     scene = "workflow/scenes/chains/loaded_string.yaml"
+    # one process asks on each line it reads (the graph parsed once; git asked afresh each time)
     probe = (
-        "from types import SimpleNamespace; from classical_dynamics import scene_job; "
-        f"print(scene_job._git_state(SimpleNamespace(study='chains', scene={scene!r}))['dirty'])"
+        "import sys\nfrom types import SimpleNamespace\n"
+        "from classical_dynamics import provenance, scene_job\n"
+        "for _ in sys.stdin:\n"
+        "    provenance.git_state.cache_clear()\n"
+        f"    args = SimpleNamespace(study='chains', scene={scene!r})\n"
+        "    print(scene_job._git_state(args)['dirty'], flush=True)\n"
+    )
+    asker = subprocess.Popen(
+        [sys.executable, "-c", probe],
+        cwd=repo,
+        env=run_env(repo),
+        text=True,
+        stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE,
     )
 
     def dirty():
-        out = subprocess.run([sys.executable, "-c", probe], env=run_env(repo), text=True, **quiet).stdout
-        return out.strip() == "True"
+        asker.stdin.write("\n")
+        asker.stdin.flush()
+        return asker.stdout.readline().strip() == "True"
 
     assert not dirty()
     for elsewhere in ("report/templates/report.css", "src/classical_dynamics/studies/precession/secular.py"):
@@ -202,3 +216,5 @@ def test_a_result_is_marked_dirty_only_where_its_own_inputs_changed(tmp_path):
     with open(repo / scene, "a") as f:
         f.write("\n")
     assert dirty()
+    asker.stdin.close()
+    assert asker.wait(timeout=60) == 0
