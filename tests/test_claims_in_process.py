@@ -88,3 +88,33 @@ def test_a_light_scenes_claims_hold_and_what_its_chapter_cites_is_recorded(study
         if not r.passed
     ]
     assert not failed, "\n".join(failed)
+
+
+def _recordable(study) -> list[re.Pattern]:
+    """Every name the study's code can record a number under: its string literals, and its f-strings with
+    each {field} free (f"best_error_{method}" records best_error_dop853)."""
+    import ast
+
+    patterns = []
+    for path in STUDIES[study].file("claims.yaml").parent.glob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Constant) and isinstance(node.value, str):
+                patterns.append(re.compile(re.escape(node.value)))
+            elif isinstance(node, ast.JoinedStr):
+                parts = [
+                    re.escape(part.value) if isinstance(part, ast.Constant) else ".+" for part in node.values
+                ]
+                patterns.append(re.compile("".join(parts)))
+    return patterns
+
+
+@pytest.mark.parametrize("study", sorted(STUDIES))
+def test_every_number_a_chapter_or_claim_cites_is_a_name_its_study_records(study):
+    """Of every scene, light or heavy, read from the code: a number the chapter or a claim cites is a name the
+    study's code writes, as a literal or an f-string, so a key renamed on one side fails here, not only in
+    the build."""
+    cited_numbers = {name for _, kind, name in cited(study) if kind == "numbers"}
+    cited_numbers |= {c.number for c in _claims(study)}
+    patterns = _recordable(study)
+    unknown = sorted(name for name in cited_numbers if not any(p.fullmatch(name) for p in patterns))
+    assert not unknown, f"{study}: cited, but no code of the study records them: {unknown}"
