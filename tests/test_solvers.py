@@ -533,7 +533,17 @@ def clock(monkeypatch):
 
     fake = _Clock()
     monkeypatch.setattr(timing, "time", fake)
+    monkeypatch.delenv(timing.ONCE, raising=False)  # the stopping rule itself, as a benchmark runs it
     return fake
+
+
+def test_with_the_tests_switch_each_timing_is_one_run(monkeypatch):
+    from classical_dynamics.solvers import timing
+
+    monkeypatch.setenv(timing.ONCE, "1")
+    calls = []
+    seconds, result, runs = timing.min_time(lambda: calls.append(1) or "value", repeats=10, budget_s=5.0)
+    assert (result, runs, len(calls)) == ("value", 1, 1) and seconds >= 0
 
 
 def test_min_time_stops_once_two_runs_agree_and_ignores_a_slow_first_run(clock):

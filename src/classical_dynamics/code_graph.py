@@ -66,12 +66,18 @@ def _called_name(node: ast.Call, package_name: str, module: str) -> str | None:
 def meaning(tree: ast.Module) -> str:
     """SHA-256 of what a module does: its syntax tree (no comments, no positions) without the docstrings of
     the module, its classes and functions (text for a reader; no result depends on it)."""
-    for node in ast.walk(tree):
+    statements = [tree]  # a class or function is a statement, so only statements' bodies are visited
+    while statements:
+        node = statements.pop()
         if isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef)) and node.body:
             first = node.body[0]
             if isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant):
                 if isinstance(first.value.value, str):
                     node.body = node.body[1:] or [ast.Pass()]
+        for field in ("body", "orelse", "finalbody", "handlers", "cases"):
+            statements.extend(
+                getattr(node, field, None) if isinstance(getattr(node, field, None), list) else ()
+            )
     return hashlib.sha256(ast.dump(tree).encode()).hexdigest()
 
 

@@ -27,6 +27,7 @@ from pybtex.plugin import find_plugin
 from pybtex.richtext import HRef, Tag, Text
 
 _HTML = find_plugin("pybtex.backends", "html")()
+_TEXT = find_plugin("pybtex.backends", "text")()  # render_as("text") looks it up again on each call: 26 ms
 
 # Types whose title is a stand-alone work (set in italics); others (articles, chapters, talks) are parts.
 _ITALIC_TITLE = {
@@ -194,7 +195,7 @@ class _TeX:
             arg = self.argument(math)
             return Tag(_STYLE[name], arg) if _STYLE[name] else arg
         if name == "url":
-            url = self.argument(math).render_as("text")
+            url = self.argument(math).render(_TEXT)
             return HRef(html.escape(url, quote=True), url)
         # A symbol the codec knows only in math mode (Greek letters, \infty, \pm ...).
         symbol = codecs.decode(f"${chr(92)}{name}$", "ulatex").strip()
@@ -212,7 +213,7 @@ def _rich(value: str, where: str) -> Text:
 
 
 def _plain(value: str, where: str) -> str:
-    return _rich(value, where).render_as("text")
+    return _rich(value, where).render(_TEXT)
 
 
 # --- names --------------------------------------------------------------------------------------------------
@@ -277,7 +278,7 @@ def format_entry(entry: Reference | Entry) -> str:
         p = field("pages")
         if p is None:
             return None
-        text = re.sub(r"\s*[-\N{EN DASH}\N{HYPHEN}]+\s*", "\N{EN DASH}", p.render_as("text"))
+        text = re.sub(r"\s*[-\N{EN DASH}\N{HYPHEN}]+\s*", "\N{EN DASH}", p.render(_TEXT))
         return Text(("pp. " if "\N{EN DASH}" in text else "p. ") if prefix else "", text)
 
     title = field("title")

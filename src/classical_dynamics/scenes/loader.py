@@ -7,6 +7,7 @@ raised as a SceneError whose message is one line: file, field, what was expected
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import math
 import os
@@ -14,12 +15,14 @@ import re
 import stat
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable, Iterable
+from typing import TYPE_CHECKING, Callable, Iterable
 
-import jsonschema
 import yaml
 
 from ..inline_math import MathError, render_text
+
+if TYPE_CHECKING:
+    import jsonschema
 
 # A name every file and folder made from it can take: results/<study>/<name>/ is staged as .<name>.XXXXXXXX
 # and its log is <name>.log, all within the 255 bytes a file name may have.
@@ -259,7 +262,9 @@ def load_scene(
         for effect in effects:
             if effect not in known:
                 raise SceneError(path, f"effects.{effect}", "a known effect: " + ", ".join(known))
-    validator = _Validator(schema)
+    import jsonschema  # here, not at import: 0.12 s that verify, diff and dist never need
+
+    validator = _validator_class()(schema)
     error = jsonschema.exceptions.best_match(validator.iter_errors(data), key=_depth_first)
     if error is not None:
         raise SceneError(path, *_expected_from(error))
@@ -286,14 +291,18 @@ def load_scene(
     )
 
 
-# An integer is an int, as the code that counts with it uses it: JSON Schema's "integer" also takes 10.0,
-# which validated and then stopped the run inside numpy.
-_Validator = jsonschema.validators.extend(
-    jsonschema.Draft202012Validator,
-    type_checker=jsonschema.Draft202012Validator.TYPE_CHECKER.redefine(
-        "integer", lambda checker, value: isinstance(value, int) and not isinstance(value, bool)
-    ),
-)
+@functools.cache
+def _validator_class():
+    """Draft 2020-12 with an integer that is an int, as the code that counts with it uses it: JSON Schema's
+    "integer" also takes 10.0, which validated and then stopped the run inside numpy."""
+    import jsonschema
+
+    return jsonschema.validators.extend(
+        jsonschema.Draft202012Validator,
+        type_checker=jsonschema.Draft202012Validator.TYPE_CHECKER.redefine(
+            "integer", lambda checker, value: isinstance(value, int) and not isinstance(value, bool)
+        ),
+    )
 
 
 def _check_math(path: Path, data, where: str = "") -> None:
@@ -314,6 +323,8 @@ def _check_math(path: Path, data, where: str = "") -> None:
 
 
 def _depth_first(error):
+    import jsonschema
+
     # Prefer the most specific (deepest) error; then jsonschema's own relevance.
     return (-len(error.absolute_path), *jsonschema.exceptions.relevance(error))
 

@@ -8,8 +8,10 @@ MIN_SPENT_S keep repeating (they cost nothing) so that timer noise does not conf
 
 from __future__ import annotations
 
+import os
 import time
 
+ONCE = "CLASSICAL_DYNAMICS_TIME_ONCE"  # set (the tests set it): each timing is one run (values, not times)
 SPREAD = 0.05  # the two fastest runs within 5 % of each other
 MIN_SPENT_S = 0.05
 
@@ -20,6 +22,8 @@ def min_time(func, *, repeats: int = 10, budget_s: float = 2.0, warmup: bool = T
     At most repeats runs, and one more standing for the warm-up (warmup=True; budget_s counts after it). Stops
     once the two fastest agree within SPREAD (and MIN_SPENT_S is spent) or budget_s is spent.
     """
+    if os.environ.get(ONCE):
+        repeats, warmup = 1, False
     first = 1 if warmup else 0  # runs before the budget starts counting
     times, result = [], None
     while len(times) < repeats + first:

@@ -157,13 +157,22 @@ def _correlation_length(resid) -> float:
     return float(max(below[0] if below.size else n, 1))
 
 
+BLOCK = 64  # frequencies per block of the periodogram
+
+
 def periodogram(t, m, f_max_cpy=2.0, points=4001):
     """|DFT|^2 (normalized to 1 at the peak) of the detrended series at f in [-f_max, f_max] cpy."""
     X = np.stack([np.ones_like(t), t], axis=1)
     coef, *_ = np.linalg.lstsq(X, m, rcond=None)
     r = m - X @ coef
     f = np.linspace(-f_max_cpy, f_max_cpy, points)
-    power = np.array([np.abs(np.sum(r * np.exp(-2j * np.pi * fk * t))) ** 2 for fk in f])
+    # exp(-2 pi i (f_j + k df) t) = exp(-2 pi i f_j t) exp(-2 pi i k df t): one table of the second serves
+    # every block of BLOCK frequencies, so a block is one exp of the series and a product (4001 exps before)
+    offsets = np.exp(-2j * np.pi * np.outer(np.arange(BLOCK) * (f[1] - f[0]), t))
+    power = np.empty(points)
+    for j in range(0, points, BLOCK):
+        k = min(BLOCK, points - j)
+        power[j : j + k] = np.abs(offsets[:k] @ (r * np.exp(-2j * np.pi * f[j] * t))) ** 2
     return f, power / power.max()
 
 
