@@ -1,6 +1,8 @@
 """Lamb's stability (studies/chains/stability.py) and the handbook checks added beside it: each computation
 against its closed form, and the cases that must fail when the physics is wrong."""
 
+from types import SimpleNamespace
+
 import numpy as np
 import pytest
 import yaml
@@ -211,3 +213,25 @@ def test_reciprocal_theorem_needs_the_reversal():
     r = heavy_top.reciprocal(top_model.Top(1.0, 0.5, 1.0), 6.0, np.radians(60.0))
     assert r.relative_difference < 1e-6
     assert r.unreversed_relative_difference > 0.1
+
+
+def test_equilibrium_of_two_masses_on_three_springs_and_lambs_three_examples():
+    """stability.equilibrium on two masses m on three springs k (roots k/m and 3k/m: the smallest is 1 in k/m)
+    beside Art. 85-89's springs k, -k, k (K's eigenvalues -k and k, a root sqrt(k/m), growth exp(sqrt(k/m) t)
+    from t = 15 to 30 over it), Art. 92's ring (1, 4, 4, bounded), and a double root not from a potential,
+    whose secular term grows as t: over 10^4 periods a factor of order 10^4, not of order 1."""
+    k, m = 2.0, 1.5
+    built = SimpleNamespace(
+        stiffness_matrix=lambda: np.array([[2 * k, -k], [-k, 2 * k]]),
+        masses=np.array([m, m]),
+        segment_stiffness=np.array([k, k, k]),
+    )
+    e = stability.equilibrium(built)
+    assert e.scene_smallest_eigenvalue == pytest.approx(1.0, rel=1e-14)
+    assert e.indefinite_eigenvalues == pytest.approx([-1.0, 1.0], abs=1e-14)
+    assert e.indefinite_root_vs_exact < 1e-14 and e.indefinite_growth_rate == pytest.approx(1.0, rel=1e-9)
+    assert np.log(e.indefinite_growth_factor) == pytest.approx(30.0, abs=3.0)  # |q0| of a random start
+    assert e.equal_roots == pytest.approx([1.0, 4.0, 4.0], rel=1e-14)
+    assert e.minors_vanish and e.multiplicity == 2 and e.periods == 10_000
+    assert 0.0 <= e.equal_roots_growth < 1e-9
+    assert 0.1 * e.periods < e.non_symmetric_growth < 10 * e.periods

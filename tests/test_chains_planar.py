@@ -99,3 +99,26 @@ def test_the_ozone_scene_runs_to_the_notes_modes():
     assert n["degenerate_pair_subspace"] < 1e-12
     (case,) = results.stability
     assert case["name"] == "degenerate_pair" and case["measured"] == n["degenerate_pair_subspace"]
+
+
+def test_the_rings_table_is_lambs_speeds_and_its_deviation_from_them():
+    # ring() on 64 beads: each row's speeds against Lamb's -1 and (s^2 - 3)/(s^2 + 1), written here (s >= 2),
+    # its deviation the larger gap, the space-frame speeds one more, and the steady tension Lamb's rho w^2 a^2
+    chain = {"n": 64, "length_m": 2 * np.pi, "mass_kg": 1.0}
+    effects = {"rotation": {"omega_rad_per_s": 1.0}, "springs": {"k_n_per_m": 1e6}}
+    r = planar.ring(chain, effects, 4)
+    waves = r.waves.set_index("s")
+    assert list(waves.index) == [1, 2, 3, 4]
+    for s, row in waves.iterrows():
+        lamb = (-1.0, (s**2 - 3) / (s**2 + 1))
+        gaps = (abs(row.relative_1 - lamb[0]), abs(row.relative_2 - lamb[1]))
+        assert row.deviation == pytest.approx(max(gaps), rel=1e-12, abs=1e-15)
+        if s >= 2:  # s = 1 is the defective pair (a displaced circle), split by rounding on 64 beads
+            assert row.deviation < 2 * (s / 64) ** 2
+        assert row.lamb_space_2 == pytest.approx(2 * (s**2 - 1) / (s**2 + 1), rel=1e-15)
+        assert (row.space_1, row.space_2) == pytest.approx(
+            (row.relative_1 + 1, row.relative_2 + 1), rel=1e-15
+        )
+    assert r.stiffness_ratio == pytest.approx(1e6 / (1.0 / 64), rel=1e-12)
+    assert r.tension_ratio == pytest.approx(1.0, rel=1e-3) and r.dispersion_exact
+    assert r.largest_real_part < 1e-6

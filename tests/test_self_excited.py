@@ -252,6 +252,9 @@ def test_next_to_the_separatrix_each_side_keeps_its_fate(m1, nu, passages):
     assert sides.wrong == 0
     expected = passages / (1 - m1**2) ** 0.25
     assert sides.slope == pytest.approx(expected, rel=0.01)
+    # what the report prints beside it: n/lambda written out here, and the relative error against it
+    assert sides.slope_expected == pytest.approx(expected, rel=1e-14)
+    assert sides.slope_error == pytest.approx(sides.slope / expected - 1, abs=1e-14)
 
 
 def test_a_separatrix_drawn_too_small_is_caught_on_the_outside(monkeypatch):
