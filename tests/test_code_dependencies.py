@@ -26,10 +26,8 @@ def graph():
 
 
 def scene_job(study):
-    """What a scene job of `study` runs (workflow/rules/common.smk's job_code)."""
-    return code_graph.reached(
-        graph(), [f"{PACKAGE}.jobserver", f"{PACKAGE}.scene_job", f"{PACKAGE}.studies.{study}"]
-    )
+    """What a scene job of `study` runs (its rule's digest and its result's dirty flag start from these)."""
+    return code_graph.reached(graph(), code_graph.scene_job_entries(study))
 
 
 def job(entry):
@@ -65,7 +63,7 @@ def test_the_digest_changes_with_exactly_the_modules_reached(tmp_path):
     parsed afresh, not taken from the cache; the others are not parsed eight times (0.5 s each)."""
     copy = copy_repository(tmp_path / "repo") / "src" / PACKAGE
     modules = code_graph.modules(copy)
-    entries = (f"{PACKAGE}.jobserver", f"{PACKAGE}.scene_job", f"{PACKAGE}.studies.chandler")
+    entries = code_graph.scene_job_entries("chandler")
     cache = tmp_path / "parses.json"
 
     def digest():
@@ -95,7 +93,7 @@ def test_a_comment_or_docstring_edit_changes_no_digest_and_a_code_edit_does(tmp_
     the digest (and so every result) standing; a changed constant or a new line of code change it."""
     copy = copy_repository(tmp_path / "repo") / "src" / PACKAGE
     modules = code_graph.modules(copy)
-    entries = (f"{PACKAGE}.jobserver", f"{PACKAGE}.scene_job", f"{PACKAGE}.studies.chains")
+    entries = code_graph.scene_job_entries("chains")
     path = modules[f"{PACKAGE}.formatting"]  # reached by every study
     source = path.read_text(encoding="utf-8")
 

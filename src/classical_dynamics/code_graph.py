@@ -187,6 +187,17 @@ def digest_of(
     return digest.hexdigest()
 
 
+def job_entries(*entries: str) -> tuple[str, ...]:
+    """The modules `python3 -m classical_dynamics.jobserver classical_dynamics.<entries[0]> ...` starts from
+    (entries dotted below the package): what a rule's code digest covers (workflow/rules/common.smk)."""
+    return (f"{NAME}.jobserver", *(f"{NAME}.{entry}" for entry in entries))
+
+
+def scene_job_entries(study: str) -> tuple[str, ...]:
+    """What a scene job of `study` starts from: one list for its rule's digest and its result's dirty flag."""
+    return job_entries("scene_job", f"studies.{study}")
+
+
 def files(*entries: str) -> list[Path]:
     """The source files of every module that the entry modules reach: the code a job's result depends on."""
     graph, paths, _ = _graph()

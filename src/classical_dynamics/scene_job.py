@@ -102,8 +102,8 @@ def guarded(func, args) -> int:
 
 
 def _git_state(args) -> dict:
-    """The commit, and whether this result's own inputs (its scene, the code the job runs: the rule's
-    job_code) differ from it: a tree with changes elsewhere leaves a result the commit rebuilds unmarked."""
+    """The commit, and whether this result's own inputs (its scene, and the code its rule's digest covers)
+    differ from it: a tree with changes elsewhere leaves a result the commit rebuilds unmarked."""
     from . import code_graph, provenance
 
     state = provenance.git_state()
@@ -112,12 +112,9 @@ def _git_state(args) -> dict:
     cache = Path(".snakemake/code-graph.json")  # the workflow's parse, when run from it: no second parse
     if cache.exists():
         code_graph.cache_parses_in(cache)
-    entries = (
-        "classical_dynamics.jobserver",
-        "classical_dynamics.scene_job",
-        f"classical_dynamics.studies.{args.study}",
+    return provenance.git_state(
+        (Path(args.scene), *code_graph.files(*code_graph.scene_job_entries(args.study)))
     )
-    return provenance.git_state((Path(args.scene), *code_graph.files(*entries)))
 
 
 def _run(args) -> int:

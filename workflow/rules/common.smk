@@ -105,9 +105,7 @@ code_graph.cache_parses_in(".snakemake/code-graph.json")
 
 def job_code(*entries):
     """The digest of the modules that `python3 -m classical_dynamics.jobserver <entries[0]> ...` runs."""
-    return code_graph.code_digest(
-        "classical_dynamics.jobserver", *(f"classical_dynamics.{entry}" for entry in entries)
-    )
+    return code_graph.code_digest(*code_graph.job_entries(*entries))
 
 
 def _command_line():

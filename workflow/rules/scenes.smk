@@ -33,7 +33,7 @@ rule scene:
     params:
         quick=QUICK,
         budget=BUDGET_ARGS,
-        code=lambda wc: job_code("scene_job", f"studies.{wc.study}"),
+        code=lambda wc: code_graph.code_digest(*code_graph.scene_job_entries(wc.study)),
     # Longest first (by the scene's cost estimate), so the heaviest scene does not start last and run alone.
     priority: lambda wc: round(limits(wc).seconds, 1)
     threads: 1

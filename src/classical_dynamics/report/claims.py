@@ -126,11 +126,10 @@ def independent_checks(claims) -> list:
     return [claim for claim in claims if independent(claim)]
 
 
-# what the abstract calls each kind shown and not met, for one and for many
-SHOWN_NAMES = {
-    "erratum": ("erratum", "errata"),
-    "copy": ("possible error of a copy", "possible errors of the copies"),
-    "reading": ("reading not taken", "readings not taken"),
+# what the abstract calls each kind shown and not met, for one and for many: the ledger's words, but a copy's
+# error, which in a sentence is only a possible one
+SHOWN_NAMES = {kind: SHORT[kind] for kind in SHOWN_NOT_MET} | {
+    "copy": ("possible error of a copy", "possible errors of the copies")
 }
 
 
@@ -173,11 +172,10 @@ def by_kind(claims) -> list[dict]:
         if beside:
             rows.append(row("of them a source's value beside today's, no result of ours", beside, "part"))
     rows.append(row("all kinds", list(claims), "total"))
-    independents = [claim for claim in claims if independent(claim)]
     rows.append(
         row(
             "independent checks: a result of ours against a value a source prints",
-            independents,
+            independent_checks(claims),
             "independent",
         )
     )
