@@ -6,10 +6,11 @@ written out by hand, and the carbon dioxide molecule's textbook modes."""
 from pathlib import Path
 from types import SimpleNamespace
 
+import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 import yaml
-from scipy.special import roots_laguerre
+from scipy.special import j0, jn_zeros, roots_laguerre
 
 from classical_dynamics.results import Results
 from classical_dynamics.studies.chains import discrete
@@ -50,11 +51,20 @@ def test_every_discrete_scene_runs_and_its_hard_cases_hold(name):
 
 def test_hanging_particles_are_laguerres_zeros():
     """n equal particles hanging on a light string: sigma² a/g are the zeros of L_n (Lamb Art. 100)."""
-    data, _, got = run("hanging_particles")
+    data, results, got = run("hanging_particles")
     n = data["chain"]["n"]
     zeros = roots_laguerre(n)[0]
     k = len(got["frequencies_sqrt_g_over_l"])
     np.testing.assert_allclose(got["frequencies_sqrt_g_over_l"], np.sqrt(n * zeros[:k]), rtol=1e-10)
+    # beside the particles, the continuum's modes J0(j_s sqrt(x/l)) drawn over the chain's height, 0 to l
+    fig, _ = results.figures["mode_shapes"]
+    curves = [line for line in fig.axes[0].lines if line.get_linestyle() == "-" and len(line.get_ydata()) > 2]
+    assert len(curves) == 3
+    for s, line in enumerate(curves):
+        height, swing = np.asarray(line.get_ydata()), np.asarray(line.get_xdata())
+        assert (height.min(), height.max()) == (0.0, 1.0)
+        np.testing.assert_allclose(swing, j0(jn_zeros(0, 3)[s] * np.sqrt(height)), atol=1e-12)
+    plt.close(fig)
 
 
 @pytest.mark.parametrize("without_analysis", [False, True])

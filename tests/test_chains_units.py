@@ -210,6 +210,7 @@ def test_small_friction_orders_and_decay_rates_against_numpy():
     roots = roots[np.argsort(roots.imag)]
     sigma = np.sqrt(np.array([2 - np.sqrt(2), 2, 2 + np.sqrt(2)]))
     frame = values.table
+    assert frame[frame.scale == 0.001]["mode"].tolist() == [1, 2, 3]  # Lamb's modes, numbered from 1
     table = frame[frame.scale == 0.001].sort_values("mode").frequency_shift.to_numpy()
     np.testing.assert_allclose(table, np.abs(roots.imag - sigma) / sigma, rtol=1e-3, atol=1e-15)
     # the decay rate at first order, c_kk/2 with c = phi^T B phi, phi the M-normalized shapes of Fig. 57

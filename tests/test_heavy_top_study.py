@@ -3,11 +3,13 @@ Lamb's quadratic of steady precession solved here, the nutation frequency from s
 the effective potential in theta (not Lamb's formula (13) the module uses), the conical pendulum, and the
 roots' approach to their limits in closed form."""
 
+import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 import sympy as sp
 
 from classical_dynamics.models import heavy_top as top_model
+from classical_dynamics.results import Results
 from classical_dynamics.studies.solvers import heavy_top
 
 TOP = top_model.Top(1.0, 0.5, 1.0)  # the scene's body: A = Mgh = 1, C = 1/2
@@ -106,4 +108,20 @@ def test_integrals_in_euler_angles_and_conserved():
     kinetic = 0.5 * TOP.A * (theta_dot**2 + (phi_dot * np.sin(theta)) ** 2) + 0.5 * TOP.C * w3**2
     assert E == pytest.approx(kinetic + TOP.Mgh * np.cos(theta), rel=1e-14)
     # the study's run: 20 nutations at rtol 1e-12 keep all three within 1e-10 (DOP853's global error)
-    assert 0 < max(heavy_top.general(TOP, SPIN, np.radians(60.0), 20, 1e-12).drift) < 1e-10
+    general = heavy_top.general(TOP, SPIN, np.radians(60.0), 20, 1e-12)
+    assert 0 < max(general.drift) < 1e-10
+    # each drift is recorded under its integral's name, and the hard case is the largest
+    results = Results("solvers", "heavy_top", "t")
+    heavy_top._record_general(results, general)
+    recorded = {
+        name: results.numbers[name]["value"] for name in results.numbers if name.startswith("integrals_")
+    }
+    assert recorded == {
+        "integrals_J3_drift": general.drift[0],
+        "integrals_Jz_drift": general.drift[1],
+        "integrals_E_drift": general.drift[2],
+        "integrals_max_drift": max(general.drift),
+    }
+    (case,) = [c for c in results.stability if c["name"] == "top_integrals"]
+    assert case["measured"] == max(general.drift) and case["holds"]
+    plt.close("all")

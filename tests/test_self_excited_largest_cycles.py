@@ -164,6 +164,15 @@ def test_omega_on_F_returns_after_two_turns_of_phi2_not_one():
     assert v.return_error < 1e-9
     assert v.half_reversed_error < 1e-9
     assert v.half_distance > 0.5
+    results = Results("self_excited", "x", "x")
+    lc._record_periodic_motion(results, v)
+    recorded = {name: (e["value"], e["unit"]) for name, e in results.numbers.items()}
+    assert recorded == {
+        "omega_period_tau_F_measured": (v.period_tau, "τ"),  # in Lee's time tau, as the series' periods
+        "omega_return_error": (v.return_error, "1"),
+        "omega_half_reversed_error": (v.half_reversed_error, "1"),
+        "omega_half_distance": (v.half_distance, "1"),
+    }
 
 
 def test_permanent_rotations_about_x_and_F_shrinking_onto_the_stable_one():

@@ -569,6 +569,20 @@ def test_time_dependent_torque_quadratures_against_scipy_and_the_principal_arcta
     assert got.friction["general"] < 1e-9 and got.frictionless["fixed"] < 1e-9
     assert 0 < got.theorem_1_ratio <= 1  # Theorem 1 with M_i' = |m_i| max F
     assert got.friction["principal"] > 0.05
+    # the record's hard case is the worst of the four quadratures, whichever it is (the principal-value slip
+    # is shown beside them, not judged): each in turn made the worst
+    for worst in ("general", "fixed", "frictionless general", "frictionless fixed"):
+        values = got._replace(
+            friction={**got.friction, **({worst: 1.0} if worst in ("general", "fixed") else {})},
+            frictionless={
+                **got.frictionless,
+                **({worst.split()[1]: 1.0} if worst.startswith("frictionless") else {}),
+            },
+        )
+        results = _results()
+        section5._record_time_dependent_torque(results, values)
+        (case,) = [c for c in results.stability if c["name"] == "time_dependent_quadratures"]
+        assert case["measured"] == 1.0 and not case["holds"], worst
 
 
 def test_case_one_panels_run_straight_to_the_point_and_keep_r_zero():
@@ -667,3 +681,72 @@ def test_lees_f_in_plane_one_closes_on_the_axis_at_its_turning_point():
     for _, half in curves.groupby("curve"):
         tip = half.loc[half.phi2.idxmax()]
         assert tip.q1 == 0.0 and tip.phi2 == pytest.approx(turn, abs=1e-5)
+
+
+def test_the_body_views_euler_curves_lie_on_lees_lines_and_hyperbolas():
+    """Lee's Figures 3.1-3.2 as drawn: each start of (3.38) and (3.39), integrated by Euler's equations, stays
+    on its line r = +-sqrt(c/a) p (the plane of a separating polhode); each start of (3.34) and (3.35) on its
+    hyperbola pair, p^2/a - r^2/c = +-h^2, h^2 = 0.8^2 - 0.3^2. The drawn lines and hyperbolas are these."""
+    from classical_dynamics.models import self_excited as se
+    from classical_dynamics.studies.self_excited import gallery
+
+    frame = gallery.body_view_data()
+    body = se.Body.from_moments(list(gallery.CLOSED_FORM_BODY))
+    a, c, h2 = body.a, body.c, 0.8**2 - 0.3**2
+    for eq, sign in (("3.38", 1), ("3.39", -1)):
+        euler = frame[frame.curve == f"euler ({eq})"]
+        line = frame[(frame.curve == f"line ({eq})") & (frame.panel == "b")]
+        assert len(euler) == 3 * 121 and len(line) == 2
+        assert np.max(np.abs(euler.r - sign * np.sqrt(c / a) * euler.p)) < 1e-9
+        assert np.allclose(line.r, sign * np.sqrt(c / a) * line.p, rtol=1e-14, atol=0)
+    for eq, side in (("3.34", 1), ("3.35", -1)):
+        for part in (frame[frame.curve == f"euler ({eq})"], frame[frame.curve == f"hyperbola ({eq})"]):
+            assert np.max(np.abs(part.p**2 / a - part.r**2 / c - side * h2)) < 1e-8 * (
+                1 + part.p.abs().max() ** 2
+            )
+
+
+@pytest.mark.parametrize(
+    "mu1,m1,eps1,says",
+    [
+        (0.0, 0.0, -1.0, "force-free separatrix"),  # no drag, no torque: the separatrix motion
+        (0.0, 0.3, -1.0, "growing like $|m_3|\\tau$"),  # no drag: the torque winds q1 up without bound
+        (
+            0.1,
+            -0.2,
+            -1.0,
+            "runs to the $-y$ axis",
+        ),  # drag, and m + eps f <= 0 everywhere: every motion escapes
+        (0.1, 0.2, -1.0, "permanent rotation about the $+y$ axis"),  # drag balances the torque
+    ],
+)
+def test_a_middle_axis_portrait_without_singular_points_says_where_omega_goes(mu1, m1, eps1, says):
+    """Lee §3.2's exponential reductions (k1 = k2) with no singular point: which of his four outcomes the
+    caption states is decided by the drag mu1, the torque m1 and the sign of the drag's term."""
+    from classical_dynamics.studies.self_excited import middle_axis
+
+    M = SimpleNamespace(form="exp", mu1=mu1, m1=m1, eps1=eps1)
+    assert says in middle_axis._shape(M, [])
+
+
+def test_the_series_record_draws_the_motion_in_space_when_there_is_one():
+    """largest_axis._record_series: the series' table, its linear period, its figure, and with a motion in
+    space (Lee §1.2) that figure too; a period series that errs by eta^4 is drawn with its fitted slope 4."""
+    from classical_dynamics.studies.self_excited import largest_axis, portrait
+
+    check = portrait.series_periods(
+        lambda eta: 2 * np.pi * (1 + eta**4), lambda eta: 2 * np.pi, [0.05, 0.1, 0.2]
+    )
+    assert check.slope == pytest.approx(4.0, abs=0.01)
+    values = largest_axis.Series(check, 2 * np.pi / (1 - 0.5**2) ** 0.25)
+    turn = np.linspace(0.0, 2 * np.pi, 50)
+    circle = np.stack([np.cos(turn), np.sin(turn), 0.1 * np.ones_like(turn)], axis=1)
+    circle /= np.linalg.norm(circle, axis=1)[:, None]
+    for sphere, drawn in ((None, {"series"}), (SimpleNamespace(xs=circle, ls=circle[:, [2, 1, 0]]), None)):
+        results = Results("self_excited", "t", "t")
+        largest_axis._record_series(results, values, sphere)
+        assert set(results.figures) == (drawn or {"series", "space"})
+        assert results.numbers["period_tau_linear"]["value"] == values.period_linear
+        assert "4.00" in results.figures["series"][1]  # the fitted slope, in the caption
+        for fig, _ in results.figures.values():
+            plt.close(fig)

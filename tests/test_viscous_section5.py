@@ -144,6 +144,14 @@ def test_reduction_a_b_and_re_w():
     }
     assert all(units.lookup(entry["unit"]) is None for entry in recorded.values())  # relative errors
     assert reduction.ocr_sign_error > 1e-3  # the OCR's +P cos x in si (K = 3) is wrong
+    # how wrong: at w = 3 + w', x = 0.5, 2, 8, against the incomplete gamma function (mpmath), as printed
+    with mpmath.workdps(40):
+        ocr = max(
+            float(abs(s5.lee_reduction(x, 3 + reduction.w1, ocr_sign=True)[0] - ref) / abs(ref))
+            for x in (0.5, 2.0, 8.0)
+            for ref in [sc.reference(x, 3 + reduction.w1, dps=40)[0]]
+        )
+    assert reduction.ocr_sign_error == pytest.approx(ocr, rel=1e-9)
     re_w = s5.re_w(V3)
     assert re_w.formula == pytest.approx(1.6, rel=1e-15)
     assert 1.0 < min(re_w.elongated) < max(re_w.elongated) < 2.0 < min(re_w.disc)

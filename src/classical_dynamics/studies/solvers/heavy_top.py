@@ -23,10 +23,10 @@ from ...solvers.ode import Events, Problem, solve
 from ...solvers.timing import min_time
 
 
-def _run(top, y0, T, rtol, t_eval=None, events=True, record=False, method="dop853"):
+def _run(top, y0, T, rtol, t_eval=None, events=True, record=False):
     return solve(
         Problem(top.rhs, y0, (0.0, T), top.params),
-        method,
+        "dop853",
         rtol=rtol,
         atol=rtol * 1e-3,
         t_eval=t_eval,
