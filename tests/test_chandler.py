@@ -346,6 +346,28 @@ def test_bad_scene_one_line(tmp_path, base, changes, field, expected):
     assert f"field '{field}'" in message and expected in message
 
 
+def test_an_observation_may_span_the_whole_series_and_not_a_day_beyond(tmp_path):
+    """The series' own first and last epochs (read here from the file's first and last records) bound an
+    observation: start at the first and end at the last are accepted; a day before the first, a start at the
+    last, or an end a day after it is refused, naming its field."""
+    from classical_dynamics.studies.chandler import polar_motion as pm
+
+    mjd = np.loadtxt(pm.eop_file(), comments="#", usecols=4)
+    first, last = (2000.0 + (float(d) - 51544.5) / earth.JULIAN_YEAR_DAYS for d in mjd[[0, -1]])
+    day = 1.0 / earth.JULIAN_YEAR_DAYS
+    window = {"observation__window_years": 1.0, "observation__step_years": 1.0}
+    validate(
+        "chandler", scene(tmp_path, OBS, observation__start_year=first, observation__end_year=last, **window)
+    )
+    for changes, field in (
+        ({"observation__start_year": first - day}, "observation.start_year"),
+        ({"observation__start_year": last, "observation__end_year": "latest"}, "observation.start_year"),
+        ({"observation__start_year": first, "observation__end_year": last + day}, "observation.end_year"),
+    ):
+        with pytest.raises(SceneError, match=f"field '{field}'"):
+            validate("chandler", scene(tmp_path, OBS, **{**window, **changes}))
+
+
 def test_cli_refuses_a_window_outside_the_series_and_creates_nothing(tmp_path, capsys):
     """The command line's run, in this process (a Python of its own added a second of imports to a refusal
     made before anything is computed)."""

@@ -128,3 +128,18 @@ def test_the_grid_costs_are_the_least_squares_residuals_a_full_fit_leaves():
 
 def test_an_epoch_prints_whole_or_to_a_hundredth():
     assert observed._year(1990.0) == "1990" and observed._year(2013.7412) == "2013.74"
+
+
+def test_read_eop_keeps_the_years_asked_for_and_writes_m_as_x_minus_iy(tmp_path):
+    """A file in the EOP 14 C04 layout (MJD in the fifth column, x and y in arcsec after it), one record every
+    73.05 days from J2000 (MJD 51544.5): years -0.4 ... 1.4. [2000, 2001) keeps t = 0 ... 0.8, not 1.0; m in
+    mas, x - i y (the IERS y axis points 90 degrees west)."""
+    k = np.arange(-2, 8)
+    x, y = 0.1 + 0.01 * k, -0.2 + 0.001 * k
+    rows = [f"2000 1 1 0 {51544.5 + 73.05 * j:.2f} {xj:.6f} {yj:.6f} 0.1 0.0" for j, xj, yj in zip(k, x, y)]
+    path = tmp_path / "eop.txt"
+    path.write_text("# header\n" + "\n".join(rows) + "\n")
+    t, m = pm.read_eop(path, 2000.0, 2001.0)
+    assert t == pytest.approx([0.0, 0.2, 0.4, 0.6, 0.8], abs=1e-12)
+    assert m == pytest.approx(1000.0 * (x[2:7] - 1j * y[2:7]), rel=1e-12)
+    assert pm.read_eop(path, 1999.0, 2000.0)[0] == pytest.approx([-0.4, -0.2], abs=1e-12)

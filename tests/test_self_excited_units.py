@@ -15,6 +15,8 @@ from scipy.spatial.transform import Rotation
 from classical_dynamics.results import Results
 from classical_dynamics.studies.self_excited import space, viscous
 
+from .conftest import values
+
 
 def _results():
     return Results("self_excited", "test", "test")
@@ -144,6 +146,18 @@ def test_large_order_bound_holds_and_the_factor_is_lees():
     distance = np.max(np.hypot(*(y[:, :2] - run.y.T[:, :2]).T))
     assert got.error == pytest.approx(distance, rel=1e-6)
     assert 1e-3 < got.error <= got.bound + 1e-13
+    # the record: w, the factor |g|^(nu/mu)/mu by Lee's numbers (|g| = |h (r0 - m3/mu)/mu|), and the hard case
+    results = Results("self_excited", "t", "t")
+    viscous._record_large_order(results, got)
+    recorded = values(results)
+    g = abs(h * (2.0 - 0.3 / 0.05) / 0.05)
+    assert recorded["large_order_w_real"] == pytest.approx(1 + 0.32 / 0.05, rel=1e-13)
+    assert recorded["large_order_w_imag"] == pytest.approx(g1 / 0.05, rel=1e-13)
+    assert recorded["large_order_factor"] == pytest.approx(g ** (0.32 / 0.05) / 0.05, rel=1e-12)
+    assert recorded["large_order_error"] == got.error and recorded["large_order_bound"] == got.bound
+    (case,) = results.stability
+    assert case["name"] == "large_order_bound_holds" and case["holds"]
+    assert case["measured"] == got.error_over_bound <= 1 and case["bound"] == 1
 
 
 def test_solution_costs_reach_the_30_digit_state_by_series_and_integration():
@@ -284,6 +298,31 @@ def test_limit_cycle_runs_end_where_the_closed_form_puts_them(small_accuracy):
     tight = frame[frame.setting == 1e-10]
     assert (tight.error < 1e-7).all()
     assert (frame[frame.setting == 1e-6].error.to_numpy() > tight.error.to_numpy()).all()
+
+
+def test_the_excursions_period_is_its_integral_to_twelve_digits():
+    """closed_form_period's quadrature of 2 int dphi2/sqrt(h) between the turning points, against mpmath's
+    Gauss-Legendre rule of the same integral (another rule, other nodes): the period that ten closures are
+    timed by carries twelve digits, not the eight an early stop of the quadrature leaves."""
+    import mpmath
+
+    from classical_dynamics.models import self_excited as se
+    from classical_dynamics.studies.self_excited import excursions
+
+    M = se.MiddleAxis.with_plane_parameters(se.Body.from_moments([3.0, 2.2, 1.2]), 0.5, -0.3, 0.8, 0.3)
+    w0 = excursions.excursion_start(M, 10.0)[0]
+    y0 = M.to_plane(w0)[0]
+    period, (left, right) = excursions.closed_form_period(M, y0)
+    h = excursions.turning_points(M, y0)[1]
+    mid, half = 0.5 * (left + right), 0.5 * (right - left)
+    for end, outward in ((left, -1.0), (right, 1.0)):  # q1^2 = h falls through zero at each turning point
+        assert abs(h(end)) < 1e-10 * h(mid) and h(end + outward * 1e-9 * abs(end)) < 0
+    reference = 2 * mpmath.quad(
+        lambda th: half * mpmath.cos(th) / mpmath.sqrt(h(float(mid + half * mpmath.sin(th)))),
+        [-mpmath.pi / 2, 0, mpmath.pi / 2],
+        method="gauss-legendre",
+    )
+    assert period == pytest.approx(float(reference), rel=1e-12)
 
 
 def test_excursion_runs_measure_the_return_to_the_start_after_ten_periods(small_accuracy):
@@ -750,3 +789,59 @@ def test_the_series_record_draws_the_motion_in_space_when_there_is_one():
         assert "4.00" in results.figures["series"][1]  # the fitted slope, in the caption
         for fig, _ in results.figures.values():
             plt.close(fig)
+
+
+def test_the_x_axis_with_m1_above_one_keeps_a_start_near_it():
+    """Lee: |m1| > 1 (delta below sqrt(2|m|/(a sqrt(bc))), delta sqrt|m1| by the plane's m1) keeps a start
+    near +x. Lee (2.2) written out here with mu = 0, integrated by scipy from delta = 0.01 (q0 = 0.01 sqrt b,
+    r0 = 0, p0 = 1): the angle to +x at t = 100 over its start, and the largest, are the module's."""
+    from classical_dynamics.models import self_excited as se
+    from classical_dynamics.studies.self_excited import motions
+
+    m1, delta = 1.5, 0.8
+    L = se.LargestAxis.with_plane_parameters(se.Body.from_moments([3.0, 2.2, 1.2]), m1, 0.0, delta)
+    a, b, c, m = L.body.a, L.body.b, L.body.c, L.m
+    values = motions.x_axis_stable(L, np.array([a, b, c, m, 0.0, 0.0]))
+    assert values.threshold == pytest.approx(delta * np.sqrt(m1), rel=1e-12)
+
+    def rhs(_, w):
+        p, q, r = w
+        return [a * q * r + m, -b * r * p, c * p * q]
+
+    t = np.linspace(0.0, 100.0, 2001)
+    sol = solve_ivp(
+        rhs, (0.0, 100.0), [1.0, 0.01 * np.sqrt(b), 0.0], "DOP853", t_eval=t, rtol=1e-12, atol=1e-14
+    )
+    angle = np.arctan2(np.hypot(sol.y[1], sol.y[2]), sol.y[0])
+    assert values.ratio_t100 == pytest.approx(angle[-1] / angle[0], rel=1e-6)
+    assert values.largest_ratio == pytest.approx(angle.max() / angle[0], rel=1e-6)
+    assert values.ratio_t100 < 1  # closes in on the axis
+
+
+def test_the_extra_starts_are_theorem_2s_circles_or_the_plane_that_spirals_in():
+    """Lee's Figures 5.4 and 5.5, by (5.49) written out here and integrated by scipy (h = 0.6 for moments
+    2.5, 2.5, 1): without friction and m3 = 0, each extra start circles Theorem 2's center (m2, -m1)/(h r0);
+    with friction and m3 != 0, the start in r = m3/mu stays in that plane and ends at Theorem 3's rotation;
+    with friction and m3 = 0, no extra start."""
+    h, m, omega0 = 0.6, (0.4, -0.2, 0.0), [0.5, 0.8, 2.0]
+    free = viscous.medium(_viscous_scene({"torque": list(m), "omega0": omega0, "t_max": 10}, drag=False).data)
+    extras, caption = viscous._extra_starts(free)
+    assert len(extras) == 3 and "Figure 5.4" in caption
+    center = np.array([m[1], -m[0]]) / (h * omega0[2])
+    radii = []
+    for extra in extras:
+        run = _lee_549(h, 0.0, 0.0, m, list(extra.omega0), 10.0, np.linspace(0.0, 10.0, 41))
+        distance = np.hypot(*(run.y[:2].T - center).T)
+        assert np.ptp(distance) < 1e-9 * distance.mean() and run.y[2] == pytest.approx(omega0[2], rel=1e-12)
+        radii.append(distance.mean())
+    assert len(set(np.round(radii, 6))) == 3  # three circles, not one start thrice
+    nu, mu, m = 0.3, 0.5, (0.4, -0.2, 0.3)
+    block = {"nu": nu, "mu": mu, "torque": list(m), "omega0": omega0, "t_max": 60}
+    (extra,), caption = viscous._extra_starts(viscous.medium(_viscous_scene(block).data))
+    assert "Figure 5.5" in caption and extra.omega0[2] == pytest.approx(m[2] / mu, rel=1e-15)
+    run = _lee_549(h, nu, mu, m, list(extra.omega0), 60.0, [0.0, 30.0, 60.0])
+    g1 = h * m[2] / mu  # Theorem 3: the limit ((nu m1 + g1 m2), (nu m2 - g1 m1))/(nu^2 + g1^2), m3/mu
+    limit = np.array([nu * m[0] + g1 * m[1], nu * m[1] - g1 * m[0]]) / (nu**2 + g1**2)
+    assert run.y[2] == pytest.approx(m[2] / mu, rel=1e-12) and run.y[:2, -1] == pytest.approx(limit, abs=1e-6)
+    no_m3 = viscous.medium(_viscous_scene({**block, "torque": [0.4, -0.2, 0.0]}).data)
+    assert viscous._extra_starts(no_m3) == ([], "")

@@ -258,12 +258,34 @@ def test_tenth_power_writes_a_tolerance_as_a_power_of_ten():
     assert hard_cases.tenth_power(1e-12) == "10⁻¹²"
 
 
-def test_numerical_damping_figure_names_each_method_as_its_table_does():
+@pytest.fixture(scope="module")
+def damping():
+    return hard_cases.numerical_damping(periods=5)  # a short run
+
+
+def test_numerical_damping_of_verlet_is_its_closed_form_and_bdf_loses_energy(damping):
+    """Störmer–Verlet on q'' = -q from (1, 0) moves on cos(k θ), cos θ = 1 - h²/2, and keeps
+    (v² + (1 - h²/4) q²)/2 exactly: its energy's relative change after k steps is -(h²/4) sin²(k θ). BDF and
+    Radau IIA are dissipative (L-stable): on an undamped oscillator they lose energy, a positive Q."""
+    frame, periods = damping.frame, damping.periods
+    verlet = frame[frame.method == "Störmer–Verlet"]
+    assert len(verlet) == 2
+    for h, change in zip(verlet.setting, verlet.energy_change):
+        k = round(periods * 2 * np.pi / h)
+        theta = np.arccos(1 - h * h / 2)
+        assert change == pytest.approx(-(h * h / 4) * np.sin(k * theta) ** 2, rel=1e-6)
+    for method in ("scipy:BDF", "scipy:Radau"):
+        rows = frame[frame.method == method]
+        assert len(rows) == 2 and (rows.energy_change < 0).all() and (rows.spurious_Q > 0).all()
+    adaptive = frame[frame.kind == "tolerance"]
+    assert np.allclose(adaptive.spurious_Q * adaptive.energy_change, -2 * np.pi * periods, rtol=1e-14)
+
+
+def test_numerical_damping_figure_names_each_method_as_its_table_does(damping):
     """scipy's DOP853 and this library's dop853 are different methods: the figure keeps the table's names."""
     import matplotlib.pyplot as plt
 
     results = Results("solvers", "hard_cases", "t")
-    damping = hard_cases.numerical_damping(periods=5)  # the names, not the values: a short run
     hard_cases._record_numerical_damping(results, damping)
     frame = damping.frame
     assert results.tables["numerical_damping"][0] is frame
@@ -608,6 +630,25 @@ def test_the_cost_models_steady_roots_solve_lambs_quadratic_and_the_period_is_th
     split = next(w for w in sweep if w.field == "numerics.steps")
     assert "600 splitting steps" in split.what  # 20/0.1 + 20/0.05
     assert cost.cost({"problem": "hard_cases"})[0].seconds > 0
+
+
+def test_a_heavy_top_scaled_in_every_moment_and_its_weight_costs_what_it_did():
+    """A, C and Mgh multiplied by one factor give the same equations of motion (A w' and Mgh scale alike), so
+    the same runs and the same estimate, part by part; a top not so scaled does not."""
+    cost = importlib.import_module("classical_dynamics.studies.solvers.cost")
+
+    def parts(A, C, Mgh):
+        top = {"A": A, "C": C, "spin": 6.0, "inclination_deg": 60.0, "nutations": 50}
+        data = {"problem": "heavy_top", "top": top, "effects": {"gravity": {"Mgh": Mgh}}}
+        return {w.field: (w.seconds, w.memory_mb) for w in cost.cost(data)}
+
+    shipped = parts(1.0, 0.5, 1.0)
+    for factor in (0.25, 7.0):
+        scaled = parts(factor, 0.5 * factor, factor)
+        assert scaled.keys() == shipped.keys()
+        for field, (seconds, memory_mb) in shipped.items():
+            assert scaled[field] == pytest.approx((seconds, memory_mb), rel=1e-12), field
+    assert parts(7.0, 3.5, 1.0)["top.C"] != pytest.approx(shipped["top.C"], rel=1e-3)
 
 
 def test_the_long_horizons_splitting_steps_scale_as_one_over_the_step():

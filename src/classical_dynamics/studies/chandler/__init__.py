@@ -13,7 +13,7 @@ from pathlib import Path
 from ...models.wobble import EFFECTS, b_minus_a_over_c
 from ...scenes import Scene, SceneError
 from ...scenes.cost import check_step
-from .cost import cost
+from .cost import DEFAULT_SPAN_YEARS, cost
 
 __all__ = ["EFFECTS", "check", "cost", "run"]
 
@@ -123,7 +123,7 @@ def check(path: Path, data: dict) -> None:
         )
     cost = analysis.get("accuracy_cost")
     if cost is not None:
-        span_days = analysis.get("span_years", 100.0) * earth.JULIAN_YEAR_DAYS
+        span_days = analysis.get("span_years", DEFAULT_SPAN_YEARS) * earth.JULIAN_YEAR_DAYS
         for i, h in enumerate(cost["steps"]):
             check_step(path, f"analysis.accuracy_cost.steps.{i}", h, span_days)
         if set(effects) - {"triaxiality"}:

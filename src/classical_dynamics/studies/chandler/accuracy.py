@@ -20,6 +20,7 @@ from ...solvers import workprecision as wp
 from ...solvers.fixed_step import FixedProblem, Save, solve_fixed
 from ...solvers.timing import min_time
 from . import model as wobble_model
+from .cost import DEFAULT_SPAN_YEARS
 from .model import arcsec_text
 
 QUICK_SPAN_YEARS = 10.0
@@ -39,7 +40,7 @@ def _exact(model, amplitude, T):
 def run(scene, results, quick):
     H, amplitude, model = wobble_model.setup(scene)
     spec = scene.data["analysis"]["accuracy_cost"]
-    span_years = QUICK_SPAN_YEARS if quick else scene.data["analysis"].get("span_years", 100.0)
+    span_years = QUICK_SPAN_YEARS if quick else scene.data["analysis"].get("span_years", DEFAULT_SPAN_YEARS)
     frame = work_precision(model, amplitude, span_years, spec)
     _record_work_precision(results, frame, span_years, amplitude)
 

@@ -11,6 +11,8 @@ from __future__ import annotations
 from ...models.earth import JULIAN_YEAR_DAYS as YEAR_DAYS
 from ...scenes.cost import Work, count
 
+DEFAULT_SPAN_YEARS = 100.0  # a model run's span when its scene gives no analysis.span_years
+
 SAMPLE_DAYS = 2.0
 BYTES_PER_SAMPLE = 150.0
 RIGID_STEPS_PER_YEAR = 37.0  # at rtol 1e-12
@@ -37,7 +39,7 @@ def cost(data: dict) -> list[Work]:
     works = [Work("title", 0.5, 0.0, "the scene's fixed work")]
     analysis = data.get("analysis", {})
     if "earth" in data:
-        span_years = analysis.get("span_years", 100.0)
+        span_years = analysis.get("span_years", DEFAULT_SPAN_YEARS)
         steps = span_years * _steps_per_year(data, analysis.get("rtol", 1e-12))
         run = steps * _s_per_step(data) + 1e-4
         seconds = 2 * run + min(5 * run, 1.0 + run)  # the sampled run, its timing (min of 5, 1 s)
@@ -48,7 +50,7 @@ def cost(data: dict) -> list[Work]:
             works.append(Work("effects.dissipation", 1.0, 0.0, "the energy and rate checks"))
     spec = analysis.get("accuracy_cost")
     if spec is not None:
-        span_years = analysis.get("span_years", 100.0)
+        span_years = analysis.get("span_years", DEFAULT_SPAN_YEARS)
         repeats = spec.get("repeats", 5)
         split = adapt = 0.0
         for method in spec["methods"]:

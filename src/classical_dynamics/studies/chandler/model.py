@@ -18,8 +18,8 @@ from ...solvers.fixed_step import FixedProblem, Save, solve_fixed
 from ...solvers.ode import Problem, solve
 from ...solvers.timing import min_time
 from . import polar_motion
+from .cost import DEFAULT_SPAN_YEARS
 
-DEFAULT_SPAN_YEARS = 100.0
 DEFAULT_RTOL = 1e-12
 SAMPLE_DAYS = 2.0
 PERIOD_BOUND = 1e-6  # the hard case: the wobble's period to 1e-6 relative over 100 years
