@@ -47,6 +47,9 @@ def test_analyse_finds_the_known_terms_without_a_results_object():
     assert wobble.chandler_peak_cpy == pytest.approx(earth.JULIAN_YEAR_DAYS / period_days, abs=0.05)
     np.testing.assert_allclose(wobble.period_by_thirds_days, period_days, atol=0.5)
     np.testing.assert_allclose(wobble.windows.chandler_mas, chandler, rtol=0.02)
+    # the annual terms built in, each in its own column: 90 mas prograde, 10 mas retrograde
+    np.testing.assert_allclose(wobble.windows.annual_prograde_mas, 90.0, rtol=0.02)
+    np.testing.assert_allclose(wobble.windows.annual_retrograde_mas, 10.0, rtol=0.1)
     assert wobble.low.chandler_mas <= wobble.high.chandler_mas
 
 

@@ -98,6 +98,9 @@ def test_hanging_chain_is_laguerre_and_the_rotating_chain_is_southwell():
         np.testing.assert_allclose(
             exact_discrete_frequencies(whirl, effects, 3)[int(shift) : int(shift) + 2], own, rtol=1e-9
         )
+    # springs with another effect beside them have no closed form here: that wave equation is the springs'
+    both = {"springs": {"k_n_per_m": 4.0}, "gravity": {"g_m_per_s2": 9.81}}
+    assert continuum_frequencies(both, "fixed-fixed", 1.0, 1.0, 3, n=5) is None
     assert frequency_unit({"rotation": {"omega_rad_per_s": 2.0}}, 1.0, 1.0, 0.1, 0.1)[1] == "over_omega"
 
 
@@ -206,3 +209,19 @@ def test_a_tops_turning_point_is_a_root_of_its_nutation_cubic():
     assert min(abs(nut.u1 - np.cos(theta0)), abs(nut.u2 - np.cos(theta0))) < 1e-12
     assert nut.u1 < nut.u2 < 1.0 < nut.u3
     assert all(abs(f(u)) < 1e-12 for u in (nut.u1, nut.u2, nut.u3))
+
+
+def test_a_tops_rates_read_back_the_euler_angles_rates_it_was_built_from():
+    """Top.state from Euler's angles and rates (z-x-z), then rates() from the body rates and the vertical:
+    phi' as given and psi' = omega_3 - phi' cos theta (Lamb Art. 51), at a psi that mixes w1 and w2; and at
+    phi = psi = 0 the space x axis is the body's (1, 0, 0)."""
+    from classical_dynamics.models.heavy_top import Top, rates
+
+    top = Top(1.0, 0.5, 1.0)
+    theta, theta_dot, phi_dot, omega3 = 0.7, 0.3, 1.9, 6.0
+    y = top.state(theta, theta_dot, phi_dot, omega3, phi=0.4, psi=1.1)
+    phi_rate, psi_rate = rates(top, y)
+    assert phi_rate[0] == pytest.approx(phi_dot, rel=1e-13)
+    assert psi_rate[0] == pytest.approx(omega3 - phi_dot * np.cos(theta), rel=1e-13)
+    assert y[5] == pytest.approx(np.cos(theta), rel=1e-15)  # the vertical's body z component
+    assert top.state(theta, theta_dot, phi_dot, omega3)[6:] == pytest.approx([1.0, 0.0, 0.0], abs=1e-15)

@@ -83,6 +83,10 @@ def test_lamb_ratio_and_the_mass_convention():
     assert o.moon_n / o.sun_n == pytest.approx(13.4, rel=1e-15)
     assert o.spin_turns_per_year == 366.25 and o.sun_n == pytest.approx(2 * np.pi / 365.256363, rel=1e-15)
     assert o.moon_gm_over_a3 / o.moon_n**2 == pytest.approx(1 / 81.4, rel=1e-15)
+    # the node's 18.6-year regression (Lamb gives no figure; the OCR leaves none): the IAU's rate of Omega
+    # (Simon et al. 1994, 1934.1362891 degrees a century against the moving equinox, plus p_A), to that digit
+    iau_years = 360.0 * 36525.0 / (1934.1362891 + 5028.796195 / 3600.0) / 365.256363
+    assert o.node_period_days / o.year_days == pytest.approx(iau_years, abs=0.05)
 
 
 def test_inverse_problem_returns_lamb_ellipticity(tmp_path):

@@ -533,6 +533,11 @@ def test_resonant_forms_at_nu_one_half(alpha, m, form):
     body = se.Body.from_moments([3.0, 2.2, 1.2])
     M = se.MiddleAxis.with_plane_parameters(body, m, -0.5, *alpha)
     assert M.form == form and M.eps1 == -1.0
+    from classical_dynamics.studies.self_excited import middle_axis
+
+    # the portrait's caption says so, and not a step off nu = 1/2
+    assert middle_axis._resonant(M)
+    assert not middle_axis._resonant(se.MiddleAxis.with_plane_parameters(body, m, -0.45, *alpha))
     phi = np.linspace(-3.0, 3.0, 25)
     c = -1.0 if form == "cosh" else -2.0  # the coefficient of e^{-phi2} in 2 eps f
     for delta in (1e-4, 1e-5):

@@ -845,3 +845,19 @@ def test_the_extra_starts_are_theorem_2s_circles_or_the_plane_that_spirals_in():
     assert run.y[2] == pytest.approx(m[2] / mu, rel=1e-12) and run.y[:2, -1] == pytest.approx(limit, abs=1e-6)
     no_m3 = viscous.medium(_viscous_scene({**block, "torque": [0.4, -0.2, 0.0]}).data)
     assert viscous._extra_starts(no_m3) == ([], "")
+
+
+def test_re_w_is_one_plus_c_over_a_for_equal_drag_coefficients():
+    """Lee §5 with mu0 = mu1: nu = mu1/A and mu = mu0/C, so Re w = 1 + nu/mu = 1 + C/A. For A = B = 1:
+    1.05 ... 1.5 over the elongated bodies C = 0.05 ... 0.5, 2.05 ... 3 over the flat ones C = 1.05 ... 2."""
+    V = viscous.medium(
+        _viscous_scene(
+            {"nu": 0.3, "mu": 0.5, "torque": [0.4, -0.2, 0.3], "omega0": [0.5, 0.8, 2.0], "t_max": 1}
+        ).data
+    )
+    from classical_dynamics.studies.self_excited import section5
+
+    got = section5.re_w(V)
+    assert got.formula == pytest.approx(1 + 0.3 / 0.5, rel=1e-15)
+    assert got.elongated == pytest.approx(1 + np.linspace(0.05, 0.5, 10), rel=1e-14)
+    assert got.disc == pytest.approx(1 + np.linspace(1.05, 2.0, 20), rel=1e-14)

@@ -651,6 +651,18 @@ def test_a_heavy_top_scaled_in_every_moment_and_its_weight_costs_what_it_did():
     assert parts(7.0, 3.5, 1.0)["top.C"] != pytest.approx(shipped["top.C"], rel=1e-3)
 
 
+def test_an_adaptive_methods_steps_grow_as_rtol_to_the_minus_one_over_its_order():
+    """cost.adaptive_steps's model: an order-p method's steps over a span grow as rtol^(-1/p) (its error
+    over the span ~ n h^(p+1) ~ span h^p), linearly with the span; DOP853 is order 8, dopri5 order 5."""
+    cost = importlib.import_module("classical_dynamics.studies.solvers.cost")
+    for method, order in (("dop853", 8), ("dopri5", 5), ("scipy:RK23", 3)):
+        ratio = cost.adaptive_steps(method, 1e-12, 20.0) / cost.adaptive_steps(method, 1e-6, 20.0)
+        assert ratio == pytest.approx(1e6 ** (1 / order), rel=1e-12)
+        assert cost.adaptive_steps(method, 1e-9, 40.0) == pytest.approx(
+            2 * cost.adaptive_steps(method, 1e-9, 20.0), rel=1e-14
+        )
+
+
 def test_the_long_horizons_splitting_steps_scale_as_one_over_the_step():
     """Halving numerics.step doubles the splitting's steps and their seconds (span/h steps)."""
     cost = importlib.import_module("classical_dynamics.studies.solvers.cost")

@@ -126,6 +126,14 @@ CASES = [
         says="below the fluid value k_s",
     ),
     _case(
+        "yielding-past-fluid-named",
+        "physics",
+        "effects.elastic_yielding.k2",
+        DAMPED,
+        effects__elastic_yielding__k2=0.95,
+        says="(at k_s the wobble stops: a fluid Earth has no free wobble), got 0.95",
+    ),
+    _case(
         "dissipation-rigid",
         "physics",
         "effects.dissipation",
