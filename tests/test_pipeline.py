@@ -433,11 +433,31 @@ def test_dist_archive_with_checksums(scratch):
         assert check.returncode == 0, check.stdout[-500:] + check.stderr[-500:]
     outer = (scratch / "results/dist/SHA256SUMS").read_text().splitlines()
     assert outer == [f"{hashlib.sha256(archives[0].read_bytes()).hexdigest()}  {archives[0].name}"]
-    # The report rendered again from the same results: the same archive, byte for byte (no render-time stamp).
-    # The first render was in another folder (the shared build): the bytes must not depend on where it ran.
+    # Packed again from the same results: the same archive, byte for byte (no pack-time stamp).
     first = hashlib.sha256(archives[0].read_bytes()).hexdigest()
-    snakemake(scratch, "-c", "1", "dist", "--forcerun", "report_html", "report_pdf", "--config", "quick=1")
+    snakemake(scratch, "-c", "1", "dist", "--forcerun", "dist", "--config", "quick=1")
     assert hashlib.sha256(archives[0].read_bytes()).hexdigest() == first
+    # The HTML rendered again here, by the report job's own command: the shared build rendered it in another
+    # folder, and its bytes must not depend on where it ran (the PDF's: test_report_units, on a small page,
+    # rather than a second render of this one).
+    again = scratch / "again.html"
+    subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "classical_dynamics.report.build",
+            "results",
+            str(again),
+            "--root",
+            ".",
+            "--quick",
+        ],
+        cwd=scratch,
+        env=run_env(scratch),
+        check=True,
+        capture_output=True,
+    )
+    assert again.read_bytes() == (scratch / "results/report.html").read_bytes()
 
 
 # The RO-Crate 1.1 JSON-LD context, which roc-validator downloads (and caches) before it reads a crate: this

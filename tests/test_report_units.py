@@ -266,6 +266,12 @@ def test_a_tiny_page_becomes_a_pdf_with_its_links_kept_relative(tmp_path):
     assert pdf.main([str(page), str(tmp_path / "report.pdf")]) == 0
     assert (tmp_path / "report.pdf").read_bytes().startswith(b"%PDF")
     assert pdf._relative(f"file://{tmp_path}/chains/x.csv#row", tmp_path) == "chains/x.csv#row"
+    # the same page rendered in another folder: the same bytes (no path of this machine, no render-time stamp)
+    other = tmp_path / "elsewhere" / "deeper"
+    other.mkdir(parents=True)
+    (other / "report.html").write_bytes(page.read_bytes())
+    assert pdf.main([str(other / "report.html"), str(other / "report.pdf")]) == 0
+    assert (other / "report.pdf").read_bytes() == (tmp_path / "report.pdf").read_bytes()
     assert pdf._relative("https://example.org/a", tmp_path) == "https://example.org/a"
 
 
