@@ -21,9 +21,8 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-import yaml
-
 from ..formatting import exact_figures, format_number, needs_power_of_ten, sig_for_tolerance
+from ..scenes.loader import project_yaml
 
 
 class ClaimFailure(RuntimeError):
@@ -424,7 +423,7 @@ def _pick(value, spec):
 def evaluate(study: str, claims_file: Path, lookup) -> list[ClaimResult]:
     """lookup(study, scene, number) -> (entry dict) or raises KeyError."""
     results = []
-    for claim in yaml.safe_load(Path(claims_file).read_text(encoding="utf-8")) or []:
+    for claim in project_yaml(claims_file) or []:
         spec, check, source = claim["computed"], claim["check"], claim.get("source", {})
         # required or allowed to fail, said every time: five round-off identities once went "may fail" unsaid
         if not isinstance(claim.get("must_hold"), bool):

@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-import yaml
+from ..scenes.loader import project_yaml
 
 KINDS = ("claim", "figure", "out_of_scope", "missing")
 
@@ -58,7 +58,7 @@ def claim_ids(claims_files: dict[str, Path]) -> set[str]:
     ids = set()
     for study, path in claims_files.items():
         if Path(path).is_file():
-            for claim in yaml.safe_load(Path(path).read_text(encoding="utf-8")) or []:
+            for claim in project_yaml(path) or []:
                 ids.add(f"{study}/{claim['id']}")
     return ids
 
@@ -68,7 +68,7 @@ def read_ledger(ledger_dir: Path, claims_files: dict[str, Path]) -> list[Source]
     known_claims = claim_ids(claims_files)
     sources = []
     for path in sorted(Path(ledger_dir).glob("*.yaml")):
-        data = yaml.safe_load(path.read_text(encoding="utf-8")) or {}
+        data = project_yaml(path) or {}
         key = data.get("source", {}).get("key", path.stem)
         statements, seen = [], set()
         for entry in data.get("statements") or []:

@@ -215,6 +215,15 @@ def read_bytes(path: Path) -> bytes:
     return data
 
 
+def project_yaml(path: Path | str) -> object:
+    """One of the project's own YAML files (schemas, claims, ledgers, the study registry), read with libyaml's
+    safe loader where PyYAML was built with it: the objects yaml.safe_load gives, several times faster (the
+    report reads 1.5 MB of them). A user's scene goes through read_yaml, which refuses duplicate keys."""
+    return yaml.load(
+        Path(path).read_text(encoding="utf-8"), Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+    )
+
+
 def read_yaml(path: Path, data: bytes | None = None) -> object:
     data = read_bytes(path) if data is None else data
     try:

@@ -8,10 +8,9 @@ import functools
 import importlib
 from pathlib import Path
 
-import yaml
-
 from ..scenes import Scene, SceneError, load_scene
 from ..scenes.cost import Budget, check_budget
+from ..scenes.loader import project_yaml
 from .registry import STUDIES
 
 __all__ = ["STUDIES", "study_module", "load_schema", "validate"]
@@ -31,7 +30,7 @@ def load_schema(schema_path: Path | str) -> dict:
 @functools.lru_cache(maxsize=16)
 def _schema(path: Path, mtime_ns: int) -> dict:
     """A schema read once per process (validating every scene read it 94 times: 5 s), again if it changes."""
-    return yaml.load(path.read_text(encoding="utf-8"), Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
+    return project_yaml(path)
 
 
 def validate(study: str, scene_path: Path | str, budget: Budget | None = None) -> Scene:

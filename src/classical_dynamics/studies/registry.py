@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from importlib.resources import files
 from pathlib import Path
 
-import yaml
+from ..scenes.loader import project_yaml
 
 # The studies' folder (found without importing a study's code, which takes up to a second; the package is
 # installed as files, so this is a real path)
@@ -41,15 +41,12 @@ class Study:
     def effect_names(self) -> list[str]:
         """The effects its scenes may list, in the schema's order (the tests hold schema and registry
         equal)."""
-        schema = yaml.load(self.schema.read_text(encoding="utf-8"), Loader=yaml.SafeLoader)
+        schema = project_yaml(self.schema)
         return list(schema["properties"].get("effects", {}).get("properties", {}))
 
 
 LIST = HERE / "registry.yaml"
-STUDIES = {
-    name: Study(name, title)
-    for name, title in yaml.load(LIST.read_text(encoding="utf-8"), Loader=yaml.SafeLoader).items()
-}
+STUDIES = {name: Study(name, title) for name, title in project_yaml(LIST).items()}
 
 
 def resource_files() -> list[Path]:
