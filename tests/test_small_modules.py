@@ -182,10 +182,13 @@ def test_a_result_is_marked_dirty_only_where_its_own_inputs_changed(tmp_path):
     probe = (
         "import sys\nfrom types import SimpleNamespace\n"
         "from classical_dynamics import provenance, scene_job\n"
+        "from classical_dynamics import code_graph\n"
+        "gallery = code_graph.job_entries('studies.self_excited.gallery')\n"
         "for _ in sys.stdin:\n"
         "    provenance.git_state.cache_clear()\n"
         f"    args = SimpleNamespace(study='chains', scene={scene!r})\n"
-        "    print(scene_job._git_state(args)['dirty'], flush=True)\n"
+        "    flags = scene_job._git_state(args)['dirty'], provenance.git_state_of(gallery)['dirty']\n"
+        "    print(*flags, flush=True)\n"
     )
     asker = subprocess.Popen(
         [sys.executable, "-c", probe],
@@ -196,16 +199,22 @@ def test_a_result_is_marked_dirty_only_where_its_own_inputs_changed(tmp_path):
         stdout=subprocess.PIPE,
     )
 
-    def dirty():
+    def dirty(of="scene"):
+        """The scene job's flag, or the self-excited gallery's (a job that reads results, not a scene)."""
         asker.stdin.write("\n")
         asker.stdin.flush()
-        return asker.stdout.readline().strip() == "True"
+        scene_flag, gallery_flag = asker.stdout.readline().split()
+        return (scene_flag if of == "scene" else gallery_flag) == "True"
 
     assert not dirty()
     for elsewhere in ("report/templates/report.css", "src/classical_dynamics/studies/precession/secular.py"):
         with open(repo / elsewhere, "a") as f:
             f.write("\n")
     assert not dirty()  # the tree is dirty, this result's inputs are not
+    assert not dirty("gallery")  # nor the gallery's: another study, a template
+    with open(repo / "src/classical_dynamics/studies/self_excited/gallery.py", "a") as f:
+        f.write("\n# changed\n")
+    assert dirty("gallery") and not dirty()
     with open(repo / "src/classical_dynamics/studies/chains/discrete.py", "a") as f:
         f.write("\n# changed\n")
     assert dirty()

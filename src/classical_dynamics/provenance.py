@@ -74,6 +74,20 @@ def git_state(inputs=None) -> dict[str, object]:
     return {"commit": commit, "dirty": bool(changed)}
 
 
+def git_state_of(entries: tuple[str, ...], *files: Path) -> dict[str, object]:
+    """git_state of a result made by the code its rule's digest covers (code_graph entries) from `files`: a
+    tree with changes elsewhere (a template, another study) leaves a result the commit rebuilds unmarked."""
+    from . import code_graph
+
+    state = git_state()
+    if not state["dirty"]:
+        return state
+    cache = Path(".snakemake/code-graph.json")  # the workflow's parse, when run from it: no second parse
+    if cache.exists():
+        code_graph.cache_parses_in(cache)
+    return git_state((*files, *code_graph.files(*entries)))
+
+
 @lru_cache(maxsize=1)
 def cpu_model() -> str:
     try:

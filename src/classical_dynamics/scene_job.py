@@ -103,18 +103,10 @@ def guarded(func, args) -> int:
 
 def _git_state(args) -> dict:
     """The commit, and whether this result's own inputs (its scene, and the code its rule's digest covers)
-    differ from it: a tree with changes elsewhere leaves a result the commit rebuilds unmarked."""
+    differ from it."""
     from . import code_graph, provenance
 
-    state = provenance.git_state()
-    if not state["dirty"]:
-        return state
-    cache = Path(".snakemake/code-graph.json")  # the workflow's parse, when run from it: no second parse
-    if cache.exists():
-        code_graph.cache_parses_in(cache)
-    return provenance.git_state(
-        (Path(args.scene), *code_graph.files(*code_graph.scene_job_entries(args.study)))
-    )
+    return provenance.git_state_of(code_graph.scene_job_entries(args.study), Path(args.scene))
 
 
 def _run(args) -> int:

@@ -1110,7 +1110,7 @@ def main(argv=None) -> int:
     import time
     from datetime import datetime, timezone
 
-    from ... import io, provenance
+    from ... import code_graph, io, provenance
 
     parser = argparse.ArgumentParser(prog="classical_dynamics.studies.self_excited.gallery")
     parser.add_argument("study_results")
@@ -1140,7 +1140,7 @@ def main(argv=None) -> int:
         "effects_simulated": [],
         "effects_registry": {},
         "quick": bool(args.quick),
-        **provenance.git_state(),
+        **provenance.git_state_of(code_graph.job_entries("studies.self_excited.gallery")),  # its rule's code
         "packages": provenance.package_versions(),
         "machine": provenance.machine(),
         "started": started,
