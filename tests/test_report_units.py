@@ -412,3 +412,49 @@ def test_a_wide_display_stacks_its_side_by_side_formulas_for_a_phone():
     assert stacked(r"\frac{a\qquad b}{c}") is None
     assert stacked(r"\begin{cases}a\qquad b\end{cases}") is None
     assert stacked(r"a + b") is None
+
+
+def test_a_kept_equation_is_read_back_and_is_the_equation_set_afresh(tmp_path):
+    """The report job keeps each display's SVG (ziamath takes a second for the thirty): what it reads back is
+    what ziamath sets, under a folder named by the typesetting packages' releases, and it is read, not set
+    again (a kept file altered by hand is what comes back: the folder is trusted, named by the code)."""
+    from classical_dynamics.report import math as report_math
+
+    latex = r"\omega_c = \frac{C - A}{A}\,r"
+    try:
+        report_math.keep_in(None)
+        fresh = report_math.latex_image(latex)
+        report_math.keep_in(tmp_path)
+        assert report_math.latex_image(latex) == fresh  # set, and kept
+        (kept,) = tmp_path.glob("*/*.svg")
+        assert kept.parent.name.startswith("ziamath") and "latex2mathml" in kept.parent.name
+        report_math.keep_in(tmp_path)  # a new process: nothing remembered but the folder
+        assert report_math.latex_image(latex) == fresh
+        kept.write_text(kept.read_text().replace("<svg", '<svg data-read="back"', 1))
+        report_math.keep_in(tmp_path)
+        assert "data-read" in base64.b64decode(report_math.latex_image(latex)[0].split(",")[1]).decode()
+    finally:
+        report_math.keep_in(None)
+
+
+def test_templates_compiled_once_are_read_back_and_other_codes_folders_go(results_dir, tmp_path, monkeypatch):
+    """The report job's cache folder is named by its code digest: the templates it compiled are read back by
+    the next run (none compiled again), and the folders kept for other code are removed."""
+    import jinja2
+
+    cache = tmp_path / "digest-now"
+    (tmp_path / "digest-before" / "jinja").mkdir(parents=True)
+    build.forget_others(cache)
+    assert not (tmp_path / "digest-before").exists()
+    compiled = []
+    original = jinja2.Environment.compile
+    monkeypatch.setattr(
+        jinja2.Environment, "compile", lambda self, *a, **k: compiled.append(a) or original(self, *a, **k)
+    )
+    first = build.Report(build.ResultsIndex(results_dir), ROOT, quick=True, cache=cache)
+    code = first.env.get_template("report.html.j2").root_render_func.__code__.co_code
+    assert compiled and list(cache.glob("jinja*/*.cache"))
+    compiled.clear()
+    again = build.Report(build.ResultsIndex(results_dir), ROOT, quick=True, cache=cache)
+    assert again.env.get_template("report.html.j2").root_render_func.__code__.co_code == code
+    assert not compiled

@@ -96,9 +96,11 @@ rule report_html:
         "../envs/pipeline.yaml"
     benchmark:
         "results/benchmarks/report_html.tsv"
+    # --cache: the equations and compiled templates of this code, kept between runs (Snakemake's folder)
     shell:
         "python3 -m classical_dynamics.jobserver"
-        " classical_dynamics.report.build results {output:q} --root {params.root:q} {params.quick} 2>&1 | tee {log:q}"
+        " classical_dynamics.report.build results {output:q} --root {params.root:q} {params.quick}"
+        " --cache .snakemake/report-cache/{params.code} 2>&1 | tee {log:q}"
 
 
 rule report_pdf:

@@ -3,18 +3,46 @@
 from __future__ import annotations
 
 import base64
+import hashlib
 import re
 from functools import lru_cache
+from importlib.metadata import version
+from pathlib import Path
 
-import ziamath
+from .. import io
 
 SIZE_PX = 15.0  # the font size the SVG is set at
+# Where each equation, once set, is kept between runs (keep_in): ziamath takes about a second for the report's
+# thirty displays, nearly half of the HTML job, and an edited scene changes none of them.
+_KEPT: list[Path | None] = [None]
+TYPESETTING = ("ziamath", "ziafont", "latex2mathml")  # what sets an equation: a new release sets them anew
+
+
+def keep_in(folder: Path | None) -> None:
+    """Keep the equations' SVGs in folder/<the typesetting packages' versions>/ (None: keep none). The folder
+    must be one for this code (the report job's is named by its code digest): the SVG of an equation is then a
+    function of its LaTeX, its size and those versions alone, the key of its file."""
+    if folder is not None:
+        folder = Path(folder) / "-".join(f"{name}{version(name)}" for name in TYPESETTING)
+    _KEPT[0] = folder
+    _svg.cache_clear()
+    latex_image.cache_clear()
 
 
 @lru_cache(maxsize=None)
 def _svg(latex: str, size: float) -> str:
     """The equation set once: its image and its width are read from the same SVG."""
-    return ziamath.Latex(latex, size=size).svg()
+    folder = _KEPT[0]
+    if folder is not None:
+        kept = folder / (hashlib.sha256(f"{size!r}\n{latex}".encode()).hexdigest() + ".svg")
+        if kept.is_file():
+            return kept.read_text(encoding="utf-8")
+    import ziamath  # 0.1 s to import: not when every equation is kept
+
+    svg = ziamath.Latex(latex, size=size).svg()
+    if folder is not None:
+        io.atomic_write_text(kept, svg)
+    return svg
 
 
 @lru_cache(maxsize=None)
