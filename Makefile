@@ -91,6 +91,7 @@ bench: venv-test
 	$(BIN)/python benchmarks/pipeline_scaling.py
 	$(BIN)/python benchmarks/bad_input.py
 	$(BIN)/python benchmarks/pdf_render.py
+	$(BIN)/python benchmarks/speed_goals.py
 
 dist: venv
 	$(BIN)/snakemake --cores 1 dist
