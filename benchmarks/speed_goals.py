@@ -177,14 +177,21 @@ def sweep(tree: Path, scratch: Path, count: int = 1000) -> tuple[float, float]:
     return first / snakemake_floor, again / snakemake_floor
 
 
-def solvers() -> tuple[float, float]:
-    """(specialized dop853 / hand-written loop, solve_ivp DOP853 / specialized dop853) in this process."""
+def solvers(rounds: int = 3) -> tuple[float, float]:
+    """(specialized dop853 / hand-written loop, solve_ivp DOP853 / specialized dop853) in this process: each
+    the minimum of `rounds` measurements taken in turn (solver_speed's own minima over repeated calls)."""
     import solver_speed
 
-    fastest = solver_speed.fastest_adaptive()
-    _, rtol, ours, _ = fastest["dop853, specialized"]
-    hand = solver_speed.hand_written_adaptive(rtol)[0]
-    return ours / hand, fastest["scipy:DOP853"][2] / ours
+    times: dict[str, list[float]] = {"ours": [], "hand": [], "scipy": []}
+    for _ in range(rounds):
+        fastest = solver_speed.fastest_adaptive()
+        _, rtol, ours, _ = fastest["dop853, specialized"]
+        times["ours"].append(ours)
+        times["scipy"].append(fastest["scipy:DOP853"][2])
+        times["hand"].append(solver_speed.hand_written_adaptive(rtol)[0])
+    best = {key: min(values) for key, values in times.items()}
+    print("  " + ", ".join(f"{key} {seconds * 1e6:.1f} us" for key, seconds in best.items()), flush=True)
+    return best["ours"] / best["hand"], best["scipy"] / best["ours"]
 
 
 def row(name: str, baseline, this, value: float, goal: str, holds: bool) -> None:

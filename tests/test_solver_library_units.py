@@ -89,7 +89,7 @@ def test_one_step_error_on_y_equals_y_shrinks_as_h_to_the_order_plus_one(tableau
         K = np.zeros((tableau.B.size + 1, 1))
         y, y_new = np.ones(1), np.empty(1)
         K[0, 0] = 1.0
-        rk._stages.py_func(f, np.zeros(0), 0.0, h, y, y_new, tableau.steps, (K, np.ones(1), np.empty(1)))
+        rk._stages.py_func(f, np.zeros(0), 0.0, h, y, y_new, tableau.steps, (K, np.ones(1), np.empty(1)), 1)
         errors.append(abs(np.exp(h) - y_new[0]))
     slope = np.polyfit(np.log(hs), np.log(errors), 1)[0]
     assert slope == pytest.approx(order + 1, abs=0.3)
@@ -102,7 +102,15 @@ def test_one_step_error_on_y_equals_y_shrinks_as_h_to_the_order_plus_one(tableau
 def python_loop(monkeypatch):
     """_final_state_loop with its compiled helpers replaced by their Python originals: the same lines run
     (and are measured), here against the compiled loop and the exact solutions."""
-    for name in ("_stages", "_error_norm", "_step_factor", "_max_abs", "_initial_step"):
+    for name in (
+        "_final_state_steps",
+        "_stages",
+        "_error_norm",
+        "_step_factor",
+        "_max_abs",
+        "_min_step",
+        "_initial_step",
+    ):
         monkeypatch.setattr(rk, name, getattr(rk, name).py_func)
     return rk._final_state_loop
 
@@ -141,8 +149,8 @@ def test_error_norm_is_infinite_for_a_non_finite_state_and_zero_for_an_exact_ste
     control = _control()
     for tableau in (rk.DOPRI5, rk.DOP853):
         norm = rk._error_norm.py_func
-        assert norm(tableau.steps, control, K, 0.1, np.ones(1), np.array([np.inf])) == np.inf
-        assert norm(tableau.steps, control, K, 0.1, np.ones(1), np.ones(1)) == 0.0
+        assert norm(tableau.steps, control, K, 0.1, np.ones(1), np.array([np.inf]), 1) == np.inf
+        assert norm(tableau.steps, control, K, 0.1, np.ones(1), np.ones(1), 1) == 0.0
 
 
 # --- ode.solve against scipy ---------------------------------------------------------------------------

@@ -9,6 +9,7 @@ from classical_dynamics.models import linear
 from classical_dynamics.models import rigid_body as rhs
 from classical_dynamics.solvers import references as ref
 from classical_dynamics.solvers import rigid_body
+from classical_dynamics.solvers import runge_kutta as rk
 from classical_dynamics.solvers.fixed_step import FixedProblem, Save, solve_fixed
 from classical_dynamics.solvers.ode import Events, Problem, solve, solve_batch
 from classical_dynamics.solvers.runge_kutta import rhs_function
@@ -569,3 +570,18 @@ def test_min_time_keeps_to_its_budget_when_runs_disagree(clock):
     seconds, _, runs = min_time(clock.work(delays), repeats=10, budget_s=0.1)
     # stopped by the budget: 0.1 s counted after the first run is passed by the third (0.05 + 0.02 + 0.08)
     assert seconds == pytest.approx(0.01) and runs == 4
+
+
+def test_a_loop_specialized_for_three_components_takes_the_plain_loops_steps():
+    """The specialized loop has the state's dimension as a constant (its loops over the components unrolled):
+    on Euler's free body (3 components) the same steps and numbers as the plain loop, and a state of another
+    dimension is refused by the loop compiled for 3, not read past its end."""
+    problem = Problem(rhs.euler_free, ref.HNW_Y0, (0.0, 20.0), rhs.euler_coefficients(ref.HNW_I))
+    plain = solve(problem, "dop853", rtol=1e-10, atol=1e-13)
+    fast = solve(problem, "dop853", rtol=1e-10, atol=1e-13, specialize=True)
+    assert np.array_equal(fast.y, plain.y) and fast.t == plain.t == 20.0
+    assert (fast.nfev, fast.n_steps, fast.n_rejected) == (plain.nfev, plain.n_steps, plain.n_rejected)
+    np.testing.assert_allclose(fast.y, ref.hnw_rigid_body(20.0), atol=1e-9)
+    run = rk.specialized_final_state(rhs.euler_free, 3)
+    with pytest.raises(ValueError, match="dimension"):
+        run(rk.METHOD_INDEX["dop853"], problem.params, 0.0, 1.0, np.ones(4), 1e-8, 1e-11, 1000, 1e12)

@@ -146,7 +146,7 @@ def solve(
         # the final state only: the lean loop, and as little Python around it as possible
         control = (float(rtol), float(atol), int(max_steps), float(bound))
         if specialize:
-            run = rk.specialized_final_state(problem.rhs)
+            run = rk.specialized_final_state(problem.rhs, problem.y0.size)
             status, t, y, nfev, nacc, nrej = run(
                 rk.METHOD_INDEX[method], problem.params, t0, t1, problem.y0, *control
             )
