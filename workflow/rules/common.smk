@@ -3,6 +3,7 @@
 # apart.) Paths: WORKFLOW (workflow/) and ROOT (the checkout) are set in the Snakefile; results/ and .snakemake/
 # are in the working directory.
 
+import atexit
 import os
 import sys
 import time
@@ -27,6 +28,8 @@ from classical_dynamics.workflow_config import ConfigError, check_config
 # path differs, and mark every result stale under another interpreter): the environment Snakemake runs in comes
 # first on their PATH, as activating it would. Each job's provenance records the versions it ran with.
 jobserver.put_interpreter_first_on_path()
+# Snakemake's own exit, like a job's, without the last garbage collections over the run's objects (0.4 to 0.6 s)
+atexit.register(jobserver.skip_last_collections)
 # --config and workflow/config.yaml, checked before anything else: a bad key or value is one line (the key, the
 # value, where it came from), never a Python error from inside the workflow.
 try:
