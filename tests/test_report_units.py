@@ -275,6 +275,30 @@ def test_a_tiny_page_becomes_a_pdf_with_its_links_kept_relative(tmp_path):
     assert pdf._relative("https://example.org/a", tmp_path) == "https://example.org/a"
 
 
+def test_the_render_runs_with_the_collector_paused_and_writes_the_same_bytes(tmp_path, monkeypatch):
+    """The PDF renders with Python's cyclic collector off (a third of its CPU went to full passes over
+    WeasyPrint's objects), restored afterwards, also after a failure; with the collector on throughout, the
+    same bytes."""
+    import gc
+
+    pytest.importorskip("weasyprint")
+    from classical_dynamics.report import pdf
+
+    page = tmp_path / "report.html"
+    page.write_text("<html><body><h2>One</h2><p>A paragraph, <i>x</i><sub>1</sub>.</p></body></html>")
+    seen = []
+    render = pdf._render
+    monkeypatch.setattr(pdf, "_render", lambda *args: seen.append(gc.isenabled()) or render(*args))
+    assert gc.isenabled()
+    pdf.html_to_pdf(page, tmp_path / "paused.pdf")
+    assert seen == [False] and gc.isenabled()
+    render(page, tmp_path / "collected.pdf")
+    assert (tmp_path / "paused.pdf").read_bytes() == (tmp_path / "collected.pdf").read_bytes()
+    with pytest.raises(OSError):
+        pdf.html_to_pdf(tmp_path / "missing.html", tmp_path / "never.pdf")
+    assert gc.isenabled()
+
+
 def test_the_assets_name_every_studys_template_and_claims_file():
     from classical_dynamics.studies import STUDIES
 

@@ -185,6 +185,7 @@ def _child(request: dict, fds: list[int]) -> None:
 
 def serve(path: str, parent: int) -> None:
     """Serve jobs on the socket at path until told to stop (SIGTERM) or until process parent is gone."""
+    import gc
     import select
 
     listener = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
@@ -202,6 +203,10 @@ def serve(path: str, parent: int) -> None:
     jobs: dict[int, socket.socket] = {}  # child pid -> its client's connection
     try:
         _warm_up()  # should an import fail, waiting clients see the server gone and run their jobs alone
+        # What the jobs share, set aside from the cyclic collector (Python's recipe for a forking server): a
+        # child's collections then skip these objects instead of walking them all again (and copying each
+        # page they touch, which the children would otherwise share).
+        gc.freeze()
         while not (stopping or os.getppid() != parent) or jobs:
             watched = [wake, *jobs.values()] + ([] if stopping else [listener])
             for ready in select.select(watched, [], [], 1.0)[0]:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import contextlib
+import gc
 import os
 import sys
 import urllib.parse
@@ -47,20 +49,35 @@ def _relative(target: str, folder: Path) -> str:
     return relative + (f"#{parts.fragment}" if parts.fragment else "")
 
 
+@contextlib.contextmanager
+def collector_paused():
+    """Python's cyclic garbage collector off for the render. WeasyPrint's boxes, styles and layouts live until
+    the PDF is written, millions of objects: the collector's full passes over them (19 for the report) took
+    11 s of its 34 s of CPU to free 90 000 objects, 2 % of its 1 GB. The same bytes are written either way."""
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
+
+
 def html_to_pdf(html_path: Path, pdf_path: Path, fast_svg: bool = True) -> None:
     """Render the report; `fast_svg=False` draws figures with plain WeasyPrint (the old way) in a process
     that has not installed the patches (they are for the whole process: benchmarks/pdf_render.py runs each
     way in its own)."""
-    if fast_svg:
-        from . import fast_svg as patches
+    with collector_paused():
+        if fast_svg:
+            from . import fast_svg as patches
 
-        patches.install()
-        try:
+            patches.install()
+            try:
+                _render(html_path, pdf_path)
+            finally:
+                patches.clear()
+        else:
             _render(html_path, pdf_path)
-        finally:
-            patches.clear()
-    else:
-        _render(html_path, pdf_path)
 
 
 def _render(html_path: Path, pdf_path: Path) -> None:
