@@ -309,6 +309,7 @@ def start() -> None:
     path goes into this process's environment, which Snakemake's local jobs inherit."""
     import subprocess
     import tempfile
+    import time
 
     global _server
     path = os.path.join(tempfile.mkdtemp(prefix="classical-dynamics-"), "jobs.sock")
@@ -317,6 +318,11 @@ def start() -> None:
         start_new_session=True,
         stdin=subprocess.DEVNULL,
     )
+    # Its socket is listening before its imports start (a tenth of a second in): a job that came earlier would
+    # find no server and run alone.
+    deadline = time.monotonic() + 10.0
+    while not os.path.exists(path) and _server.poll() is None and time.monotonic() < deadline:
+        time.sleep(0.01)
     os.environ[ENV] = path
 
 
