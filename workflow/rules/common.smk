@@ -4,6 +4,7 @@
 # are in the working directory.
 
 import atexit
+import gc
 import os
 import sys
 import time
@@ -28,7 +29,10 @@ from classical_dynamics.workflow_config import ConfigError, check_config
 # path differs, and mark every result stale under another interpreter): the environment Snakemake runs in comes
 # first on their PATH, as activating it would. Each job's provenance records the versions it ran with.
 jobserver.put_interpreter_first_on_path()
-# Snakemake's own exit, like a job's, without the last garbage collections over the run's objects (0.4 to 0.6 s)
+# Snakemake's process and Python's cyclic collector: its objects (the rules, the DAG, a thousand scenes' jobs)
+# live for the whole run, so the collector passes over them less often (every 10 000 new objects, not 700: a
+# 1000-scene sweep's dry run 1.9 -> 1.6 s), and not at all at the exit (0.4 to 0.6 s after the last job).
+gc.set_threshold(10_000, 50, 50)
 atexit.register(jobserver.skip_last_collections)
 # --config and workflow/config.yaml, checked before anything else: a bad key or value is one line (the key, the
 # value, where it came from), never a Python error from inside the workflow.
