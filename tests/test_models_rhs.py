@@ -4,7 +4,7 @@ integrals and the equations written out with numpy (not the compiled code under 
 import numpy as np
 import pytest
 
-from classical_dynamics.models import chains, linear
+from classical_dynamics.models import linear, revolving
 from classical_dynamics.solvers.ode import Events, Problem, solve
 
 
@@ -82,7 +82,7 @@ def test_the_revolving_pair_is_lagranges_equations_solved_for_the_accelerations(
         force = np.array([-m * a * b * np.sin(d) * rates[1] ** 2, m * a * b * np.sin(d) * rates[0] ** 2])
         acc = np.linalg.solve(mass, force)
         out = np.empty(4)
-        chains.revolving_pair(0.0, z, np.array([M, m, a, b]), out)
+        revolving.revolving_pair(0.0, z, np.array([M, m, a, b]), out)
         assert out == pytest.approx([z[2], z[3], acc[0], acc[1] - acc[0]], rel=1e-13, abs=1e-15)
 
 
@@ -92,16 +92,16 @@ def test_the_pair_s_crossings_are_found_going_up_only():
 
     z0, p = np.array([0.0, 0.0, 1.0, 1e-3]), np.array([2.0, 1.0, 1.0, 0.7])
     run = solve(
-        Problem(chains.revolving_pair, z0, (0.0, 200.0), p),
+        Problem(revolving.revolving_pair, z0, (0.0, 200.0), p),
         "dop853",
         rtol=1e-12,
         atol=1e-15,
-        events=Events(chains.revolving_pair_crossing, 1, directions=(1,)),
+        events=Events(revolving.revolving_pair_crossing, 1, directions=(1,)),
     )
 
     def rhs(t, z):
         out = np.empty(4)
-        chains.revolving_pair(t, np.ascontiguousarray(z), p, out)
+        revolving.revolving_pair(t, np.ascontiguousarray(z), p, out)
         return out
 
     def crossing(t, z):

@@ -431,3 +431,21 @@ def test_a_number_that_is_not_finite_is_refused_by_name_in_every_study(tmp_path,
         assert said.startswith("a finite number, got nan"), said
     else:
         assert said.startswith(("a finite number", "a number <", "a number >")) and "inf" in said, said
+
+
+def test_validating_a_chains_scene_loads_neither_numba_nor_lapack(tmp_path):
+    """Validation stays light (a 1000-scene sweep's first dry run validates each new scene in Snakemake's
+    process): the study's effects, checks and cost estimate, without the compiled integrators (numba, 0.6 s
+    to load) or scipy.linalg's LAPACK wrappers (0.3 s), which only running a scene needs."""
+    path = write(tmp_path, GOOD)
+    script = (
+        "import sys\n"
+        "from classical_dynamics.studies import validate\n"
+        f"scene = validate('chains', {str(path)!r})\n"
+        "print(scene.estimate.seconds > 0, 'numba' in sys.modules, 'scipy.linalg._decomp' in sys.modules)\n"
+    )
+    env = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
+    done = subprocess.run(
+        [sys.executable, "-c", script], env=env, capture_output=True, text=True, timeout=120
+    )
+    assert done.stdout.split() == ["True", "False", "False"], done.stderr[-2000:]

@@ -14,7 +14,11 @@ Four ways to the lowest eigenvalues, compared in the report's "what accuracy cos
 from __future__ import annotations
 
 import numpy as np
-import scipy.linalg as sla
+
+from ..lazy import lazy_module
+
+# on first use: a scene's validation reads SOLVER_LIMITS (its cost) and needs none of it (0.3 s to import)
+sla = lazy_module("scipy.linalg")
 
 METHODS = ("dense", "tridiagonal", "tridiagonal_select", "pliability")
 # the largest n each method is timed at in the accuracy-cost sweep (the dense one grows as n^3)

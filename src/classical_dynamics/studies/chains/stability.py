@@ -19,8 +19,8 @@ import numpy as np
 import scipy.linalg as sla
 
 from ...formatting import format_number
-from ...models import chains as chain_models
 from ...models import linear
+from ...models.revolving import revolving_pair, revolving_pair_crossing
 from ...solvers.ode import Events, Problem, solve
 from . import symbolic
 
@@ -479,11 +479,11 @@ def revolving() -> Revolving:
 
     span = 30 * 2 * np.pi / np.sqrt(expected)
     run = solve(
-        Problem(chain_models.revolving_pair, z0, (0.0, span), [M, m, a, b]),
+        Problem(revolving_pair, z0, (0.0, span), [M, m, a, b]),
         "dop853",
         rtol=1e-13,
         atol=1e-16,
-        events=Events(chain_models.revolving_pair_crossing, 1, directions=(1,)),
+        events=Events(revolving_pair_crossing, 1, directions=(1,)),
     )
     times = run.event_t
     times = times[times > 1e-9]
