@@ -45,26 +45,23 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "benchmarks"))
 from pdf_render import compare_pages, pages  # noqa: E402
-from pipeline_build import add_sweep, floor, jobs_of, restore, worktree  # noqa: E402
+from pipeline_build import add_sweep, floor, jobs_of, restore, snakemake, worktree  # noqa: E402
 
-from tests.conftest import run_env  # noqa: E402
+from tests.conftest import copy_repository, run_env  # noqa: E402
 
-BIN = Path(sys.executable).parent
 PARTS = ("pdf", "loop", "build", "sweep", "tests", "solvers")
 EDITED = "workflow/scenes/chains/two_masses_three_springs.yaml"
 REPORT_RULES = ("results_archive", "report_html", "report_pdf")
 
 
-def wall(tree: Path, *command: str, check: bool = True) -> float:
+def suite_seconds(tree: Path) -> float:
+    """`python -m pytest` in the tree, as `make test` runs it: its seconds, a failure printed, not raised."""
     start = time.perf_counter()
-    done = subprocess.run(command, cwd=tree, env=run_env(tree), check=check, capture_output=True, text=True)
+    command = [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider"]
+    done = subprocess.run(command, cwd=tree, env=run_env(tree), capture_output=True, text=True)
     if done.returncode:
-        print(f"  failed ({done.returncode}): {' '.join(command)}\n{done.stdout[-2000:]}", flush=True)
+        print(f"  the test suite failed ({done.returncode}):\n{done.stdout[-2000:]}", flush=True)
     return time.perf_counter() - start
-
-
-def snakemake(tree: Path, *args: str) -> float:
-    return wall(tree, str(BIN / "snakemake"), *args)
 
 
 def full_build(tree: Path) -> dict:
@@ -145,22 +142,9 @@ def pdf_goal(trees: dict, repeats: int, scratch: Path) -> dict:
 
 
 def quick_build(tree: Path, scratch: Path) -> float:
-    """The test suite's shared build: a copy of the tree's sources with their times and its compiled code (as
-    conftest copies the checkout: warm), built by `snakemake -c 2 --config quick=1`."""
-    copy = scratch / f"quick-{tree.name}"
-    listed = subprocess.run(
-        ["git", "ls-files", "-co", "--exclude-standard", "-z"], cwd=tree, capture_output=True, check=True
-    ).stdout.decode()
-    files = [tree / rel for rel in filter(None, listed.split("\0"))] + list(
-        (tree / "src").glob("**/__pycache__/*")
-    )
-    for source in files:
-        target = copy / source.relative_to(tree)
-        target.parent.mkdir(parents=True, exist_ok=True)
-        if source.is_symlink():
-            target.symlink_to(os.readlink(source))
-        elif source.is_file():
-            shutil.copy2(source, target)
+    """The test suite's shared build: a copy of the tree with its compiled code, as conftest copies the
+    checkout (warm), built by `snakemake -c 2 --config quick=1`."""
+    copy = copy_repository(scratch / f"quick-{tree.name}", tree)
     try:
         return snakemake(copy, "-c", "2", "--config", "quick=1")
     finally:
@@ -248,9 +232,7 @@ def main() -> int:
             if "tests" in only:
                 print("the quick build and the test suite ...", flush=True)
                 measured["quick"] = {label: quick_build(tree, scratch) for label, tree in trees.items()}
-                measured["tests"] = wall(
-                    trees["this"], sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", check=False
-                )
+                measured["tests"] = suite_seconds(trees["this"])
             if "solvers" in only:
                 print("the integrators ...", flush=True)
                 measured["solvers"] = solvers()

@@ -22,34 +22,38 @@ ROOT = Path(__file__).resolve().parents[1]
 SCHEMA = STUDIES["chains"].schema
 
 
-def copy_repository(target: Path) -> Path:
-    """A copy of the working tree as git sees it (tracked and untracked-not-ignored files)."""
+def copy_repository(target: Path, source: Path = ROOT) -> Path:
+    """A copy of a working tree (this checkout's by default) as git sees it (tracked and untracked-not-ignored
+    files)."""
     listed = (
         subprocess.run(
-            ["git", "ls-files", "-co", "--exclude-standard", "-z"], cwd=ROOT, capture_output=True, check=True
+            ["git", "ls-files", "-co", "--exclude-standard", "-z"],
+            cwd=source,
+            capture_output=True,
+            check=True,
         )
         .stdout.decode()
         .split("\0")
     )
     for rel in filter(None, listed):
-        source = ROOT / rel
-        if source.is_symlink():  # the package's link to report/: a link in the copy too
+        original = source / rel
+        if original.is_symlink():  # the package's link to report/: a link in the copy too
             (target / rel).parent.mkdir(parents=True, exist_ok=True)
-            (target / rel).symlink_to(os.readlink(source))
-        elif source.is_file():
+            (target / rel).symlink_to(os.readlink(original))
+        elif original.is_file():
             (target / rel).parent.mkdir(parents=True, exist_ok=True)
-            shutil.copy2(source, target / rel)
-    return copy_compiled(target)
+            shutil.copy2(original, target / rel)
+    return copy_compiled(target, source)
 
 
-def copy_compiled(target: Path) -> Path:
+def copy_compiled(target: Path, source: Path = ROOT) -> Path:
     """Compiled code travels with the sources it was compiled from (bytecode, numba's cache): each entry is
     checked against its source file's time and size, which copy2 keeps, so a copy of src/ starts as warm as
     the checkout (cold, the first parse alone compiles runge_kutta's typed loops: 9 s). No result changes."""
-    for cached in (ROOT / "src").glob("**/__pycache__/*"):
+    for cached in (source / "src").glob("**/__pycache__/*"):
         try:
-            (target / cached.relative_to(ROOT)).parent.mkdir(parents=True, exist_ok=True)
-            shutil.copy2(cached, target / cached.relative_to(ROOT))
+            (target / cached.relative_to(source)).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(cached, target / cached.relative_to(source))
         except FileNotFoundError:  # replaced meanwhile by a compile in another test worker
             pass
     return target
